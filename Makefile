@@ -1,0 +1,63 @@
+# softpack — top-level entry points. `make help` lists them.
+#
+# The build lives in build/ (release, -O3 -march=x86-64-v2) and build-sanitize/ (debug with
+# AddressSanitizer + UndefinedBehaviorSanitizer). CI=true turns warnings into errors.
+
+SHELL := /bin/bash
+.DEFAULT_GOAL := help
+.DELETE_ON_ERROR:
+
+BUILD ?= build
+BUILD_SANITIZE ?= build-sanitize
+JOBS ?= $(shell nproc)
+CMAKE_FLAGS := -DCMAKE_BUILD_TYPE=Release $(if $(filter true,$(CI)),-DSOFTPACK_WERROR=ON)
+
+# Debian 12 packages the project needs (build, tests, benchmarks, plots, LAMMPS comparison).
+APT_PACKAGES := cmake g++ make git pkg-config gnuplot-nox \
+  libeigen3-dev libyaml-cpp-dev libhdf5-dev hdf5-tools nlohmann-json3-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev \
+  lammps python3-numpy
+SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
+
+.PHONY: help setup all build test test-sanitize bench clean
+
+help:  ## list the targets
+	@echo "softpack — reproducible soft-particle contact laws (see README.md)"
+	@echo
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z-]+):.*## (.*)/  make \1\t\2/' | expand -t 24
+
+setup:  ## install the Debian packages (apt-get; quick when they are there)
+	@missing=$$(for p in $(APT_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "setup: installing" $$missing; \
+	  $(SUDO) apt-get update -q && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q $(APT_PACKAGES); \
+	else echo "setup: all $(words $(APT_PACKAGES)) Debian packages are present"; fi
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+
+build: $(BUILD)/CMakeCache.txt  ## compile the engine, executables, tests and benchmarks
+	cmake --build $(BUILD) -j $(JOBS)
+
+all: build  ## build, then run the example scenes of experiments/scenes/
+	@for scene in experiments/scenes/*.yaml; do \
+	  out=data/scenes/$$(basename $$scene .yaml).json; \
+	  echo "softpack-run $$scene -> $$out"; \
+	  $(BUILD)/engine/softpack-run --scene $$scene --out $$out --quiet || exit 1; \
+	done
+
+test: build  ## build and run the test suite (ctest)
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+test-sanitize:  ## the test suite under AddressSanitizer + UndefinedBehaviorSanitizer
+	cmake -S . -B $(BUILD_SANITIZE) -DCMAKE_BUILD_TYPE=Debug -DSOFTPACK_SANITIZE=ON -DSOFTPACK_BENCH=OFF \
+	  $(if $(filter true,$(CI)),-DSOFTPACK_WERROR=ON)
+	cmake --build $(BUILD_SANITIZE) -j $(JOBS)
+	cd $(BUILD_SANITIZE) && ctest --output-on-failure -j $(JOBS)
+
+bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side by side
+	bench/run_benchmarks.sh $(BUILD)
+
+clean:  ## remove builds and generated data (keeps data/archive)
+	rm -rf $(BUILD) $(BUILD_SANITIZE) data/scenes

@@ -1,0 +1,72 @@
+// Validated reading of YAML configuration. A ConfigNode knows its file, its key path and its
+// line/column, so every error names them:
+//
+//   experiments/scene.yaml:12:5: walls[0].normal: expected a list of 3 numbers
+//   experiments/scene.yaml:4:3: effects.frcition: unknown key; did you mean 'friction'?
+//     (allowed: normal, friction, rotation, damping, gravity)
+#pragma once
+#include <yaml-cpp/yaml.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace softpack {
+
+class ConfigNode {
+ public:
+  /// Parses a file; malformed YAML and unreadable files throw InputError with line and column.
+  static ConfigNode load_file(const std::string& path);
+  /// Parses text (tests, fuzzing); `name` stands for the file in messages.
+  static ConfigNode load_string(const std::string& text, const std::string& name);
+
+  const std::string& path() const { return path_; }
+  const YAML::Node& yaml() const { return node_; }
+  bool is_map() const { return node_.IsMap(); }
+  bool is_sequence() const { return node_.IsSequence(); }
+
+  // Maps.
+  bool has(const std::string& key) const;
+  ConfigNode at(const std::string& key) const;  ///< required key
+  std::optional<ConfigNode> find(const std::string& key) const;
+  /// Rejects keys outside `allowed`, suggesting the closest allowed one.
+  void allow_only(const std::vector<std::string>& allowed) const;
+  std::vector<std::string> keys() const;
+
+  // Sequences.
+  std::vector<ConfigNode> items() const;
+
+  // Scalars.
+  double number() const;
+  long integer() const;
+  bool boolean() const;
+  std::string string() const;
+  Vec3 vec3() const;
+  /// One of `allowed`.
+  std::string choice(const std::vector<std::string>& allowed) const;
+
+  // Numbers with a range; the message states the allowed range.
+  double positive() const;      ///< > 0
+  double non_negative() const;  ///< >= 0
+  double in_range(double lo, bool lo_open, double hi, bool hi_open) const;
+
+  /// Throws InputError "file:line:col: key.path: what".
+  [[noreturn]] void fail(const std::string& what) const;
+
+ private:
+  ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file);
+  ConfigNode child(const YAML::Node& node, const std::string& path) const;
+  std::string where() const;
+
+  YAML::Node node_;
+  std::string path_;
+  std::shared_ptr<const std::string> file_;
+};
+
+/// The closest of `candidates` to `word` (Levenshtein), or "" when none is close.
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
+
+}  // namespace softpack

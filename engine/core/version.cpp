@@ -1,0 +1,9 @@
+#include "core/version.hpp"
+
+#include "softpack_version.hpp"
+
+namespace softpack {
+
+std::string code_version() { return std::string(SOFTPACK_VERSION) + " (" + SOFTPACK_GIT + ")"; }
+
+}  // namespace softpack

@@ -1,0 +1,43 @@
+// Verlet lists of potential contacts with their tangential history.
+//
+// Pairs (i < j) whose gap is below the skin are listed at each rebuild, sorted by (i, j), with
+// the contact constants precomputed. When the friction effect is on, each entry carries its
+// tangential spring xi; a rebuild carries the springs of surviving pairs over by a sorted
+// merge, O(N). A pair whose gap opens keeps its entry until the next rebuild but its spring
+// is cleared the moment the contact opens.
+#pragma once
+#include <vector>
+
+#include "contact/contact_force.hpp"
+#include "core/types.hpp"
+
+namespace softpack {
+
+struct PairEntry {
+  int i = 0, j = 0;
+  double r_sum = 0.0;  ///< Ri + Rj
+  ContactCoefficients k;
+};
+
+struct PairList {
+  std::vector<PairEntry> pairs;
+  std::vector<Vec3> spring;  ///< tangential spring per pair; empty without friction
+
+  /// Replaces the list by `fresh` (sorted by (i, j)), carrying springs of pairs present in both.
+  void replace(std::vector<PairEntry>&& fresh, bool keep_springs);
+};
+
+/// Candidate contacts of one wall (plane or shell): sphere indices, sorted, with constants.
+struct WallEntry {
+  int i = 0;
+  ContactCoefficients k;
+};
+
+struct WallList {
+  std::vector<WallEntry> entries;
+  std::vector<Vec3> spring;
+
+  void replace(std::vector<WallEntry>&& fresh, bool keep_springs);
+};
+
+}  // namespace softpack

@@ -1,0 +1,64 @@
+#include "neighbor/hierarchical_grid.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+#include <stdexcept>
+
+namespace softpack {
+
+void HierarchicalGrid::build(std::span<const Vec3> x, std::span<const double> r, double skin,
+                             double level_ratio) {
+  if (x.size() != r.size()) throw std::invalid_argument("HierarchicalGrid: x and r differ");
+  if (!(level_ratio > 1.0)) throw std::invalid_argument("HierarchicalGrid: level_ratio <= 1");
+  if (!(skin >= 0.0)) throw std::invalid_argument("HierarchicalGrid: skin < 0");
+  x_ = x;
+  r_ = r;
+  skin_ = skin;
+  const std::size_t n = x.size();
+  levels_.clear();
+  level_of_.assign(n, 0);
+  cell_.resize(n);
+  next_.assign(n, -1);
+  if (n == 0) return;
+
+  double r_min = std::numeric_limits<double>::max(), r_max = 0.0;
+  origin_ = Vec3::Constant(std::numeric_limits<double>::max());
+  for (std::size_t i = 0; i < n; ++i) {
+    r_min = std::min(r_min, r[i]);
+    r_max = std::max(r_max, r[i]);
+    origin_ = origin_.cwiseMin(x[i] - Vec3::Constant(r[i]));
+  }
+  // Level cell sizes: c_0 = 2 r_min + skin, growing by level_ratio up to 2 r_max + skin.
+  std::vector<double> cells{2.0 * r_min + skin};
+  while (cells.back() < 2.0 * r_max + skin) cells.push_back(cells.back() * level_ratio);
+  levels_.resize(cells.size());
+  for (std::size_t l = 0; l < cells.size(); ++l) {
+    levels_[l].cell = cells[l];
+    levels_[l].inv_cell = 1.0 / cells[l];
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = 2.0 * r[i] + skin;
+    const auto it = std::lower_bound(cells.begin(), cells.end(), d);
+    const int l = static_cast<int>(std::min<std::ptrdiff_t>(it - cells.begin(),
+                                                            static_cast<std::ptrdiff_t>(cells.size()) - 1));
+    level_of_[i] = l;
+    ++levels_[l].population;
+    levels_[l].r_max = std::max(levels_[l].r_max, r[i]);
+  }
+  for (Level& L : levels_) {
+    const std::uint64_t buckets = std::bit_ceil(std::max<std::uint64_t>(16, 2 * L.population));
+    L.mask = buckets - 1;
+    L.head.assign(L.population ? buckets : 0, -1);
+  }
+  // Insert in reverse so each bucket's chain lists spheres in increasing index order.
+  for (std::size_t k = n; k-- > 0;) {
+    Level& L = levels_[level_of_[k]];
+    cell_[k] = cell_of(x[k], L);
+    auto& head = L.head[hash(cell_[k]) & L.mask];
+    next_[k] = head;
+    head = static_cast<int>(k);
+  }
+}
+
+}  // namespace softpack

@@ -1,0 +1,69 @@
+#include "relax/relaxation.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace softpack {
+namespace {
+
+void require_positive(double v, const char* key) {
+  if (!(v > 0.0 && std::isfinite(v))) throw InputError(fmt::format("relaxation.{}: {} is not allowed; allowed: > 0", key, v));
+}
+
+}  // namespace
+
+void validate(const RelaxationDef& def) {
+  if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
+    if (p->stops < 0) throw InputError(fmt::format("relaxation.stops: {} is not allowed; allowed: >= 0", p->stops));
+    if (p->stops > 0) require_positive(p->wait, "wait");
+    require_positive(p->final_wait, "final_wait");
+  } else {
+    const auto& c = std::get<ConvergedRelaxationDef>(def);
+    require_positive(c.force_tolerance, "force_tolerance");
+    require_positive(c.energy_tolerance, "energy_tolerance");
+    require_positive(c.check_interval, "check_interval");
+    require_positive(c.max_time, "max_time");
+  }
+}
+
+RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
+                       const std::function<void(const RelaxationCheck&)>& on_check) {
+  validate(def);
+  const long step0 = sim.step_count();
+  const double t0 = sim.time();
+  RelaxationReport report;
+  const auto record = [&] {
+    report.checks.push_back({sim.time() - t0, sim.step_count() - step0, sim.measure()});
+    if (on_check) on_check(report.checks.back());
+  };
+  if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
+    for (int k = 0; k < p->stops; ++k) {
+      sim.run_for(p->wait);
+      sim.zero_velocities();
+      record();
+    }
+    sim.run_for(p->final_wait);
+    record();
+  } else {
+    const auto& c = std::get<ConvergedRelaxationDef>(def);
+    report.converged = false;
+    while (sim.time() - t0 < c.max_time) {
+      sim.run_for(std::min(c.check_interval, c.max_time - (sim.time() - t0)));
+      record();
+      const Measurement& m = report.checks.back().residuals;
+      if (m.force_ratio() < c.force_tolerance && m.energy_ratio() < c.energy_tolerance) {
+        report.converged = true;
+        break;
+      }
+      if (c.zero_velocities_at_checks) sim.zero_velocities();
+    }
+  }
+  report.steps = sim.step_count() - step0;
+  report.simulated_time = sim.time() - t0;
+  return report;
+}
+
+}  // namespace softpack

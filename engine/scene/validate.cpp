@@ -1,0 +1,198 @@
+#include "scene/validate.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <set>
+
+#include "core/error.hpp"
+
+namespace softpack {
+namespace {
+
+[[noreturn]] void fail(const std::string& key, const std::string& what) {
+  throw InputError(key + ": " + what);
+}
+
+bool finite(const Vec3& v) { return v.allFinite(); }
+
+void check_materials(const SceneDef& s) {
+  if (s.materials.empty()) fail("materials", "at least one material is required");
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < s.materials.size(); ++k) {
+    const Material& m = s.materials[k];
+    const std::string key = fmt::format("materials.{}", m.name.empty() ? std::to_string(k) : m.name);
+    if (!names.insert(m.name).second) fail(key, "material defined twice");
+    if (!(m.E > 0.0 && std::isfinite(m.E))) fail(key + ".E", fmt::format("{} Pa is not allowed; allowed: E > 0", m.E));
+    if (!(m.nu > -1.0 && m.nu < 0.5)) fail(key + ".nu", fmt::format("{} is not allowed; allowed: -1 < nu < 0.5", m.nu));
+    if (!(m.mu >= 0.0 && std::isfinite(m.mu))) fail(key + ".mu", fmt::format("{} is not allowed; allowed: mu >= 0", m.mu));
+    if (!(m.density > 0.0 && std::isfinite(m.density)))
+      fail(key + ".density", fmt::format("{} kg/m^3 is not allowed; allowed: density > 0", m.density));
+  }
+}
+
+void check_material_ref(const SceneDef& s, int m, const std::string& key) {
+  if (m < 0 || m >= static_cast<int>(s.materials.size()))
+    fail(key, fmt::format("material index {} does not exist ({} materials)", m, s.materials.size()));
+}
+
+std::set<int> bodies_of(const SceneDef& s) {
+  std::set<int> b;
+  for (const auto& p : s.particles)
+    if (p.body != kNoBody) b.insert(p.body);
+  return b;
+}
+
+std::string list_bodies(const std::set<int>& bodies) {
+  if (bodies.empty()) return "no sphere belongs to a body";
+  std::string out = "bodies present:";
+  for (int b : bodies) out += fmt::format(" {}", b);
+  return out;
+}
+
+void check_group(const SceneDef& s, const GroupDef& g, const std::string& key) {
+  if (g.kind == GroupDef::Kind::all) return;
+  const auto bodies = bodies_of(s);
+  if (!bodies.contains(g.body))
+    fail(key + ".body", fmt::format("body {} does not exist ({})", g.body, list_bodies(bodies)));
+}
+
+bool wall_exists(const SceneDef& s, const std::string& name) {
+  for (const auto& p : s.planes)
+    if (p.name == name) return true;
+  for (const auto& sh : s.shells)
+    if (sh.name == name) return true;
+  return false;
+}
+
+void check_stop(const std::optional<double>& a, const char* a_name, const std::optional<double>& b,
+                const char* b_name, const std::string& key) {
+  if (a && b) fail(key, fmt::format("give '{}' or '{}', not both", a_name, b_name));
+  if (!a && !b) fail(key, fmt::format("one of '{}' or '{}' is required", a_name, b_name));
+  const double v = a ? *a : *b;
+  if (!(v > 0.0 && std::isfinite(v)))
+    fail(key + "." + (a ? a_name : b_name), fmt::format("{} is not allowed; allowed: > 0", v));
+}
+
+void check_drivers(const SceneDef& s) {
+  std::set<int> driven_bodies;
+  bool all_driven = false;
+  std::set<std::string> driven_walls;
+  auto claim = [&](const GroupDef& g, const std::string& key) {
+    const bool clash = all_driven || (g.kind == GroupDef::Kind::all && !driven_bodies.empty()) ||
+                       (g.kind == GroupDef::Kind::body && driven_bodies.contains(g.body));
+    if (clash) fail(key, "these spheres are already moved by an earlier driver");
+    if (g.kind == GroupDef::Kind::all) all_driven = true;
+    else driven_bodies.insert(g.body);
+  };
+  for (std::size_t k = 0; k < s.drivers.size(); ++k) {
+    const std::string key = fmt::format("drivers[{}]", k);
+    std::visit(
+        [&](const auto& d) {
+          using D = std::decay_t<decltype(d)>;
+          if constexpr (std::is_same_v<D, MoveWallDef>) {
+            if (!wall_exists(s, d.wall))
+              fail(key + ".wall", fmt::format("no plane or shell is named '{}'", d.wall));
+            if (!driven_walls.insert(d.wall).second)
+              fail(key + ".wall", fmt::format("wall '{}' is already moved by an earlier driver", d.wall));
+            if (!finite(d.velocity) || d.velocity.norm() == 0.0)
+              fail(key + ".velocity", "must be a finite, non-zero vector");
+            check_stop(d.distance, "distance", d.duration, "duration", key);
+          } else if constexpr (std::is_same_v<D, RotateGroupDef>) {
+            check_group(s, d.group, key + ".group");
+            claim(d.group, key + ".group");
+            if (!finite(d.axis) || d.axis.norm() == 0.0) fail(key + ".axis", "must be a finite, non-zero vector");
+            if (!finite(d.centre)) fail(key + ".centre", "must be finite");
+            if (!(std::isfinite(d.rate) && d.rate != 0.0)) fail(key + ".rate", "must be finite and non-zero");
+            check_stop(d.angle, "angle", d.duration, "duration", key);
+          } else if constexpr (std::is_same_v<D, TranslateGroupDef>) {
+            check_group(s, d.group, key + ".group");
+            claim(d.group, key + ".group");
+            if (!finite(d.velocity) || d.velocity.norm() == 0.0)
+              fail(key + ".velocity", "must be a finite, non-zero vector");
+            check_stop(d.distance, "distance", d.duration, "duration", key);
+          } else {
+            check_group(s, d.group, key + ".group");
+            claim(d.group, key + ".group");
+          }
+        },
+        s.drivers[k]);
+  }
+}
+
+}  // namespace
+
+void validate(const SceneDef& s) {
+  check_materials(s);
+  if (s.particles.empty()) fail("particles", "the scene has no spheres");
+  for (std::size_t i = 0; i < s.particles.size(); ++i) {
+    const auto& p = s.particles[i];
+    const std::string key = fmt::format("particles[{}]", i);
+    if (!(p.r > 0.0 && std::isfinite(p.r))) fail(key + ".r", fmt::format("{} m is not allowed; allowed: r > 0", p.r));
+    if (!finite(p.x) || !finite(p.v) || !finite(p.w)) fail(key, "position and velocities must be finite");
+    if (p.body < kNoBody) fail(key + ".body", fmt::format("{} is not allowed; allowed: a body id >= 0, or none", p.body));
+    check_material_ref(s, p.material, key + ".material");
+  }
+
+  const EffectsDef& e = s.effects;
+  if (e.friction && !e.normal) fail("effects.friction", "friction needs the normal law (declare effects.normal)");
+  if (e.damping() && !e.normal) fail("effects.damping", "damping needs the normal law (declare effects.normal)");
+  if (e.rotation && !e.friction)
+    fail("effects.rotation", "rotation without friction: nothing produces a torque (declare effects.friction or drop rotation)");
+  if (e.friction) {
+    bool any_mu = false;
+    for (const auto& m : s.materials) any_mu = any_mu || m.mu > 0.0;
+    if (!any_mu) fail("effects.friction", "friction declared but every material has mu = 0");
+  }
+  if (e.damping() && !(*e.restitution > 0.0 && *e.restitution <= 1.0))
+    fail("effects.damping.restitution", fmt::format("{} is not allowed; allowed: 0 < e <= 1", *e.restitution));
+  if (!(e.tangential_damping_ratio >= 0.0 && std::isfinite(e.tangential_damping_ratio)))
+    fail("effects.damping.tangential_ratio", "allowed: >= 0");
+  if (e.gravity && !finite(*e.gravity)) fail("effects.gravity", "must be finite");
+
+  std::set<std::string> wall_names;
+  std::set<int> shell_bodies;
+  for (std::size_t k = 0; k < s.planes.size(); ++k) {
+    const auto& pl = s.planes[k];
+    const std::string key = fmt::format("planes[{}]", k);
+    if (pl.name.empty() || !wall_names.insert(pl.name).second) fail(key + ".name", fmt::format("'{}' is empty or not unique", pl.name));
+    if (!finite(pl.point)) fail(key + ".point", "must be finite");
+    if (!finite(pl.normal) || pl.normal.norm() == 0.0) fail(key + ".normal", "must be a finite, non-zero vector");
+    check_material_ref(s, pl.material, key + ".material");
+  }
+  for (std::size_t k = 0; k < s.shells.size(); ++k) {
+    const auto& sh = s.shells[k];
+    const std::string key = fmt::format("shells[{}]", k);
+    if (sh.name.empty() || !wall_names.insert(sh.name).second) fail(key + ".name", fmt::format("'{}' is empty or not unique", sh.name));
+    if (!(sh.radius > 0.0 && std::isfinite(sh.radius))) fail(key + ".radius", "allowed: radius > 0");
+    if (sh.body < 0) fail(key + ".body", "a shell confines the spheres of one body: give a body id >= 0");
+    if (!shell_bodies.insert(sh.body).second) fail(key + ".body", fmt::format("body {} already has a shell", sh.body));
+    if (!finite(sh.centre)) fail(key + ".centre", "must be finite");
+    check_material_ref(s, sh.material, key + ".material");
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+      const auto& p = s.particles[i];
+      if (p.body != sh.body) continue;
+      if ((p.x - sh.centre).norm() >= sh.radius)
+        fail(fmt::format("particles[{}]", i), fmt::format("its centre lies outside shell '{}' of its body {}", sh.name, sh.body));
+      if (p.r >= sh.radius) fail(fmt::format("particles[{}].r", i), fmt::format("not smaller than the radius of shell '{}'", sh.name));
+    }
+  }
+
+  const IntegrationDef& in = s.integration;
+  if (in.dt && in.safety) fail("integration", "give 'dt' or 'safety', not both");
+  if (!in.dt && !in.safety) fail("integration", "one of 'dt' or 'safety' is required");
+  if (in.dt && !(*in.dt > 0.0 && std::isfinite(*in.dt))) fail("integration.dt", "allowed: dt > 0");
+  if (in.safety && !(*in.safety > 0.0 && *in.safety <= 1.0)) fail("integration.safety", fmt::format("{} is not allowed; allowed: 0 < safety <= 1", *in.safety));
+  if (!(s.neighbor.skin > 0.0 && std::isfinite(s.neighbor.skin))) fail("neighbor.skin", fmt::format("{} is not allowed; allowed: skin > 0 (a fraction of the smallest radius)", s.neighbor.skin));
+  if (!(s.neighbor.level_ratio > 1.0 && std::isfinite(s.neighbor.level_ratio))) fail("neighbor.level_ratio", fmt::format("{} is not allowed; allowed: level_ratio > 1", s.neighbor.level_ratio));
+
+  check_drivers(s);
+}
+
+int SceneDef::material_index(const std::string& name) const {
+  for (std::size_t k = 0; k < materials.size(); ++k)
+    if (materials[k].name == name) return static_cast<int>(k);
+  return -1;
+}
+
+}  // namespace softpack

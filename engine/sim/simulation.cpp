@@ -1,0 +1,632 @@
+#include "sim/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "contact/contact_force.hpp"
+#include "contact/hertz_normal.hpp"
+#include "contact/viscous_damping.hpp"
+#include "core/error.hpp"
+#include "scene/validate.hpp"
+
+namespace softpack {
+
+double Measurement::force_ratio() const {
+  if (max_unbalanced_force == 0.0) return 0.0;
+  if (mean_contact_force == 0.0) return std::numeric_limits<double>::infinity();
+  return max_unbalanced_force / mean_contact_force;
+}
+
+double Measurement::energy_ratio() const {
+  if (kinetic_energy == 0.0) return 0.0;
+  if (elastic_energy == 0.0) return std::numeric_limits<double>::infinity();
+  return kinetic_energy / elastic_energy;
+}
+
+Simulation::Simulation(const SceneDef& scene) : scene_(scene) {
+  validate(scene_);
+  const EffectsDef& fx = scene_.effects;
+
+  nmat_ = scene_.materials.size();
+  D_.resize(nmat_ * nmat_);
+  Dt_.resize(nmat_ * nmat_);
+  mu_.resize(nmat_ * nmat_);
+  for (std::size_t a = 0; a < nmat_; ++a)
+    for (std::size_t b = 0; b < nmat_; ++b) {
+      D_[a * nmat_ + b] = hertz_D(scene_.materials[a], scene_.materials[b]);
+      Dt_[a * nmat_ + b] = tsuji_Dt(scene_.materials[a], scene_.materials[b]);
+      mu_[a * nmat_ + b] = contact_mu(scene_.materials[a], scene_.materials[b]);
+    }
+  if (fx.damping()) alpha_ = damping::alpha_from_restitution(*fx.restitution);
+
+  const std::size_t n = scene_.particles.size();
+  p_.x.resize(n);
+  p_.v.resize(n);
+  p_.F.assign(n, Vec3::Zero());
+  p_.r.resize(n);
+  p_.m.resize(n);
+  p_.inv_m.resize(n);
+  p_.body.resize(n);
+  p_.material.resize(n);
+  if (fx.rotation) {
+    p_.w.resize(n);
+    p_.T.assign(n, Vec3::Zero());
+    p_.inv_I.resize(n);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const ParticleDef& d = scene_.particles[i];
+    const double rho = scene_.materials[d.material].density;
+    p_.x[i] = d.x;
+    p_.v[i] = d.v;
+    p_.r[i] = d.r;
+    p_.m[i] = rho * 4.0 / 3.0 * std::numbers::pi * d.r * d.r * d.r;
+    p_.inv_m[i] = 1.0 / p_.m[i];
+    p_.body[i] = d.body;
+    p_.material[i] = d.material;
+    if (fx.rotation) {
+      p_.w[i] = d.w;
+      p_.inv_I[i] = 1.0 / (0.4 * p_.m[i] * d.r * d.r);  // solid sphere, I = 2/5 m r^2
+    }
+  }
+
+  for (const PlaneDef& d : scene_.planes)
+    planes_.push_back(PlaneWall{d.point, d.normal.normalized(), Vec3::Zero(), d.material});
+  for (const ShellDef& d : scene_.shells) {
+    shells_.push_back(SphericalShell{d.centre, d.radius, d.body, Vec3::Zero(), d.material, d.contact_radius});
+    std::vector<int> members;
+    for (std::size_t i = 0; i < n; ++i)
+      if (p_.body[i] == d.body) members.push_back(static_cast<int>(i));
+    shell_members_.push_back(std::move(members));
+  }
+  plane_loads_.resize(planes_.size());
+  shell_loads_.resize(shells_.size());
+  plane_lists_.resize(planes_.size());
+  shell_lists_.resize(shells_.size());
+
+  stable_ = softpack::stable_limit(scene_);
+  dt_ = choose_time_step(scene_);
+  double r_min = std::numeric_limits<double>::max();
+  for (double r : p_.r) r_min = std::min(r_min, r);
+  skin_ = scene_.neighbor.skin * r_min;
+
+  if (!scene_.drivers.empty()) p_.driven.assign(n, 0);
+  for (const DriverDef& d : scene_.drivers) {
+    drivers_.push_back(make_driver(d));
+  }
+
+  rebuild_neighbours();
+  compute_forces(0.0);  // F(t0); springs start unstretched
+}
+
+// ---------------------------------------------------------------------------------------------
+// Contact constants
+
+ContactCoefficients Simulation::coefficients(int i, int j) const {
+  const std::size_t mm = static_cast<std::size_t>(p_.material[i]) * nmat_ + p_.material[j];
+  const double R12 = hertz::reduced_radius(p_.r[i], p_.r[j]);
+  ContactCoefficients k;
+  k.kn = hertz::stiffness(R12, D_[mm]);
+  k.kt0 = tsuji::stiffness_factor(R12, Dt_[mm]);
+  k.mu = mu_[mm];
+  const double m12 = p_.m[i] * p_.m[j] / (p_.m[i] + p_.m[j]);
+  k.gamma0 = damping::gamma_factor(alpha_, m12, k.kn);
+  // Inertia of the sliding-rolling mode: 1/mt = 1/mi + ri^2/Ii + 1/mj + rj^2/Ij.
+  double inv_mt = p_.inv_m[i] + p_.inv_m[j];
+  if (p_.rotates()) inv_mt += p_.r[i] * p_.r[i] * p_.inv_I[i] + p_.r[j] * p_.r[j] * p_.inv_I[j];
+  k.gamma_t0 = scene_.effects.tangential_damping_ratio * damping::gamma_factor(alpha_, 1.0 / inv_mt, k.kt0);
+  return k;
+}
+
+ContactCoefficients Simulation::wall_coefficients(int i, int wall_material, double R12) const {
+  const std::size_t mm = static_cast<std::size_t>(p_.material[i]) * nmat_ + wall_material;
+  ContactCoefficients k;
+  k.kn = hertz::stiffness(R12, D_[mm]);
+  k.kt0 = tsuji::stiffness_factor(R12, Dt_[mm]);
+  k.mu = mu_[mm];
+  k.gamma0 = damping::gamma_factor(alpha_, p_.m[i], k.kn);  // a wall has infinite mass
+  double inv_mt = p_.inv_m[i];
+  if (p_.rotates()) inv_mt += p_.r[i] * p_.r[i] * p_.inv_I[i];
+  k.gamma_t0 = scene_.effects.tangential_damping_ratio * damping::gamma_factor(alpha_, 1.0 / inv_mt, k.kt0);
+  return k;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Drivers
+
+std::vector<int> Simulation::members_of(const GroupDef& g) const {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < p_.size(); ++i)
+    if (g.kind == GroupDef::Kind::all || p_.body[i] == g.body) out.push_back(static_cast<int>(i));
+  return out;
+}
+
+Simulation::ActiveDriver Simulation::make_driver(const DriverDef& def) {
+  ActiveDriver d;
+  d.def = def;
+  activate(d);
+  return d;
+}
+
+void Simulation::activate(ActiveDriver& d) {
+  std::visit(
+      [&](const auto& def) {
+        using D = std::decay_t<decltype(def)>;
+        if constexpr (std::is_same_v<D, MoveWallDef>) {
+          for (std::size_t k = 0; k < scene_.planes.size(); ++k)
+            if (scene_.planes[k].name == def.wall) d.plane = static_cast<int>(k);
+          for (std::size_t k = 0; k < scene_.shells.size(); ++k)
+            if (scene_.shells[k].name == def.wall) d.shell = static_cast<int>(k);
+        } else {
+          d.members = members_of(def.group);
+          for (int i : d.members) {
+            p_.driven[i] = 1;
+            p_.v[i].setZero();
+            if (p_.rotates()) p_.w[i].setZero();
+          }
+        }
+      },
+      d.def);
+}
+
+void Simulation::add_driver(const DriverDef& driver) {
+  SceneDef probe = scene_;
+  probe.drivers.clear();
+  for (const ActiveDriver& d : drivers_)
+    if (!d.retired) probe.drivers.push_back(d.def);
+  probe.drivers.push_back(driver);
+  validate(probe);
+  scene_.drivers.push_back(driver);
+  if (p_.driven.empty()) p_.driven.assign(p_.size(), 0);
+  drivers_.push_back(make_driver(driver));
+}
+
+void Simulation::release_drivers() {
+  for (ActiveDriver& d : drivers_) {
+    if (d.retired) continue;
+    d.retired = true;
+    if (d.plane >= 0) planes_[d.plane].velocity.setZero();
+    if (d.shell >= 0) shells_[d.shell].velocity.setZero();
+    for (int i : d.members) {
+      p_.driven[i] = 0;
+      p_.v[i].setZero();
+      if (p_.rotates()) p_.w[i].setZero();
+    }
+  }
+}
+
+bool Simulation::drivers_moving() const {
+  for (const ActiveDriver& d : drivers_)
+    if (!d.retired && !std::holds_alternative<HoldGroupDef>(d.def)) return true;
+  return false;
+}
+
+// Advances a driver's progress by one step of length `step` towards `total`; returns the
+// increment, which is shortened on the last step so the driver lands exactly on its target.
+double advance_progress(Simulation::ActiveDriverProgress& d, double step, double total) {
+  const double remaining = total - d.progress;
+  if (remaining <= step) {
+    d.progress = total;
+    d.reached = true;
+    return remaining;
+  }
+  d.progress += step;
+  return step;
+}
+
+// Moves kinematic spheres and walls by one step. Each driver advances by its rate times dt,
+// clipped so that it lands exactly on its target; the velocity it reports for this step is
+// the distance moved over dt.
+void Simulation::advance_drivers() {
+  for (ActiveDriver& d : drivers_) {
+    if (d.retired) continue;
+    std::visit(
+        [&](const auto& def) {
+          using D = std::decay_t<decltype(def)>;
+          if constexpr (std::is_same_v<D, MoveWallDef> || std::is_same_v<D, TranslateGroupDef>) {
+            const double speed = def.velocity.norm();
+            const Vec3 dir = def.velocity / speed;
+            const double total = def.distance ? *def.distance : *def.duration * speed;
+            const double ds = advance_progress(d, speed * dt_, total);
+            const Vec3 u = dir * (ds / dt_);
+            if constexpr (std::is_same_v<D, MoveWallDef>) {
+              if (d.plane >= 0) {
+                planes_[d.plane].point += dir * ds;
+                planes_[d.plane].velocity = u;
+              } else {
+                shells_[d.shell].centre += dir * ds;
+                shells_[d.shell].velocity = u;
+              }
+            } else {
+              for (int i : d.members) {
+                p_.x[i] += dir * ds;
+                p_.v[i] = u;
+              }
+            }
+          } else if constexpr (std::is_same_v<D, RotateGroupDef>) {
+            const double rate = std::abs(def.rate);
+            const double total = def.angle ? *def.angle : *def.duration * rate;
+            const double dtheta = advance_progress(d, rate * dt_, total);
+            // Exact rotation of the positions; the velocities are those velocity Verlet would
+            // give for this step: the chord velocity (x_new - x_old)/dt and the spin
+            // 2 tan(dtheta/2)/dt, for which the contact-point velocity of two spheres of the
+            // group vanishes exactly in the half-step frame, whatever the axis (the identity
+            // (R - 1) d = 2 tan(dtheta/2) axis x (R + 1) d / 2): the spring is carried unchanged.
+            const Vec3 axis = def.axis.normalized() * (def.rate > 0 ? 1.0 : -1.0);
+            const Eigen::Matrix3d R = Eigen::AngleAxisd(dtheta, axis).toRotationMatrix();
+            const Vec3 Omega = axis * (2.0 * std::tan(0.5 * dtheta) / dt_);
+            for (int i : d.members) {
+              const Vec3 x_new = def.centre + R * (p_.x[i] - def.centre);
+              p_.v[i] = (x_new - p_.x[i]) / dt_;
+              p_.x[i] = x_new;
+              if (p_.rotates()) p_.w[i] = Omega;
+            }
+          }
+          // HoldGroupDef: the spheres stay where they are, at rest.
+        },
+        d.def);
+    for (int i : d.members) max_disp2_ = std::max(max_disp2_, (p_.x[i] - x_at_build_[i]).squaredNorm());
+  }
+}
+
+// Drivers that reached their target stop: walls stand still, groups stop and are released
+// (free from the next step on) or held in place.
+void Simulation::finish_drivers() {
+  for (ActiveDriver& d : drivers_) {
+    if (d.retired || !d.reached) continue;
+    d.retired = true;
+    if (d.plane >= 0) planes_[d.plane].velocity.setZero();
+    if (d.shell >= 0) shells_[d.shell].velocity.setZero();
+    AfterDrive after = AfterDrive::release;
+    if (const auto* r = std::get_if<RotateGroupDef>(&d.def)) after = r->after;
+    if (const auto* t = std::get_if<TranslateGroupDef>(&d.def)) after = t->after;
+    for (int i : d.members) {
+      p_.v[i].setZero();
+      if (p_.rotates()) p_.w[i].setZero();
+      if (after == AfterDrive::release) p_.driven[i] = 0;
+    }
+    if (after == AfterDrive::hold) {
+      HoldGroupDef hold;
+      if (const auto* r = std::get_if<RotateGroupDef>(&d.def)) hold.group = r->group;
+      if (const auto* t = std::get_if<TranslateGroupDef>(&d.def)) hold.group = t->group;
+      d.def = hold;
+      d.retired = false;
+      d.reached = false;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Neighbour lists
+
+void Simulation::update_neighbours() {
+  // A pair's gap shrinks by at most the sum of both displacements since the last build, and a
+  // wall gap by the sphere's plus the wall's: rebuild before either can exceed the skin.
+  double wall_disp = 0.0;
+  for (std::size_t k = 0; k < planes_.size(); ++k)
+    wall_disp = std::max(wall_disp, (planes_[k].point - plane_at_build_[k]).norm());
+  for (std::size_t k = 0; k < shells_.size(); ++k)
+    wall_disp = std::max(wall_disp, (shells_[k].centre - shell_at_build_[k]).norm());
+  const double disp = std::sqrt(max_disp2_);
+  if (rebuild_requested_ || 2.0 * disp >= skin_ || disp + wall_disp >= skin_) rebuild_neighbours();
+}
+
+void Simulation::rebuild_neighbours() {
+  const bool friction = scene_.effects.friction;
+  const std::size_t n = p_.size();
+  if (scene_.effects.normal) {
+    grid_.build(p_.x, p_.r, skin_, scene_.neighbor.level_ratio);
+    std::vector<std::uint64_t> keys;
+    keys.reserve(pairs_.pairs.size() + n);
+    grid_.for_each_pair([&](int i, int j) {
+      const auto [a, b] = std::minmax(i, j);
+      keys.push_back((static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b));
+    });
+    std::sort(keys.begin(), keys.end());
+    std::vector<PairEntry> fresh(keys.size());
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      const int i = static_cast<int>(keys[k] >> 32), j = static_cast<int>(keys[k] & 0xffffffffu);
+      fresh[k] = PairEntry{i, j, p_.r[i] + p_.r[j], coefficients(i, j)};
+    }
+    pairs_.replace(std::move(fresh), friction);
+
+    for (std::size_t w = 0; w < planes_.size(); ++w) {
+      std::vector<WallEntry> list;
+      for (std::size_t i = 0; i < n; ++i)
+        if (planes_[w].distance(p_.x[i]) - p_.r[i] < skin_)
+          list.push_back({static_cast<int>(i), wall_coefficients(static_cast<int>(i), planes_[w].material, p_.r[i])});
+      plane_lists_[w].replace(std::move(list), friction);
+    }
+    for (std::size_t w = 0; w < shells_.size(); ++w) {
+      const SphericalShell& s = shells_[w];
+      std::vector<WallEntry> list;
+      for (int i : shell_members_[w]) {
+        if (s.radius - (p_.x[i] - s.centre).norm() - p_.r[i] >= skin_) continue;
+        const double R12 = s.contact_radius == ShellContactRadius::concave
+                               ? hertz::reduced_radius_concave(p_.r[i], s.radius)
+                               : p_.r[i];
+        list.push_back({i, wall_coefficients(i, s.material, R12)});
+      }
+      shell_lists_[w].replace(std::move(list), friction);
+    }
+  }
+  x_at_build_ = p_.x;
+  plane_at_build_.clear();
+  for (const auto& pl : planes_) plane_at_build_.push_back(pl.point);
+  shell_at_build_.clear();
+  for (const auto& s : shells_) shell_at_build_.push_back(s.centre);
+  max_disp2_ = 0.0;
+  rebuild_requested_ = false;
+  ++rebuilds_;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Forces
+
+void Simulation::compute_forces(double spring_dt) {
+  const EffectsDef& fx = scene_.effects;
+  const bool sync = scene_.integration.history_update == HistoryUpdate::synchronized;
+  const int key = (fx.friction ? 8 : 0) | (sync ? 4 : 0) | (fx.damping() ? 2 : 0) | (fx.rotation ? 1 : 0);
+  switch (key & (fx.friction ? 15 : 3)) {  // the history update only matters with friction
+    case 0: compute_forces_for<false, false, false, false>(spring_dt); break;
+    case 2: compute_forces_for<false, true, false, false>(spring_dt); break;
+    case 8: compute_forces_for<true, false, false, false>(spring_dt); break;
+    case 9: compute_forces_for<true, false, true, false>(spring_dt); break;
+    case 10: compute_forces_for<true, true, false, false>(spring_dt); break;
+    case 11: compute_forces_for<true, true, true, false>(spring_dt); break;
+    case 12: compute_forces_for<true, false, false, true>(spring_dt); break;
+    case 13: compute_forces_for<true, false, true, true>(spring_dt); break;
+    case 14: compute_forces_for<true, true, false, true>(spring_dt); break;
+    case 15: compute_forces_for<true, true, true, true>(spring_dt); break;
+    default: throw std::logic_error("rotation without friction is rejected by validate()");
+  }
+}
+
+template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
+void Simulation::compute_forces_for(double spring_dt) {
+  const std::size_t n = p_.size();
+  const EffectsDef& fx = scene_.effects;
+  if (fx.gravity) {
+    const Vec3 g = *fx.gravity;
+    for (std::size_t i = 0; i < n; ++i) p_.F[i] = p_.m[i] * g;
+  } else {
+    std::fill(p_.F.begin(), p_.F.end(), Vec3::Zero());
+  }
+  if constexpr (Rotation) std::fill(p_.T.begin(), p_.T.end(), Vec3::Zero());
+  for (auto& l : plane_loads_) l = WallLoad{};
+  for (auto& l : shell_loads_) l = WallLoad{};
+  if (!fx.normal) return;
+
+  const Vec3* const x = p_.x.data();
+  const double* const r = p_.r.data();
+  // Velocities are the half-step velocities v(t + dt/2) of velocity Verlet.
+  const Vec3* const v = p_.v.data();
+  const Vec3* w = nullptr;
+  if constexpr (Rotation) w = p_.w.data();
+  const double half_dt = 0.5 * spring_dt;
+  Vec3* const F = p_.F.data();
+  Vec3* const T = Rotation ? p_.T.data() : nullptr;
+  Vec3 no_spring = Vec3::Zero();
+
+  // Sphere-sphere contacts: n points from j to i.
+  const std::size_t npairs = pairs_.pairs.size();
+  for (std::size_t k = 0; k < npairs; ++k) {
+    const PairEntry& e = pairs_.pairs[k];
+    const int i = e.i, j = e.j;
+    const Vec3 d = x[i] - x[j];
+    const double d2 = d.squaredNorm();
+    if (d2 >= e.r_sum * e.r_sum) {
+      if constexpr (Friction) pairs_.spring[k].setZero();  // contact open: spring cleared
+      continue;
+    }
+    const double dist = std::sqrt(d2);
+    const Vec3 nrm = d / dist;
+    const double h = e.r_sum - dist;
+    Vec3 vc = v[i] - v[j];
+    double ai = 0.0, aj = 0.0;
+    if constexpr (Rotation) {
+      ai = r[i] - 0.5 * h;  // branch lengths to the contact point
+      aj = r[j] - 0.5 * h;
+      vc -= (ai * w[i] + aj * w[j]).cross(nrm);
+    }
+    Vec3& spring = Friction ? pairs_.spring[k] : no_spring;
+    if constexpr (Friction) {
+      if constexpr (Synchronized) {
+        // The contact at t + dt/2, where the velocities live: normal and branch lengths.
+        const Vec3 d_half = d - half_dt * (v[i] - v[j]);
+        const double dist_half = d_half.norm();
+        const Vec3 n_half = d_half / dist_half;
+        Vec3 vc_half = v[i] - v[j];
+        if constexpr (Rotation) {
+          const double h_half = e.r_sum - dist_half;
+          vc_half -= ((r[i] - 0.5 * h_half) * w[i] + (r[j] - 0.5 * h_half) * w[j]).cross(n_half);
+        }
+        advance_spring(spring, n_half, vc_half, nrm, spring_dt);
+      } else {
+        advance_spring(spring, nrm, vc, nrm, spring_dt);
+      }
+    }
+    const ContactForce cf = contact_force<Friction, Damping>(nrm, h, vc, e.k, spring);
+    F[i] += cf.F;
+    F[j] -= cf.F;
+    if constexpr (Rotation) {
+      const Vec3 nxFt = nrm.cross(cf.Ft);
+      T[i] -= ai * nxFt;
+      T[j] -= aj * nxFt;
+    }
+  }
+
+  // Sphere-wall contacts: body 1 is the sphere, body 2 the wall.
+  // `n_half` and `h_half` are the contact normal and overlap at t + dt/2.
+  const auto wall_contact = [&](WallList& list, std::size_t k, int i, const Vec3& nrm, double h, const Vec3& n_half,
+                                double h_half, const Vec3& wall_velocity, const Vec3& ref, WallLoad& load) {
+    Vec3 vc = v[i] - wall_velocity;
+    const double ai = r[i] - 0.5 * h;
+    if constexpr (Rotation) vc -= (ai * w[i]).cross(nrm);
+    Vec3& spring = Friction ? list.spring[k] : no_spring;
+    if constexpr (Friction) {
+      if constexpr (Synchronized) {
+        Vec3 vc_half = v[i] - wall_velocity;
+        if constexpr (Rotation) vc_half -= ((r[i] - 0.5 * h_half) * w[i]).cross(n_half);
+        advance_spring(spring, n_half, vc_half, nrm, spring_dt);
+      } else {
+        advance_spring(spring, nrm, vc, nrm, spring_dt);
+      }
+    }
+    const ContactForce cf = contact_force<Friction, Damping>(nrm, h, vc, list.entries[k].k, spring);
+    F[i] += cf.F;
+    if constexpr (Rotation) T[i] -= ai * nrm.cross(cf.Ft);
+    load.force -= cf.F;
+    load.torque += (x[i] - ai * nrm - ref).cross(-cf.F);
+  };
+  for (std::size_t w_ = 0; w_ < planes_.size(); ++w_) {
+    const PlaneWall& pl = planes_[w_];
+    WallList& list = plane_lists_[w_];
+    for (std::size_t k = 0; k < list.entries.size(); ++k) {
+      const int i = list.entries[k].i;
+      const double h = pl.overlap(x[i], r[i]);
+      if (h <= 0.0) {
+        if constexpr (Friction) list.spring[k].setZero();
+        continue;
+      }
+      const double h_half = h + half_dt * (v[i] - pl.velocity).dot(pl.normal);
+      wall_contact(list, k, i, pl.normal, h, pl.normal, h_half, pl.velocity, pl.point, plane_loads_[w_]);
+    }
+  }
+  for (std::size_t w_ = 0; w_ < shells_.size(); ++w_) {
+    const SphericalShell& s = shells_[w_];
+    WallList& list = shell_lists_[w_];
+    for (std::size_t k = 0; k < list.entries.size(); ++k) {
+      const int i = list.entries[k].i;
+      const Vec3 d = x[i] - s.centre;
+      const double dist = d.norm();
+      const double h = dist + r[i] - s.radius;
+      if (h <= 0.0) {
+        if constexpr (Friction) list.spring[k].setZero();
+        continue;
+      }
+      const Vec3 nrm = -d / dist;  // pushes inward
+      Vec3 n_half = nrm;
+      double h_half = h;
+      if constexpr (Friction && Synchronized) {
+        const Vec3 d_half = d - half_dt * (v[i] - s.velocity);
+        const double dist_half = d_half.norm();
+        n_half = -d_half / dist_half;
+        h_half = dist_half + r[i] - s.radius;
+      }
+      wall_contact(list, k, i, nrm, h, n_half, h_half, s.velocity, s.centre, shell_loads_[w_]);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Integration
+
+void Simulation::kick_and_drift() {
+  const std::size_t n = p_.size();
+  const double half = 0.5 * dt_;
+  double max_disp2 = max_disp2_;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p_.is_driven(i)) continue;
+    p_.v[i] += half * p_.inv_m[i] * p_.F[i];
+    p_.x[i] += dt_ * p_.v[i];
+    max_disp2 = std::max(max_disp2, (p_.x[i] - x_at_build_[i]).squaredNorm());
+  }
+  max_disp2_ = max_disp2;
+  if (p_.rotates())
+    for (std::size_t i = 0; i < n; ++i)
+      if (!p_.is_driven(i)) p_.w[i] += half * p_.inv_I[i] * p_.T[i];
+}
+
+void Simulation::kick() {
+  const std::size_t n = p_.size();
+  const double half = 0.5 * dt_;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!p_.is_driven(i)) p_.v[i] += half * p_.inv_m[i] * p_.F[i];
+  if (p_.rotates())
+    for (std::size_t i = 0; i < n; ++i)
+      if (!p_.is_driven(i)) p_.w[i] += half * p_.inv_I[i] * p_.T[i];
+}
+
+void Simulation::step() {
+  kick_and_drift();
+  if (!drivers_.empty()) advance_drivers();
+  update_neighbours();
+  compute_forces(dt_);
+  kick();
+  if (!drivers_.empty()) finish_drivers();
+  time_ += dt_;
+  ++steps_;
+}
+
+void Simulation::run_steps(long n) {
+  for (long s = 0; s < n; ++s) step();
+}
+
+long Simulation::steps_for(double duration) const {
+  return std::max(1L, std::lround(duration / dt_));
+}
+
+void Simulation::run_for(double duration) { run_steps(steps_for(duration)); }
+
+void Simulation::zero_velocities() {
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (p_.is_driven(i)) continue;
+    p_.v[i].setZero();
+    if (p_.rotates()) p_.w[i].setZero();
+  }
+}
+
+const WallLoad& Simulation::wall_load(const std::string& name) const {
+  for (std::size_t k = 0; k < scene_.planes.size(); ++k)
+    if (scene_.planes[k].name == name) return plane_loads_[k];
+  for (std::size_t k = 0; k < scene_.shells.size(); ++k)
+    if (scene_.shells[k].name == name) return shell_loads_[k];
+  throw InputError(fmt::format("no plane or shell is named '{}'", name));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Residuals
+
+Measurement Simulation::measure() const {
+  Measurement m;
+  double sum_Fn = 0.0;
+  const auto add_contact = [&](const ContactCoefficients& k, double h, const Vec3* spring) {
+    m.elastic_energy += hertz::energy(k.kn, h);
+    if (spring) m.elastic_energy += tsuji::energy(k.kt0 * std::sqrt(h), *spring);
+    sum_Fn += hertz::force(k.kn, h);
+    ++m.contacts;
+  };
+  const bool friction = scene_.effects.friction;
+  for (std::size_t k = 0; k < pairs_.pairs.size(); ++k) {
+    const PairEntry& e = pairs_.pairs[k];
+    const double h = e.r_sum - (p_.x[e.i] - p_.x[e.j]).norm();
+    if (h > 0.0) add_contact(e.k, h, friction ? &pairs_.spring[k] : nullptr);
+  }
+  for (std::size_t w = 0; w < planes_.size(); ++w)
+    for (std::size_t k = 0; k < plane_lists_[w].entries.size(); ++k) {
+      const WallEntry& e = plane_lists_[w].entries[k];
+      const double h = planes_[w].overlap(p_.x[e.i], p_.r[e.i]);
+      if (h > 0.0) add_contact(e.k, h, friction ? &plane_lists_[w].spring[k] : nullptr);
+    }
+  for (std::size_t w = 0; w < shells_.size(); ++w)
+    for (std::size_t k = 0; k < shell_lists_[w].entries.size(); ++k) {
+      const WallEntry& e = shell_lists_[w].entries[k];
+      const double h = shells_[w].overlap(p_.x[e.i], p_.r[e.i]);
+      if (h > 0.0) add_contact(e.k, h, friction ? &shell_lists_[w].spring[k] : nullptr);
+    }
+  m.mean_contact_force = m.contacts ? sum_Fn / static_cast<double>(m.contacts) : 0.0;
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (p_.is_driven(i)) continue;
+    m.kinetic_energy += 0.5 * p_.m[i] * p_.v[i].squaredNorm();
+    if (p_.rotates()) m.kinetic_energy += 0.5 * p_.w[i].squaredNorm() / p_.inv_I[i];
+    m.max_unbalanced_force = std::max(m.max_unbalanced_force, p_.F[i].norm());
+  }
+  return m;
+}
+
+}  // namespace softpack

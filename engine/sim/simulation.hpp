@@ -1,0 +1,145 @@
+// The simulation: owns the spheres, walls, contact lists and drivers of one scene and advances
+// them with velocity Verlet. One step runs these phases, one function each:
+//
+//   kick_and_drift      v += a dt/2, x += v dt (free spheres; angular likewise)
+//   advance_drivers     kinematic spheres and walls to their prescribed state at t + dt
+//   update_neighbours   rebuild the Verlet lists when the skin is used up
+//   compute_forces      contact laws (contact/contact_force.hpp), gravity, wall loads
+//   kick                v += a dt/2
+//
+// Only the declared effects run (scene/scene_def.hpp): the force loop is compiled for each
+// combination of friction, damping and rotation, and state of undeclared effects is never
+// allocated.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/material.hpp"
+#include "core/particles.hpp"
+#include "integrate/time_step.hpp"
+#include "neighbor/contact_list.hpp"
+#include "neighbor/hierarchical_grid.hpp"
+#include "scene/scene_def.hpp"
+#include "walls/plane_wall.hpp"
+#include "walls/spherical_shell.hpp"
+
+namespace softpack {
+
+/// Force and torque a wall receives from the spheres; the torque is about the wall's
+/// reference point (the plane's point, the shell's centre).
+struct WallLoad {
+  Vec3 force = Vec3::Zero();
+  Vec3 torque = Vec3::Zero();
+};
+
+/// Residuals of the current state, used by the relaxation protocols.
+struct Measurement {
+  double kinetic_energy = 0.0;        ///< free spheres, translation + rotation [J]
+  double elastic_energy = 0.0;        ///< Hertz + tangential springs [J]
+  double max_unbalanced_force = 0.0;  ///< largest |net force| on a free sphere [N]
+  double mean_contact_force = 0.0;    ///< mean Hertz force over closed contacts [N]
+  std::size_t contacts = 0;           ///< closed contacts (sphere-sphere and sphere-wall)
+  /// max unbalanced force / mean contact force (0 for a state with no force at all).
+  double force_ratio() const;
+  /// kinetic energy / elastic energy (0 when both vanish).
+  double energy_ratio() const;
+};
+
+class Simulation {
+ public:
+  /// Validates the scene (InputError naming the key on failure) and computes the initial forces.
+  explicit Simulation(const SceneDef& scene);
+
+  void step();
+  void run_steps(long n);
+  /// Number of steps that make up `duration` (rounded, at least 1).
+  long steps_for(double duration) const;
+  void run_for(double duration);
+  /// Sets every free sphere's translational and angular velocity to zero.
+  void zero_velocities();
+  /// Starts a driver now (validated like the scene's drivers).
+  void add_driver(const DriverDef& driver);
+  /// Stops every driver now: walls stand still, driven spheres stop and become free.
+  void release_drivers();
+  /// True while a driver with a target (distance, angle, duration) has not reached it.
+  bool drivers_moving() const;
+  Measurement measure() const;
+
+  double dt() const { return dt_; }
+  double time() const { return time_; }
+  long step_count() const { return steps_; }
+  const StableLimit& stable_limit() const { return stable_; }
+  const SceneDef& scene() const { return scene_; }
+  const Particles& particles() const { return p_; }
+  const std::vector<PlaneWall>& planes() const { return planes_; }
+  const std::vector<SphericalShell>& shells() const { return shells_; }
+  const std::vector<WallLoad>& plane_loads() const { return plane_loads_; }
+  const std::vector<WallLoad>& shell_loads() const { return shell_loads_; }
+  /// Load on the plane or shell of that name; throws InputError if there is none.
+  const WallLoad& wall_load(const std::string& name) const;
+  const PairList& pair_list() const { return pairs_; }
+  const std::vector<WallList>& plane_lists() const { return plane_lists_; }
+  const std::vector<WallList>& shell_lists() const { return shell_lists_; }
+  long neighbour_rebuilds() const { return rebuilds_; }
+
+  /// How far a driver has gone: distance [m] or angle [rad] along its path.
+  struct ActiveDriverProgress {
+    double progress = 0.0;
+    bool reached = false;  ///< target reached during the current step
+  };
+
+ private:
+  struct ActiveDriver : ActiveDriverProgress {
+    DriverDef def;
+    std::vector<int> members;  ///< driven spheres (group drivers)
+    int plane = -1, shell = -1;
+    bool retired = false;
+  };
+
+  void kick_and_drift();
+  void advance_drivers();
+  void finish_drivers();
+  void update_neighbours();
+  void rebuild_neighbours();
+  void compute_forces(double spring_dt);
+  template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
+  void compute_forces_for(double spring_dt);
+  void kick();
+
+  ContactCoefficients coefficients(int i, int j) const;
+  ContactCoefficients wall_coefficients(int i, int wall_material, double R12) const;
+  std::vector<int> members_of(const GroupDef& g) const;
+  void activate(ActiveDriver& d);
+  ActiveDriver make_driver(const DriverDef& def);
+
+  SceneDef scene_;
+  Particles p_;
+  std::vector<PlaneWall> planes_;
+  std::vector<SphericalShell> shells_;
+  std::vector<WallLoad> plane_loads_, shell_loads_;
+  std::vector<std::vector<int>> shell_members_;
+
+  // Material pair constants, index a * nmat + b.
+  std::size_t nmat_ = 0;
+  std::vector<double> D_, Dt_, mu_;
+  double alpha_ = 0.0;  ///< damping coefficient alpha(e)
+
+  double dt_ = 0.0, time_ = 0.0;
+  long steps_ = 0;
+  StableLimit stable_;
+
+  // Neighbour lists.
+  HierarchicalGrid grid_;
+  double skin_ = 0.0;  ///< [m]
+  PairList pairs_;
+  std::vector<WallList> plane_lists_, shell_lists_;
+  std::vector<Vec3> x_at_build_, plane_at_build_, shell_at_build_;
+  double max_disp2_ = 0.0;
+  bool rebuild_requested_ = true;
+  long rebuilds_ = 0;
+
+  std::vector<ActiveDriver> drivers_;
+};
+
+}  // namespace softpack

@@ -1,0 +1,112 @@
+#include "support/scenes.hpp"
+
+#include "relax/relaxation.hpp"
+#include "sim/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+
+namespace softpack::testing {
+
+Material paper_grain() { return Material{"grain", 5.0e5, 0.3, 0.3, 2500.0}; }
+Material stiff_grain() { return Material{"stiff", 2.0e6, 0.25, 0.5, 7800.0}; }
+
+SceneDef basic_scene() {
+  SceneDef s;
+  s.materials = {paper_grain()};
+  s.effects.normal = true;
+  s.integration.safety = 0.2;
+  s.neighbor = NeighborDef{0.2, 2.0};
+  return s;
+}
+
+std::uint64_t Random::bits() {
+  std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+double Random::uniform() { return static_cast<double>(bits() >> 11) * 0x1.0p-53; }
+double Random::uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+Vec3 Random::in_box(double half) { return {uniform(-half, half), uniform(-half, half), uniform(-half, half)}; }
+
+Vec3 Random::in_ball(double R) {
+  for (;;) {
+    const Vec3 p = in_box(R);
+    if (p.squaredNorm() < R * R) return p;
+  }
+}
+
+double power_law_radius(Random& rng, double r_min, double r_max, double b) {
+  // CDF(r) = (r_min^(1-b) - r^(1-b)) / (r_min^(1-b) - r_max^(1-b)), inverted.
+  const double a = std::pow(r_min, 1.0 - b), c = std::pow(r_max, 1.0 - b);
+  return std::pow(a - rng.uniform() * (a - c), 1.0 / (1.0 - b));
+}
+
+std::vector<ParticleDef> random_cloud(Random& rng, int n, double half, double r_min, double r_max, double b) {
+  std::vector<ParticleDef> out(n);
+  for (auto& p : out) {
+    p.r = r_min == r_max ? r_min : power_law_radius(rng, r_min, r_max, b);
+    p.x = rng.in_box(half);
+  }
+  return out;
+}
+
+std::vector<ParticleDef> random_spheres_in_shell(Random& rng, int n, double Rs, double r_min, double r_max,
+                                                 double b, int trials, int body) {
+  // Oversample radii, sort descending, insert largest first (brute force is fine at test sizes
+  // of a few thousand when checked against a coarse bucket of already placed spheres).
+  std::vector<double> radii;
+  for (int k = 0; k < 4 * n; ++k) radii.push_back(power_law_radius(rng, r_min, r_max, b));
+  std::sort(radii.rbegin(), radii.rend());
+  std::vector<ParticleDef> placed;
+  for (double r : radii) {
+    if (static_cast<int>(placed.size()) == n) break;
+    for (int t = 0; t < trials; ++t) {
+      const Vec3 x = rng.in_ball(Rs - r);
+      bool free = true;
+      for (const auto& q : placed)
+        if ((q.x - x).squaredNorm() < (q.r + r) * (q.r + r)) {
+          free = false;
+          break;
+        }
+      if (free) {
+        ParticleDef p;
+        p.x = x;
+        p.r = r;
+        p.body = body;
+        placed.push_back(p);
+        break;
+      }
+    }
+  }
+  return placed;
+}
+
+double solid_fraction(const std::vector<ParticleDef>& particles, double R) {
+  double v = 0.0;
+  for (const auto& p : particles) v += std::pow(p.r, 3);
+  return v / std::pow(R, 3);
+}
+
+void compress(SceneDef& scene, double R, double fraction, double growth) {
+  SceneDef s = scene;
+  if (!s.effects.damping()) s.effects.restitution = 0.3;
+  for (double phi = solid_fraction(s.particles, R); phi < fraction * (1.0 - 1e-9); phi = solid_fraction(s.particles, R)) {
+    const double factor = std::min(1.0 + growth, std::cbrt(fraction / phi));
+    for (auto& p : s.particles) p.r *= factor;
+    Simulation sim(s);
+    relax(sim, PaperRelaxationDef{3, 0.01, 0.01});
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+      s.particles[i].x = sim.particles().x[i];
+      s.particles[i].v = Vec3::Zero();
+      s.particles[i].w = Vec3::Zero();
+    }
+  }
+  for (std::size_t i = 0; i < s.particles.size(); ++i) scene.particles[i] = s.particles[i];
+}
+
+}  // namespace softpack::testing

@@ -1,0 +1,53 @@
+// Building blocks for test scenes: materials, deterministic random numbers, sphere clouds.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "scene/scene_def.hpp"
+
+namespace softpack::testing {
+
+/// The paper's grain: E = 5e5 Pa, nu = 0.3, mu = 0.3; density 2500 kg/m^3 (our choice).
+Material paper_grain();
+/// A second, stiffer material for two-material checks.
+Material stiff_grain();
+
+/// A scene with one material (the paper's grain), Hertz normal law, no other effect, the
+/// time step at 0.2 of the Rayleigh limit and a neighbour skin of 0.2 r_min.
+SceneDef basic_scene();
+
+/// Deterministic uniform variates from SplitMix64 bits (identical on every platform).
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t bits();
+  double uniform();                      ///< [0, 1)
+  double uniform(double lo, double hi);  ///< [lo, hi)
+  Vec3 in_box(double half);              ///< uniform in [-half, half)^3
+  Vec3 in_ball(double R);                ///< uniform in the ball of radius R
+
+ private:
+  std::uint64_t state_;
+};
+
+/// Radius from the truncated power law P(r) ~ r^-b on [r_min, r_max] (inverse CDF).
+double power_law_radius(Random& rng, double r_min, double r_max, double b);
+
+/// n spheres at uniform positions in a cube of half-width `half`, overlaps allowed.
+std::vector<ParticleDef> random_cloud(Random& rng, int n, double half, double r_min, double r_max, double b);
+
+/// Random sequential addition into a shell: radii from the power law, largest first, each
+/// given `trials` random positions without overlap; stops after `n` spheres are placed.
+/// (A test fixture only; the packing generator proper is softpack-pack.)
+std::vector<ParticleDef> random_spheres_in_shell(Random& rng, int n, double Rs, double r_min, double r_max,
+                                                 double b, int trials, int body);
+
+/// Grows the radii of a packing confined by `scene`'s walls in steps of `growth` (relative),
+/// relaxing with damping after each step, until the solid fraction of the spheres within the
+/// ball of radius `R` reaches `fraction`: a compressed, jammed packing with real overlaps.
+void compress(SceneDef& scene, double R, double fraction, double growth);
+
+/// Solid fraction of spheres in a ball of radius R (spheres counted whole).
+double solid_fraction(const std::vector<ParticleDef>& particles, double R);
+
+}  // namespace softpack::testing
