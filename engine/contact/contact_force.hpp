@@ -35,7 +35,7 @@ struct ContactForce {
 /// tangential part of the contact-point velocity `vc_frame` times dt, then rotated into the
 /// plane of the current normal `n` (a no-op when the frames coincide, as with the `standard`
 /// history update; see scene/scene_def.hpp HistoryUpdate).
-inline void advance_spring(Vec3& xi, const Vec3& n_frame, const Vec3& vc_frame, const Vec3& n, double dt) {
+[[gnu::always_inline]] inline void advance_spring(Vec3& xi, const Vec3& n_frame, const Vec3& vc_frame, const Vec3& n, double dt) {
   tsuji::rotate_into_tangent_plane(xi, n_frame);
   xi += (vc_frame - vc_frame.dot(n_frame) * n_frame) * dt;
   tsuji::rotate_into_tangent_plane(xi, n);
@@ -44,7 +44,7 @@ inline void advance_spring(Vec3& xi, const Vec3& n_frame, const Vec3& vc_frame, 
 /// Force on body 1 of a closed contact. `xi` is the contact's tangential spring, already
 /// advanced to this step (advance_spring); it is shortened here when the contact slides.
 template <bool Friction, bool Damping>
-inline ContactForce contact_force(const Vec3& n, double h, const Vec3& vc, const ContactCoefficients& k, Vec3& xi) {
+[[gnu::always_inline]] inline ContactForce contact_force(const Vec3& n, double h, const Vec3& vc, const ContactCoefficients& k, Vec3& xi) {
   const double sqrt_h = std::sqrt(h);
   const double Fn = k.kn * h * sqrt_h;  // Eq. 3
   const double vn = vc.dot(n);

@@ -24,10 +24,12 @@ void HierarchicalGrid::build(std::span<const Vec3> x, std::span<const double> r,
 
   double r_min = std::numeric_limits<double>::max(), r_max = 0.0;
   origin_ = Vec3::Constant(std::numeric_limits<double>::max());
+  Vec3 x_max = Vec3::Constant(std::numeric_limits<double>::lowest());
   for (std::size_t i = 0; i < n; ++i) {
     r_min = std::min(r_min, r[i]);
     r_max = std::max(r_max, r[i]);
     origin_ = origin_.cwiseMin(x[i] - Vec3::Constant(r[i]));
+    x_max = x_max.cwiseMax(x[i] + Vec3::Constant(r[i]));
   }
   // Level cell sizes: c_0 = 2 r_min + skin, growing by level_ratio up to 2 r_max + skin.
   std::vector<double> cells{2.0 * r_min + skin};
@@ -48,14 +50,19 @@ void HierarchicalGrid::build(std::span<const Vec3> x, std::span<const double> r,
   }
   for (Level& L : levels_) {
     const std::uint64_t buckets = std::bit_ceil(std::max<std::uint64_t>(16, 2 * L.population));
-    L.mask = buckets - 1;
+    L.shift = 64 - std::countr_zero(buckets);
     L.head.assign(L.population ? buckets : 0, -1);
   }
+  // 21-bit cell coordinates: the domain may span at most 2^21 cells of the finest level.
+  const Vec3 extent = (x_max - origin_);
+  if (extent.maxCoeff() * levels_[0].inv_cell >= static_cast<double>(kMaxCoordinate))
+    throw std::invalid_argument("HierarchicalGrid: the domain spans more than 2^21 of the smallest cells");
   // Insert in reverse so each bucket's chain lists spheres in increasing index order.
   for (std::size_t k = n; k-- > 0;) {
     Level& L = levels_[level_of_[k]];
-    cell_[k] = cell_of(x[k], L);
-    auto& head = L.head[hash(cell_[k]) & L.mask];
+    const Cell c = cell_of(x[k], L);
+    cell_[k] = pack(c[0], c[1], c[2]);
+    auto& head = L.head[bucket(cell_[k], L)];
     next_[k] = head;
     head = static_cast<int>(k);
   }

@@ -12,6 +12,7 @@
 //
 // The grid reports every pair whose gap is below `skin`: |xi - xj| < ri + rj + skin.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -37,25 +38,34 @@ class HierarchicalGrid {
   double level_cell_size(std::size_t l) const { return levels_[l].cell; }
 
  private:
+  // A cell is identified by its integer coordinates on its level, packed 21 bits each into
+  // one 64-bit key (coordinates count from the domain's lower corner, so they are >= 0).
   using Cell = std::array<std::int64_t, 3>;
+  using Key = std::uint64_t;
+  static constexpr int kBits = 21;
+  static constexpr std::int64_t kMaxCoordinate = (std::int64_t{1} << kBits) - 1;
+
   struct Level {
     double cell = 0.0, inv_cell = 0.0;
     double r_max = 0.0;  ///< largest radius stored on this level
-    std::uint64_t mask = 0;
+    int shift = 64;         ///< 64 - log2(bucket count)
     std::vector<int> head;  ///< first sphere of each hash bucket, -1 if empty
     std::size_t population = 0;
   };
 
-  static std::uint64_t hash(const Cell& c) {
-    std::uint64_t h = static_cast<std::uint64_t>(c[0]) * 0x9E3779B97F4A7C15ull ^
-                      static_cast<std::uint64_t>(c[1]) * 0xC2B2AE3D27D4EB4Full ^
-                      static_cast<std::uint64_t>(c[2]) * 0x165667B19E3779F9ull;
-    return h ^ (h >> 29);
+  static Key pack(std::int64_t cx, std::int64_t cy, std::int64_t cz) {
+    return (static_cast<Key>(cx) << (2 * kBits)) | (static_cast<Key>(cy) << kBits) | static_cast<Key>(cz);
+  }
+  /// Fibonacci hashing: the high bits of k * 2^64/phi depend on every bit of the key.
+  static std::size_t bucket(Key k, const Level& L) {
+    return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> L.shift);
+  }
+  std::int64_t coordinate(double x, double origin, const Level& L) const {
+    const auto c = static_cast<std::int64_t>(std::floor((x - origin) * L.inv_cell));
+    return std::clamp<std::int64_t>(c, 0, kMaxCoordinate);
   }
   Cell cell_of(const Vec3& x, const Level& L) const {
-    return {static_cast<std::int64_t>(std::floor((x.x() - origin_.x()) * L.inv_cell)),
-            static_cast<std::int64_t>(std::floor((x.y() - origin_.y()) * L.inv_cell)),
-            static_cast<std::int64_t>(std::floor((x.z() - origin_.z()) * L.inv_cell))};
+    return {coordinate(x.x(), origin_.x(), L), coordinate(x.y(), origin_.y(), L), coordinate(x.z(), origin_.z(), L)};
   }
 
   std::span<const Vec3> x_;
@@ -64,7 +74,7 @@ class HierarchicalGrid {
   Vec3 origin_ = Vec3::Zero();
   std::vector<Level> levels_;
   std::vector<int> level_of_;  ///< level of each sphere
-  std::vector<Cell> cell_;     ///< cell of each sphere on its own level
+  std::vector<Key> cell_;      ///< cell of each sphere on its own level
   std::vector<int> next_;      ///< next sphere in the same hash bucket, -1 at the end
 };
 
@@ -93,14 +103,17 @@ void HierarchicalGrid::for_each_pair(F&& f) const {
   for (int i = 0; i < n; ++i) {
     const int li = level_of_[i];
     const Level& L = levels_[li];
-    const Cell& ci = cell_[i];
+    const Cell ci = cell_of(x_[i], L);
+    const Key own = cell_[i];
     // Same level, own cell.
-    for (int j = L.head[hash(ci) & L.mask]; j != -1; j = next_[j])
-      if (j > i && cell_[j] == ci) test(i, j);
-    // Same level, forward neighbours.
+    for (int j = L.head[bucket(own, L)]; j != -1; j = next_[j])
+      if (j > i && cell_[j] == own) test(i, j);
+    // Same level, forward neighbours (coordinates are >= 0; a stencil cell at -1 is empty).
     for (const auto& o : kHalfStencil) {
-      const Cell c{ci[0] + o[0], ci[1] + o[1], ci[2] + o[2]};
-      for (int j = L.head[hash(c) & L.mask]; j != -1; j = next_[j])
+      const std::int64_t cx = ci[0] + o[0], cy = ci[1] + o[1], cz = ci[2] + o[2];
+      if (cx < 0 || cy < 0 || cz < 0) continue;
+      const Key c = pack(cx, cy, cz);
+      for (int j = L.head[bucket(c, L)]; j != -1; j = next_[j])
         if (cell_[j] == c) test(i, j);
     }
     // Coarser levels: the cells touched by this sphere's search box.
@@ -110,12 +123,13 @@ void HierarchicalGrid::for_each_pair(F&& f) const {
       const double range = r_[i] + skin_ + C.r_max;
       const Cell lo = cell_of(x_[i] - Vec3::Constant(range), C);
       const Cell hi = cell_of(x_[i] + Vec3::Constant(range), C);
-      Cell c;
-      for (c[2] = lo[2]; c[2] <= hi[2]; ++c[2])
-        for (c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
-          for (c[0] = lo[0]; c[0] <= hi[0]; ++c[0])
-            for (int j = C.head[hash(c) & C.mask]; j != -1; j = next_[j])
+      for (std::int64_t cz = lo[2]; cz <= hi[2]; ++cz)
+        for (std::int64_t cy = lo[1]; cy <= hi[1]; ++cy)
+          for (std::int64_t cx = lo[0]; cx <= hi[0]; ++cx) {
+            const Key c = pack(cx, cy, cz);
+            for (int j = C.head[bucket(c, C)]; j != -1; j = next_[j])
               if (cell_[j] == c) test(i, j);
+          }
     }
   }
 }

@@ -424,9 +424,10 @@ void Simulation::compute_forces_for(double spring_dt) {
       continue;
     }
     const double dist = std::sqrt(d2);
-    const Vec3 nrm = d / dist;
+    const Vec3 nrm = d * (1.0 / dist);
     const double h = e.r_sum - dist;
-    Vec3 vc = v[i] - v[j];
+    const Vec3 vij = v[i] - v[j];
+    Vec3 vc = vij;
     double ai = 0.0, aj = 0.0;
     if constexpr (Rotation) {
       ai = r[i] - 0.5 * h;  // branch lengths to the contact point
@@ -437,10 +438,10 @@ void Simulation::compute_forces_for(double spring_dt) {
     if constexpr (Friction) {
       if constexpr (Synchronized) {
         // The contact at t + dt/2, where the velocities live: normal and branch lengths.
-        const Vec3 d_half = d - half_dt * (v[i] - v[j]);
+        const Vec3 d_half = d - half_dt * vij;
         const double dist_half = d_half.norm();
-        const Vec3 n_half = d_half / dist_half;
-        Vec3 vc_half = v[i] - v[j];
+        const Vec3 n_half = d_half * (1.0 / dist_half);
+        Vec3 vc_half = vij;
         if constexpr (Rotation) {
           const double h_half = e.r_sum - dist_half;
           vc_half -= ((r[i] - 0.5 * h_half) * w[i] + (r[j] - 0.5 * h_half) * w[j]).cross(n_half);
@@ -509,13 +510,13 @@ void Simulation::compute_forces_for(double spring_dt) {
         if constexpr (Friction) list.spring[k].setZero();
         continue;
       }
-      const Vec3 nrm = -d / dist;  // pushes inward
+      const Vec3 nrm = d * (-1.0 / dist);  // pushes inward
       Vec3 n_half = nrm;
       double h_half = h;
       if constexpr (Friction && Synchronized) {
         const Vec3 d_half = d - half_dt * (v[i] - s.velocity);
         const double dist_half = d_half.norm();
-        n_half = -d_half / dist_half;
+        n_half = d_half * (-1.0 / dist_half);
         h_half = dist_half + r[i] - s.radius;
       }
       wall_contact(list, k, i, nrm, h, n_half, h_half, s.velocity, s.centre, shell_loads_[w_]);
@@ -526,38 +527,49 @@ void Simulation::compute_forces_for(double spring_dt) {
 // ---------------------------------------------------------------------------------------------
 // Integration
 
-void Simulation::kick_and_drift() {
+// Half kicks: v += F/m dt/2 and w += T/I dt/2 for every free sphere.
+void Simulation::half_kick() {
   const std::size_t n = p_.size();
   const double half = 0.5 * dt_;
-  double max_disp2 = max_disp2_;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (p_.is_driven(i)) continue;
-    p_.v[i] += half * p_.inv_m[i] * p_.F[i];
-    p_.x[i] += dt_ * p_.v[i];
-    max_disp2 = std::max(max_disp2, (p_.x[i] - x_at_build_[i]).squaredNorm());
-  }
-  max_disp2_ = max_disp2;
-  if (p_.rotates())
+  const std::uint8_t* const driven = p_.driven.empty() ? nullptr : p_.driven.data();
+  Vec3* const v = p_.v.data();
+  const Vec3* const F = p_.F.data();
+  const double* const inv_m = p_.inv_m.data();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!driven || !driven[i]) v[i] += (half * inv_m[i]) * F[i];
+  if (p_.rotates()) {
+    Vec3* const w = p_.w.data();
+    const Vec3* const T = p_.T.data();
+    const double* const inv_I = p_.inv_I.data();
     for (std::size_t i = 0; i < n; ++i)
-      if (!p_.is_driven(i)) p_.w[i] += half * p_.inv_I[i] * p_.T[i];
+      if (!driven || !driven[i]) w[i] += (half * inv_I[i]) * T[i];
+  }
 }
 
-void Simulation::kick() {
+// Drift: x += v dt for every free sphere, tracking the largest displacement since the last
+// neighbour build.
+void Simulation::drift() {
   const std::size_t n = p_.size();
-  const double half = 0.5 * dt_;
-  for (std::size_t i = 0; i < n; ++i)
-    if (!p_.is_driven(i)) p_.v[i] += half * p_.inv_m[i] * p_.F[i];
-  if (p_.rotates())
-    for (std::size_t i = 0; i < n; ++i)
-      if (!p_.is_driven(i)) p_.w[i] += half * p_.inv_I[i] * p_.T[i];
+  const std::uint8_t* const driven = p_.driven.empty() ? nullptr : p_.driven.data();
+  Vec3* const x = p_.x.data();
+  const Vec3* const v = p_.v.data();
+  const Vec3* const x0 = x_at_build_.data();
+  double max_disp2 = max_disp2_;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (driven && driven[i]) continue;
+    x[i] += dt_ * v[i];
+    max_disp2 = std::max(max_disp2, (x[i] - x0[i]).squaredNorm());
+  }
+  max_disp2_ = max_disp2;
 }
 
 void Simulation::step() {
-  kick_and_drift();
+  half_kick();
+  drift();
   if (!drivers_.empty()) advance_drivers();
   update_neighbours();
   compute_forces(dt_);
-  kick();
+  half_kick();
   if (!drivers_.empty()) finish_drivers();
   time_ += dt_;
   ++steps_;

@@ -1,11 +1,12 @@
 // The simulation: owns the spheres, walls, contact lists and drivers of one scene and advances
 // them with velocity Verlet. One step runs these phases, one function each:
 //
-//   kick_and_drift      v += a dt/2, x += v dt (free spheres; angular likewise)
+//   half_kick           v += F/m dt/2, w += T/I dt/2 (free spheres)
+//   drift               x += v dt
 //   advance_drivers     kinematic spheres and walls to their prescribed state at t + dt
 //   update_neighbours   rebuild the Verlet lists when the skin is used up
 //   compute_forces      contact laws (contact/contact_force.hpp), gravity, wall loads
-//   kick                v += a dt/2
+//   half_kick           v += F/m dt/2, w += T/I dt/2
 //
 // Only the declared effects run (scene/scene_def.hpp): the force loop is compiled for each
 // combination of friction, damping and rotation, and state of undeclared effects is never
@@ -97,7 +98,8 @@ class Simulation {
     bool retired = false;
   };
 
-  void kick_and_drift();
+  void half_kick();
+  void drift();
   void advance_drivers();
   void finish_drivers();
   void update_neighbours();
@@ -105,7 +107,6 @@ class Simulation {
   void compute_forces(double spring_dt);
   template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
   void compute_forces_for(double spring_dt);
-  void kick();
 
   ContactCoefficients coefficients(int i, int j) const;
   ContactCoefficients wall_coefficients(int i, int wall_material, double R12) const;

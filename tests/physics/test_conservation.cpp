@@ -39,13 +39,13 @@ TEST(Conservation, MomentaOfA1000SpherePolydisperseCloud) {
     s.effects.restitution = 0.6;
     s.integration.history_update = hu;
     testing::Random rng(11);
-    // Polydispersity 10: 1000 spheres placed without overlap in a ball, then swollen by 5% so
+    // Polydispersity 10: 1000 spheres placed without overlap in a ball, then swollen by 8% so
     // that hundreds of contacts are closed from the start; random velocities and spins make
     // contacts open, close and slide.
-    s.particles = testing::random_spheres_in_shell(rng, 1000, 0.02, 4e-4, 4e-3, 3.0, 500, kNoBody);
+    s.particles = testing::random_spheres_in_shell(rng, 1000, 0.02, 5e-4, 5e-3, 3.0, 500, kNoBody);
     ASSERT_EQ(s.particles.size(), 1000u);
     for (auto& p : s.particles) {
-      p.r *= 1.05;
+      p.r *= 1.08;
       p.x += Vec3(0.03, -0.01, 0.02);  // away from the origin: L has an orbital part
       p.v = rng.in_box(0.05);
       p.w = rng.in_box(20.0);

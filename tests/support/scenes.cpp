@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <unordered_map>
 
 
 namespace softpack::testing {
@@ -57,27 +58,40 @@ std::vector<ParticleDef> random_cloud(Random& rng, int n, double half, double r_
 
 std::vector<ParticleDef> random_spheres_in_shell(Random& rng, int n, double Rs, double r_min, double r_max,
                                                  double b, int trials, int body) {
-  // Oversample radii, sort descending, insert largest first (brute force is fine at test sizes
-  // of a few thousand when checked against a coarse bucket of already placed spheres).
+  // n radii, sorted descending, inserted largest first; a sphere that finds no free place in
+  // `trials` attempts is dropped. Overlaps are checked against the spheres already placed in
+  // the 27 cells (of size 2 r_max) around the candidate.
   std::vector<double> radii;
-  for (int k = 0; k < 4 * n; ++k) radii.push_back(power_law_radius(rng, r_min, r_max, b));
+  for (int k = 0; k < n; ++k) radii.push_back(power_law_radius(rng, r_min, r_max, b));
   std::sort(radii.rbegin(), radii.rend());
+  const double cell = 2.0 * r_max;
+  const auto key = [&](const Vec3& x, int dx, int dy, int dz) {
+    const auto c = [&](double v, int d) { return static_cast<std::int64_t>(std::floor(v / cell)) + d + (1 << 20); };
+    return (c(x.x(), dx) << 42) | (c(x.y(), dy) << 21) | c(x.z(), dz);
+  };
+  std::unordered_map<std::int64_t, std::vector<int>> cells;
   std::vector<ParticleDef> placed;
   for (double r : radii) {
-    if (static_cast<int>(placed.size()) == n) break;
     for (int t = 0; t < trials; ++t) {
       const Vec3 x = rng.in_ball(Rs - r);
       bool free = true;
-      for (const auto& q : placed)
-        if ((q.x - x).squaredNorm() < (q.r + r) * (q.r + r)) {
-          free = false;
-          break;
-        }
+      for (int dx = -1; dx <= 1 && free; ++dx)
+        for (int dy = -1; dy <= 1 && free; ++dy)
+          for (int dz = -1; dz <= 1 && free; ++dz) {
+            const auto it = cells.find(key(x, dx, dy, dz));
+            if (it == cells.end()) continue;
+            for (int q : it->second)
+              if ((placed[q].x - x).squaredNorm() < (placed[q].r + r) * (placed[q].r + r)) {
+                free = false;
+                break;
+              }
+          }
       if (free) {
         ParticleDef p;
         p.x = x;
         p.r = r;
         p.body = body;
+        cells[key(x, 0, 0, 0)].push_back(static_cast<int>(placed.size()));
         placed.push_back(p);
         break;
       }

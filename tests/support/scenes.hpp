@@ -36,8 +36,8 @@ double power_law_radius(Random& rng, double r_min, double r_max, double b);
 /// n spheres at uniform positions in a cube of half-width `half`, overlaps allowed.
 std::vector<ParticleDef> random_cloud(Random& rng, int n, double half, double r_min, double r_max, double b);
 
-/// Random sequential addition into a shell: radii from the power law, largest first, each
-/// given `trials` random positions without overlap; stops after `n` spheres are placed.
+/// Random sequential addition into a ball of radius Rs: n radii from the power law, largest
+/// first, each given `trials` random positions without overlap (dropped if none is found).
 /// (A test fixture only; the packing generator proper is softpack-pack.)
 std::vector<ParticleDef> random_spheres_in_shell(Random& rng, int n, double Rs, double r_min, double r_max,
                                                  double b, int trials, int body);
