@@ -2,9 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -43,12 +40,7 @@ SceneDef bench_scene(const std::vector<Sphere>& spheres, const BenchParameters& 
   s.effects.restitution = p.restitution;
   s.integration.safety = p.safety;
   s.neighbor.skin = p.skin;
-  if (std::getenv("STD")) s.integration.history_update = HistoryUpdate::standard;
-  std::vector<Sphere> sorted = spheres;
-  if (std::getenv("SORTX")) std::sort(sorted.begin(), sorted.end(), [](const Sphere& a, const Sphere& b) {
-    const auto key = [](const Vec3& x) { return std::floor(x.z() / 0.004) * 1e4 + std::floor(x.y() / 0.004) * 1e2 + x.x(); };
-    return key(a.x) < key(b.x); });
-  for (const auto& sp : sorted) {
+  for (const auto& sp : spheres) {
     ParticleDef d;
     d.x = sp.x;
     d.r = sp.r;
