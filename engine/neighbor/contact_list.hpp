@@ -2,10 +2,11 @@
 //
 // Pairs (i < j) whose gap is below the skin are listed at each rebuild, sorted by (i, j), with
 // the contact constants precomputed. When the friction effect is on, each entry carries its
-// tangential spring xi; a rebuild carries the springs of surviving pairs over by a sorted
-// merge, O(N). A pair whose gap opens keeps its entry until the next rebuild but its spring
+// tangential spring xi; a rebuild carries constants and springs of surviving pairs over by a
+// sorted merge, O(N). A pair whose gap opens keeps its entry until the next rebuild but its spring
 // is cleared the moment the contact opens.
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "contact/contact_force.hpp"
@@ -23,8 +24,9 @@ struct PairList {
   std::vector<PairEntry> pairs;
   std::vector<Vec3> spring;  ///< tangential spring per pair; empty without friction
 
-  /// Replaces the list by `fresh` (sorted by (i, j)), carrying springs of pairs present in both.
-  void replace(std::vector<PairEntry>&& fresh, bool keep_springs);
+  /// Replaces the list by `fresh` (sorted by (i, j)); pairs already listed keep their
+  /// constants and spring. Returns the indices of the new pairs, whose constants are unset.
+  std::vector<std::size_t> replace(std::vector<PairEntry>&& fresh, bool keep_springs);
 };
 
 /// Candidate contacts of one wall (plane or shell): sphere indices, sorted, with constants.
@@ -37,7 +39,8 @@ struct WallList {
   std::vector<WallEntry> entries;
   std::vector<Vec3> spring;
 
-  void replace(std::vector<WallEntry>&& fresh, bool keep_springs);
+  /// As PairList::replace, keyed by the sphere.
+  std::vector<std::size_t> replace(std::vector<WallEntry>&& fresh, bool keep_springs);
 };
 
 }  // namespace softpack

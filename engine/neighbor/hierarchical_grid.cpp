@@ -19,7 +19,6 @@ void HierarchicalGrid::build(std::span<const Vec3> x, std::span<const double> r,
   levels_.clear();
   level_of_.assign(n, 0);
   cell_.resize(n);
-  next_.assign(n, -1);
   if (n == 0) return;
 
   double r_min = std::numeric_limits<double>::max(), r_max = 0.0;
@@ -51,20 +50,32 @@ void HierarchicalGrid::build(std::span<const Vec3> x, std::span<const double> r,
   for (Level& L : levels_) {
     const std::uint64_t buckets = std::bit_ceil(std::max<std::uint64_t>(16, 2 * L.population));
     L.shift = 64 - std::countr_zero(buckets);
-    L.head.assign(L.population ? buckets : 0, -1);
+    L.start.assign(L.population ? buckets + 1 : 0, 0);
+    L.entries.resize(L.population);
   }
   // 21-bit cell coordinates: the domain may span at most 2^21 cells of the finest level.
   const Vec3 extent = (x_max - origin_);
   if (extent.maxCoeff() * levels_[0].inv_cell >= static_cast<double>(kMaxCoordinate))
     throw std::invalid_argument("HierarchicalGrid: the domain spans more than 2^21 of the smallest cells");
-  // Insert in reverse so each bucket's chain lists spheres in increasing index order.
-  for (std::size_t k = n; k-- > 0;) {
+  // Counting sort of each level's spheres by bucket (stable: increasing index within a bucket).
+  std::vector<std::uint32_t> bucket_of(n);
+  for (std::size_t k = 0; k < n; ++k) {
     Level& L = levels_[level_of_[k]];
     const Cell c = cell_of(x[k], L);
     cell_[k] = pack(c[0], c[1], c[2]);
-    auto& head = L.head[bucket(cell_[k], L)];
-    next_[k] = head;
-    head = static_cast<int>(k);
+    bucket_of[k] = static_cast<std::uint32_t>(bucket(cell_[k], L));
+    ++L.start[bucket_of[k] + 1];
+  }
+  for (Level& L : levels_)
+    for (std::size_t b = 1; b < L.start.size(); ++b) L.start[b] += L.start[b - 1];
+  std::vector<std::uint32_t> fill;
+  for (std::size_t l = 0; l < levels_.size(); ++l) {
+    Level& L = levels_[l];
+    if (!L.population) continue;
+    fill.assign(L.start.begin(), L.start.end() - 1);
+    for (std::size_t k = 0; k < n; ++k)
+      if (level_of_[k] == static_cast<int>(l))
+        L.entries[fill[bucket_of[k]]++] = Entry{x[k], r[k], cell_[k], static_cast<int>(k)};
   }
 }
 

@@ -7,8 +7,10 @@
 // neighbours. Pairs of different levels are searched only from the smaller sphere into the
 // coarser levels, over the few coarse cells that its search box touches (at most 3 per axis),
 // so the cost per sphere does not grow with the size ratio, unlike one flat grid sized by the
-// largest sphere. Cells are hashed (open chaining into a table twice the level's population),
-// so memory is O(N) whatever the extent of the domain.
+// largest sphere. Cells are hashed into a table twice the level's population, so memory is
+// O(N) whatever the extent of the domain; the spheres of each bucket are stored contiguously
+// with their centre and radius (a counting sort per build), so scanning a cell reads one or
+// two cache lines instead of chasing a linked list through the particle arrays.
 //
 // The grid reports every pair whose gap is below `skin`: |xi - xj| < ri + rj + skin.
 #pragma once
@@ -45,11 +47,20 @@ class HierarchicalGrid {
   static constexpr int kBits = 21;
   static constexpr std::int64_t kMaxCoordinate = (std::int64_t{1} << kBits) - 1;
 
+  /// A sphere as stored in its level's bucket array.
+  struct Entry {
+    Vec3 x;
+    double r;
+    Key cell;
+    int id;
+  };
+
   struct Level {
     double cell = 0.0, inv_cell = 0.0;
     double r_max = 0.0;  ///< largest radius stored on this level
-    int shift = 64;         ///< 64 - log2(bucket count)
-    std::vector<int> head;  ///< first sphere of each hash bucket, -1 if empty
+    int shift = 64;      ///< 64 - log2(bucket count)
+    std::vector<std::uint32_t> start;  ///< entries of bucket b: [start[b], start[b + 1])
+    std::vector<Entry> entries;        ///< the level's spheres, grouped by bucket
     std::size_t population = 0;
   };
 
@@ -75,7 +86,6 @@ class HierarchicalGrid {
   std::vector<Level> levels_;
   std::vector<int> level_of_;  ///< level of each sphere
   std::vector<Key> cell_;      ///< cell of each sphere on its own level
-  std::vector<int> next_;      ///< next sphere in the same hash bucket, -1 at the end
 };
 
 template <class F>
@@ -96,40 +106,43 @@ void HierarchicalGrid::for_each_pair(F&& f) const {
                                                                        {0, 1, 1},
                                                                        {1, 1, 1}}};
   const int n = static_cast<int>(x_.size());
-  const auto test = [&](int i, int j) {
-    const double s = r_[i] + r_[j] + skin_;
-    if ((x_[i] - x_[j]).squaredNorm() < s * s) f(i, j);
+  // Calls `visit(entry)` for every sphere stored in cell c of level L.
+  const auto scan = [](const Level& L, Key c, auto&& visit) {
+    const std::size_t b = bucket(c, L);
+    for (std::uint32_t k = L.start[b], end = L.start[b + 1]; k < end; ++k)
+      if (L.entries[k].cell == c) visit(L.entries[k]);
   };
   for (int i = 0; i < n; ++i) {
+    const Vec3 xi = x_[i];
+    const double ri_skin = r_[i] + skin_;
+    const auto test = [&](const Entry& e) {
+      const double s = ri_skin + e.r;
+      if ((xi - e.x).squaredNorm() < s * s) f(i, e.id);
+    };
     const int li = level_of_[i];
     const Level& L = levels_[li];
-    const Cell ci = cell_of(x_[i], L);
+    const Cell ci = cell_of(xi, L);
     const Key own = cell_[i];
     // Same level, own cell.
-    for (int j = L.head[bucket(own, L)]; j != -1; j = next_[j])
-      if (j > i && cell_[j] == own) test(i, j);
+    scan(L, own, [&](const Entry& e) {
+      if (e.id > i) test(e);
+    });
     // Same level, forward neighbours (coordinates are >= 0; a stencil cell at -1 is empty).
     for (const auto& o : kHalfStencil) {
       const std::int64_t cx = ci[0] + o[0], cy = ci[1] + o[1], cz = ci[2] + o[2];
       if (cx < 0 || cy < 0 || cz < 0) continue;
-      const Key c = pack(cx, cy, cz);
-      for (int j = L.head[bucket(c, L)]; j != -1; j = next_[j])
-        if (cell_[j] == c) test(i, j);
+      scan(L, pack(cx, cy, cz), test);
     }
     // Coarser levels: the cells touched by this sphere's search box.
     for (std::size_t lc = static_cast<std::size_t>(li) + 1; lc < levels_.size(); ++lc) {
       const Level& C = levels_[lc];
       if (C.population == 0) continue;
-      const double range = r_[i] + skin_ + C.r_max;
-      const Cell lo = cell_of(x_[i] - Vec3::Constant(range), C);
-      const Cell hi = cell_of(x_[i] + Vec3::Constant(range), C);
+      const double range = ri_skin + C.r_max;
+      const Cell lo = cell_of(xi - Vec3::Constant(range), C);
+      const Cell hi = cell_of(xi + Vec3::Constant(range), C);
       for (std::int64_t cz = lo[2]; cz <= hi[2]; ++cz)
         for (std::int64_t cy = lo[1]; cy <= hi[1]; ++cy)
-          for (std::int64_t cx = lo[0]; cx <= hi[0]; ++cx) {
-            const Key c = pack(cx, cy, cz);
-            for (int j = C.head[bucket(c, C)]; j != -1; j = next_[j])
-              if (cell_[j] == c) test(i, j);
-          }
+          for (std::int64_t cx = lo[0]; cx <= hi[0]; ++cx) scan(C, pack(cx, cy, cz), test);
     }
   }
 }

@@ -319,39 +319,46 @@ void Simulation::rebuild_neighbours() {
   const bool friction = scene_.effects.friction;
   const std::size_t n = p_.size();
   if (scene_.effects.normal) {
+    // Pairs as (i, j) with i < j, sorted: a counting sort by i, then each sphere's few
+    // partners sorted by j.
     grid_.build(p_.x, p_.r, skin_, scene_.neighbor.level_ratio);
-    std::vector<std::uint64_t> keys;
-    keys.reserve(pairs_.pairs.size() + n);
+    found_.clear();
+    first_.assign(n + 1, 0);
     grid_.for_each_pair([&](int i, int j) {
       const auto [a, b] = std::minmax(i, j);
-      keys.push_back((static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b));
+      found_.emplace_back(a, b);
+      ++first_[static_cast<std::size_t>(a) + 1];
     });
-    std::sort(keys.begin(), keys.end());
-    std::vector<PairEntry> fresh(keys.size());
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-      const int i = static_cast<int>(keys[k] >> 32), j = static_cast<int>(keys[k] & 0xffffffffu);
-      fresh[k] = PairEntry{i, j, p_.r[i] + p_.r[j], coefficients(i, j)};
-    }
-    pairs_.replace(std::move(fresh), friction);
+    for (std::size_t i = 0; i < n; ++i) first_[i + 1] += first_[i];
+    std::vector<PairEntry> fresh(found_.size());
+    for (const auto& [a, b] : found_) fresh[first_[a]++] = PairEntry{a, b, p_.r[a] + p_.r[b], {}};
+    for (std::size_t i = 0, begin = 0; i < n; begin = first_[i++])
+      std::sort(fresh.begin() + static_cast<std::ptrdiff_t>(begin), fresh.begin() + static_cast<std::ptrdiff_t>(first_[i]),
+                [](const PairEntry& a, const PairEntry& b) { return a.j < b.j; });
+    for (std::size_t k : pairs_.replace(std::move(fresh), friction))
+      pairs_.pairs[k].k = coefficients(pairs_.pairs[k].i, pairs_.pairs[k].j);
 
     for (std::size_t w = 0; w < planes_.size(); ++w) {
       std::vector<WallEntry> list;
       for (std::size_t i = 0; i < n; ++i)
-        if (planes_[w].distance(p_.x[i]) - p_.r[i] < skin_)
-          list.push_back({static_cast<int>(i), wall_coefficients(static_cast<int>(i), planes_[w].material, p_.r[i])});
-      plane_lists_[w].replace(std::move(list), friction);
+        if (planes_[w].distance(p_.x[i]) - p_.r[i] < skin_) list.push_back({static_cast<int>(i), {}});
+      WallList& wl = plane_lists_[w];
+      for (std::size_t k : wl.replace(std::move(list), friction))
+        wl.entries[k].k = wall_coefficients(wl.entries[k].i, planes_[w].material, p_.r[wl.entries[k].i]);
     }
     for (std::size_t w = 0; w < shells_.size(); ++w) {
       const SphericalShell& s = shells_[w];
       std::vector<WallEntry> list;
-      for (int i : shell_members_[w]) {
-        if (s.radius - (p_.x[i] - s.centre).norm() - p_.r[i] >= skin_) continue;
+      for (int i : shell_members_[w])
+        if (s.radius - (p_.x[i] - s.centre).norm() - p_.r[i] < skin_) list.push_back({i, {}});
+      WallList& wl = shell_lists_[w];
+      for (std::size_t k : wl.replace(std::move(list), friction)) {
+        const int i = wl.entries[k].i;
         const double R12 = s.contact_radius == ShellContactRadius::concave
                                ? hertz::reduced_radius_concave(p_.r[i], s.radius)
                                : p_.r[i];
-        list.push_back({i, wall_coefficients(i, s.material, R12)});
+        wl.entries[k].k = wall_coefficients(i, s.material, R12);
       }
-      shell_lists_[w].replace(std::move(list), friction);
     }
   }
   x_at_build_ = p_.x;

@@ -14,6 +14,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/material.hpp"
@@ -141,6 +142,9 @@ class Simulation {
   long rebuilds_ = 0;
 
   std::vector<ActiveDriver> drivers_;
+
+  std::vector<std::pair<int, int>> found_;  ///< scratch of rebuild_neighbours: pairs found
+  std::vector<std::size_t> first_;          ///< scratch of rebuild_neighbours: counting sort
 };
 
 }  // namespace softpack
