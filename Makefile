@@ -51,7 +51,8 @@ test: build  ## build and run the test suite (ctest)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 test-sanitize:  ## the test suite under AddressSanitizer + UndefinedBehaviorSanitizer
-	cmake -S . -B $(BUILD_SANITIZE) -DCMAKE_BUILD_TYPE=Debug -DSOFTPACK_SANITIZE=ON -DSOFTPACK_BENCH=OFF \
+	cmake -S . -B $(BUILD_SANITIZE) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+	  -DSOFTPACK_SANITIZE=ON -DSOFTPACK_BENCH=OFF \
 	  $(if $(filter true,$(CI)),-DSOFTPACK_WERROR=ON)
 	cmake --build $(BUILD_SANITIZE) -j $(JOBS)
 	cd $(BUILD_SANITIZE) && ctest --output-on-failure -j $(JOBS)

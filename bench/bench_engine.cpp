@@ -79,7 +79,7 @@ void ContactDetection(benchmark::State& state) {
   HierarchicalGrid grid;
   std::size_t pairs = 0;
   for (auto _ : state) {
-    grid.build(c.x, c.r, skin, 2.0);
+    grid.build(c.x, c.r, skin, 4.0);
     pairs = 0;
     grid.for_each_pair([&](int, int) { ++pairs; });
     benchmark::DoNotOptimize(pairs);

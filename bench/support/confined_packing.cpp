@@ -40,6 +40,7 @@ SceneDef bench_scene(const std::vector<Sphere>& spheres, const BenchParameters& 
   s.effects.restitution = p.restitution;
   s.integration.safety = p.safety;
   s.neighbor.skin = p.skin;
+  s.neighbor.level_ratio = p.level_ratio;
   for (const auto& sp : spheres) {
     ParticleDef d;
     d.x = sp.x;

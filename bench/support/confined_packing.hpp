@@ -25,6 +25,7 @@ struct BenchParameters {
   double restitution = 0.5;
   double safety = 0.2;          ///< dt = safety * Rayleigh time
   double skin = 1.0;            ///< Verlet skin / r_min
+  double level_ratio = 4.0;     ///< hierarchical grid (measured best at Pi = 10..1000)
 };
 
 /// Makes (or reads from `cache`, when it exists) a packing of about n spheres.

@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
   CLI::App app{"softpack-run: run a scene file (drivers, then relaxation) and report the result as JSON"};
   std::string scene_path, out_path;
   bool quiet = false;
-  app.add_option("--scene", scene_path, "scene file (YAML), see docs/scene-format.md")->required()->check(CLI::ExistingFile);
+  app.add_option("--scene", scene_path, "scene file (YAML), see docs/scene-format.md")->required();
   app.add_option("--out", out_path, "write the JSON report here (atomically) instead of stdout");
   app.add_flag("--quiet", quiet, "no progress lines on stderr");
   CLI11_PARSE(app, argc, argv);
@@ -132,5 +132,8 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     fmt::print(stderr, "softpack-run: error: {}\n", e.what());
     return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "softpack-run: internal error: {}\n", e.what());
+    return 1;
   }
 }

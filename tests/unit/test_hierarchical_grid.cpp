@@ -31,6 +31,10 @@ struct Case {
   double level_ratio;
 };
 
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << "Pi=" << c.polydispersity << " skin=" << c.skin_fraction << " ratio=" << c.level_ratio;
+}
+
 class GridMatchesBruteForce : public ::testing::TestWithParam<Case> {};
 
 TEST_P(GridMatchesBruteForce, OnRandomConfigurations) {

@@ -1,0 +1,138 @@
+#!/usr/bin/env bash
+# softpack benchmarks (`make bench`): usage  bench/run_benchmarks.sh BUILD_DIR
+#   1. bench/lammps/check_contact_laws.sh: LAMMPS must compute softpack's contact laws, else stop;
+#   2. BUILD/bench/bench_engine (Google Benchmark): engine throughput and contact-detection cost;
+#   3. whole runs side by side, same packing, dt and steps: softpack-bench-scene vs LAMMPS
+#      (bench/lammps/run_confined.sh), frictional and frictionless, alternating, minimum time;
+#   4. a summary of the targets with PASS/MISS (informational: exit 0 when everything ran).
+# Environment: BENCH_STEPS (default 2000) steps per whole run, BENCH_REPEATS (default 3) runs per
+# code and scene. The packing is cached in BUILD/bench/confined-5000.txt (made once, ~40 s).
+set -euo pipefail
+
+die() { echo "run_benchmarks.sh: $*" >&2; exit 1; }
+[ $# -eq 1 ] || die "usage: $0 BUILD_DIR"
+[ -d "$1" ] || die "$1: no such build directory"
+build="$(cd "$1" && pwd)"
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+steps="${BENCH_STEPS:-2000}"
+repeats="${BENCH_REPEATS:-3}"
+[[ "$steps" =~ ^[1-9][0-9]*$ ]] || die "BENCH_STEPS must be a positive integer (got '$steps')"
+[[ "$repeats" =~ ^[1-9][0-9]*$ ]] || die "BENCH_REPEATS must be a positive integer (got '$repeats')"
+engine="$build/bench/bench_engine"
+scene="$build/bench/softpack-bench-scene"
+packing="$build/bench/confined-5000.txt"
+for exe in "$engine" "$scene"; do [ -x "$exe" ] || die "$exe missing: build first (make build)"; done
+
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+
+# run NAME CMD...: runs CMD with stdout to $tmp/NAME.out, stderr to $tmp/NAME.err; on failure
+# shows the tail of both and stops.
+run() {
+  local name="$1"; shift
+  if ! "$@" >"$tmp/$name.out" 2>"$tmp/$name.err"; then
+    { echo "run_benchmarks.sh: '$*' failed:"; tail -25 "$tmp/$name.out"; tail -25 "$tmp/$name.err"; } >&2
+    exit 1
+  fi
+}
+# field KEY FILE: value of the first KEY=value in FILE
+field() {
+  local v
+  v="$(grep -o "\\b$1=[^ ]*" "$2" | head -1 | cut -d= -f2)"
+  [ -n "$v" ] || die "no $1= in the output of $(basename "$2" .out)"
+  echo "$v"
+}
+
+# 1. honesty check: LAMMPS computes the same contact forces as softpack (README there)
+run check "$here/lammps/check_contact_laws.sh"
+echo "LAMMPS contact laws vs softpack (bench/lammps/check_contact_laws.sh): $(tail -1 "$tmp/check.out")"
+
+# the packing (made and cached on the first call) and the parameters LAMMPS needs
+run params "$scene" --packing "$packing" --parameters
+n="$(field spheres "$tmp/params.out")"; r_min="$(field r_min "$tmp/params.out")"
+Rs="$(field Rs "$tmp/params.out")"; dt="$(field dt "$tmp/params.out")"
+alpha="$(field alpha "$tmp/params.out")"; xgammat="$(field xgammat "$tmp/params.out")"
+skin="$(field skin "$tmp/params.out")"
+
+# 2. Google Benchmark (tables on stdout; its JSON copy feeds the summary)
+echo
+echo "== bench_engine (Google Benchmark) =="
+SOFTPACK_BENCH_PACKING="$packing" run engine "$engine" --benchmark_counters_tabular=true \
+  --benchmark_out="$tmp/engine.json" --benchmark_out_format=json
+grep -v '^\*\*\*WARNING' "$tmp/engine.out" || true
+
+# 3. whole runs side by side; LAMMPS neighbour list: bin, skin = r_min (its best, README)
+declare -A sp lm            # [mode,rep] -> loop time (s)
+declare -A sp_info lm_info  # [mode] -> extra columns of the last run
+for ((rep = 1; rep <= repeats; rep++)); do
+  for mode in frictional frictionless; do
+    flag=(); [ "$mode" = frictionless ] && flag=(--frictionless)
+    run sp "$scene" --packing "$packing" --steps "$steps" "${flag[@]}"
+    sp[$mode,$rep]="$(field softpack_loop_time_s "$tmp/sp.out")"
+    sp_info[$mode]="contacts=$(field contacts "$tmp/sp.out") rebuilds=$(field rebuilds "$tmp/sp.out")"
+    run lm "$here/lammps/run_confined.sh" "$packing" --Rs "$Rs" --dt "$dt" --nsteps "$steps" \
+      --alpha "$alpha" --xgammat "$xgammat" --skin "$r_min" "${flag[@]}"
+    lm[$mode,$rep]="$(field lammps_loop_time_s "$tmp/lm.out")"
+    lm_info[$mode]="rebuilds=$(awk '/^Neighbor list builds/ { print $NF }' "$tmp/lm.out")"
+  done
+done
+# minimum over the repeats
+tmin() {
+  local -n arr="$1"; local mode="$2" rep out=""
+  for ((rep = 1; rep <= repeats; rep++)); do out+="${arr[$mode,$rep]} "; done
+  echo "$out" | awk '{ m = $1; for (i = 2; i <= NF; i++) if ($i < m) m = $i; print m }'
+}
+sp_fr="$(tmin sp frictional)"; sp_fl="$(tmin sp frictionless)"
+lm_fr="$(tmin lm frictional)"; lm_fl="$(tmin lm frictionless)"
+
+echo
+echo "== whole run: $n spheres in a shell (Rs=$Rs m), $steps steps of dt=$dt s, one core, min of $repeats =="
+echo "   same spheres, Hertz + Tsuji damping (alpha=$alpha), Mindlin + Coulomb (xgammat=$xgammat);"
+echo "   neighbour skin: softpack $skin m, LAMMPS $r_min m (bin)"
+awk -v n="$n" -v s="$steps" -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
+    -v ia="${sp_info[frictional]}" -v ib="${lm_info[frictional]}" \
+    -v ic="${sp_info[frictionless]}" -v id="${lm_info[frictionless]}" 'BEGIN {
+  f = "%-13s %12s %12s %15s %14s %14s\n"
+  printf f, "scene", "softpack_s", "LAMMPS_s", "LAMMPS/softpack", "softpack_Mps/s", "LAMMPS_Mps/s"
+  g = "%-13s %12.4g %12.4g %15.3f %14.3f %14.3f\n"
+  printf g, "frictional", a, b, b / a, n * s / a / 1e6, n * s / b / 1e6
+  printf g, "frictionless", c, d, d / c, n * s / c / 1e6, n * s / d / 1e6
+  printf "  (last run: frictional softpack %s, LAMMPS %s; frictionless softpack %s, LAMMPS %s)\n", ia, ib, ic, id
+}'
+
+# 4. summary
+det="$(/usr/bin/python3 - "$tmp/engine.json" <<'PY'
+import json, re, sys
+s, c = {}, {}
+for b in json.load(open(sys.argv[1]))["benchmarks"]:
+    if b.get("run_type", "iteration") != "iteration":
+        continue
+    m = re.match(r"ContactDetection/(\d+)(/|$)", b["name"])
+    if m:
+        s[int(m.group(1))] = float(b["s_per_sphere"])
+    m = re.match(r"Confined/(frictional|frictionless)(/|$)", b["name"])
+    if m:
+        c[m.group(1)] = float(b["particle_steps_per_s"])
+if 1 not in s or 100 not in s:
+    sys.exit("bench_engine: no ContactDetection/1 or /100 with s_per_sphere")
+if len(c) != 2:
+    sys.exit("bench_engine: no Confined/frictional and /frictionless with particle_steps_per_s")
+print(f"{s[100] / s[1]:.6g} {s[1]:.4g} {s[100]:.4g} {c['frictionless'] / c['frictional']:.6g}")
+PY
+)" || die "cannot read the contact-detection results"
+read -r det_ratio det1 det100 gb_ratio <<<"$det"
+
+echo
+echo "== summary (targets are informational) =="
+awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
+    -v q="$det_ratio" -v q1="$det1" -v q100="$det100" -v gb="$gb_ratio" 'BEGIN {
+  f = "%-46s %8s %9s  %s\n"
+  printf f, "measure", "value", "target", ""
+  printf f, "LAMMPS time / softpack time, frictional", sprintf("%.2fx", b / a), ">= 2x", (b / a >= 2 ? "PASS" : "MISS")
+  printf f, "LAMMPS time / softpack time, frictionless", sprintf("%.2fx", d / c), "-", ""
+  printf f, "softpack frictional / frictionless time", sprintf("%.2fx", a / c), ">= 1.5x", (a / c >= 1.5 ? "PASS" : "MISS")
+  printf f, "  same, Google Benchmark Confined (per step)", sprintf("%.2fx", gb), "-", ""
+  printf f, "contact detection s/sphere, Pi=100 / Pi=1", sprintf("%.2fx", q), "<= 2x", (q <= 2 ? "PASS" : "MISS")
+  printf "  (softpack %.4g / %.4g s, LAMMPS %.4g / %.4g s frictional / frictionless; detection %s / %s s per sphere)\n",
+    a, c, b, d, q100, q1
+}'
