@@ -3,24 +3,19 @@
 namespace softpack {
 namespace {
 
-// Sorted merge of the old entries into the fresh ones (both sorted by `key`): a fresh entry
-// found in the old list takes its constants and, when `springs` is kept, its spring; the
+// Sorted merge of the old entries into the fresh ones (both sorted by `key`). For a fresh
+// entry found in the old list, `carry(old_index, fresh_index)` copies what it keeps; the
 // indices of the entries not found are returned, for the caller to compute their constants.
-template <class Entry, class Key>
-std::vector<std::size_t> merge(const std::vector<Entry>& old_entries, const std::vector<Vec3>& old_springs,
-                               std::vector<Entry>& fresh, std::vector<Vec3>& springs, bool keep_springs, Key key) {
+template <class Entry, class Key, class Carry>
+std::vector<std::size_t> merge(const std::vector<Entry>& old_entries, const std::vector<Entry>& fresh, Key key,
+                               Carry carry) {
   std::vector<std::size_t> new_ones;
-  if (keep_springs) springs.assign(fresh.size(), Vec3::Zero());
   std::size_t a = 0;
   for (std::size_t b = 0; b < fresh.size(); ++b) {
     const auto kb = key(fresh[b]);
     while (a < old_entries.size() && key(old_entries[a]) < kb) ++a;
-    if (a < old_entries.size() && key(old_entries[a]) == kb) {
-      fresh[b] = old_entries[a];
-      if (keep_springs) springs[b] = old_springs[a];
-    } else {
-      new_ones.push_back(b);
-    }
+    if (a < old_entries.size() && key(old_entries[a]) == kb) carry(a, b);
+    else new_ones.push_back(b);
   }
   return new_ones;
 }
@@ -28,17 +23,26 @@ std::vector<std::size_t> merge(const std::vector<Entry>& old_entries, const std:
 }  // namespace
 
 std::vector<std::size_t> PairList::replace(std::vector<PairEntry>&& fresh, bool keep_springs) {
-  std::vector<Vec3> springs;
-  const auto new_ones = merge(pairs, spring, fresh, springs, keep_springs,
-                              [](const PairEntry& e) { return (static_cast<std::uint64_t>(e.i) << 32) | static_cast<std::uint32_t>(e.j); });
+  std::vector<ContactCoefficients> coefficients(fresh.size());
+  std::vector<Vec3> springs(keep_springs ? fresh.size() : 0, Vec3::Zero());
+  const auto new_ones = merge(
+      pairs, fresh, [](const PairEntry& e) { return (static_cast<std::uint64_t>(e.i) << 32) | static_cast<std::uint32_t>(e.j); },
+      [&](std::size_t a, std::size_t b) {
+        coefficients[b] = k[a];
+        if (keep_springs) springs[b] = spring[a];
+      });
   pairs = std::move(fresh);
+  k = std::move(coefficients);
   spring = std::move(springs);
   return new_ones;
 }
 
 std::vector<std::size_t> WallList::replace(std::vector<WallEntry>&& fresh, bool keep_springs) {
-  std::vector<Vec3> springs;
-  const auto new_ones = merge(entries, spring, fresh, springs, keep_springs, [](const WallEntry& e) { return e.i; });
+  std::vector<Vec3> springs(keep_springs ? fresh.size() : 0, Vec3::Zero());
+  const auto new_ones = merge(entries, fresh, [](const WallEntry& e) { return e.i; }, [&](std::size_t a, std::size_t b) {
+    fresh[b].k = entries[a].k;
+    if (keep_springs) springs[b] = spring[a];
+  });
   entries = std::move(fresh);
   spring = std::move(springs);
   return new_ones;

@@ -14,15 +14,16 @@
 
 namespace softpack {
 
+/// What the every-step overlap test reads, kept small: the list is streamed each step.
 struct PairEntry {
   int i = 0, j = 0;
   double r_sum = 0.0;  ///< Ri + Rj
-  ContactCoefficients k;
 };
 
 struct PairList {
   std::vector<PairEntry> pairs;
-  std::vector<Vec3> spring;  ///< tangential spring per pair; empty without friction
+  std::vector<ContactCoefficients> k;  ///< constants per pair, read for touching pairs only
+  std::vector<Vec3> spring;            ///< tangential spring per pair; empty without friction
 
   /// Replaces the list by `fresh` (sorted by (i, j)); pairs already listed keep their
   /// constants and spring. Returns the indices of the new pairs, whose constants are unset.

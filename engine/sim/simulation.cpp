@@ -13,6 +13,7 @@
 #include "contact/viscous_damping.hpp"
 #include "core/error.hpp"
 #include "scene/validate.hpp"
+#include "sim/pair_forces.hpp"
 
 namespace softpack {
 
@@ -331,12 +332,12 @@ void Simulation::rebuild_neighbours() {
     });
     for (std::size_t i = 0; i < n; ++i) first_[i + 1] += first_[i];
     std::vector<PairEntry> fresh(found_.size());
-    for (const auto& [a, b] : found_) fresh[first_[a]++] = PairEntry{a, b, p_.r[a] + p_.r[b], {}};
+    for (const auto& [a, b] : found_) fresh[first_[a]++] = PairEntry{a, b, p_.r[a] + p_.r[b]};
     for (std::size_t i = 0, begin = 0; i < n; begin = first_[i++])
       std::sort(fresh.begin() + static_cast<std::ptrdiff_t>(begin), fresh.begin() + static_cast<std::ptrdiff_t>(first_[i]),
                 [](const PairEntry& a, const PairEntry& b) { return a.j < b.j; });
     for (std::size_t k : pairs_.replace(std::move(fresh), friction))
-      pairs_.pairs[k].k = coefficients(pairs_.pairs[k].i, pairs_.pairs[k].j);
+      pairs_.k[k] = coefficients(pairs_.pairs[k].i, pairs_.pairs[k].j);
 
     for (std::size_t w = 0; w < planes_.size(); ++w) {
       std::vector<WallEntry> list;
@@ -419,54 +420,10 @@ void Simulation::compute_forces_for(double spring_dt) {
   Vec3* const T = Rotation ? p_.T.data() : nullptr;
   Vec3 no_spring = Vec3::Zero();
 
-  // Sphere-sphere contacts: n points from j to i.
-  const std::size_t npairs = pairs_.pairs.size();
-  for (std::size_t k = 0; k < npairs; ++k) {
-    const PairEntry& e = pairs_.pairs[k];
-    const int i = e.i, j = e.j;
-    const Vec3 d = x[i] - x[j];
-    const double d2 = d.squaredNorm();
-    if (d2 >= e.r_sum * e.r_sum) {
-      if constexpr (Friction) pairs_.spring[k].setZero();  // contact open: spring cleared
-      continue;
-    }
-    const double dist = std::sqrt(d2);
-    const Vec3 nrm = d * (1.0 / dist);
-    const double h = e.r_sum - dist;
-    const Vec3 vij = v[i] - v[j];
-    Vec3 vc = vij;
-    double ai = 0.0, aj = 0.0;
-    if constexpr (Rotation) {
-      ai = r[i] - 0.5 * h;  // branch lengths to the contact point
-      aj = r[j] - 0.5 * h;
-      vc -= (ai * w[i] + aj * w[j]).cross(nrm);
-    }
-    Vec3& spring = Friction ? pairs_.spring[k] : no_spring;
-    if constexpr (Friction) {
-      if constexpr (Synchronized) {
-        // The contact at t + dt/2, where the velocities live: normal and branch lengths.
-        const Vec3 d_half = d - half_dt * vij;
-        const double dist_half = d_half.norm();
-        const Vec3 n_half = d_half * (1.0 / dist_half);
-        Vec3 vc_half = vij;
-        if constexpr (Rotation) {
-          const double h_half = e.r_sum - dist_half;
-          vc_half -= ((r[i] - 0.5 * h_half) * w[i] + (r[j] - 0.5 * h_half) * w[j]).cross(n_half);
-        }
-        advance_spring(spring, n_half, vc_half, nrm, spring_dt);
-      } else {
-        advance_spring(spring, nrm, vc, nrm, spring_dt);
-      }
-    }
-    const ContactForce cf = contact_force<Friction, Damping>(nrm, h, vc, e.k, spring);
-    F[i] += cf.F;
-    F[j] -= cf.F;
-    if constexpr (Rotation) {
-      const Vec3 nxFt = nrm.cross(cf.Ft);
-      T[i] -= ai * nxFt;
-      T[j] -= aj * nxFt;
-    }
-  }
+  // Sphere-sphere contacts: the vectorised loop of sim/pair_forces.cpp (same arithmetic as
+  // contact_force(), used below for the walls).
+  accumulate_pair_forces(pairs_, PairForceArrays{x, v, w, r, F, T},
+                         PairForceEffects{Friction, Damping, Rotation, Synchronized}, spring_dt, closed_);
 
   // Sphere-wall contacts: body 1 is the sphere, body 2 the wall.
   // `n_half` and `h_half` are the contact normal and overlap at t + dt/2.
@@ -624,7 +581,7 @@ Measurement Simulation::measure() const {
   for (std::size_t k = 0; k < pairs_.pairs.size(); ++k) {
     const PairEntry& e = pairs_.pairs[k];
     const double h = e.r_sum - (p_.x[e.i] - p_.x[e.j]).norm();
-    if (h > 0.0) add_contact(e.k, h, friction ? &pairs_.spring[k] : nullptr);
+    if (h > 0.0) add_contact(pairs_.k[k], h, friction ? &pairs_.spring[k] : nullptr);
   }
   for (std::size_t w = 0; w < planes_.size(); ++w)
     for (std::size_t k = 0; k < plane_lists_[w].entries.size(); ++k) {

@@ -143,6 +143,7 @@ class Simulation {
 
   std::vector<ActiveDriver> drivers_;
 
+  std::vector<int> closed_;                 ///< scratch of the pair forces: touching pairs
   std::vector<std::pair<int, int>> found_;  ///< scratch of rebuild_neighbours: pairs found
   std::vector<std::size_t> first_;          ///< scratch of rebuild_neighbours: counting sort
 };
