@@ -7,6 +7,8 @@ SHELL := /bin/bash
 .DEFAULT_GOAL := help
 .DELETE_ON_ERROR:
 
+PROFILE ?= paper
+RUN ?=
 BUILD ?= build
 BUILD_SANITIZE ?= build-sanitize
 JOBS ?= $(shell nproc)
@@ -24,7 +26,7 @@ SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 help:  ## list the targets
 	@echo "softpack — reproducible soft-particle contact laws (see README.md)"
 	@echo
-	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z-]+):.*## (.*)/  make \1\t\2/' | expand -t 24
+	@grep -hE '^[a-z0-9-]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z0-9-]+):.*## (.*)/  make \1\t\2/' | expand -t 24
 
 setup:  ## install the Debian packages (apt-get; quick when they are there)
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -61,4 +63,6 @@ bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side b
 	bench/run_benchmarks.sh $(BUILD)
 
 clean:  ## remove builds and generated data (keeps data/archive)
-	rm -rf $(BUILD) $(BUILD_SANITIZE) data/scenes
+	rm -rf $(BUILD) $(BUILD_SANITIZE) data/scenes data/$(PROFILE) data/studies figures/generated
+
+include workflow/packing.mk

@@ -100,7 +100,16 @@ awk -v n="$n" -v s="$steps" -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_
   printf "  (last run: frictional softpack %s, LAMMPS %s; frictionless softpack %s, LAMMPS %s)\n", ia, ib, ic, id
 }'
 
-# 4. summary
+# 4. packing generator: a 100 000-sphere packing (Pi = 10), whole run of softpack-pack
+pack_start=$(date +%s.%N)
+run pack "$build/engine/softpack-pack" --config "$here/profiles/packing-100k.yaml" --seed 1 --out "$tmp/packing-100k.h5" --quiet
+pack_s=$(awk -v a="$pack_start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+pack_n=$(h5dump -d /stats/inserted "$tmp/packing-100k.h5" | awk '/\(0\)/ {print $2}')
+echo
+echo "== packing generator: bench/profiles/packing-100k.yaml, seed 1 =="
+echo "softpack-pack: $pack_n spheres inserted in $pack_s s"
+
+# 5. summary
 det="$(/usr/bin/python3 - "$tmp/engine.json" <<'PY'
 import json, re, sys
 s, c = {}, {}
@@ -125,7 +134,7 @@ read -r det_ratio det1 det100 gb_ratio <<<"$det"
 echo
 echo "== summary (targets are informational) =="
 awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
-    -v q="$det_ratio" -v q1="$det1" -v q100="$det100" -v gb="$gb_ratio" 'BEGIN {
+    -v q="$det_ratio" -v q1="$det1" -v q100="$det100" -v gb="$gb_ratio" -v ps="$pack_s" -v pn="$pack_n" 'BEGIN {
   f = "%-46s %8s %9s  %s\n"
   printf f, "measure", "value", "target", ""
   printf f, "LAMMPS time / softpack time, frictional", sprintf("%.2fx", b / a), ">= 2x", (b / a >= 2 ? "PASS" : "MISS")
@@ -133,6 +142,7 @@ awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
   printf f, "softpack frictional / frictionless time", sprintf("%.2fx", a / c), ">= 1.5x", (a / c >= 1.5 ? "PASS" : "MISS")
   printf f, "  same, Google Benchmark Confined (per step)", sprintf("%.2fx", gb), "-", ""
   printf f, "contact detection s/sphere, Pi=100 / Pi=1", sprintf("%.2fx", q), "<= 2x", (q <= 2 ? "PASS" : "MISS")
+  printf f, "softpack-pack, " pn " spheres (Pi = 10)", sprintf("%.1f s", ps), "< 60 s", (ps < 60 ? "PASS" : "MISS")
   printf "  (softpack %.4g / %.4g s, LAMMPS %.4g / %.4g s frictional / frictionless; detection %s / %s s per sphere)\n",
     a, c, b, d, q100, q1
 }'

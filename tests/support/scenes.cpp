@@ -1,5 +1,6 @@
 #include "support/scenes.hpp"
 
+#include "packing/power_law.hpp"
 #include "relax/relaxation.hpp"
 #include "sim/simulation.hpp"
 
@@ -23,28 +24,8 @@ SceneDef basic_scene() {
   return s;
 }
 
-std::uint64_t Random::bits() {
-  std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
-double Random::uniform() { return static_cast<double>(bits() >> 11) * 0x1.0p-53; }
-double Random::uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-Vec3 Random::in_box(double half) { return {uniform(-half, half), uniform(-half, half), uniform(-half, half)}; }
-
-Vec3 Random::in_ball(double R) {
-  for (;;) {
-    const Vec3 p = in_box(R);
-    if (p.squaredNorm() < R * R) return p;
-  }
-}
-
 double power_law_radius(Random& rng, double r_min, double r_max, double b) {
-  // CDF(r) = (r_min^(1-b) - r^(1-b)) / (r_min^(1-b) - r_max^(1-b)), inverted.
-  const double a = std::pow(r_min, 1.0 - b), c = std::pow(r_max, 1.0 - b);
-  return std::pow(a - rng.uniform() * (a - c), 1.0 / (1.0 - b));
+  return power_law::sample(power_law::Law{r_min, r_max, b}, rng);
 }
 
 std::vector<ParticleDef> random_cloud(Random& rng, int n, double half, double r_min, double r_max, double b) {

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/random.hpp"
 #include "scene/scene_def.hpp"
 
 namespace softpack::testing {
@@ -16,19 +17,8 @@ Material stiff_grain();
 /// time step at 0.2 of the Rayleigh limit and a neighbour skin of 0.2 r_min.
 SceneDef basic_scene();
 
-/// Deterministic uniform variates from SplitMix64 bits (identical on every platform).
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t bits();
-  double uniform();                      ///< [0, 1)
-  double uniform(double lo, double hi);  ///< [lo, hi)
-  Vec3 in_box(double half);              ///< uniform in [-half, half)^3
-  Vec3 in_ball(double R);                ///< uniform in the ball of radius R
-
- private:
-  std::uint64_t state_;
-};
+/// Deterministic random numbers (engine/core/random.hpp).
+using Random = softpack::Random;
 
 /// Radius from the truncated power law P(r) ~ r^-b on [r_min, r_max] (inverse CDF).
 double power_law_radius(Random& rng, double r_min, double r_max, double b);

@@ -1,0 +1,111 @@
+#include "packing/generator.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "packing/insertion_grid.hpp"
+#include "packing/power_law.hpp"
+
+namespace softpack {
+
+void validate(const PackingParameters& p) {
+  const auto bad = [](const char* key, double v, const char* allowed) {
+    throw InputError(fmt::format("packing.{}: {} is not allowed; allowed: {}", key, v, allowed));
+  };
+  if (!(p.Rs > 0.0 && std::isfinite(p.Rs))) bad("Rs", p.Rs, "Rs > 0 [m]");
+  if (!(p.r_max > 0.0 && p.r_max < p.Rs)) bad("r_max", p.r_max, "0 < r_max < Rs [m]");
+  if (!(p.polydispersity > 1.0 && std::isfinite(p.polydispersity))) bad("polydispersity", p.polydispersity, "Pi > 1");
+  if (!(p.exponent > 1.0 && std::isfinite(p.exponent))) bad("exponent", p.exponent, "b > 1");
+  if (!(p.beta > 0.0 && std::isfinite(p.beta))) bad("beta", p.beta, "beta > 0");
+  if (p.trials < 1) bad("trials", static_cast<double>(p.trials), "I >= 1");
+  if (!(p.level_ratio > 1.0 && std::isfinite(p.level_ratio))) bad("level_ratio", p.level_ratio, "level_ratio > 1");
+}
+
+namespace {
+
+// Step 1: radii until V_L > beta V_S (Eq. 2); the volume compared is sum r^3 > beta Rs^3.
+std::vector<double> sample_list(const PackingParameters& p, Random& rng) {
+  const power_law::Law law{p.r_max / p.polydispersity, p.r_max, p.exponent};
+  const double target = p.beta * p.Rs * p.Rs * p.Rs;
+  const double expected = target / power_law::mean_cube(law);
+  if (expected > 5e7)
+    throw InputError(fmt::format("packing: these parameters ask for about {:.3g} spheres (beta Rs^3 / <r^3>); "
+                                 "the generator stops at 5e7 — reduce packing.beta or raise packing.r_max",
+                                 expected));
+  std::vector<double> radii;
+  radii.reserve(static_cast<std::size_t>(expected * 1.1) + 16);
+  double volume = 0.0;
+  while (volume <= target) {
+    radii.push_back(power_law::sample(law, rng));
+    volume += radii.back() * radii.back() * radii.back();
+  }
+  std::sort(radii.begin(), radii.end(), std::greater<>());  // step 2
+  return radii;
+}
+
+}  // namespace
+
+Packing generate_packing(const PackingParameters& p, std::uint64_t seed, const PackingProgress& progress) {
+  validate(p);
+  Random rng(seed);
+  const std::vector<double> list = sample_list(p, rng);
+  Packing out;
+  out.sampled = list.size();
+  InsertionGrid grid(p.r_max / p.polydispersity, p.r_max, p.level_ratio);
+  const std::size_t report = std::max<std::size_t>(1, list.size() / 100);
+
+  // Step 3: random sequential insertion, largest first.
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const double r = list[k];
+    bool placed = false;
+    for (long t = 0; t < p.trials && !placed; ++t) {
+      const Vec3 x = rng.in_ball(p.Rs - r);  // inside the shell without touching it
+      if (!grid.overlaps(x, r)) {
+        grid.insert(x, r);
+        out.radii_inserted.push_back(r);
+        placed = true;
+      }
+    }
+    if (!placed) ++out.discarded;
+    if (progress && (k + 1) % report == 0) progress("insert", k + 1, list.size());
+  }
+
+  // Step 4: growth, largest first, each until it touches its nearest neighbour.
+  const int n = static_cast<int>(grid.size());
+  for (int id = 0; id < n; ++id) {
+    const Vec3& x = grid.centre(id);
+    const double r = grid.radius(id);
+    const double shell_gap = p.Rs - x.norm() - r;
+    // Search the nearest sphere within a growing gap until one is found or the shell is
+    // nearer than anything left unsearched (then the outcome is decided in both modes).
+    double sphere_gap = std::numeric_limits<double>::infinity();
+    for (double search = r; search < 4.0 * p.Rs; search *= 2.0) {
+      sphere_gap = grid.nearest_gap(x, r, id, search);
+      if (std::isfinite(sphere_gap) || shell_gap < search) break;
+    }
+    double grow = 0.0;
+    if (p.shell_is_neighbour) grow = std::min(sphere_gap, shell_gap);
+    else if (sphere_gap <= shell_gap) grow = sphere_gap;  // else: it cannot reach its neighbour
+    if (std::isfinite(grow) && grow > 0.0) {
+      grid.set_radius(id, r + grow);
+      ++out.grown;
+    }
+    if (progress && (id + 1) % static_cast<int>(std::max<std::size_t>(1, grid.size() / 100)) == 0)
+      progress("grow", static_cast<std::size_t>(id + 1), grid.size());
+  }
+
+  for (int id = 0; id < n; ++id) {
+    out.centres.push_back(grid.centre(id));
+    out.radii.push_back(grid.radius(id));
+  }
+  return out;
+}
+
+}  // namespace softpack

@@ -1,0 +1,58 @@
+// The soft-particle packing generator: the modified Aste (1996) algorithm of paper §3.
+//
+//   1. draw radii from the truncated power law (Eq. 1) until the list volume V_L exceeds
+//      beta times the shell volume V_S (Eq. 2);
+//   2. sort the list by decreasing radius;
+//   3. give each sphere `trials` random positions inside the shell (no overlap with the shell:
+//      centre within Rs - r), keep the first that overlaps no inserted sphere, discard the
+//      sphere after `trials` failures;
+//   4. from the largest inserted sphere down, grow each until it touches its nearest neighbour.
+//
+// Whether the shell counts as a neighbour in step 4 is a choice (the paper is silent):
+//   shell_is_neighbour = true:  the nearest neighbour is the nearest sphere or the shell; a
+//                               sphere nearer to the shell than to any sphere grows until it
+//                               touches the shell;
+//   shell_is_neighbour = false: the nearest neighbour is the nearest sphere; a sphere that
+//                               would cross the shell on its way there does not grow.
+// It sets the gap between the shell and the outermost grains, hence where the soft-particle
+// starts to push back (delta of Table 1).
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace softpack {
+
+struct PackingParameters {
+  double Rs = 0.0;              ///< shell radius [m]
+  double r_max = 0.0;           ///< largest radius of the list [m]
+  double polydispersity = 0.0;  ///< Pi = r_max / r_min
+  double exponent = 0.0;        ///< b of Eq. 1
+  double beta = 0.0;            ///< list volume / shell volume (Eq. 2)
+  long trials = 0;              ///< I
+  bool shell_is_neighbour = true;
+  double level_ratio = 0.0;     ///< cell size ratio of the insertion grid (cost only)
+};
+
+/// Validates the parameters; InputError names the key "packing.<name>" and the allowed range.
+void validate(const PackingParameters& p);
+
+struct Packing {
+  std::vector<Vec3> centres;   ///< inserted spheres, largest (before growth) first; shell at 0
+  std::vector<double> radii;   ///< after growth
+  std::vector<double> radii_inserted;  ///< before growth
+  std::size_t sampled = 0;     ///< spheres in the list
+  std::size_t discarded = 0;   ///< spheres that found no place in `trials` attempts
+  std::size_t grown = 0;       ///< spheres that grew to touch a neighbour
+};
+
+/// Progress of a long generation: phase ("insert", "grow"), spheres done, spheres in all.
+using PackingProgress = std::function<void(const std::string& phase, std::size_t done, std::size_t total)>;
+
+/// Generates the packing of `seed`: the same parameters and seed give the same bits.
+Packing generate_packing(const PackingParameters& p, std::uint64_t seed, const PackingProgress& progress = {});
+
+}  // namespace softpack

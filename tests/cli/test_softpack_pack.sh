@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# softpack-pack, softpack-section and softpack-apollonian from the command line: --help, the
+# same seed gives the same datasets, another seed another packing, and every bad input gives
+# one message naming the key, exit code 2 and no output file.
+set -euo pipefail
+bin=$1
+root=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$bin/softpack-pack" --help | grep -q -- "--seed" || fail "softpack-pack --help"
+"$bin/softpack-section" --help | grep -q -- "--packing" || fail "softpack-section --help"
+"$bin/softpack-apollonian" --help | grep -q -- "--depth" || fail "softpack-apollonian --help"
+
+pack() { "$bin/softpack-pack" --config "$1" --seed "$2" --out "$3" --quiet; }
+pack "$root/experiments/quick.yaml" 1 "$tmp/a.h5"
+pack "$root/experiments/quick.yaml" 1 "$tmp/b.h5"
+pack "$root/experiments/quick.yaml" 2 "$tmp/c.h5"
+datasets() { h5dump -d /centres -d /radii -d /radii_inserted -d /stats/radial_profile/solid_fraction "$1" | tail -n +2; }
+[ "$(datasets "$tmp/a.h5")" = "$(datasets "$tmp/b.h5")" ] || fail "same seed, different datasets"
+[ "$(datasets "$tmp/a.h5")" != "$(datasets "$tmp/c.h5")" ] || fail "different seeds, same packing"
+h5dump -d /provenance/config "$tmp/a.h5" | grep -q "polydispersity" || fail "no configuration in the provenance"
+
+"$bin/softpack-section" --packing "$tmp/a.h5" --out "$tmp/section.dat" 2> /dev/null
+grep -q "^# shell" "$tmp/section.dat" || fail "section file has no shell line"
+
+# expect_error MESSAGE OUTPUT COMMAND...: exit code 2, MESSAGE on stderr, OUTPUT not created.
+expect_error() {
+  local message=$1 output=$2
+  shift 2
+  set +e
+  "$@" 2> "$tmp/err" > /dev/null
+  local code=$?
+  set -e
+  [ "$code" -eq 2 ] || fail "exit code $code (expected 2) for: $*"
+  grep -qF -- "$message" "$tmp/err" || fail "expected '$message', got: $(cat "$tmp/err")"
+  [ ! -e "$output" ] || fail "$output was written for bad input"
+  ls "$tmp" | grep -q '\.tmp\.' && fail "a temporary file was left behind" || true
+}
+edit() { sed "$1" "$root/experiments/quick.yaml" > "$tmp/bad.yaml"; }
+out=$tmp/bad.h5
+edit 's/polydispersity: 4/polydispersity: 1/'
+expect_error "packing.polydispersity: 1 is not allowed; allowed: 1 < value" "$out" pack "$tmp/bad.yaml" 1 "$out"
+edit 's/exponent: 3.5/exponent: 1/'
+expect_error "packing.exponent: 1 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
+edit 's/beta: 1.0/beta: 0/'
+expect_error "packing.beta: 0 is not allowed; allowed: > 0" "$out" pack "$tmp/bad.yaml" 1 "$out"
+edit 's/trials: 300/trials: 0/'
+expect_error "packing.trials: 0 is not allowed; allowed: trials >= 1" "$out" pack "$tmp/bad.yaml" 1 "$out"
+edit 's/r_max_over_Rs: 0.35/r_max_over_Rs: 1.2/'
+expect_error "packing.r_max_over_Rs: 1.2 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
+edit '/beta:/d'
+expect_error "packing: missing required key 'beta'" "$out" pack "$tmp/bad.yaml" 1 "$out"
+printf 'packing: {Rs: [0.016\n' > "$tmp/bad.yaml"
+expect_error "malformed YAML" "$out" pack "$tmp/bad.yaml" 1 "$out"
+expect_error "cannot open the file" "$out" pack "$tmp/none.yaml" 1 "$out"
+expect_error "--seed: -3 is not allowed" "$out" pack "$root/experiments/quick.yaml" -3 "$out"
+echo "not hdf5" > "$tmp/garbage.h5"
+expect_error "not an HDF5 file" "$tmp/s.dat" "$bin/softpack-section" --packing "$tmp/garbage.h5" --out "$tmp/s.dat"
+expect_error "--depth" "$tmp/ap.dat" "$bin/softpack-apollonian" --depth -1 --out "$tmp/ap.dat"
+echo "ok"
