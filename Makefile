@@ -42,7 +42,7 @@ $(BUILD)/CMakeCache.txt:
 build: $(BUILD)/CMakeCache.txt  ## compile the engine, executables, tests and benchmarks
 	cmake --build $(BUILD) -j $(JOBS)
 
-all: build  ## build, then run the example scenes of experiments/scenes/
+all: build packings figure1 figure2  ## build; the profile's packings, Figures 1-2; the example scenes
 	@for scene in experiments/scenes/*.yaml; do \
 	  out=data/scenes/$$(basename $$scene .yaml).json; \
 	  echo "softpack-run $$scene -> $$out"; \
