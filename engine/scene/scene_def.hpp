@@ -80,6 +80,9 @@ struct RotateGroupDef {
   std::optional<double> angle;     ///< stop after this angle [rad]
   std::optional<double> duration;  ///< or after this time [s]
   AfterDrive after = AfterDrive::release;
+  /// Turn the body's shell with its spheres (a rigid rotation of the whole soft-particle, no
+  /// slip at the shell); needs a body group and `centre` at that shell's centre.
+  bool with_shell = false;
 };
 
 /// Rigid translation of a group at constant velocity.

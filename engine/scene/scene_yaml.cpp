@@ -59,7 +59,7 @@ DriverDef parse_driver(const ConfigNode& d) {
     return m;
   }
   if (type == "rotate") {
-    d.allow_only({"type", "group", "centre", "axis", "rate", "angle", "duration", "after"});
+    d.allow_only({"type", "group", "centre", "axis", "rate", "angle", "duration", "after", "with_shell"});
     RotateGroupDef r;
     r.group = parse_group(d.at("group"));
     r.centre = d.at("centre").vec3();
@@ -68,6 +68,7 @@ DriverDef parse_driver(const ConfigNode& d) {
     r.angle = optional_positive(d, "angle");
     r.duration = optional_positive(d, "duration");
     r.after = parse_after(d);
+    if (auto c = d.find("with_shell")) r.with_shell = c->boolean();
     return r;
   }
   if (type == "translate") {

@@ -78,7 +78,7 @@ Simulation::Simulation(const SceneDef& scene) : scene_(scene) {
   for (const PlaneDef& d : scene_.planes)
     planes_.push_back(PlaneWall{d.point, d.normal.normalized(), Vec3::Zero(), d.material});
   for (const ShellDef& d : scene_.shells) {
-    shells_.push_back(SphericalShell{d.centre, d.radius, d.body, Vec3::Zero(), d.material, d.contact_radius});
+    shells_.push_back(SphericalShell{d.centre, d.radius, d.body, Vec3::Zero(), Vec3::Zero(), d.material, d.contact_radius});
     std::vector<int> members;
     for (std::size_t i = 0; i < n; ++i)
       if (p_.body[i] == d.body) members.push_back(static_cast<int>(i));
@@ -163,6 +163,10 @@ void Simulation::activate(ActiveDriver& d) {
           for (std::size_t k = 0; k < scene_.shells.size(); ++k)
             if (scene_.shells[k].name == def.wall) d.shell = static_cast<int>(k);
         } else {
+          if constexpr (std::is_same_v<D, RotateGroupDef>)
+            if (def.with_shell)
+              for (std::size_t k = 0; k < scene_.shells.size(); ++k)
+                if (scene_.shells[k].body == def.group.body) d.shell = static_cast<int>(k);
           d.members = members_of(def.group);
           for (int i : d.members) {
             p_.driven[i] = 1;
@@ -191,7 +195,7 @@ void Simulation::release_drivers() {
     if (d.retired) continue;
     d.retired = true;
     if (d.plane >= 0) planes_[d.plane].velocity.setZero();
-    if (d.shell >= 0) shells_[d.shell].velocity.setZero();
+    if (d.shell >= 0) shells_[d.shell].velocity.setZero(), shells_[d.shell].spin.setZero();
     for (int i : d.members) {
       p_.driven[i] = 0;
       p_.v[i].setZero();
@@ -266,6 +270,7 @@ void Simulation::advance_drivers() {
               p_.x[i] = x_new;
               if (p_.rotates()) p_.w[i] = Omega;
             }
+            if (d.shell >= 0) shells_[d.shell].spin = Omega;
           }
           // HoldGroupDef: the spheres stay where they are, at rest.
         },
@@ -281,7 +286,7 @@ void Simulation::finish_drivers() {
     if (d.retired || !d.reached) continue;
     d.retired = true;
     if (d.plane >= 0) planes_[d.plane].velocity.setZero();
-    if (d.shell >= 0) shells_[d.shell].velocity.setZero();
+    if (d.shell >= 0) shells_[d.shell].velocity.setZero(), shells_[d.shell].spin.setZero();
     AfterDrive after = AfterDrive::release;
     if (const auto* r = std::get_if<RotateGroupDef>(&d.def)) after = r->after;
     if (const auto* t = std::get_if<TranslateGroupDef>(&d.def)) after = t->after;
@@ -426,16 +431,18 @@ void Simulation::compute_forces_for(double spring_dt) {
                          PairForceEffects{Friction, Damping, Rotation, Synchronized}, spring_dt, closed_);
 
   // Sphere-wall contacts: body 1 is the sphere, body 2 the wall.
-  // `n_half` and `h_half` are the contact normal and overlap at t + dt/2.
+  // `n_half` and `h_half` are the contact normal and overlap at t + dt/2, `wall_velocity_half`
+  // the wall's velocity at the half-step contact point (they differ for a turning shell).
   const auto wall_contact = [&](WallList& list, std::size_t k, int i, const Vec3& nrm, double h, const Vec3& n_half,
-                                double h_half, const Vec3& wall_velocity, const Vec3& ref, WallLoad& load) {
+                                double h_half, const Vec3& wall_velocity, const Vec3& wall_velocity_half, const Vec3& ref,
+                                WallLoad& load) {
     Vec3 vc = v[i] - wall_velocity;
     const double ai = r[i] - 0.5 * h;
     if constexpr (Rotation) vc -= (ai * w[i]).cross(nrm);
     Vec3& spring = Friction ? list.spring[k] : no_spring;
     if constexpr (Friction) {
       if constexpr (Synchronized) {
-        Vec3 vc_half = v[i] - wall_velocity;
+        Vec3 vc_half = v[i] - wall_velocity_half;
         if constexpr (Rotation) vc_half -= ((r[i] - 0.5 * h_half) * w[i]).cross(n_half);
         advance_spring(spring, n_half, vc_half, nrm, spring_dt);
       } else {
@@ -459,7 +466,7 @@ void Simulation::compute_forces_for(double spring_dt) {
         continue;
       }
       const double h_half = h + half_dt * (v[i] - pl.velocity).dot(pl.normal);
-      wall_contact(list, k, i, pl.normal, h, pl.normal, h_half, pl.velocity, pl.point, plane_loads_[w_]);
+      wall_contact(list, k, i, pl.normal, h, pl.normal, h_half, pl.velocity, pl.velocity, pl.point, plane_loads_[w_]);
     }
   }
   for (std::size_t w_ = 0; w_ < shells_.size(); ++w_) {
@@ -475,15 +482,19 @@ void Simulation::compute_forces_for(double spring_dt) {
         continue;
       }
       const Vec3 nrm = d * (-1.0 / dist);  // pushes inward
-      Vec3 n_half = nrm;
+      // A turning shell moves its surface with it (rigid rotation of a soft-particle).
+      const Vec3 surface_velocity = s.surface_velocity(x[i] - (r[i] - 0.5 * h) * nrm);
+      Vec3 n_half = nrm, surface_velocity_half = surface_velocity;
       double h_half = h;
       if constexpr (Friction && Synchronized) {
         const Vec3 d_half = d - half_dt * (v[i] - s.velocity);
         const double dist_half = d_half.norm();
         n_half = d_half * (-1.0 / dist_half);
         h_half = dist_half + r[i] - s.radius;
+        surface_velocity_half = s.surface_velocity(s.centre + d_half - (r[i] - 0.5 * h_half) * n_half);
       }
-      wall_contact(list, k, i, nrm, h, n_half, h_half, s.velocity, s.centre, shell_loads_[w_]);
+      wall_contact(list, k, i, nrm, h, n_half, h_half, surface_velocity, surface_velocity_half, s.centre,
+                   shell_loads_[w_]);
     }
   }
 }
@@ -563,6 +574,91 @@ const WallLoad& Simulation::wall_load(const std::string& name) const {
   for (std::size_t k = 0; k < scene_.shells.size(); ++k)
     if (scene_.shells[k].name == name) return shell_loads_[k];
   throw InputError(fmt::format("no plane or shell is named '{}'", name));
+}
+
+// ---------------------------------------------------------------------------------------------
+// State
+
+SimulationState Simulation::state() const {
+  if (drivers_moving()) throw std::logic_error("Simulation::state: a driver is still moving");
+  SimulationState s;
+  s.time = time_;
+  s.steps = steps_;
+  s.x = p_.x, s.v = p_.v, s.w = p_.w, s.F = p_.F, s.T = p_.T;
+  for (const auto& pl : planes_) s.plane_points.push_back(pl.point);
+  for (const auto& sh : shells_) s.shell_centres.push_back(sh.centre);
+  for (std::size_t k = 0; k < pairs_.spring.size(); ++k)
+    if (pairs_.spring[k] != Vec3::Zero()) s.pair_springs.push_back({pairs_.pairs[k].i, pairs_.pairs[k].j, pairs_.spring[k]});
+  const auto wall_springs = [](const std::vector<WallList>& lists) {
+    std::vector<std::vector<SimulationState::WallSpring>> out;
+    for (const WallList& l : lists) {
+      out.emplace_back();
+      for (std::size_t k = 0; k < l.spring.size(); ++k)
+        if (l.spring[k] != Vec3::Zero()) out.back().push_back({l.entries[k].i, l.spring[k]});
+    }
+    return out;
+  };
+  s.plane_springs = wall_springs(plane_lists_);
+  s.shell_springs = wall_springs(shell_lists_);
+  return s;
+}
+
+void Simulation::restore(const SimulationState& s) {
+  const std::size_t n = p_.size();
+  if (s.x.size() != n || s.v.size() != n || s.F.size() != n || s.w.size() != p_.w.size() || s.T.size() != p_.T.size() ||
+      s.plane_points.size() != planes_.size() || s.shell_centres.size() != shells_.size())
+    throw InputError(fmt::format("the saved state does not fit this scene ({} spheres saved, {} in the scene)", s.x.size(), n));
+  time_ = s.time;
+  steps_ = s.steps;
+  p_.x = s.x, p_.v = s.v, p_.w = s.w, p_.F = s.F, p_.T = s.T;
+  for (std::size_t k = 0; k < planes_.size(); ++k) planes_[k].point = s.plane_points[k];
+  for (std::size_t k = 0; k < shells_.size(); ++k) shells_[k].centre = s.shell_centres[k];
+  rebuild_neighbours();
+  // Install the springs; a saved spring whose pair is not listed cannot be: it was touching.
+  if (scene_.effects.friction) {
+    std::fill(pairs_.spring.begin(), pairs_.spring.end(), Vec3::Zero());
+    for (auto* lists : {&plane_lists_, &shell_lists_})
+      for (WallList& l : *lists) std::fill(l.spring.begin(), l.spring.end(), Vec3::Zero());
+    std::size_t a = 0;
+    for (const auto& sp : s.pair_springs) {
+      while (a < pairs_.pairs.size() && std::pair(pairs_.pairs[a].i, pairs_.pairs[a].j) < std::pair(sp.i, sp.j)) ++a;
+      if (a == pairs_.pairs.size() || pairs_.pairs[a].i != sp.i || pairs_.pairs[a].j != sp.j)
+        throw InputError(fmt::format("the saved state has a spring for spheres {} and {}, which are apart", sp.i, sp.j));
+      pairs_.spring[a] = sp.xi;
+    }
+    const auto install = [](std::vector<WallList>& lists, const std::vector<std::vector<SimulationState::WallSpring>>& saved) {
+      for (std::size_t w = 0; w < lists.size() && w < saved.size(); ++w) {
+        std::size_t a = 0;
+        for (const auto& sp : saved[w]) {
+          while (a < lists[w].entries.size() && lists[w].entries[a].i < sp.i) ++a;
+          if (a == lists[w].entries.size() || lists[w].entries[a].i != sp.i)
+            throw InputError(fmt::format("the saved state has a wall spring for sphere {}, which is off the wall", sp.i));
+          lists[w].spring[a] = sp.xi;
+        }
+      }
+    };
+    install(plane_lists_, s.plane_springs);
+    install(shell_lists_, s.shell_springs);
+  }
+}
+
+Vec3 Simulation::force_between(int from, int on) const {
+  Vec3 total = Vec3::Zero();
+  const bool friction = scene_.effects.friction;
+  for (std::size_t k = 0; k < pairs_.pairs.size(); ++k) {
+    const PairEntry& e = pairs_.pairs[k];
+    const int bi = p_.body[e.i], bj = p_.body[e.j];
+    if (!((bi == from && bj == on) || (bi == on && bj == from))) continue;
+    const Vec3 d = p_.x[e.i] - p_.x[e.j];
+    const double dist = d.norm(), h = e.r_sum - dist;
+    if (h <= 0.0) continue;
+    const Vec3 n = d / dist;
+    const ContactCoefficients& c = pairs_.k[k];
+    Vec3 F = hertz::force(c.kn, h) * n;  // on sphere i
+    if (friction) F -= c.kt0 * std::sqrt(h) * pairs_.spring[k];
+    total += bi == on ? F : Vec3(-F);
+  }
+  return total;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -48,6 +48,25 @@ struct Measurement {
   double energy_ratio() const;
 };
 
+/// Everything a run needs to continue bit for bit: the checkpoints of the sweeps.
+struct SimulationState {
+  double time = 0.0;
+  long steps = 0;
+  std::vector<Vec3> x, v, w, F, T;  ///< w and T empty without rotation
+  std::vector<Vec3> plane_points, shell_centres;
+  /// Non-zero tangential springs: sphere pairs (i < j), and per wall (sphere, spring).
+  struct PairSpring {
+    int i = 0, j = 0;
+    Vec3 xi = Vec3::Zero();
+  };
+  struct WallSpring {
+    int i = 0;
+    Vec3 xi = Vec3::Zero();
+  };
+  std::vector<PairSpring> pair_springs;
+  std::vector<std::vector<WallSpring>> plane_springs, shell_springs;
+};
+
 class Simulation {
  public:
   /// Validates the scene (InputError naming the key on failure) and computes the initial forces.
@@ -67,6 +86,14 @@ class Simulation {
   /// True while a driver with a target (distance, angle, duration) has not reached it.
   bool drivers_moving() const;
   Measurement measure() const;
+
+  /// The state of the spheres, walls and springs (no drivers may be moving).
+  SimulationState state() const;
+  /// Continues from a state of the same scene; InputError when it does not fit the scene.
+  void restore(const SimulationState& s);
+  /// Elastic contact force (Hertz and tangential springs, no damping) that the spheres of body
+  /// `from` exert on the spheres of body `on`.
+  Vec3 force_between(int from, int on) const;
 
   double dt() const { return dt_; }
   double time() const { return time_; }

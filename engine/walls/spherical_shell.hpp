@@ -18,9 +18,12 @@ struct SphericalShell {
   double radius = 0.0;  ///< Rs [m]
   int body = kNoBody;   ///< the soft-particle whose grains it confines
   Vec3 velocity = Vec3::Zero();
+  Vec3 spin = Vec3::Zero();  ///< angular velocity about the centre while a driver turns it [rad/s]
   int material = 0;
   ShellContactRadius contact_radius = ShellContactRadius::concave;
 
+  /// Velocity of the shell's surface at the point p.
+  Vec3 surface_velocity(const Vec3& p) const { return velocity + spin.cross(p - centre); }
   /// Overlap of a sphere (x, r) inside the shell: h = |x - c| + r - Rs (h > 0 in contact).
   double overlap(const Vec3& x, double r) const { return (x - centre).norm() + r - radius; }
 };
