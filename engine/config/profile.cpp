@@ -9,7 +9,8 @@
 namespace softpack {
 
 const std::vector<std::string>& profile_sections() {
-  static const std::vector<std::string> sections{"profile", "seeds", "material", "packing"};
+  static const std::vector<std::string> sections{"profile",    "seeds",  "material",  "packing",
+                                                 "simulation", "relaxation", "normal", "tangential"};
   return sections;
 }
 

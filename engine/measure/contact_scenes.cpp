@@ -1,0 +1,82 @@
+#include "measure/contact_scenes.hpp"
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace softpack {
+namespace {
+
+SceneDef base_scene(const SimulationSettings& s) {
+  SceneDef scene;
+  scene.materials = {s.material};
+  scene.effects.normal = true;
+  scene.effects.friction = s.material.mu > 0.0;
+  scene.effects.rotation = scene.effects.friction;
+  scene.effects.restitution = s.restitution;
+  scene.effects.tangential_damping_ratio = s.tangential_damping_ratio;
+  scene.integration.safety = s.safety;
+  scene.integration.history_update = s.history_update;
+  scene.neighbor = NeighborDef{s.skin, s.level_ratio};
+  return scene;
+}
+
+void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Vec3& centre, const std::string& shell,
+                       ShellContactRadius radius) {
+  for (std::size_t i = 0; i < p.radii.size(); ++i) {
+    ParticleDef d;
+    d.x = centre + p.centres[i];
+    d.r = p.radii[i];
+    d.body = body;
+    scene.particles.push_back(d);
+  }
+  scene.shells.push_back(ShellDef{shell, body, centre, p.Rs, 0, radius});
+}
+
+}  // namespace
+
+ContactSetup soft_solid_setup(const PackingFile& first, const SimulationSettings& s) {
+  ContactSetup c;
+  c.kind = ContactScene::soft_solid;
+  c.scene = base_scene(s);
+  c.Rs = first.Rs;
+  add_soft_particle(c.scene, first, 0, Vec3::Zero(), "shell-1", s.shell_contact_radius);
+  c.scene.planes.push_back(PlaneDef{"wall", Vec3(first.Rs, 0, 0), Vec3(-1, 0, 0), 0});
+  c.second_wall = "wall";
+  c.first_shell = "shell-1";
+  return c;
+}
+
+ContactSetup soft_soft_setup(const PackingFile& first, const PackingFile& second, const SimulationSettings& s) {
+  if (first.Rs != second.Rs)
+    throw InputError(fmt::format("soft-soft needs two soft-particles of equal size; the packings have Rs = {} and {} m",
+                                 first.Rs, second.Rs));
+  ContactSetup c;
+  c.kind = ContactScene::soft_soft;
+  c.scene = base_scene(s);
+  c.Rs = first.Rs;
+  add_soft_particle(c.scene, first, 0, Vec3::Zero(), "shell-1", s.shell_contact_radius);
+  add_soft_particle(c.scene, second, 1, Vec3(2.0 * first.Rs, 0, 0), "shell-2", s.shell_contact_radius);
+  c.second_wall = "shell-2";
+  c.first_shell = "shell-1";
+  c.second_body = 1;
+  return c;
+}
+
+ContactSetup hertz_check_setup(double Rs, const SimulationSettings& s) {
+  ContactSetup c;
+  c.kind = ContactScene::soft_solid;
+  c.scene = base_scene(s);
+  c.Rs = Rs;
+  ParticleDef sphere;
+  sphere.r = Rs;
+  sphere.body = 0;
+  c.scene.particles.push_back(sphere);
+  c.scene.planes.push_back(PlaneDef{"wall", Vec3(Rs, 0, 0), Vec3(-1, 0, 0), 0});
+  // The held sphere stands for the fixed shell.
+  c.scene.drivers.emplace_back(std::in_place_type<HoldGroupDef>, HoldGroupDef{GroupDef{GroupDef::Kind::body, 0}});
+  c.second_wall = "wall";
+  return c;
+}
+
+}  // namespace softpack

@@ -1,0 +1,61 @@
+// Settings of the contact-law measurement (paper §4), read from a profile's `material`,
+// `simulation`, `relaxation`, `normal` and `tangential` sections. Every value is named in the
+// profile; the choices the paper leaves open are justified in docs/measurement.md.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "config/yaml_node.hpp"
+#include "core/material.hpp"
+#include "relax/relaxation.hpp"
+#include "scene/scene_def.hpp"
+#include "walls/spherical_shell.hpp"
+
+namespace softpack {
+
+/// The two contacts of the paper: a soft-particle against a plane wall (a solid sphere of
+/// infinite radius), and two soft-particles of equal size.
+enum class ContactScene { soft_solid, soft_soft };
+ContactScene parse_contact_scene(const std::string& name);  ///< "soft-solid" | "soft-soft"
+std::string scene_name(ContactScene s);
+
+/// Engine settings of the measurement scenes.
+struct SimulationSettings {
+  Material material;
+  double restitution = 0.0;
+  double tangential_damping_ratio = 0.0;
+  double safety = 0.0;
+  HistoryUpdate history_update = HistoryUpdate::synchronized;
+  double skin = 0.0;
+  double level_ratio = 0.0;
+  ShellContactRadius shell_contact_radius = ShellContactRadius::concave;
+};
+
+/// How the first soft-particle is turned for the tangential measurement.
+enum class AfterRotation { release, hold };
+
+struct NormalSettings {
+  std::vector<ContactScene> scenes;
+  std::vector<double> delta_n;  ///< hn / Rs, increasing, from 0
+  double speed = 0.0;           ///< approach speed of the second body [m/s]
+  bool incremental = true;      ///< from the previous point (else from the undeformed state)
+};
+
+struct TangentialSettings {
+  std::vector<double> delta_n;    ///< hn / Rs of the normal states to shear (a subset of normal)
+  std::vector<double> alpha_deg;  ///< rotation angles [degrees], ht = pi Rs alpha / 180
+  double rate = 0.0;              ///< angular speed of the rotation [rad/s]
+  AfterRotation after = AfterRotation::release;
+};
+
+struct MeasurementSettings {
+  SimulationSettings simulation;
+  RelaxationDef relaxation;
+  NormalSettings normal;
+  TangentialSettings tangential;
+};
+
+/// Reads and validates the sections; InputError names file, key and allowed values.
+MeasurementSettings parse_measurement(const ConfigNode& root);
+
+}  // namespace softpack

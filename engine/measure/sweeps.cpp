@@ -1,0 +1,175 @@
+#include "measure/sweeps.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace softpack {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+PointResult measure(const Simulation& sim, const ContactSetup& setup, const RelaxationReport& relax) {
+  PointResult r;
+  r.force = sim.wall_load(setup.second_wall).force;
+  if (!setup.first_shell.empty()) r.force_first = sim.wall_load(setup.first_shell).force;
+  r.force_between = setup.second_body >= 0 ? sim.force_between(setup.first_body, setup.second_body) : r.force;
+  r.contacts = static_cast<long>(sim.measure().contacts);
+  r.relax_steps = relax.steps;
+  r.relax_time = relax.simulated_time;
+  r.checks = relax.checks;
+  return r;
+}
+
+// Moves the second body along -x by `distance` at the loading speed (rigidly: its shell and,
+// for soft-soft, its spheres), until it arrives.
+void approach(Simulation& sim, const ContactSetup& setup, double distance, double speed) {
+  if (distance <= 0.0) return;
+  const Vec3 velocity(-speed, 0, 0);
+  sim.add_driver(MoveWallDef{setup.second_wall, velocity, distance, std::nullopt});
+  if (setup.second_body >= 0) {
+    TranslateGroupDef t;
+    t.group = GroupDef{GroupDef::Kind::body, setup.second_body};
+    t.velocity = velocity;
+    t.distance = distance;
+    t.after = AfterDrive::release;
+    sim.add_driver(t);
+  }
+  while (sim.drivers_moving()) sim.step();
+}
+
+// A point file is reused only when it holds the same configuration.
+bool usable(const std::string& path, const std::string& config) {
+  if (!std::filesystem::exists(path)) return false;
+  try {
+    return read_point_file(path, false).provenance.config == config;
+  } catch (const InputError&) {
+    return false;  // unreadable (it cannot be half-written, but may be foreign): recompute
+  }
+}
+
+PointProvenance provenance(const SweepContext& c, const char* stage) {
+  return PointProvenance{stage, scene_name(c.setup.kind), c.config, c.code_version};
+}
+
+}  // namespace
+
+std::string normal_point_path(const std::string& dir, std::size_t k) {
+  return (std::filesystem::path(dir) / fmt::format("point-{:03d}.h5", k)).string();
+}
+
+std::string tangential_point_path(const std::string& dir, std::size_t hn_index, std::size_t alpha_index) {
+  return (std::filesystem::path(dir) / fmt::format("point-{:03d}-{:03d}.h5", hn_index, alpha_index)).string();
+}
+
+std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
+  const auto& grid = c.settings.normal.delta_n;
+  std::vector<PointResult> points(grid.size());
+  std::size_t done = 0;  // points 0..done-1 are reusable
+  while (done < grid.size() && usable(normal_point_path(c.checkpoint_dir, done), c.config)) {
+    points[done] = read_point_file(normal_point_path(c.checkpoint_dir, done), false).result;
+    if (c.progress) c.progress(done, grid.size(), points[done], true);
+    ++done;
+  }
+  if (done == grid.size()) return points;
+
+  Simulation sim(c.setup.scene);
+  double hn_now = 0.0;
+  if (done > 0) {
+    // Continue from the last finished state (incremental) or the undeformed one (direct).
+    const std::size_t from = c.settings.normal.incremental ? done - 1 : 0;
+    sim.restore(read_point_file(normal_point_path(c.checkpoint_dir, from), true).state);
+    hn_now = grid[from] * c.setup.Rs;
+  }
+  const SimulationState undeformed_if_direct =
+      (!c.settings.normal.incremental && done > 0) ? read_point_file(normal_point_path(c.checkpoint_dir, 0), true).state
+                                                   : SimulationState{};
+  std::size_t computed = 0;
+  for (std::size_t k = done; k < grid.size(); ++k) {
+    const auto start = Clock::now();
+    const long step0 = sim.step_count();
+    const double hn = grid[k] * c.setup.Rs;
+    if (!c.settings.normal.incremental && k > 0) {
+      sim.restore(k == done && done > 0 ? undeformed_if_direct : read_point_file(normal_point_path(c.checkpoint_dir, 0), true).state);
+      hn_now = 0.0;
+    }
+    approach(sim, c.setup, hn - hn_now, c.settings.normal.speed);
+    hn_now = hn;
+    const RelaxationReport relax = softpack::relax(sim, c.settings.relaxation);
+    PointResult r = measure(sim, c.setup, relax);
+    r.delta_n = grid[k];
+    r.hn = hn;
+    r.steps = sim.step_count() - step0;
+    r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    write_point_file(normal_point_path(c.checkpoint_dir, k), r, sim.state(), provenance(c, "normal"));
+    points[k] = r;
+    if (c.progress) c.progress(k, grid.size(), r, false);
+    if (c.stop_after && ++computed == c.stop_after && k + 1 < grid.size()) return {};
+  }
+  return points;
+}
+
+std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::string& normal_dir) {
+  const auto& normal_grid = c.settings.normal.delta_n;
+  const auto& hn_grid = c.settings.tangential.delta_n;
+  const auto& alphas = c.settings.tangential.alpha_deg;
+  const std::size_t total = hn_grid.size() * alphas.size();
+  std::vector<PointResult> points;
+  std::size_t computed = 0;
+  for (std::size_t a = 0; a < hn_grid.size(); ++a) {
+    const std::size_t k = static_cast<std::size_t>(std::find(normal_grid.begin(), normal_grid.end(), hn_grid[a]) - normal_grid.begin());
+    const std::string state_path = normal_point_path(normal_dir, k);
+    if (!std::filesystem::exists(state_path))
+      throw InputError(fmt::format("{}: missing normal state for delta_n = {} (run the normal stage of this scene and seed first)",
+                                   state_path, hn_grid[a]));
+    std::optional<SimulationState> normal_state;  // read when a point has to be computed
+    for (std::size_t b = 0; b < alphas.size(); ++b) {
+      const std::string path = tangential_point_path(c.checkpoint_dir, a, b);
+      if (usable(path, c.config)) {
+        points.push_back(read_point_file(path, false).result);
+        if (c.progress) c.progress(points.size() - 1, total, points.back(), true);
+        continue;
+      }
+      if (!normal_state) normal_state = read_point_file(state_path, true).state;
+      const auto start = Clock::now();
+      Simulation sim(c.setup.scene);
+      sim.restore(*normal_state);
+      const long step0 = sim.step_count();
+      const double alpha = alphas[b] * std::numbers::pi / 180.0;
+      if (alpha != 0.0) {
+        RotateGroupDef rot;
+        rot.group = GroupDef{GroupDef::Kind::body, c.setup.first_body};
+        rot.centre = Vec3::Zero();  // the first shell's centre
+        rot.axis = Vec3::UnitZ();
+        rot.rate = std::copysign(c.settings.tangential.rate, alpha);
+        rot.angle = std::abs(alpha);
+        rot.after = c.settings.tangential.after == AfterRotation::hold ? AfterDrive::hold : AfterDrive::release;
+        rot.with_shell = !c.setup.first_shell.empty();
+        sim.add_driver(rot);
+        while (sim.drivers_moving()) sim.step();
+      }
+      const RelaxationReport relax = softpack::relax(sim, c.settings.relaxation);
+      PointResult r = measure(sim, c.setup, relax);
+      r.delta_n = hn_grid[a];
+      r.hn = hn_grid[a] * c.setup.Rs;
+      r.alpha_deg = alphas[b];
+      r.ht = std::numbers::pi * c.setup.Rs * alphas[b] / 180.0;
+      r.steps = sim.step_count() - step0;
+      r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      sim.release_drivers();
+      write_point_file(path, r, sim.state(), provenance(c, "tangential"));
+      points.push_back(r);
+      if (c.progress) c.progress(points.size() - 1, total, r, false);
+      if (c.stop_after && ++computed == c.stop_after && points.size() < total) return {};
+    }
+  }
+  return points;
+}
+
+}  // namespace softpack

@@ -1,0 +1,48 @@
+// The normal and tangential sweeps of paper §4, point by point, each point checkpointed.
+//
+// Normal: the second body approaches along -x at `normal.speed` to each hn = delta_n Rs of the
+// grid, in increasing order, from the previous point (incremental) or from the undeformed
+// state (direct); then the scene relaxes with the profile's protocol and the force on the
+// second body is recorded with the state reached.
+//
+// Tangential: from the saved normal state at each of `tangential.delta_n`, the first
+// soft-particle (its spheres and its shell) is turned rigidly about +z through its centre by
+// each alpha of the grid at `tangential.rate`, then released (or held) and relaxed; ht =
+// pi Rs alpha / 180 and the force on the second body is split into parallel (+y) and
+// perpendicular (z) parts.
+//
+// Every point is written to its own file in the checkpoint directory as soon as it is done
+// (atomically). A sweep started again reuses every point whose file holds the same
+// configuration and continues from the last state: an interrupted sweep recomputes nothing
+// finished and gives the same bits as an uninterrupted one.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "measure/contact_scenes.hpp"
+#include "measure/point_file.hpp"
+#include "measure/settings.hpp"
+
+namespace softpack {
+
+struct SweepContext {
+  ContactSetup setup;
+  MeasurementSettings settings;
+  std::string config;          ///< configuration text recorded with (and checked against) each point
+  std::string checkpoint_dir;  ///< point files of this stage
+  std::string code_version;
+  /// Progress: index of the point, number of points, the point just finished (or reused).
+  std::function<void(std::size_t, std::size_t, const PointResult&, bool reused)> progress;
+  std::size_t stop_after = 0;  ///< for tests: stop after computing this many new points (0: never)
+};
+
+std::vector<PointResult> run_normal_sweep(const SweepContext& c);
+
+/// `normal_dir` holds the normal stage's point files of the same scene and seed.
+std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::string& normal_dir);
+
+std::string normal_point_path(const std::string& dir, std::size_t k);
+std::string tangential_point_path(const std::string& dir, std::size_t hn_index, std::size_t alpha_index);
+
+}  // namespace softpack

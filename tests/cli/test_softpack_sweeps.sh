@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# softpack-normal and softpack-tangential from the command line: --help, a run with progress,
+# resumption after a kill, and bad input (a packing of another profile, a missing normal
+# state, a grid that does not increase) refused with one message, exit 2, no output.
+set -euo pipefail
+bin=$1
+root=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+profile=$root/tests/data/sweep-profile.yaml
+
+"$bin/softpack-normal" --help | grep -q -- "--checkpoints" || fail "softpack-normal --help"
+"$bin/softpack-tangential" --help | grep -q -- "--normal-checkpoints" || fail "softpack-tangential --help"
+
+for s in 1 2; do "$bin/softpack-pack" --config "$profile" --seed $s --out "$tmp/p$s.h5" --quiet; done
+normal() { "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 1 --packing "$tmp/p1.h5" "$@"; }
+normal --checkpoints "$tmp/a" --out "$tmp/a.h5" 2> "$tmp/progress"
+grep -q "point 5/5" "$tmp/progress" || fail "no progress lines: $(cat "$tmp/progress")"
+
+# Killed at a random moment, then started again: the same numbers as an uninterrupted run.
+normal --checkpoints "$tmp/b" --out "$tmp/b.h5" --quiet &
+pid=$!
+sleep "0.$((RANDOM % 3))"
+kill -9 "$pid" 2> /dev/null || true
+wait "$pid" 2> /dev/null || true
+[ ! -e "$tmp/b.h5" ] || rm "$tmp/b.h5"  # it may have finished before the kill
+ls "$tmp"/b 2> /dev/null | grep -q '\.tmp\.' && rm -f "$tmp"/b/*.tmp.*  # what a kill leaves: temporaries only
+normal --checkpoints "$tmp/b" --out "$tmp/b.h5" --quiet
+numbers() { h5dump -d /Fn -d /force -d /force_first -d /contacts -d /steps -d /relaxation/checks/force_ratio "$1" | tail -n +2; }
+[ "$(numbers "$tmp/a.h5")" = "$(numbers "$tmp/b.h5")" ] || fail "resumed run differs from the uninterrupted one"
+
+expect_error() {
+  local message=$1 output=$2
+  shift 2
+  set +e
+  "$@" 2> "$tmp/err" > /dev/null
+  local code=$?
+  set -e
+  [ "$code" -eq 2 ] || fail "exit code $code (expected 2): $(cat "$tmp/err")"
+  grep -qF -- "$message" "$tmp/err" || fail "expected '$message', got: $(cat "$tmp/err")"
+  [ ! -e "$output" ] || fail "$output was written for bad input"
+}
+"$bin/softpack-pack" --config "$root/experiments/quick.yaml" --seed 1 --out "$tmp/other.h5" --quiet
+expect_error "this packing was made from another packing configuration" "$tmp/x.h5" \
+  "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 1 --packing "$tmp/other.h5" --checkpoints "$tmp/x" --out "$tmp/x.h5"
+expect_error "missing normal state for delta_n" "$tmp/t.h5" \
+  "$bin/softpack-tangential" --config "$profile" --scene soft-solid --seed 1 --packing "$tmp/p1.h5" --checkpoints "$tmp/t" \
+  --normal-checkpoints "$tmp/none" --out "$tmp/t.h5"
+sed 's/delta_n: \[0.0, 0.2, 0.4, 0.5, 0.6\]/delta_n: [0.0, 0.4, 0.2, 0.5, 0.6]/' "$profile" > "$tmp/bad.yaml"
+expect_error "does not increase" "$tmp/y.h5" \
+  "$bin/softpack-normal" --config "$tmp/bad.yaml" --scene soft-solid --seed 1 --packing "$tmp/p1.h5" --checkpoints "$tmp/y" --out "$tmp/y.h5"
+expect_error "--second-packing: required for soft-soft" "$tmp/z.h5" \
+  "$bin/softpack-normal" --config "$profile" --scene soft-soft --seed 1 --packing "$tmp/p1.h5" --checkpoints "$tmp/z" --out "$tmp/z.h5"
+expect_error "scene 'hard-soft' is not allowed" "$tmp/z.h5" \
+  "$bin/softpack-normal" --config "$profile" --scene hard-soft --seed 1 --packing "$tmp/p1.h5" --checkpoints "$tmp/z" --out "$tmp/z.h5"
+echo ok

@@ -1,0 +1,157 @@
+// The normal and tangential sweeps (measure/): the chain measures Hertz's law, zero force at
+// contact, balance of soft-soft, mirror symmetry of the shear, and bit-identical resumption.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <unistd.h>
+
+#include "config/profile.hpp"
+#include "measure/sweeps.hpp"
+#include "packing/generator.hpp"
+
+namespace softpack {
+namespace {
+
+namespace fs = std::filesystem;
+
+const ConfigNode& profile() {
+  static const ConfigNode root = ConfigNode::load_file(SOFTPACK_SOURCE_DIR "/tests/data/sweep-profile.yaml");
+  return root;
+}
+
+PackingFile packing(std::uint64_t seed) {
+  const PackingProfile prof = parse_packing(profile());
+  const Packing p = generate_packing(prof.parameters, seed);
+  PackingFile f;
+  f.centres = p.centres;
+  f.radii = p.radii;
+  f.Rs = prof.parameters.Rs;
+  f.parameters = prof.parameters;
+  f.provenance.seed = seed;
+  return f;
+}
+
+struct TempDir {
+  fs::path path;
+  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("softpack-" + name + "-" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string operator/(const std::string& sub) const { return (path / sub).string(); }
+};
+
+SweepContext context(const ContactSetup& setup, const std::string& dir) {
+  SweepContext c;
+  c.setup = setup;
+  c.settings = parse_measurement(profile());
+  c.config = "test";
+  c.checkpoint_dir = dir;
+  c.code_version = "test";
+  return c;
+}
+
+// With the soft-particle replaced by one solid sphere of radius Rs, the whole chain (loading,
+// relaxation, force measurement) must give Hertz's law for a sphere on a wall, Eq. 3:
+// Fn = sqrt(Rs) hn^(3/2) / D, R12 = Rs.
+TEST(NormalSweep, TheChainMeasuresHertz) {
+  TempDir tmp("hertz");
+  SweepContext c = context(hertz_check_setup(0.016, parse_measurement(profile()).simulation), tmp / "n");
+  const auto points = run_normal_sweep(c);
+  const Material& m = c.settings.simulation.material;
+  const double D = 0.75 * 2.0 * (1 - m.nu * m.nu) / m.E;  // Eq. 4, wall of the same material
+  ASSERT_EQ(points.size(), c.settings.normal.delta_n.size());
+  for (const PointResult& p : points) {
+    const double expected = std::sqrt(0.016) * std::pow(p.hn, 1.5) / D;
+    EXPECT_NEAR(p.force.x(), expected, 1e-6 * expected + 1e-300) << "delta_n = " << p.delta_n;
+    EXPECT_NEAR(p.force.y(), 0.0, 1e-12 * (expected + 1e-12));
+  }
+}
+
+TEST(NormalSweep, NoForceAtContactAndSoftSoftIsBalanced) {
+  TempDir tmp("balance");
+  const PackingFile a = packing(1), b = packing(2);
+  const auto settings = parse_measurement(profile());
+  for (const ContactSetup& setup : {soft_solid_setup(a, settings.simulation), soft_soft_setup(a, b, settings.simulation)}) {
+    const auto points = run_normal_sweep(context(setup, tmp / scene_name(setup.kind)));
+    EXPECT_LT(points.front().force.norm(), 1e-15) << scene_name(setup.kind) << ": force at hn = 0";
+    const PointResult& last = points.back();
+    ASSERT_GT(last.force.x(), 0.0) << scene_name(setup.kind) << ": no repulsion at the deepest point";
+    const auto& conv = std::get<ConvergedRelaxationDef>(settings.relaxation);
+    ASSERT_LT(last.checks.back().residuals.force_ratio(), conv.force_tolerance) << "not relaxed: the balance is not tested";
+    // In balance the first shell holds what the second body receives: equal and opposite.
+    EXPECT_LT((last.force + last.force_first).norm(), 1e-3 * last.force.norm()) << scene_name(setup.kind);
+    if (setup.kind == ContactScene::soft_soft) {
+      EXPECT_LT((last.force_between - last.force).norm(), 1e-3 * last.force.norm());
+    }
+  }
+}
+
+// One grain in its shell pressed by the wall is symmetric under y -> -y: turning it by +alpha
+// and -alpha about z must give opposite tangential forces, the +alpha one along +y.
+TEST(TangentialSweep, OppositeAnglesGiveOppositeForcesOnAMirrorSymmetricScene) {
+  TempDir tmp("mirror");
+  PackingFile one;
+  one.Rs = 0.016;
+  one.centres = {Vec3::Zero()};
+  one.radii = {0.9 * one.Rs};
+  SweepContext c = context(soft_solid_setup(one, parse_measurement(profile()).simulation), tmp / "n");
+  c.settings.normal.delta_n = {0.0, 0.15};
+  c.settings.tangential.delta_n = {0.15};
+  c.settings.tangential.alpha_deg = {-0.5, 0.0, 0.5};
+  run_normal_sweep(c);
+  SweepContext t = c;
+  t.checkpoint_dir = tmp / "t";
+  const auto points = run_tangential_sweep(t, tmp / "n");
+  ASSERT_EQ(points.size(), 3u);
+  const double minus = points[0].force.y(), zero = points[1].force.y(), plus = points[2].force.y();
+  EXPECT_GT(plus, 0.0);
+  EXPECT_NEAR(plus, -minus, 1e-9 * plus);
+  EXPECT_NEAR(zero, 0.0, 1e-9 * plus);
+  EXPECT_NEAR(points[0].ht, -std::numbers::pi * 0.016 * 0.5 / 180.0, 1e-18);
+}
+
+bool same_results(const std::vector<PointResult>& a, const std::vector<PointResult>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k].force != b[k].force || a[k].force_first != b[k].force_first || a[k].force_between != b[k].force_between ||
+        a[k].contacts != b[k].contacts || a[k].relax_steps != b[k].relax_steps || a[k].steps != b[k].steps ||
+        a[k].checks.size() != b[k].checks.size())
+      return false;
+    for (std::size_t j = 0; j < a[k].checks.size(); ++j)
+      if (a[k].checks[j].residuals.elastic_energy != b[k].checks[j].residuals.elastic_energy) return false;
+  }
+  return true;
+}
+
+// A sweep interrupted after any point and started again recomputes nothing finished and gives
+// the same bits as one that never stopped (the wall-clock times aside).
+TEST(Sweeps, ResumeAfterAnInterruptionGivesIdenticalResults) {
+  TempDir tmp("resume");
+  const PackingFile a = packing(1);
+  const auto settings = parse_measurement(profile());
+  const ContactSetup setup = soft_solid_setup(a, settings.simulation);
+  const auto straight = run_normal_sweep(context(setup, tmp / "straight"));
+  SweepContext ts = context(setup, tmp / "straight-t");
+  const auto straight_t = run_tangential_sweep(ts, tmp / "straight");
+  for (std::size_t stop = 1; stop < settings.normal.delta_n.size(); ++stop) {
+    const std::string dir = tmp / ("stop-" + std::to_string(stop));
+    SweepContext c = context(setup, dir);
+    c.stop_after = stop;
+    EXPECT_TRUE(run_normal_sweep(c).empty());
+    c.stop_after = 0;
+    std::size_t reused = 0;
+    c.progress = [&](std::size_t, std::size_t, const PointResult&, bool r) { reused += r; };
+    EXPECT_TRUE(same_results(run_normal_sweep(c), straight)) << "stopped after " << stop << " points";
+    EXPECT_EQ(reused, stop);
+  }
+  SweepContext t = context(setup, tmp / "t");
+  t.stop_after = 2;
+  EXPECT_TRUE(run_tangential_sweep(t, tmp / "straight").empty());
+  t.stop_after = 0;
+  EXPECT_TRUE(same_results(run_tangential_sweep(t, tmp / "straight"), straight_t));
+}
+
+}  // namespace
+}  // namespace softpack
