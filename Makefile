@@ -66,3 +66,4 @@ clean:  ## remove builds and generated data (keeps data/archive)
 	rm -rf $(BUILD) $(BUILD_SANITIZE) data/scenes data/$(PROFILE) data/studies figures/generated
 
 include workflow/packing.mk
+include workflow/sweeps.mk
