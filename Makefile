@@ -8,6 +8,7 @@ SHELL := /bin/bash
 .DELETE_ON_ERROR:
 
 PROFILE ?= paper
+DATA ?= data
 RUN ?=
 BUILD ?= build
 BUILD_SANITIZE ?= build-sanitize
@@ -63,7 +64,8 @@ bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side b
 	bench/run_benchmarks.sh $(BUILD)
 
 clean:  ## remove builds and generated data (keeps data/archive)
-	rm -rf $(BUILD) $(BUILD_SANITIZE) data/scenes data/$(PROFILE) data/studies figures/generated
+	rm -rf $(BUILD) $(BUILD_SANITIZE) data/scenes $(DATA)/$(PROFILE) $(DATA)/studies figures/generated
 
+include workflow/stamps.mk
 include workflow/packing.mk
 include workflow/sweeps.mk

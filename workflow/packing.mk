@@ -1,47 +1,47 @@
-# Packing stage: packings of the profile's seeds, their pictures, Figures 1 and 2, and the
-# packing density study. Included by the top-level Makefile (PROFILE, BUILD, RUN come from it).
+# Packing stage: packings of the profile's seeds (with pictures), Figures 1 and 2, and the
+# packing density study. Included by the top-level Makefile.
 
 SEEDS := $(shell sed -n 's/^seeds: *\[\(.*\)\].*/\1/p' experiments/$(PROFILE).yaml | tr ',' ' ')
-PACKING_DIR := data/$(PROFILE)/packings
+PACKING_DIR := $(DATA)/$(PROFILE)/packings
 PACKINGS := $(foreach s,$(SEEDS),$(PACKING_DIR)/seed-$(s).h5)
 FIGURES_OUT := figures/generated
 PACK := $(BUILD)/engine/softpack-pack
 
-$(BUILD)/engine/%: build-tools ;
-
 .PHONY: packings study-packing figure1 figure2 build-tools
 build-tools: $(BUILD)/CMakeCache.txt
-	@cmake --build $(BUILD) -j $(JOBS) --target softpack-pack softpack-section softpack-apollonian softpack-packing-study > /dev/null
+	@cmake --build $(BUILD) -j $(JOBS) > /dev/null
 
-packings: $(PACKINGS)  ## packings of the profile's seeds (data/PROFILE/packings/, with .vtp and .xyz)
+packings: $(PACKINGS)  ## packings of the profile's seeds (DATA/PROFILE/packings/, with .vtp and .xyz)
 
-$(PACKING_DIR)/seed-%.h5: experiments/$(PROFILE).yaml | build-tools
-	@echo "pack: $(PROFILE) seed $* -> $@ (log $(@:.h5=.log))"
+$(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | build-tools
 	@mkdir -p $(@D)
-	@$(RUN) $(PACK) --config $< --seed $* --out $@ --vtp $(@:.h5=.vtp) --xyz $(@:.h5=.xyz) --quiet 2> $(@:.h5=.log) \
-	  || { echo "pack: FAILED for $(PROFILE) seed $*; see $(@:.h5=.log)"; cat $(@:.h5=.log); exit 1; }
+	@$(call from_archive,$@,$(PACK_STAMP)) || { \
+	  echo "pack: $(PROFILE) seed $* -> $@ (log $(@:.h5=.log))"; \
+	  $(RUN) $(PACK) --config experiments/$(PROFILE).yaml --seed $* --out $@ --vtp $(@:.h5=.vtp) --xyz $(@:.h5=.xyz) \
+	    --quiet 2> $(@:.h5=.log) \
+	  || { echo "pack: FAILED for $(PROFILE) seed $*; see $(@:.h5=.log)"; cat $(@:.h5=.log); exit 1; }; }
 
 figure1: $(FIGURES_OUT)/fig1_apollonian.png $(FIGURES_OUT)/fig1_apollonian.pdf  ## Figure 1: a 2D Apollonian packing
 figure2: $(FIGURES_OUT)/fig2_softparticle.png $(FIGURES_OUT)/fig2_softparticle.pdf  ## Figure 2: a soft-particle (cross-section)
 
 $(FIGURES_OUT)/fig1_apollonian.dat: | build-tools
 	@mkdir -p $(@D)
-	$(RUN) $(BUILD)/engine/softpack-apollonian --min-radius 1e-3 --out $@
+	@$(RUN) $(BUILD)/engine/softpack-apollonian --min-radius 1e-3 --out $@
 $(FIGURES_OUT)/fig1_apollonian.%: $(FIGURES_OUT)/fig1_apollonian.dat figures/fig1_apollonian.gp
-	gnuplot -e "data='$<'; out='$@.tmp.$*'" figures/fig1_apollonian.gp && mv $@.tmp.$* $@
+	@gnuplot -e "data='$<'; out='$@.tmp.$*'" figures/fig1_apollonian.gp && mv $@.tmp.$* $@
 
 $(FIGURES_OUT)/fig2_section.dat: $(PACKING_DIR)/seed-$(firstword $(SEEDS)).h5 | build-tools
 	@mkdir -p $(@D)
-	$(RUN) $(BUILD)/engine/softpack-section --packing $< --out $@
+	@$(RUN) $(BUILD)/engine/softpack-section --packing $< --out $@ 2> /dev/null
 $(FIGURES_OUT)/fig2_softparticle.%: $(FIGURES_OUT)/fig2_section.dat figures/fig2_softparticle.gp
-	gnuplot -e "data='$<'; Rs=$$(sed -n 's/^ *Rs: *\([0-9.e+-]*\).*/\1/p' experiments/$(PROFILE).yaml); out='$@.tmp.$*'" \
+	@gnuplot -e "data='$<'; Rs=$$(sed -n 's/^ *Rs: *\([0-9.e+-]*\).*/\1/p' experiments/$(PROFILE).yaml); out='$@.tmp.$*'" \
 	  figures/fig2_softparticle.gp && mv $@.tmp.$* $@
 
-STUDY_DIR := data/studies/packing-density
+STUDY_DIR := $(DATA)/studies/packing-density
 study-packing: $(STUDY_DIR)/packing-density.md $(FIGURES_OUT)/packing-density.png  ## the packing density study (beta, I, r_max/Rs)
 	@cat $(STUDY_DIR)/packing-density.md
 $(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/packing-density.yaml experiments/paper.yaml | build-tools
 	$(RUN) $(BUILD)/engine/softpack-packing-study --config experiments/packing-density.yaml --out $(STUDY_DIR)
 $(FIGURES_OUT)/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
 	@mkdir -p $(@D)
-	gnuplot -e "data='$<'; out='$@.tmp.png'" figures/packing_density.gp && mv $@.tmp.png $@
+	@gnuplot -e "data='$<'; out='$@.tmp.png'" figures/packing_density.gp && mv $@.tmp.png $@

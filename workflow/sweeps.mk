@@ -3,40 +3,43 @@
 # that the two soft-particles are independent and no extra packing is made.
 
 SCENES := $(shell sed -n 's/^ *scenes: *\[\(.*\)\].*/\1/p' experiments/$(PROFILE).yaml | tr ',' ' ')
-SWEEP_DIR := data/$(PROFILE)
+SWEEP_DIR := $(DATA)/$(PROFILE)
 CHECKPOINTS := $(SWEEP_DIR)/checkpoints
 
 # next_seed SEED: the seed after SEED in the list, the first after the last.
-next_seed = $(or $(word 2,$(wordlist $(call seed_index,$(1)),999,$(SEEDS))),$(firstword $(SEEDS)))
 seed_index = $(words $(shell for s in $(SEEDS); do echo $$s; [ $$s = $(1) ] && break; done))
+next_seed = $(or $(word 2,$(wordlist $(call seed_index,$(1)),999,$(SEEDS))),$(firstword $(SEEDS)))
 
-.PHONY: normal tangential sweeps build-sweeps
-build-sweeps: $(BUILD)/CMakeCache.txt
-	@cmake --build $(BUILD) -j $(JOBS) --target softpack-normal softpack-tangential > /dev/null
+.PHONY: normal tangential sweeps
+
+# sweep_args SCENE SEED: the arguments both stages share.
+sweep_args = --config experiments/$(PROFILE).yaml --scene $(1) --seed $(2) --packing $(PACKING_DIR)/seed-$(2).h5 \
+  $(if $(filter soft-soft,$(1)),--second-packing $(PACKING_DIR)/seed-$(call next_seed,$(2)).h5)
 
 define sweep_rules
-$(SWEEP_DIR)/normal/$(1)-seed-$(2).h5: experiments/$(PROFILE).yaml $(PACKING_DIR)/seed-$(2).h5 \
-    $(if $(filter soft-soft,$(1)),$(PACKING_DIR)/seed-$(call next_seed,$(2)).h5) | build-sweeps
+$(SWEEP_DIR)/normal/$(1)-seed-$(2).h5: $(NORMAL_STAMP) $(PACKING_DIR)/seed-$(2).h5 \
+    $(if $(filter soft-soft,$(1)),$(PACKING_DIR)/seed-$(call next_seed,$(2)).h5) | build-tools
 	@mkdir -p $$(@D)
-	@echo "normal: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"
-	@$(RUN) $(BUILD)/engine/softpack-normal --config $$< --scene $(1) --seed $(2) --packing $(PACKING_DIR)/seed-$(2).h5 \
-	  $(if $(filter soft-soft,$(1)),--second-packing $(PACKING_DIR)/seed-$(call next_seed,$(2)).h5) \
-	  --checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) --out $$@ 2> $$(@:.h5=.log) \
-	  || { echo "normal: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }
-$(SWEEP_DIR)/tangential/$(1)-seed-$(2).h5: $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5 | build-sweeps
+	@$$(call from_archive,$$@,$(NORMAL_STAMP)) || { \
+	  echo "normal: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"; \
+	  $(RUN) $(BUILD)/engine/softpack-normal $(call sweep_args,$(1),$(2)) \
+	    --checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) --out $$@ 2> $$(@:.h5=.log) \
+	  || { echo "normal: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }; }
+$(SWEEP_DIR)/tangential/$(1)-seed-$(2).h5: $(TANGENTIAL_STAMP) $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5 | build-tools
 	@mkdir -p $$(@D)
-	@echo "tangential: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"
-	@$(RUN) $(BUILD)/engine/softpack-tangential --config experiments/$(PROFILE).yaml --scene $(1) --seed $(2) \
-	  --packing $(PACKING_DIR)/seed-$(2).h5 \
-	  $(if $(filter soft-soft,$(1)),--second-packing $(PACKING_DIR)/seed-$(call next_seed,$(2)).h5) \
-	  --checkpoints $(CHECKPOINTS)/tangential/$(1)/seed-$(2) --normal-checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) \
-	  --out $$@ 2> $$(@:.h5=.log) \
-	  || { echo "tangential: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }
+	@$$(call from_archive,$$@,$(TANGENTIAL_STAMP)) || { \
+	  echo "tangential: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"; \
+	  { [ -d $(CHECKPOINTS)/normal/$(1)/seed-$(2) ] || $(RUN) $(BUILD)/engine/softpack-normal $(call sweep_args,$(1),$(2)) \
+	      --checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) --out $$(@:.h5=.normal-states.h5) --quiet; } \
+	  && $(RUN) $(BUILD)/engine/softpack-tangential $(call sweep_args,$(1),$(2)) \
+	    --checkpoints $(CHECKPOINTS)/tangential/$(1)/seed-$(2) --normal-checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) \
+	    --out $$@ 2> $$(@:.h5=.log) \
+	  || { echo "tangential: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }; }
 endef
 $(foreach scene,$(SCENES),$(foreach seed,$(SEEDS),$(eval $(call sweep_rules,$(scene),$(seed)))))
 
-NORMAL_RESULTS := $(foreach scene,$(SCENES),$(foreach seed,$(SEEDS),$(SWEEP_DIR)/normal/$(scene)-seed-$(seed).h5))
-TANGENTIAL_RESULTS := $(NORMAL_RESULTS:$(SWEEP_DIR)/normal/%=$(SWEEP_DIR)/tangential/%)
-normal: $(NORMAL_RESULTS)  ## normal sweeps of every scene and seed (make -j2 runs two at once)
-tangential: $(TANGENTIAL_RESULTS)  ## tangential sweeps (after the normal ones)
+NORMAL_RESULTS = $(foreach seed,$(SEEDS),$(SWEEP_DIR)/normal/$(1)-seed-$(seed).h5)
+TANGENTIAL_RESULTS = $(foreach seed,$(SEEDS),$(SWEEP_DIR)/tangential/$(1)-seed-$(seed).h5)
+normal: $(foreach scene,$(SCENES),$(call NORMAL_RESULTS,$(scene)))  ## normal sweeps of every scene and seed (make -j2: two at once)
+tangential: $(foreach scene,$(SCENES),$(call TANGENTIAL_RESULTS,$(scene)))  ## tangential sweeps (after the normal ones)
 sweeps: normal tangential  ## both sweeps

@@ -1,0 +1,107 @@
+#include "analysis/average.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace softpack {
+
+MeanError mean_error(const std::vector<double>& v) {
+  MeanError m;
+  const double n = static_cast<double>(v.size());
+  if (v.empty()) return m;
+  for (double x : v) m.mean += x / n;
+  if (v.size() > 1) {
+    double ss = 0.0;
+    for (double x : v) ss += (x - m.mean) * (x - m.mean);
+    m.error = std::sqrt(ss / (n - 1.0) / n);
+  }
+  return m;
+}
+
+SweepData read_sweep(const std::string& path) {
+  const h5::File f = h5::File::open(path);
+  SweepData d;
+  d.path = path;
+  d.delta_n = f.read_doubles("delta_n");
+  d.alpha_deg = f.read_doubles("alpha_deg");
+  d.ht = f.read_doubles("ht");
+  d.Fn = f.read_doubles("Fn");
+  d.Ft_parallel = f.read_doubles("Ft_parallel");
+  d.Ft_perpendicular = f.read_doubles("Ft_perpendicular");
+  return d;
+}
+
+namespace {
+
+void same_grid(const std::vector<SweepData>& seeds) {
+  if (seeds.empty()) throw InputError("no sweep results to average");
+  for (const SweepData& s : seeds)
+    if (s.delta_n != seeds[0].delta_n || s.alpha_deg != seeds[0].alpha_deg)
+      throw InputError(fmt::format("{}: its (delta_n, alpha) grid differs from that of {}; results of one profile share it",
+                                   s.path, seeds[0].path));
+}
+
+MeanError column(const std::vector<SweepData>& seeds, std::vector<double> SweepData::*field, std::size_t k) {
+  std::vector<double> v;
+  for (const SweepData& s : seeds) v.push_back((s.*field)[k]);
+  return mean_error(v);
+}
+
+}  // namespace
+
+double slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double mx = 0, my = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) mx += x[k] / n, my += y[k] / n;
+  double sxy = 0, sxx = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) sxy += (x[k] - mx) * (y[k] - my), sxx += (x[k] - mx) * (x[k] - mx);
+  return sxx > 0 ? sxy / sxx : 0.0;
+}
+
+NormalAverage average_normal(const std::vector<SweepData>& seeds) {
+  same_grid(seeds);
+  NormalAverage a;
+  a.seeds = seeds.size();
+  a.delta_n = seeds[0].delta_n;
+  for (std::size_t k = 0; k < a.delta_n.size(); ++k) {
+    a.Fn.push_back(column(seeds, &SweepData::Fn, k));
+    a.Ft_parallel.push_back(column(seeds, &SweepData::Ft_parallel, k));
+    a.Ft_perpendicular.push_back(column(seeds, &SweepData::Ft_perpendicular, k));
+  }
+  return a;
+}
+
+TangentialAverage average_tangential(const std::vector<SweepData>& seeds) {
+  same_grid(seeds);
+  TangentialAverage a;
+  a.seeds = seeds.size();
+  const SweepData& g = seeds[0];
+  a.delta_n = g.delta_n;
+  a.alpha_deg = g.alpha_deg;
+  a.ht = g.ht;
+  for (std::size_t k = 0; k < g.delta_n.size(); ++k) {
+    a.Ft_parallel.push_back(column(seeds, &SweepData::Ft_parallel, k));
+    a.Ft_perpendicular.push_back(column(seeds, &SweepData::Ft_perpendicular, k));
+    a.Fn.push_back(column(seeds, &SweepData::Fn, k));
+  }
+  // kt per seed and Delta_n: the slope of Ft_parallel(ht) over the alpha grid (around ht = 0).
+  for (std::size_t k = 0; k < g.delta_n.size();) {
+    std::size_t end = k;
+    while (end < g.delta_n.size() && g.delta_n[end] == g.delta_n[k]) ++end;
+    std::vector<double> per_seed;
+    for (const SweepData& s : seeds) {
+      const std::vector<double> ht(s.ht.begin() + k, s.ht.begin() + end), F(s.Ft_parallel.begin() + k, s.Ft_parallel.begin() + end);
+      per_seed.push_back(slope(ht, F));
+    }
+    a.kt_delta_n.push_back(g.delta_n[k]);
+    a.kt.push_back(mean_error(per_seed));
+    k = end;
+  }
+  return a;
+}
+
+}  // namespace softpack

@@ -1,0 +1,43 @@
+// Averages over seeds of the sweep results of one scene (paper §5: "averaging over seven
+// different simulations"): mean and standard error of the mean at every Delta_n (normal) and
+// every (Delta_n, alpha) (tangential), and the tangential spring constant kt: the slope of the
+// parallel force against ht over the alpha grid, one per seed, then averaged.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace softpack {
+
+/// Mean and standard error of the mean (0 for a single value).
+struct MeanError {
+  double mean = 0.0, error = 0.0;
+};
+MeanError mean_error(const std::vector<double>& values);
+
+struct SweepData {  ///< the columns of a sweep results file
+  std::string path;
+  std::vector<double> delta_n, alpha_deg, ht, Fn, Ft_parallel, Ft_perpendicular;
+};
+SweepData read_sweep(const std::string& path);
+
+struct NormalAverage {
+  std::vector<double> delta_n;
+  std::vector<MeanError> Fn, Ft_parallel, Ft_perpendicular;
+  std::size_t seeds = 0;
+};
+/// All files must share the Delta_n grid (InputError names the file that differs).
+NormalAverage average_normal(const std::vector<SweepData>& seeds);
+
+struct TangentialAverage {
+  std::vector<double> delta_n, alpha_deg, ht;  ///< one row per (Delta_n, alpha)
+  std::vector<MeanError> Ft_parallel, Ft_perpendicular, Fn;
+  std::vector<double> kt_delta_n;  ///< one row per Delta_n
+  std::vector<MeanError> kt;       ///< [N/m]
+  std::size_t seeds = 0;
+};
+TangentialAverage average_tangential(const std::vector<SweepData>& seeds);
+
+/// Least-squares slope of y against x.
+double slope(const std::vector<double>& x, const std::vector<double>& y);
+
+}  // namespace softpack

@@ -1,0 +1,34 @@
+# Configuration stamps: each stage depends on a file holding a hash of exactly the profile
+# sections it reads (and of the release version), not on the profile's timestamp. The stamps
+# are brought up to date while make reads the makefiles, so `make -n` and `make -q` see them:
+# a file is rewritten (new mtime) only when its hash changes, and make reruns exactly the
+# stages downstream of a changed stamp. Editing a comment or a key no stage reads reruns nothing.
+
+VERSION := $(shell awk '/^project/ { print $$3; exit }' CMakeLists.txt)
+STAMPS := $(DATA)/$(PROFILE)/stamps
+
+# config_slice SECTIONS: those top-level sections of the profile, comments and blank lines dropped.
+config_slice = awk -v want="$(1)" 'BEGIN { n = split(want, w, " "); for (i = 1; i <= n; i++) keep[w[i]] = 1 } \
+  /^[A-Za-z_][A-Za-z0-9_-]*:/ { key = $$0; sub(/:.*/, "", key); on = (key in keep) } \
+  on { sub(/[ \t]+\#.*$$/, ""); if ($$0 ~ /^[ \t]*(\#|$$)/) next; print }' experiments/$(PROFILE).yaml
+
+# stamp NAME SECTIONS: the path of $(STAMPS)/NAME.hash, brought up to date.
+stamp = $(shell mkdir -p $(STAMPS) && h=$$( { echo "softpack $(VERSION)"; $(call config_slice,$(2)); } | sha256sum | cut -c1-16) && \
+  { [ "$$h" = "$$(cat $(STAMPS)/$(1).hash 2> /dev/null)" ] || echo "$$h" > $(STAMPS)/$(1).hash; } && echo $(STAMPS)/$(1).hash)
+
+ifneq ($(wildcard experiments/$(PROFILE).yaml),)
+PACK_STAMP := $(call stamp,packing,packing)
+NORMAL_STAMP := $(call stamp,normal,packing material simulation relaxation normal)
+TANGENTIAL_STAMP := $(call stamp,tangential,packing material simulation relaxation normal tangential)
+AVERAGE_STAMP := $(call stamp,average,seeds)
+else
+$(error experiments/$(PROFILE).yaml: no such profile (PROFILE=$(PROFILE)); profiles: $(notdir $(basename $(wildcard experiments/*.yaml))))
+endif
+
+# Results recorded in the archive are reused when their stage's stamp matches (FROM_SCRATCH=1
+# ignores the archive). from_archive FILE STAMP: copies the archived FILE, or fails.
+ARCHIVE := data/archive/$(VERSION)/$(PROFILE)
+archived = $(patsubst $(DATA)/$(PROFILE)/%,$(ARCHIVE)/%,$(1))
+from_archive = [ -z "$(FROM_SCRATCH)" ] && [ -f $(call archived,$(1)) ] && \
+  cmp -s $(call archived,$(2)) $(2) && cp $(call archived,$(1)) $(1).tmp && mv $(1).tmp $(1) && \
+  echo "reused $(1) from $(ARCHIVE) (same configuration)"
