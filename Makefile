@@ -69,3 +69,6 @@ clean:  ## remove builds and generated data (keeps data/archive)
 include workflow/stamps.mk
 include workflow/packing.mk
 include workflow/sweeps.mk
+include workflow/analysis.mk
+include workflow/archive.mk
+include workflow/paper.mk

@@ -4,18 +4,18 @@
 SEEDS := $(shell sed -n 's/^seeds: *\[\(.*\)\].*/\1/p' experiments/$(PROFILE).yaml | tr ',' ' ')
 PACKING_DIR := $(DATA)/$(PROFILE)/packings
 PACKINGS := $(foreach s,$(SEEDS),$(PACKING_DIR)/seed-$(s).h5)
-FIGURES_OUT := figures/generated
+FIGURES_OUT := figures/generated/$(PROFILE)
 PACK := $(BUILD)/engine/softpack-pack
 
 .PHONY: packings study-packing figure1 figure2 build-tools
 build-tools: $(BUILD)/CMakeCache.txt
-	@cmake --build $(BUILD) -j $(JOBS) > /dev/null
+	@MAKEFLAGS= cmake --build $(BUILD) -j $(JOBS) > /dev/null
 
 packings: $(PACKINGS)  ## packings of the profile's seeds (DATA/PROFILE/packings/, with .vtp and .xyz)
 
 $(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | build-tools
 	@mkdir -p $(@D)
-	@$(call from_archive,$@,$(PACK_STAMP)) || { \
+	@$(call from_archive,$@ $(@:.h5=.vtp) $(@:.h5=.xyz),$(PACK_STAMP)) || { \
 	  echo "pack: $(PROFILE) seed $* -> $@ (log $(@:.h5=.log))"; \
 	  $(RUN) $(PACK) --config experiments/$(PROFILE).yaml --seed $* --out $@ --vtp $(@:.h5=.vtp) --xyz $(@:.h5=.xyz) \
 	    --quiet 2> $(@:.h5=.log) \
@@ -38,10 +38,10 @@ $(FIGURES_OUT)/fig2_softparticle.%: $(FIGURES_OUT)/fig2_section.dat figures/fig2
 	  figures/fig2_softparticle.gp && mv $@.tmp.$* $@
 
 STUDY_DIR := $(DATA)/studies/packing-density
-study-packing: $(STUDY_DIR)/packing-density.md $(FIGURES_OUT)/packing-density.png  ## the packing density study (beta, I, r_max/Rs)
+study-packing: $(STUDY_DIR)/packing-density.md figures/generated/studies/packing-density.png  ## the packing density study (beta, I, r_max/Rs)
 	@cat $(STUDY_DIR)/packing-density.md
 $(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/packing-density.yaml experiments/paper.yaml | build-tools
 	$(RUN) $(BUILD)/engine/softpack-packing-study --config experiments/packing-density.yaml --out $(STUDY_DIR)
-$(FIGURES_OUT)/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
+figures/generated/studies/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
 	@mkdir -p $(@D)
 	@gnuplot -e "data='$<'; out='$@.tmp.png'" figures/packing_density.gp && mv $@.tmp.png $@

@@ -20,15 +20,17 @@ ifneq ($(wildcard experiments/$(PROFILE).yaml),)
 PACK_STAMP := $(call stamp,packing,packing)
 NORMAL_STAMP := $(call stamp,normal,packing material simulation relaxation normal)
 TANGENTIAL_STAMP := $(call stamp,tangential,packing material simulation relaxation normal tangential)
-AVERAGE_STAMP := $(call stamp,average,seeds)
+AVERAGE_STAMP := $(call stamp,average,seeds packing material simulation relaxation normal tangential)
 else
 $(error experiments/$(PROFILE).yaml: no such profile (PROFILE=$(PROFILE)); profiles: $(notdir $(basename $(wildcard experiments/*.yaml))))
 endif
 
 # Results recorded in the archive are reused when their stage's stamp matches (FROM_SCRATCH=1
-# ignores the archive). from_archive FILE STAMP: copies the archived FILE, or fails.
-ARCHIVE := data/archive/$(VERSION)/$(PROFILE)
+# ignores the archive). from_archive FILES STAMP: copies the archived FILES (all of them), or fails.
+ARCHIVE_ROOT := data/archive
+ARCHIVE := $(ARCHIVE_ROOT)/$(VERSION)/$(PROFILE)
 archived = $(patsubst $(DATA)/$(PROFILE)/%,$(ARCHIVE)/%,$(1))
-from_archive = [ -z "$(FROM_SCRATCH)" ] && [ -f $(call archived,$(1)) ] && \
-  cmp -s $(call archived,$(2)) $(2) && cp $(call archived,$(1)) $(1).tmp && mv $(1).tmp $(1) && \
+from_archive = [ -z "$(FROM_SCRATCH)" ] && cmp -s $(call archived,$(2)) $(2) && \
+  $(foreach f,$(1),[ -f $(call archived,$(f)) ] &&) \
+  $(foreach f,$(1),cp $(call archived,$(f)) $(f).tmp.archive && mv $(f).tmp.archive $(f) &&) \
   echo "reused $(1) from $(ARCHIVE) (same configuration)"

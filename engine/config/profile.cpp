@@ -9,8 +9,9 @@
 namespace softpack {
 
 const std::vector<std::string>& profile_sections() {
-  static const std::vector<std::string> sections{"profile",    "seeds",  "material",  "packing",
-                                                 "simulation", "relaxation", "normal", "tangential"};
+  // "description" is free text for people; no stage reads it, so editing it reruns nothing.
+  static const std::vector<std::string> sections{"profile",    "description", "seeds",  "material", "packing",
+                                                 "simulation", "relaxation",  "normal", "tangential"};
   return sections;
 }
 

@@ -1,0 +1,394 @@
+#include "analysis/power_fit.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <unsupported/Eigen/NonLinearOptimization>
+
+#include "core/error.hpp"
+
+namespace softpack::fit {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The fitted points; s = σ (weighted) or 1 (unweighted).
+struct Data {
+  std::vector<double> x, y, s;
+};
+
+/// Eq. 7: a x^b + c, parameters (a, b, c).
+struct NormalModel {
+  static constexpr int kParams = 3;
+  double value(double x, const VectorXd& p) const { return p[0] * std::pow(x, p[1]) + p[2]; }
+  void gradient(double x, const VectorXd& p, double* g) const {
+    const double xb = std::pow(x, p[1]);
+    g[0] = xb;
+    g[1] = p[0] * xb * std::log(x);
+    g[2] = 1.0;
+  }
+};
+
+/// Eq. 8 with c = −a δ^b: a (x^b − δ^b), parameters (a, b); δ fixed.
+struct TangentialModel {
+  static constexpr int kParams = 2;
+  double delta = 0.0;
+  double value(double x, const VectorXd& p) const { return p[0] * (std::pow(x, p[1]) - std::pow(delta, p[1])); }
+  void gradient(double x, const VectorXd& p, double* g) const {
+    const double xb = std::pow(x, p[1]);
+    const double db = std::pow(delta, p[1]);
+    g[0] = xb - db;
+    g[1] = p[0] * (xb * std::log(x) - (delta > 0.0 ? db * std::log(delta) : 0.0));
+  }
+};
+
+/// Weighted residuals (model − y)/s and their Jacobian, in the form Eigen's LM expects.
+template <class Model>
+struct Residuals {
+  using Scalar = double;
+  const Data& data;
+  const Model& model;
+  int values() const { return static_cast<int>(data.x.size()); }
+  int inputs() const { return Model::kParams; }
+  int operator()(const VectorXd& p, VectorXd& r) const {
+    for (std::size_t i = 0; i < data.x.size(); ++i)
+      r[static_cast<Eigen::Index>(i)] = (model.value(data.x[i], p) - data.y[i]) / data.s[i];
+    return 0;
+  }
+  int df(const VectorXd& p, MatrixXd& J) const {
+    double g[Model::kParams];
+    for (std::size_t i = 0; i < data.x.size(); ++i) {
+      model.gradient(data.x[i], p, g);
+      for (int k = 0; k < Model::kParams; ++k) J(static_cast<Eigen::Index>(i), k) = g[k] / data.s[i];
+    }
+    return 0;
+  }
+};
+
+template <class Model>
+double chi2(const Data& data, const Model& model, const VectorXd& p) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < data.x.size(); ++i) {
+    const double r = (model.value(data.x[i], p) - data.y[i]) / data.s[i];
+    sum += r * r;
+  }
+  return std::isfinite(sum) ? sum : std::numeric_limits<double>::infinity();
+}
+
+struct Solution {
+  VectorXd p;
+  double chi2 = std::numeric_limits<double>::infinity();
+  int status = 0;
+};
+
+/// LM from `start`; a start with a non-finite χ² or a non-finite result gives χ² = inf.
+template <class Model>
+Solution levenberg_marquardt(const Data& data, const Model& model, const VectorXd& start) {
+  Solution sol;
+  sol.p = start;
+  if (!std::isfinite(chi2(data, model, start))) return sol;
+  Residuals<Model> functor{data, model};
+  Eigen::LevenbergMarquardt<Residuals<Model>> lm(functor);
+  lm.parameters.ftol = 1e-14;
+  lm.parameters.xtol = 1e-14;
+  lm.parameters.maxfev = 4000;
+  sol.status = static_cast<int>(lm.minimize(sol.p));
+  bool finite = true;
+  for (Eigen::Index k = 0; k < sol.p.size(); ++k) finite = finite && std::isfinite(sol.p[k]);
+  if (finite) sol.chi2 = chi2(data, model, sol.p);
+  return sol;
+}
+
+/// Log-spaced exponents for the scan start.
+std::vector<double> exponent_grid() {
+  std::vector<double> b;
+  const int n = 400;
+  for (int k = 0; k < n; ++k) b.push_back(0.2 * std::pow(100.0, static_cast<double>(k) / (n - 1)));
+  return b;
+}
+
+/// Straight line ln y = ln a + b ln x through the points (weights y²/σ², the variance of ln y).
+std::pair<double, double> log_log_start(const Data& d) {
+  double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < d.x.size(); ++i) {
+    const double w = (d.y[i] / d.s[i]) * (d.y[i] / d.s[i]);
+    const double lx = std::log(d.x[i]), ly = std::log(d.y[i]);
+    sw += w, sx += w * lx, sy += w * ly, sxx += w * lx * lx, sxy += w * lx * ly;
+  }
+  const double det = sw * sxx - sx * sx;
+  if (!(std::abs(det) > 0.0)) return {std::exp(sy / sw), 1.0};
+  const double b = (sw * sxy - sx * sy) / det;
+  const double ln_a = (sy - b * sx) / sw;
+  return {std::exp(ln_a), b};
+}
+
+/// s² (JᵀWJ)⁻¹ at the solution, via the SVD of the column-scaled weighted Jacobian.
+template <class Model>
+MatrixXd covariance(const Data& data, const Model& model, const VectorXd& p, double s2, const char* law) {
+  Residuals<Model> functor{data, model};
+  MatrixXd J(static_cast<Eigen::Index>(data.x.size()), Model::kParams);
+  functor.df(p, J);
+  VectorXd scale = J.colwise().norm().transpose();
+  for (Eigen::Index k = 0; k < scale.size(); ++k)
+    if (!(scale[k] > 0.0) || !std::isfinite(scale[k]))
+      throw InputError(fmt::format("{}: the fit is degenerate (a parameter has no effect on the model)", law));
+  const MatrixXd Js = J * scale.cwiseInverse().asDiagonal();
+  Eigen::JacobiSVD<MatrixXd> svd(Js, Eigen::ComputeThinV);
+  const VectorXd sv = svd.singularValues();
+  if (!(sv[sv.size() - 1] > 1e-12 * sv[0]))
+    throw InputError(fmt::format("{}: the fit is degenerate (its parameters are not determined by the points)", law));
+  const MatrixXd inner = svd.matrixV() * sv.array().square().inverse().matrix().asDiagonal() * svd.matrixV().transpose();
+  return s2 * scale.cwiseInverse().asDiagonal() * inner * scale.cwiseInverse().asDiagonal();
+}
+
+void check_lengths(std::span<const double> x, std::span<const double> y, std::span<const double> e, const char* yname) {
+  if (x.size() != y.size())
+    throw InputError(fmt::format("delta_n has {} values but {} has {}; allowed: the same number", x.size(), yname, y.size()));
+  if (!e.empty() && e.size() != x.size())
+    throw InputError(fmt::format("delta_n has {} values but the standard errors have {}; allowed: the same number or none",
+                                 x.size(), e.size()));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
+      throw InputError(fmt::format("point {} (delta_n = {}, {} = {}) is not finite; allowed: finite numbers", i, x[i], yname, y[i]));
+    if (!e.empty() && !(e[i] >= 0.0) )
+      throw InputError(fmt::format("point {} (delta_n = {}): standard error {} is not allowed; allowed: finite numbers >= 0", i,
+                                   x[i], e[i]));
+    if (!e.empty() && !std::isfinite(e[i]))
+      throw InputError(fmt::format("point {} (delta_n = {}): standard error {} is not finite", i, x[i], e[i]));
+  }
+}
+
+/// Indices of x in increasing order.
+std::vector<std::size_t> sorted_order(std::span<const double> x) {
+  std::vector<std::size_t> idx(x.size());
+  std::iota(idx.begin(), idx.end(), std::size_t{0});
+  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
+  return idx;
+}
+
+/// Fills d.s with σ (every selected σ > 0) or ones; records the choice.
+void choose_weights(Data& d, const std::vector<double>& sigma, bool have_errors, PowerLawFit& fit) {
+  fit.weighted = have_errors;
+  std::string why = have_errors ? "" : "unweighted: no standard errors given";
+  if (have_errors)
+    for (std::size_t i = 0; i < sigma.size(); ++i)
+      if (!(sigma[i] > 0.0)) {
+        fit.weighted = false;
+        why = fmt::format("unweighted: the standard error is {} at delta_n = {}", sigma[i], d.x[i]);
+        break;
+      }
+  d.s = fit.weighted ? sigma : std::vector<double>(d.x.size(), 1.0);
+  fit.notes.push_back(fit.weighted ? "weighted by 1/stderr^2" : why);
+}
+
+std::string list_of(const std::vector<double>& v) {
+  std::string s;
+  for (double x : v) s += (s.empty() ? "" : ", ") + fmt::format("{}", x);
+  return s;
+}
+
+}  // namespace
+
+PowerLawFit fit_normal_law(std::span<const double> delta_n, std::span<const double> force, std::span<const double> error) {
+  constexpr const char* law = "Eq. 7 fit of the normal force";
+  check_lengths(delta_n, force, error, "Fn");
+  const std::vector<std::size_t> order = sorted_order(delta_n);
+  // The run of positive forces after the last non-positive one. A force within round-off of
+  // zero (a net force of ~1e-19 N left by summing grain forces) counts as zero, not positive.
+  double largest = 0.0;
+  for (const double F : force) largest = std::max(largest, std::abs(F));
+  const double zero = kZeroForceRelative * largest;
+  std::size_t first = 0;
+  for (std::size_t k = 0; k < order.size(); ++k)
+    if (!(force[order[k]] > zero) || !(delta_n[order[k]] > 0.0)) first = k + 1;
+  std::vector<double> isolated;
+  for (std::size_t k = 0; k < first; ++k)
+    if (force[order[k]] > zero) isolated.push_back(delta_n[order[k]]);
+
+  PowerLawFit fit;
+  Data d;
+  std::vector<double> sigma;
+  for (std::size_t k = first; k < order.size(); ++k) {
+    d.x.push_back(delta_n[order[k]]);
+    d.y.push_back(force[order[k]]);
+    if (!error.empty()) sigma.push_back(error[order[k]]);
+  }
+  const std::size_t n = d.x.size();
+  if (n < kNormalMinPoints) {
+    const std::string where =
+        n == 0 ? std::string("the force is never positive after its last zero")
+               : fmt::format("the force starts at delta_n = {}", d.x.front());
+    throw InputError(fmt::format("{}: {} point{} with Fn > 0 ({}{}); allowed: at least {} (a, b, c and one degree of freedom)", law,
+                                 n, n == 1 ? "" : "s", where,
+                                 isolated.empty() ? "" : fmt::format("; isolated positive points before a zero at delta_n = {}",
+                                                                     list_of(isolated)),
+                                 kNormalMinPoints));
+  }
+  if (!isolated.empty())
+    fit.notes.push_back(fmt::format("left out: positive force before a zero at delta_n = {} (Eq. 7: F = 0 below delta)",
+                                    list_of(isolated)));
+  choose_weights(d, sigma, !error.empty(), fit);
+
+  const NormalModel model;
+  // Start 1: log-log line, c = 0.
+  const auto [a0, b0] = log_log_start(d);
+  Solution best = levenberg_marquardt(d, model, VectorXd{{a0, b0, 0.0}});
+  // Start 2: the scan over b with (a, c) by linear least squares.
+  double scan_chi2 = std::numeric_limits<double>::infinity();
+  VectorXd scan_start(3);
+  for (double b : exponent_grid()) {
+    double sw = 0, sg = 0, sgg = 0, sy = 0, sgy = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double w = 1.0 / (d.s[i] * d.s[i]), g = std::pow(d.x[i], b);
+      sw += w, sg += w * g, sgg += w * g * g, sy += w * d.y[i], sgy += w * g * d.y[i];
+    }
+    const double det = sgg * sw - sg * sg;
+    if (!(std::abs(det) > 0.0)) continue;
+    const VectorXd p{{(sgy * sw - sg * sy) / det, b, (sgg * sy - sg * sgy) / det}};
+    if (!(p[0] > 0.0)) continue;
+    const double c2 = chi2(d, model, p);
+    if (c2 < scan_chi2) scan_chi2 = c2, scan_start = p;
+  }
+  if (std::isfinite(scan_chi2)) {
+    const Solution s = levenberg_marquardt(d, model, scan_start);
+    if (s.chi2 < best.chi2) best = s;
+  }
+  if (!std::isfinite(best.chi2))
+    throw InputError(fmt::format("{}: Levenberg-Marquardt did not converge on the {} points (delta_n {} to {})", law, n,
+                                 d.x.front(), d.x.back()));
+  if (best.status == static_cast<int>(Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation))
+    fit.notes.push_back("Levenberg-Marquardt stopped at its evaluation limit");
+
+  const VectorXd& p = best.p;
+  if (!(p[0] > 0.0) || !(p[1] > 0.0))
+    throw InputError(fmt::format("{}: fitted a = {:.6g}, b = {:.6g}; allowed: a > 0 and b > 0 (a force growing with delta_n)",
+                                 law, p[0], p[1]));
+  fit.a = p[0], fit.b = p[1], fit.c = p[2];
+  fit.points = n;
+  fit.dn_min = d.x.front(), fit.dn_max = d.x.back();
+  fit.chi2_per_dof = best.chi2 / static_cast<double>(n - 3);
+  fit.covariance = covariance(d, model, p, fit.chi2_per_dof, law);
+  fit.a_error = std::sqrt(fit.covariance(0, 0));
+  fit.b_error = std::sqrt(fit.covariance(1, 1));
+  fit.c_error = std::sqrt(fit.covariance(2, 2));
+  if (fit.c < 0.0) {
+    fit.delta = std::pow(-fit.c / fit.a, 1.0 / fit.b);
+    const Eigen::Vector3d g{-fit.delta / (fit.a * fit.b), -fit.delta * std::log(fit.delta) / fit.b,
+                            fit.delta / (fit.b * fit.c)};
+    fit.delta_error = std::sqrt(std::max(0.0, g.dot(fit.covariance * g)));
+    const double last_zero = first > 0 ? delta_n[order[first - 1]] : 0.0;
+    if (fit.delta < last_zero || fit.delta > fit.dn_min)
+      fit.notes.push_back(fmt::format("delta = {:.4g} lies outside [{}, {}], between the last zero force and the first positive one",
+                                      fit.delta, last_zero, fit.dn_min));
+  } else {
+    fit.delta = 0.0;
+    fit.delta_error = kNaN;
+    fit.notes.push_back(fmt::format("c = {:.4g} >= 0: the fitted law is positive for every delta_n > 0, so delta = 0 "
+                                    "(its error is undefined)",
+                                    fit.c));
+  }
+  return fit;
+}
+
+PowerLawFit fit_tangential_law(std::span<const double> delta_n, std::span<const double> kt, std::span<const double> error,
+                               double delta) {
+  constexpr const char* law = "Eq. 8 fit of the tangential spring constant";
+  check_lengths(delta_n, kt, error, "kt");
+  if (!(delta >= 0.0) || !std::isfinite(delta))
+    throw InputError(fmt::format("{}: delta = {} is not allowed; allowed: a finite delta >= 0 (from the normal fit)", law, delta));
+  const std::vector<std::size_t> order = sorted_order(delta_n);
+  PowerLawFit fit;
+  Data d;
+  std::vector<double> sigma, dropped;
+  for (std::size_t i : order) {
+    if (!(delta_n[i] >= delta) || !(delta_n[i] > 0.0)) continue;
+    if (!(kt[i] > 0.0)) {
+      dropped.push_back(delta_n[i]);
+      continue;
+    }
+    // Δn = δ exactly: the model is 0 there, a positive kt is consistent with no (a, b).
+    if (delta_n[i] == delta) {
+      dropped.push_back(delta_n[i]);
+      continue;
+    }
+    d.x.push_back(delta_n[i]);
+    d.y.push_back(kt[i]);
+    if (!error.empty()) sigma.push_back(error[i]);
+  }
+  const std::size_t n = d.x.size();
+  if (n < kTangentialMinPoints)
+    throw InputError(fmt::format("{}: {} point{} with delta_n > delta = {:.4g} and kt > 0{}; allowed: at least {} (a, b and one "
+                                 "degree of freedom)",
+                                 law, n, n == 1 ? "" : "s", delta, n == 0 ? "" : fmt::format(" (at delta_n = {})", list_of(d.x)),
+                                 kTangentialMinPoints));
+  if (!dropped.empty())
+    fit.notes.push_back(fmt::format("left out: kt <= 0 (or delta_n = delta) at delta_n = {}", list_of(dropped)));
+  choose_weights(d, sigma, !error.empty(), fit);
+
+  TangentialModel model;
+  model.delta = delta;
+  const auto [a0, b0] = log_log_start(d);
+  Solution best = levenberg_marquardt(d, model, VectorXd{{a0, b0}});
+  double scan_chi2 = std::numeric_limits<double>::infinity();
+  VectorXd scan_start(2);
+  for (double b : exponent_grid()) {
+    double sgg = 0, sgy = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double w = 1.0 / (d.s[i] * d.s[i]), g = std::pow(d.x[i], b) - std::pow(delta, b);
+      sgg += w * g * g, sgy += w * g * d.y[i];
+    }
+    if (!(sgg > 0.0)) continue;
+    const VectorXd p{{sgy / sgg, b}};
+    if (!(p[0] > 0.0)) continue;
+    const double c2 = chi2(d, model, p);
+    if (c2 < scan_chi2) scan_chi2 = c2, scan_start = p;
+  }
+  if (std::isfinite(scan_chi2)) {
+    const Solution s = levenberg_marquardt(d, model, scan_start);
+    if (s.chi2 < best.chi2) best = s;
+  }
+  if (!std::isfinite(best.chi2))
+    throw InputError(fmt::format("{}: Levenberg-Marquardt did not converge on the {} points (delta_n {} to {})", law, n,
+                                 d.x.front(), d.x.back()));
+  if (best.status == static_cast<int>(Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation))
+    fit.notes.push_back("Levenberg-Marquardt stopped at its evaluation limit");
+  const VectorXd& p = best.p;
+  if (!(p[0] > 0.0) || !(p[1] > 0.0))
+    throw InputError(fmt::format("{}: fitted a = {:.6g}, b = {:.6g}; allowed: a > 0 and b > 0 (kt growing with delta_n)", law,
+                                 p[0], p[1]));
+  fit.a = p[0], fit.b = p[1];
+  fit.points = n;
+  fit.dn_min = d.x.front(), fit.dn_max = d.x.back();
+  fit.chi2_per_dof = best.chi2 / static_cast<double>(n - 2);
+  fit.covariance = covariance(d, model, p, fit.chi2_per_dof, law);
+  fit.a_error = std::sqrt(fit.covariance(0, 0));
+  fit.b_error = std::sqrt(fit.covariance(1, 1));
+  fit.delta = delta;
+  fit.delta_error = 0.0;
+  if (delta > 0.0) {
+    const double db = std::pow(delta, fit.b);
+    fit.c = -fit.a * db;
+    const Eigen::Vector2d g{-db, -fit.a * db * std::log(delta)};
+    fit.c_error = std::sqrt(std::max(0.0, g.dot(fit.covariance * g)));
+  } else {
+    fit.c = 0.0;
+    fit.c_error = 0.0;
+  }
+  fit.notes.push_back("c = -a delta^b with delta from the normal fit treated as exact: c_error propagates the covariance of "
+                      "(a, b) only");
+  return fit;
+}
+
+double evaluate(const PowerLawFit& fit, double delta_n) {
+  if (delta_n < fit.delta || !(delta_n > 0.0)) return 0.0;
+  return fit.a * std::pow(delta_n, fit.b) + fit.c;
+}
+
+}  // namespace softpack::fit

@@ -1,0 +1,141 @@
+// softpack-table: Tables 1 and 2 of the paper with our fitted coefficients beside the published
+// ones (analysis/fit_table.hpp). Reads the fit files of softpack-fit and experiments/published.yaml,
+// writes table1.md, table1.tex, table2.md, table2.tex and prints the Markdown tables.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "analysis/fit_json.hpp"
+#include "analysis/fit_table.hpp"
+#include "config/yaml_node.hpp"
+#include "core/error.hpp"
+#include "core/version.hpp"
+#include "io/atomic_file.hpp"
+
+namespace {
+
+using namespace softpack;
+using json = nlohmann::json;
+
+json read_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot open the file", path));
+  try {
+    return json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(fmt::format("{}: not a JSON file: {}", path, e.what()));
+  }
+}
+
+std::string string_at(const json& j, const std::string& path, const std::string& key) {
+  const auto it = j.find(key);
+  if (it == j.end() || !it->is_string()) throw InputError(fmt::format("{}: {}: missing or not a string", path, key));
+  return it->get<std::string>();
+}
+
+/// The published coefficients of one scene in `table` ("table1" or "table2") into `column`,
+/// with their digits as written in the file.
+void add_published(table::Column& column, const ConfigNode& root, const std::string& table, const std::vector<std::string>& keys) {
+  const ConfigNode t = root.at(table);
+  if (!t.has(column.scene)) t.fail(fmt::format("no scene '{}'; allowed: {}", column.scene, fmt::join(t.keys(), ", ")));
+  const ConfigNode s = t.at(column.scene);
+  s.allow_only(keys);
+  for (const std::string& k : keys)
+    if (s.has(k)) {
+      const ConfigNode v = s.at(k);
+      column.published[k] = v.number();
+      column.published_text[k] = v.yaml().Scalar();
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using Clock = std::chrono::steady_clock;
+  CLI::App app{"softpack-table: Tables 1 and 2 (fitted coefficients of Eqs. 7 and 8) beside the paper's"};
+  std::vector<std::string> fit_paths;
+  std::string published_path, out_dir, gnuplot_path;
+  app.add_option("--fits", fit_paths, "fit files of softpack-fit, one per scene, in column order, e.g. "
+                                      "data/paper/fit/soft-solid.json data/paper/fit/soft-soft.json")
+      ->required();
+  app.add_option("--published", published_path, "the published coefficients, experiments/published.yaml")->required();
+  app.add_option("--out-dir", out_dir, "writes table1.md, table1.tex, table2.md, table2.tex, e.g. data/paper/tables")->required();
+  app.add_option("--gnuplot", gnuplot_path,
+                 "also write the published coefficients as gnuplot variables (paper_a_solid=...; paper_kt_a_soft=...) for "
+                 "figures/*.gp");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const auto start = Clock::now();
+    const ConfigNode root = ConfigNode::load_file(published_path);
+    root.allow_only({"table1", "table2"});
+    table::Table t1{"Table 1 (normal, Eq. 7)", table::table1_rows(), {}};
+    table::Table t2{"Table 2 (tangential spring, Eq. 8)", table::table2_rows(), {}};
+    std::set<std::string> scenes;
+    std::vector<std::string> sources;
+    for (const std::string& path : fit_paths) {
+      const json fit = read_json(path);
+      if (!fit.is_object()) throw InputError(fmt::format("{}: expected a JSON object (a softpack-fit file)", path));
+      const std::string scene = string_at(fit, path, "scene");
+      if (!scenes.insert(scene).second)
+        throw InputError(fmt::format("{}: scene '{}' is given twice in --fits; allowed: one fit file per scene", path, scene));
+      if (!fit.contains("normal"))
+        throw InputError(fmt::format("{}: normal: missing (the Eq. 7 fit of softpack-fit)", path));
+      table::Column c1{scene, fit::estimates_from_json(fit["normal"], path + ": normal", {"a", "b", "c", "delta"}), {}, {}};
+      table::Column c2{scene, std::nullopt, {}, {}};
+      add_published(c1, root, "table1", {"a", "b", "c", "delta"});
+      add_published(c2, root, "table2", {"a", "b", "c"});
+      const auto tan = fit.find("tangential");
+      if (tan != fit.end() && !tan->is_null()) c2.ours = fit::estimates_from_json(*tan, path + ": tangential", {"a", "b", "c"});
+      t1.columns.push_back(std::move(c1));
+      t2.columns.push_back(std::move(c2));
+      std::string version = "?";
+      if (fit.contains("provenance") && fit["provenance"].is_object() && fit["provenance"].contains("code_version") &&
+          fit["provenance"]["code_version"].is_string())
+        version = fit["provenance"]["code_version"].get<std::string>();
+      sources.push_back(fmt::format("{} ({}, softpack-fit {})", path, scene, version));
+    }
+
+    const std::string md1 = table::to_markdown(t1), md2 = table::to_markdown(t2);
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const std::string provenance = fmt::format("softpack-table {}; fits: {}; published: {}; {:.3f} s", code_version(),
+                                               fmt::join(sources, ", "), published_path, seconds);
+    namespace fs = std::filesystem;
+    const auto out = [&](const std::string& name) { return (fs::path(out_dir) / name).string(); };
+    write_file_atomically(out("table1.md"), md1 + "\n<!-- " + provenance + " -->\n");
+    write_file_atomically(out("table2.md"), md2 + "\n<!-- " + provenance + " -->\n");
+    write_file_atomically(out("table1.tex"), table::to_latex(t1, t1.title + "\n" + provenance));
+    write_file_atomically(out("table2.tex"), table::to_latex(t2, t2.title + "\n" + provenance));
+    if (!gnuplot_path.empty()) {
+      // Suffix of the figure scripts' variables: soft-solid -> _solid, soft-soft -> _soft. Eq. 8's
+      // delta is Table 1's (paper §5).
+      std::string gp = fmt::format("# softpack-table {}: the published coefficients of {} for gnuplot\n", code_version(),
+                                   published_path);
+      for (std::size_t i = 0; i < t1.columns.size(); ++i) {
+        const std::string sfx = t1.columns[i].scene == "soft-solid" ? "solid" : "soft";
+        const auto value = [](const table::Column& c, const std::string& k) {
+          const auto it = c.published.find(k);
+          return it == c.published.end() ? std::string("NaN") : fmt::format("{}", it->second);
+        };
+        for (const char* k : {"a", "b", "c", "delta"}) gp += fmt::format("paper_{}_{}={}; ", k, sfx, value(t1.columns[i], k));
+        for (const char* k : {"a", "b", "c"}) gp += fmt::format("paper_kt_{}_{}={}; ", k, sfx, value(t2.columns[i], k));
+        gp += fmt::format("paper_kt_delta_{}={}\n", sfx, value(t1.columns[i], "delta"));
+      }
+      write_file_atomically(gnuplot_path, gp);
+    }
+    fmt::print("{}\n{}", md1, md2);
+    return 0;
+  } catch (const InputError& e) {
+    fmt::print(stderr, "softpack-table: error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "softpack-table: internal error: {}\n", e.what());
+    return 1;
+  }
+}

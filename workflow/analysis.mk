@@ -1,0 +1,73 @@
+# Analysis stage: per scene, the mean over the seeds (softpack-average), the fits of Eqs. 7 and 8
+# (softpack-fit); then Tables 1-2 (softpack-table) and Figures 3-6 (gnuplot). Included by the
+# top-level Makefile after sweeps.mk.
+
+AVERAGE_DIR := $(DATA)/$(PROFILE)/averages
+FIT_DIR := $(DATA)/$(PROFILE)/fits
+TABLE_DIR := $(DATA)/$(PROFILE)/tables
+PUBLISHED := experiments/published.yaml
+
+# average_outputs SCENE: the files softpack-average writes for SCENE.
+average_outputs = $(AVERAGE_DIR)/$(1).h5 $(AVERAGE_DIR)/normal-$(1).dat $(AVERAGE_DIR)/tangential-$(1).dat \
+  $(AVERAGE_DIR)/kt-$(1).dat
+fit_outputs = $(FIT_DIR)/$(1).json $(FIT_DIR)/$(1).gp
+
+define analysis_rules
+$(call average_outputs,$(1)) &: $(AVERAGE_STAMP) $(call NORMAL_RESULTS,$(1)) $(call TANGENTIAL_RESULTS,$(1)) | build-tools
+	@mkdir -p $(AVERAGE_DIR)
+	@$$(call from_archive,$(call average_outputs,$(1)),$(AVERAGE_STAMP)) || { \
+	  echo "average: $(PROFILE) $(1) over seeds $(SEEDS) -> $(AVERAGE_DIR)/$(1).h5 (log $(AVERAGE_DIR)/$(1).log)"; \
+	  $(RUN) $(BUILD)/engine/softpack-average --scene $(1) --profile $(PROFILE) --normal $(call NORMAL_RESULTS,$(1)) \
+	    --tangential $(call TANGENTIAL_RESULTS,$(1)) --out-dir $(AVERAGE_DIR) 2> $(AVERAGE_DIR)/$(1).log \
+	  || { echo "average: FAILED for $(PROFILE) $(1); see $(AVERAGE_DIR)/$(1).log"; tail -5 $(AVERAGE_DIR)/$(1).log; exit 1; }; }
+$(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 | build-tools
+	@mkdir -p $(FIT_DIR)
+	@$$(call from_archive,$(call fit_outputs,$(1)),$(AVERAGE_STAMP)) || { \
+	  echo "fit: $(PROFILE) $(1) Eqs. 7-8 -> $(FIT_DIR)/$(1).json (log $(FIT_DIR)/$(1).log)"; \
+	  $(RUN) $(BUILD)/engine/softpack-fit --average $(AVERAGE_DIR)/$(1).h5 --out $(FIT_DIR)/$(1).json \
+	    --gnuplot $(FIT_DIR)/$(1).gp 2> $(FIT_DIR)/$(1).log \
+	  || { echo "fit: FAILED for $(PROFILE) $(1); see $(FIT_DIR)/$(1).log"; tail -5 $(FIT_DIR)/$(1).log; exit 1; }; }
+endef
+$(foreach scene,$(SCENES),$(eval $(call analysis_rules,$(scene))))
+
+AVERAGES := $(foreach scene,$(SCENES),$(call average_outputs,$(scene)))
+FITS := $(foreach scene,$(SCENES),$(call fit_outputs,$(scene)))
+TABLES := $(TABLE_DIR)/table1.md $(TABLE_DIR)/table2.md $(TABLE_DIR)/table1.tex $(TABLE_DIR)/table2.tex \
+  $(TABLE_DIR)/published.gp
+
+.PHONY: averages fits tables figures
+averages: $(AVERAGES)  ## mean and standard error over the seeds (DATA/PROFILE/averages/)
+fits: $(FITS)  ## Eq. 7 and Eq. 8 fitted to the averages (DATA/PROFILE/fits/*.json)
+
+tables: $(TABLES)  ## Tables 1 and 2: ours beside the paper's (DATA/PROFILE/tables/; printed)
+	@cat $(TABLE_DIR)/table1.md; echo; cat $(TABLE_DIR)/table2.md
+
+$(TABLES) &: $(filter %.json,$(FITS)) $(PUBLISHED) | build-tools
+	@mkdir -p $(TABLE_DIR)
+	@$(RUN) $(BUILD)/engine/softpack-table --fits $(filter %.json,$(FITS)) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
+	  --gnuplot $(TABLE_DIR)/published.gp > /dev/null 2> $(TABLE_DIR)/tables.log \
+	  || { echo "tables: FAILED for $(PROFILE); see $(TABLE_DIR)/tables.log"; cat $(TABLE_DIR)/tables.log; exit 1; }
+
+# Figures 3-6 as PDF (the report) and PNG (the screen). Every figure script reads the averages
+# and the coefficients (ours, the paper's) as gnuplot variables.
+FIGURE_NAMES := fig3_normal fig4_tangential_soft_solid fig5_tangential_soft_soft fig6_kt
+FIGURES_3_6 := $(foreach f,$(FIGURE_NAMES),$(FIGURES_OUT)/$(f).pdf $(FIGURES_OUT)/$(f).png)
+figures: figure1 figure2 $(FIGURES_3_6)  ## Figures 1-6 (figures/generated/PROFILE/, PDF and PNG)
+	@echo "figures: $(FIGURES_OUT)/ ($(words $(FIGURES_3_6)) files of Figures 3-6, and Figures 1-2)"
+
+profile_value = $(shell sed -n 's/^ *$(1): *\([0-9.eE+-]*\).*/\1/p' experiments/$(PROFILE).yaml | head -1)
+profile_material = $(shell sed -n 's/^material:.*[{ ]$(1): *\([0-9.eE+-]*\).*/\1/p' experiments/$(PROFILE).yaml)
+# gnuplot_run SCRIPT OUT VARIABLES: draws via OUT.tmp.EXT, renamed into place.
+gnuplot_run = mkdir -p $(FIGURES_OUT) && gnuplot -e "avg='$(AVERAGE_DIR)'; out='$(2).tmp$(suffix $(2))'; $(3)" \
+  -e "load '$(FIT_DIR)/soft-solid.gp'; load '$(FIT_DIR)/soft-soft.gp'; load '$(TABLE_DIR)/published.gp'" $(1) \
+  && mv $(2).tmp$(suffix $(2)) $(2) || { echo "figure: FAILED to draw $(2) with $(1)"; rm -f $(2).tmp$(suffix $(2)); exit 1; }
+FIGURE_INPUTS := $(AVERAGES) $(FITS) $(TABLE_DIR)/published.gp
+
+$(FIGURES_OUT)/fig3_normal.%: figures/fig3_normal.gp $(FIGURE_INPUTS)
+	@$(call gnuplot_run,$<,$@,Rs=$(call profile_value,Rs); E=$(call profile_material,E); nu=$(call profile_material,nu))
+$(FIGURES_OUT)/fig4_tangential_soft_solid.%: figures/fig45_tangential.gp $(FIGURE_INPUTS)
+	@$(call gnuplot_run,$<,$@,scene='soft-solid')
+$(FIGURES_OUT)/fig5_tangential_soft_soft.%: figures/fig45_tangential.gp $(FIGURE_INPUTS)
+	@$(call gnuplot_run,$<,$@,scene='soft-soft')
+$(FIGURES_OUT)/fig6_kt.%: figures/fig6_kt.gp $(FIGURE_INPUTS)
+	@$(call gnuplot_run,$<,$@,)

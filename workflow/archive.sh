@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Archive one profile's results (packings, sweep results, averages, fits) with their configuration
+# stamps, a MANIFEST of SHA-256 sums, the provenance and a BibTeX entry for the dataset.
+#
+#   workflow/archive.sh DATA PROFILE VERSION ARCHIVE_ROOT
+#
+# The archive is assembled in a temporary directory next to its destination and moved into place
+# at the end, so an interrupted run leaves the previous archive (if any) untouched.
+set -euo pipefail
+
+if [[ $# -ne 4 || $1 == -h || $1 == --help ]]; then
+  echo "usage: $0 DATA PROFILE VERSION ARCHIVE_ROOT  (e.g. data paper 0.1.0 data/archive)" >&2
+  exit 2
+fi
+data=$1 profile=$2 version=$3 root=$4
+source_dir=$data/$profile
+dest=$root/$version/$profile
+
+for part in packings normal tangential averages fits stamps; do
+  [[ -d $source_dir/$part ]] || { echo "archive: $source_dir/$part is missing; run 'make PROFILE=$profile tables' first" >&2; exit 1; }
+done
+
+mkdir -p "$root/$version"
+staging=$(mktemp -d "$root/$version/.$profile.staging.XXXXXX")
+trap 'rm -rf "$staging"' EXIT
+
+copy() {  # copy SUBDIR PATTERN...: the matching files of SOURCE/SUBDIR into the staging area
+  local sub=$1; shift
+  mkdir -p "$staging/$sub"
+  local pattern
+  for pattern in "$@"; do
+    compgen -G "$source_dir/$sub/$pattern" > /dev/null && cp -p "$source_dir/$sub"/$pattern "$staging/$sub/"
+  done
+  return 0
+}
+copy packings '*.h5' '*.vtp' '*.xyz'
+copy normal '*.h5'
+copy tangential '*-seed-*[0-9].h5'
+copy averages '*.h5' '*.dat'
+copy fits '*.json'
+copy stamps '*.hash'
+cp "experiments/$profile.yaml" "$staging/profile.yaml"
+
+commit=$(git rev-parse --short=12 HEAD 2> /dev/null || echo unknown)
+dirty=$(git status --porcelain --untracked-files=no 2> /dev/null | grep -q . && echo true || echo false)
+created=$(date -u +%Y-%m-%dT%H:%M:%SZ)
+{
+  echo "{"
+  echo "  \"dataset\": \"softpack $version, profile $profile\","
+  echo "  \"softpack_version\": \"$version\","
+  echo "  \"git_commit\": \"$commit\","
+  echo "  \"git_dirty\": $dirty,"
+  echo "  \"created_utc\": \"$created\","
+  echo "  \"profile\": \"profile.yaml\","
+  echo "  \"stamps\": {"
+  first=1
+  for stamp in "$staging"/stamps/*.hash; do
+    [[ $first == 1 ]] || echo ","
+    printf '    "%s": "%s"' "$(basename "$stamp" .hash)" "$(cat "$stamp")"
+    first=0
+  done
+  echo
+  echo "  },"
+  echo "  \"note\": \"each result file carries its own provenance (configuration slice, seed, code version, time spent) in /provenance\""
+  echo "}"
+} > "$staging/PROVENANCE.json"
+
+(cd "$staging" && find . -type f ! -name MANIFEST.sha256 -printf '%P\n' | LC_ALL=C sort | xargs sha256sum > MANIFEST.sha256)
+manifest_sum=$(sha256sum "$staging/MANIFEST.sha256" | cut -c1-64)
+
+cat > "$staging/dataset.bib" << EOF
+@misc{softpack-data,
+  author       = {{softpack developers}},
+  title        = {softpack {$version}: soft-particle contact laws, profile {$profile} (packings, sweeps, averages, fits)},
+  year         = {${created:0:4}},
+  howpublished = {softpack repository, \\texttt{data/archive/$version/$profile}, commit \\texttt{$commit}},
+  note         = {MANIFEST.sha256 SHA-256 {$manifest_sum}}
+}
+EOF
+
+rm -rf "$dest.old"
+[[ -d $dest ]] && mv "$dest" "$dest.old"
+mv "$staging" "$dest"
+rm -rf "$dest.old"
+trap - EXIT
+echo "archive: $dest ($(find "$dest" -type f | wc -l) files, $(du -sh "$dest" | cut -f1)); cite with $dest/dataset.bib"
