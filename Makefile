@@ -19,10 +19,12 @@ CMAKE_FLAGS := -DCMAKE_BUILD_TYPE=Release $(if $(filter true,$(CI)),-DSOFTPACK_W
 APT_PACKAGES := cmake g++ make git pkg-config gnuplot-nox \
   libeigen3-dev libyaml-cpp-dev libhdf5-dev hdf5-tools nlohmann-json3-dev \
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev \
-  lammps python3-numpy
+  lammps python3-numpy python3-h5py
+# The report (make paper): TeX Live without its recommends (about a tenth of the download).
+APT_TEX_PACKAGES := latexmk texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended poppler-utils
 SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 
-.PHONY: help setup all build test test-sanitize bench clean
+.PHONY: help setup all build build-tools test test-sanitize bench clean
 
 help:  ## list the targets
 	@echo "softpack — reproducible soft-particle contact laws (see README.md)"
@@ -30,24 +32,34 @@ help:  ## list the targets
 	@grep -hE '^[a-z0-9-]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z0-9-]+):.*## (.*)/  make \1\t\2/' | expand -t 24
 
 setup:  ## install the Debian packages (apt-get; quick when they are there)
-	@missing=$$(for p in $(APT_PACKAGES); do \
+	@missing=$$(for p in $(APT_PACKAGES) $(APT_TEX_PACKAGES); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
 	  echo "setup: installing" $$missing; \
-	  $(SUDO) apt-get update -q && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q $(APT_PACKAGES); \
-	else echo "setup: all $(words $(APT_PACKAGES)) Debian packages are present"; fi
+	  $(SUDO) apt-get update -q && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q $(APT_PACKAGES) \
+	  && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q --no-install-recommends $(APT_TEX_PACKAGES); \
+	else echo "setup: all $(words $(APT_PACKAGES) $(APT_TEX_PACKAGES)) Debian packages are present"; fi
 
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 
-build: $(BUILD)/CMakeCache.txt  ## compile the engine, executables, tests and benchmarks
-	cmake --build $(BUILD) -j $(JOBS)
+build: build-tools  ## compile the engine, executables, tests and benchmarks (log: BUILD/build.log)
 
-all: build packings figure1 figure2  ## build; the profile's packings, Figures 1-2; the example scenes
+# The one rule that compiles (make -j would otherwise run two builds in the same folder). Every
+# stage has it as an order-only prerequisite ($(TOOLS), workflow/packing.mk).
+build-tools: $(BUILD)/CMakeCache.txt
+	@MAKEFLAGS= cmake --build $(BUILD) -j $(JOBS) > $(BUILD)/build.log 2>&1 \
+	  || { echo "build: FAILED; the end of $(BUILD)/build.log:"; tail -40 $(BUILD)/build.log; exit 1; }
+	@echo "build: $(BUILD) is up to date (log $(BUILD)/build.log)"
+
+all: build tables figures paper scenes  ## the main job: Tables 1-2, Figures 1-6, paper/paper.pdf, the example scenes
+
+.PHONY: scenes
+scenes: | build-tools  ## run the example scenes of experiments/scenes/ (data/scenes/*.json)
 	@for scene in experiments/scenes/*.yaml; do \
 	  out=data/scenes/$$(basename $$scene .yaml).json; \
 	  echo "softpack-run $$scene -> $$out"; \
-	  $(BUILD)/engine/softpack-run --scene $$scene --out $$out --quiet || exit 1; \
+	  $(RUN) $(BUILD)/engine/softpack-run --scene $$scene --out $$out --quiet || exit 1; \
 	done
 
 test: build  ## build and run the test suite (ctest)
@@ -63,8 +75,8 @@ test-sanitize:  ## the test suite under AddressSanitizer + UndefinedBehaviorSani
 bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side by side
 	bench/run_benchmarks.sh $(BUILD)
 
-clean:  ## remove builds and generated data (keeps data/archive)
-	rm -rf $(BUILD) $(BUILD_SANITIZE) data/scenes $(DATA)/$(PROFILE) $(DATA)/studies figures/generated
+clean:  ## remove the builds and the profile's generated data and figures (keeps data/archive)
+	rm -rf $(BUILD) $(BUILD_SANITIZE) data/scenes $(DATA)/$(PROFILE) $(DATA)/studies figures/generated $(PAPER_PDF)
 
 include workflow/stamps.mk
 include workflow/packing.mk

@@ -13,14 +13,14 @@ average_outputs = $(AVERAGE_DIR)/$(1).h5 $(AVERAGE_DIR)/normal-$(1).dat $(AVERAG
 fit_outputs = $(FIT_DIR)/$(1).json $(FIT_DIR)/$(1).gp
 
 define analysis_rules
-$(call average_outputs,$(1)) &: $(AVERAGE_STAMP) $(call NORMAL_RESULTS,$(1)) $(call TANGENTIAL_RESULTS,$(1)) | build-tools
+$(call average_outputs,$(1)) &: $(AVERAGE_STAMP) $(call NORMAL_RESULTS,$(1)) $(call TANGENTIAL_RESULTS,$(1)) | $(TOOLS)
 	@mkdir -p $(AVERAGE_DIR)
 	@$$(call from_archive,$(call average_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "average: $(PROFILE) $(1) over seeds $(SEEDS) -> $(AVERAGE_DIR)/$(1).h5 (log $(AVERAGE_DIR)/$(1).log)"; \
 	  $(RUN) $(BUILD)/engine/softpack-average --scene $(1) --profile $(PROFILE) --normal $(call NORMAL_RESULTS,$(1)) \
 	    --tangential $(call TANGENTIAL_RESULTS,$(1)) --out-dir $(AVERAGE_DIR) 2> $(AVERAGE_DIR)/$(1).log \
 	  || { echo "average: FAILED for $(PROFILE) $(1); see $(AVERAGE_DIR)/$(1).log"; tail -5 $(AVERAGE_DIR)/$(1).log; exit 1; }; }
-$(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 | build-tools
+$(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 | $(TOOLS)
 	@mkdir -p $(FIT_DIR)
 	@$$(call from_archive,$(call fit_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "fit: $(PROFILE) $(1) Eqs. 7-8 -> $(FIT_DIR)/$(1).json (log $(FIT_DIR)/$(1).log)"; \
@@ -42,7 +42,7 @@ fits: $(FITS)  ## Eq. 7 and Eq. 8 fitted to the averages (DATA/PROFILE/fits/*.js
 tables: $(TABLES)  ## Tables 1 and 2: ours beside the paper's (DATA/PROFILE/tables/; printed)
 	@cat $(TABLE_DIR)/table1.md; echo; cat $(TABLE_DIR)/table2.md
 
-$(TABLES) &: $(filter %.json,$(FITS)) $(PUBLISHED) | build-tools
+$(TABLES) &: $(filter %.json,$(FITS)) $(PUBLISHED) | $(TOOLS)
 	@mkdir -p $(TABLE_DIR)
 	@$(RUN) $(BUILD)/engine/softpack-table --fits $(filter %.json,$(FITS)) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
 	  --gnuplot $(TABLE_DIR)/published.gp > /dev/null 2> $(TABLE_DIR)/tables.log \
@@ -53,7 +53,6 @@ $(TABLES) &: $(filter %.json,$(FITS)) $(PUBLISHED) | build-tools
 FIGURE_NAMES := fig3_normal fig4_tangential_soft_solid fig5_tangential_soft_soft fig6_kt
 FIGURES_3_6 := $(foreach f,$(FIGURE_NAMES),$(FIGURES_OUT)/$(f).pdf $(FIGURES_OUT)/$(f).png)
 figures: figure1 figure2 $(FIGURES_3_6)  ## Figures 1-6 (figures/generated/PROFILE/, PDF and PNG)
-	@echo "figures: $(FIGURES_OUT)/ ($(words $(FIGURES_3_6)) files of Figures 3-6, and Figures 1-2)"
 
 profile_value = $(shell sed -n 's/^ *$(1): *\([0-9.eE+-]*\).*/\1/p' experiments/$(PROFILE).yaml | head -1)
 profile_material = $(shell sed -n 's/^material:.*[{ ]$(1): *\([0-9.eE+-]*\).*/\1/p' experiments/$(PROFILE).yaml)

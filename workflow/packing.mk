@@ -7,13 +7,15 @@ PACKINGS := $(foreach s,$(SEEDS),$(PACKING_DIR)/seed-$(s).h5)
 FIGURES_OUT := figures/generated/$(PROFILE)
 PACK := $(BUILD)/engine/softpack-pack
 
-.PHONY: packings study-packing figure1 figure2 build-tools
-build-tools: $(BUILD)/CMakeCache.txt
-	@MAKEFLAGS= cmake --build $(BUILD) -j $(JOBS) > /dev/null
+.PHONY: packings study-packing figure1 figure2
+# The executables are brought up to date before any stage runs (an order-only prerequisite);
+# not under make -n or make -q, which must only say what would run.
+MAKE_LETTERS := $(firstword -$(MAKEFLAGS))
+TOOLS := $(if $(findstring n,$(MAKE_LETTERS))$(findstring q,$(MAKE_LETTERS)),,build-tools)
 
 packings: $(PACKINGS)  ## packings of the profile's seeds (DATA/PROFILE/packings/, with .vtp and .xyz)
 
-$(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | build-tools
+$(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | $(TOOLS)
 	@mkdir -p $(@D)
 	@$(call from_archive,$@ $(@:.h5=.vtp) $(@:.h5=.xyz),$(PACK_STAMP)) || { \
 	  echo "pack: $(PROFILE) seed $* -> $@ (log $(@:.h5=.log))"; \
@@ -24,13 +26,13 @@ $(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | build-tools
 figure1: $(FIGURES_OUT)/fig1_apollonian.png $(FIGURES_OUT)/fig1_apollonian.pdf  ## Figure 1: a 2D Apollonian packing
 figure2: $(FIGURES_OUT)/fig2_softparticle.png $(FIGURES_OUT)/fig2_softparticle.pdf  ## Figure 2: a soft-particle (cross-section)
 
-$(FIGURES_OUT)/fig1_apollonian.dat: | build-tools
+$(FIGURES_OUT)/fig1_apollonian.dat: | $(TOOLS)
 	@mkdir -p $(@D)
 	@$(RUN) $(BUILD)/engine/softpack-apollonian --min-radius 1e-3 --out $@
 $(FIGURES_OUT)/fig1_apollonian.%: $(FIGURES_OUT)/fig1_apollonian.dat figures/fig1_apollonian.gp
 	@gnuplot -e "data='$<'; out='$@.tmp.$*'" figures/fig1_apollonian.gp && mv $@.tmp.$* $@
 
-$(FIGURES_OUT)/fig2_section.dat: $(PACKING_DIR)/seed-$(firstword $(SEEDS)).h5 | build-tools
+$(FIGURES_OUT)/fig2_section.dat: $(PACKING_DIR)/seed-$(firstword $(SEEDS)).h5 | $(TOOLS)
 	@mkdir -p $(@D)
 	@$(RUN) $(BUILD)/engine/softpack-section --packing $< --out $@ 2> /dev/null
 $(FIGURES_OUT)/fig2_softparticle.%: $(FIGURES_OUT)/fig2_section.dat figures/fig2_softparticle.gp
@@ -40,7 +42,9 @@ $(FIGURES_OUT)/fig2_softparticle.%: $(FIGURES_OUT)/fig2_section.dat figures/fig2
 STUDY_DIR := $(DATA)/studies/packing-density
 study-packing: $(STUDY_DIR)/packing-density.md figures/generated/studies/packing-density.png  ## the packing density study (beta, I, r_max/Rs)
 	@cat $(STUDY_DIR)/packing-density.md
-$(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/packing-density.yaml experiments/paper.yaml | build-tools
+# The study varies the paper profile's packing section: it depends on that section only.
+STUDY_STAMP = $(call stamp,packing-density,packing,experiments/paper.yaml,$(DATA)/studies/stamps)
+$(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/packing-density.yaml $(STUDY_STAMP) | $(TOOLS)
 	$(RUN) $(BUILD)/engine/softpack-packing-study --config experiments/packing-density.yaml --out $(STUDY_DIR)
 figures/generated/studies/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
 	@mkdir -p $(@D)

@@ -7,14 +7,16 @@
 VERSION := $(shell awk '/^project/ { print $$3; exit }' CMakeLists.txt)
 STAMPS := $(DATA)/$(PROFILE)/stamps
 
-# config_slice SECTIONS: those top-level sections of the profile, comments and blank lines dropped.
+# config_slice SECTIONS [FILE]: those top-level sections of FILE (the profile by default),
+# comments and blank lines dropped.
 config_slice = awk -v want="$(1)" 'BEGIN { n = split(want, w, " "); for (i = 1; i <= n; i++) keep[w[i]] = 1 } \
   /^[A-Za-z_][A-Za-z0-9_-]*:/ { key = $$0; sub(/:.*/, "", key); on = (key in keep) } \
-  on { sub(/[ \t]+\#.*$$/, ""); if ($$0 ~ /^[ \t]*(\#|$$)/) next; print }' experiments/$(PROFILE).yaml
+  on { sub(/[ \t]+\#.*$$/, ""); if ($$0 ~ /^[ \t]*(\#|$$)/) next; print }' $(or $(2),experiments/$(PROFILE).yaml)
 
-# stamp NAME SECTIONS: the path of $(STAMPS)/NAME.hash, brought up to date.
-stamp = $(shell mkdir -p $(STAMPS) && h=$$( { echo "softpack $(VERSION)"; $(call config_slice,$(2)); } | sha256sum | cut -c1-16) && \
-  { [ "$$h" = "$$(cat $(STAMPS)/$(1).hash 2> /dev/null)" ] || echo "$$h" > $(STAMPS)/$(1).hash; } && echo $(STAMPS)/$(1).hash)
+# stamp NAME SECTIONS [FILE [DIR]]: the path of DIR/NAME.hash (DIR: $(STAMPS)), brought up to date.
+stamp = $(shell d=$(or $(4),$(STAMPS)) && mkdir -p $$d && \
+  h=$$( { echo "softpack $(VERSION)"; $(call config_slice,$(2),$(3)); } | sha256sum | cut -c1-16) && \
+  { [ "$$h" = "$$(cat $$d/$(1).hash 2> /dev/null)" ] || echo "$$h" > $$d/$(1).hash; } && echo $$d/$(1).hash)
 
 ifneq ($(wildcard experiments/$(PROFILE).yaml),)
 PACK_STAMP := $(call stamp,packing,packing)

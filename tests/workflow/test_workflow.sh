@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# The workflow end to end on the quick profile, in a copy of the source tree (the build is reused):
+#   1. make -j1 and make -j2 from scratch give the same averages, fits and tables; the tables and
+#      Figures 1-6 exist and are not empty; afterwards make -q says everything is up to date;
+#   2. an interrupted make, rerun, finishes with the same results and no leftovers;
+#   3. editing a comment or the description reruns nothing; editing a key only the tangential
+#      stage reads reruns tangential -> average -> fit -> tables/figures and nothing before;
+#      editing a normal key reruns normal and tangential but not the packings;
+#   4. make archive, then a fresh copy without the data: make tables figures reuses every result.
+#
+#   test_workflow.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$(cd "$1" && pwd) source=$(cd "$2" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+pass() { echo "ok: $*"; }
+
+# copy_tree DEST: the source tree as git sees it (tracked and untracked, not ignored files).
+copy_tree() {
+  mkdir -p "$1"
+  (cd "$source" && git ls-files -z --cached --others --exclude-standard | xargs -0 -I{} sh -c 'test -e "{}" && echo "{}"' |
+     tar -cf - -T -) | tar -xf - -C "$1"
+}
+copy_tree "$work/tree"
+cd "$work/tree"
+export MAKEFLAGS=
+mk() { make --no-print-directory PROFILE=quick BUILD="$build" "$@"; }
+
+# --- 1. -j1 and -j2 agree ------------------------------------------------------------------------
+mk -j1 DATA=data-j1 FROM_SCRATCH=1 tables figures > "$work/j1.log" 2>&1 || { cat "$work/j1.log"; fail "make -j1 tables figures"; }
+mk -j2 DATA=data-j2 FROM_SCRATCH=1 tables figures > "$work/j2.log" 2>&1 || { cat "$work/j2.log"; fail "make -j2 tables figures"; }
+numbers() {  # the numeric results of a data tree, without provenance (comments, code versions)
+  for f in "$1"/quick/averages/*.dat "$1"/quick/fits/*.gp "$1"/quick/tables/*.md; do
+    echo "== ${f#"$1"/}"; grep -v -e '^#' -e '^<!--' "$f"
+  done
+}
+[[ -n $(numbers data-j1) ]] || fail "no results in data-j1"
+diff <(numbers data-j1) <(numbers data-j2) > /dev/null || { diff <(numbers data-j1) <(numbers data-j2) | head; fail "-j1 and -j2 differ"; }
+pass "make -j1 and make -j2 give the same averages, fits and tables"
+for f in data-j1/quick/tables/table{1,2}.{md,tex} \
+         figures/generated/quick/fig{1_apollonian,2_softparticle,3_normal,4_tangential_soft_solid,5_tangential_soft_soft,6_kt}.{pdf,png}; do
+  [[ -s $f ]] || fail "$f is missing or empty"
+done
+grep -q 'soft-solid ours' data-j1/quick/tables/table1.md || fail "table1.md has no soft-solid column"
+pass "Tables 1-2 and Figures 1-6 exist and are not empty"
+# `tables` prints the tables (a recipe, so never "up to date" for make -q): ask about its files.
+uptodate() { mk -q DATA=data-j1 figures "$@" data-j1/quick/tables/table1.md; }
+uptodate || fail "make -q after a complete run: not up to date"
+pass "make -q: up to date after a run"
+
+# --- 2. an interrupted make finishes on a rerun -----------------------------------------------------
+# Whatever the moment of the interruption, the rerun must complete and give the same numbers.
+setsid make --no-print-directory PROFILE=quick BUILD="$build" DATA=data-int FROM_SCRATCH=1 -j2 tables > "$work/int.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 100); do compgen -G 'data-int/quick/packings/*.h5' > /dev/null && break; sleep 0.02; done
+kill -INT -- -"$pid" 2> /dev/null || true
+wait "$pid" 2> /dev/null || true
+mk DATA=data-int tables > "$work/int2.log" 2>&1 || { cat "$work/int2.log"; fail "rerun after an interruption"; }
+diff <(numbers data-j1) <(numbers data-int) > /dev/null ||
+  fail "the rerun after an interruption differs from an uninterrupted run"
+leftovers=$(find data-int -name '*.tmp*' | head -3)
+[[ -z $leftovers ]] || fail "temporary files left after the rerun: $leftovers"
+pass "an interrupted make, rerun, finishes with the same results"
+
+# --- 3. rerun only what a change touches ------------------------------------------------------------
+profile=experiments/quick.yaml
+cp "$profile" "$work/quick.yaml.orig"
+sed -i '1i # a comment added by the test' "$profile"
+sed -i 's/^description: .*/description: "edited by the test"/' "$profile"
+uptodate || { mk -n DATA=data-j1 tables figures | head -5; fail "a comment and the description reran something"; }
+pass "editing a comment or the description reruns nothing"
+
+sed -i 's/^  rate: .*/  rate: 0.12/' "$profile"
+grep -q '^  rate: 0.12' "$profile" || fail "could not edit tangential.rate"
+mk -q DATA=data-j1 packings || fail "tangential.rate: the packings would rerun"
+mk -q DATA=data-j1 normal || fail "tangential.rate: the normal sweeps would rerun"
+mk -q DATA=data-j1 tangential && fail "tangential.rate: the tangential sweeps would not rerun"
+uptodate && fail "tangential.rate: the tables would not be remade"
+before=$(stat -c %Y data-j1/quick/normal/*.h5 data-j1/quick/packings/*.h5 | md5sum)
+mk DATA=data-j1 tables figures > "$work/change.log" 2>&1 || { cat "$work/change.log"; fail "make after editing tangential.rate"; }
+grep -q '^tangential: ' "$work/change.log" || fail "tangential.rate: no tangential sweep ran"
+grep -q '^fit: ' "$work/change.log" || fail "tangential.rate: no fit ran"
+grep -E '^(pack|normal): ' "$work/change.log" && fail "tangential.rate: a packing or normal sweep ran"
+[[ $before == $(stat -c %Y data-j1/quick/normal/*.h5 data-j1/quick/packings/*.h5 | md5sum) ]] ||
+  fail "tangential.rate: packings or normal results were rewritten"
+pass "editing tangential.rate reruns tangential -> average -> fit -> tables/figures only"
+
+sed -i 's/^  speed: .*/  speed: 0.025/' "$profile"
+mk -q DATA=data-j1 packings || fail "normal.speed: the packings would rerun"
+mk -q DATA=data-j1 normal && fail "normal.speed: the normal sweeps would not rerun"
+mk -q DATA=data-j1 tangential && fail "normal.speed: the tangential sweeps would not rerun"
+pass "editing normal.speed reruns the normal and tangential sweeps, not the packings"
+cp "$work/quick.yaml.orig" "$profile"
+
+# --- 4. archive, then a fresh copy reuses everything ------------------------------------------------
+mk DATA=data-j1 tables > /dev/null 2>&1 || fail "make tables with the original profile"
+mk DATA=data-j1 archive > "$work/archive.log" 2>&1 || { cat "$work/archive.log"; fail "make archive"; }
+archive=data/archive/$(awk '/^project/ { print $3; exit }' CMakeLists.txt)/quick
+for f in MANIFEST.sha256 PROVENANCE.json dataset.bib profile.yaml stamps/tangential.hash fits/soft-solid.json; do
+  [[ -s $archive/$f ]] || fail "archive: $archive/$f is missing"
+done
+(cd "$archive" && sha256sum --quiet -c MANIFEST.sha256) || fail "archive: MANIFEST.sha256 does not match"
+touch data-j1/quick/fits/*.json  # newer, same content: the archive is kept as it is
+mk DATA=data-j1 archive 2>&1 | grep -q 'already holds these results' || fail "make archive rewrote an archive of the same results"
+pass "make archive: results, stamps, MANIFEST (verified), provenance, BibTeX; kept when unchanged"
+
+copy_tree "$work/fresh"
+mkdir -p "$work/fresh/data" && cp -r data/archive "$work/fresh/data/"
+cd "$work/fresh"
+mk tables figures > "$work/fresh.log" 2>&1 || { cat "$work/fresh.log"; fail "make tables figures in a fresh copy"; }
+grep -E '^(pack|normal|tangential|average|fit): ' "$work/fresh.log" && fail "a fresh copy recomputed results the archive holds"
+grep -q '^reused ' "$work/fresh.log" || fail "a fresh copy reused nothing from the archive"
+diff <(cd "$work/tree" && numbers data-j1) <(numbers data) > /dev/null || fail "the reused results differ from the archived run"
+pass "a fresh copy's make tables figures recomputes nothing ($(grep -c '^reused ' "$work/fresh.log") results reused)"
