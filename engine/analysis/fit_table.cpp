@@ -62,7 +62,20 @@ std::string deviation_number(double percent) {
     return s == "+0.0" || s == "-0.0" ? "0.0" : s;
   }
   if (m < 1e5) return fmt::format("{:+.0f}", percent);
-  return fmt::format("{:+.2g}", percent);
+  // Two significant digits and a power of ten, written "+1.1×10^6" (LaTeX: see latex_number).
+  const int exponent = static_cast<int>(std::floor(std::log10(m)));
+  const std::string mantissa = fmt::format("{:+.1f}", percent / std::pow(10.0, exponent));
+  return fmt::format("{}×10^{}", mantissa, exponent);
+}
+
+/// A number of deviation_number or format_estimate_markdown in LaTeX math: "×10^6" -> "\times10^{6}".
+std::string latex_number(const std::string& s) {
+  const std::string marker = "×10^";
+  const std::size_t times = s.find(marker);
+  if (times == std::string::npos) return s;
+  std::string out(s, 0, times);
+  out.append("\\times10^{").append(s, times + marker.size(), std::string::npos).append("}");
+  return out;
 }
 
 std::string published_text(const Column& c, const std::string& key) {
@@ -163,8 +176,12 @@ std::string to_latex(const Table& t, const std::string& comment) {
     for (const Column& c : t.columns) {
       const Cells x = cells(c, r.key);
       const std::string dev = deviation_number(x.deviation);
-      out << " & " << (x.ours ? format_estimate_latex(*x.ours) : "---") << " & "
-          << (x.published.empty() ? "---" : "$" + x.published + "$") << " & " << (dev.empty() ? "---" : "$" + dev + "$\\,\\%");
+      out << " & " << (x.ours ? format_estimate_latex(*x.ours) : "---") << " & ";
+      if (x.published.empty()) out << "---";
+      else out << "$" << x.published << "$";
+      out << " & ";
+      if (dev.empty()) out << "---";
+      else out << "$" << latex_number(dev) << "$\\,\\%";
     }
     out << " \\\\\n";
   }

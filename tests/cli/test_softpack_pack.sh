@@ -38,17 +38,18 @@ expect_error() {
   [ ! -e "$output" ] || fail "$output was written for bad input"
   ls "$tmp" | grep -q '\.tmp\.' && fail "a temporary file was left behind" || true
 }
-edit() { sed "$1" "$root/experiments/quick.yaml" > "$tmp/bad.yaml"; }
+# edit SED: the quick profile with one key changed (whatever its value there), which must change.
+edit() { sed "$1" "$root/experiments/quick.yaml" > "$tmp/bad.yaml"; ! cmp -s "$tmp/bad.yaml" "$root/experiments/quick.yaml" || fail "edit $1 changed nothing"; }
 out=$tmp/bad.h5
-edit 's/polydispersity: 4/polydispersity: 1/'
+edit 's/polydispersity: [0-9.]*/polydispersity: 1/'
 expect_error "packing.polydispersity: 1 is not allowed; allowed: 1 < value" "$out" pack "$tmp/bad.yaml" 1 "$out"
-edit 's/exponent: 3.5/exponent: 1/'
+edit 's/exponent: [0-9.]*/exponent: 1/'
 expect_error "packing.exponent: 1 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
-edit 's/beta: 1.0/beta: 0/'
+edit 's/beta: [0-9.]*/beta: 0/'
 expect_error "packing.beta: 0 is not allowed; allowed: > 0" "$out" pack "$tmp/bad.yaml" 1 "$out"
-edit 's/trials: 300/trials: 0/'
+edit 's/trials: [0-9]*/trials: 0/'
 expect_error "packing.trials: 0 is not allowed; allowed: trials >= 1" "$out" pack "$tmp/bad.yaml" 1 "$out"
-edit 's/r_max_over_Rs: 0.35/r_max_over_Rs: 1.2/'
+edit 's/r_max_over_Rs: [0-9.]*/r_max_over_Rs: 1.2/'
 expect_error "packing.r_max_over_Rs: 1.2 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit '/beta:/d'
 expect_error "packing: missing required key 'beta'" "$out" pack "$tmp/bad.yaml" 1 "$out"

@@ -41,7 +41,8 @@ expect_error() {
   grep -qF -- "$message" "$tmp/err" || fail "expected '$message', got: $(cat "$tmp/err")"
   [ ! -e "$output" ] || fail "$output was written for bad input"
 }
-"$bin/softpack-pack" --config "$root/experiments/quick.yaml" --seed 1 --out "$tmp/other.h5" --quiet
+sed 's/^  trials: .*/  trials: 2999/' "$profile" > "$tmp/other.yaml"  # another packing configuration
+"$bin/softpack-pack" --config "$tmp/other.yaml" --seed 1 --out "$tmp/other.h5" --quiet
 expect_error "this packing was made from another packing configuration" "$tmp/x.h5" \
   "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 1 --packing "$tmp/other.h5" --checkpoints "$tmp/x" --out "$tmp/x.h5"
 expect_error "missing normal state for delta_n" "$tmp/t.h5" \

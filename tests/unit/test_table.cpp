@@ -40,7 +40,10 @@ TEST(FitTable, RelativeDeviation) {
   EXPECT_EQ(format_deviation_markdown(10.754), "+10.8%");
   EXPECT_EQ(format_deviation_markdown(0.01), "0.0%");
   EXPECT_EQ(format_deviation_markdown(130.77), "+131%");
-  EXPECT_EQ(format_deviation_markdown(4.5e6), "+4.5e+06%");
+  // Beyond 1e5 %: two digits and a power of ten (a factor of a thousand and more).
+  EXPECT_EQ(format_deviation_markdown(1.1354e6), "+1.1×10^6%");
+  EXPECT_EQ(format_deviation_markdown(-6.3e5), "-6.3×10^5%");
+  EXPECT_EQ(format_deviation_markdown(4.5e6), "+4.5×10^6%");
   EXPECT_EQ(format_deviation_markdown(kNaN), "—");
 }
 
