@@ -14,14 +14,14 @@ fit_outputs = $(FIT_DIR)/$(1).json $(FIT_DIR)/$(1).gp
 
 define analysis_rules
 $(call average_outputs,$(1)) &: $(AVERAGE_STAMP) $(call NORMAL_RESULTS,$(1)) $(call TANGENTIAL_RESULTS,$(1)) | $(TOOLS)
-	@mkdir -p $(AVERAGE_DIR)
+	@mkdir -p $(AVERAGE_DIR) && $(call clear_stale,$(call average_outputs,$(1)))
 	@$$(call from_archive,$(call average_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "average: $(PROFILE) $(1) over seeds $(SEEDS) -> $(AVERAGE_DIR)/$(1).h5 (log $(AVERAGE_DIR)/$(1).log)"; \
 	  $(RUN) $(BUILD)/engine/softpack-average --scene $(1) --profile $(PROFILE) --normal $(call NORMAL_RESULTS,$(1)) \
 	    --tangential $(call TANGENTIAL_RESULTS,$(1)) --out-dir $(AVERAGE_DIR) 2> $(AVERAGE_DIR)/$(1).log \
 	  || { echo "average: FAILED for $(PROFILE) $(1); see $(AVERAGE_DIR)/$(1).log"; tail -5 $(AVERAGE_DIR)/$(1).log; exit 1; }; }
 $(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 | $(TOOLS)
-	@mkdir -p $(FIT_DIR)
+	@mkdir -p $(FIT_DIR) && $(call clear_stale,$(call fit_outputs,$(1)))
 	@$$(call from_archive,$(call fit_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "fit: $(PROFILE) $(1) Eqs. 7-8 -> $(FIT_DIR)/$(1).json (log $(FIT_DIR)/$(1).log)"; \
 	  $(RUN) $(BUILD)/engine/softpack-fit --average $(AVERAGE_DIR)/$(1).h5 --out $(FIT_DIR)/$(1).json \
@@ -43,7 +43,7 @@ tables: $(TABLES)  ## Tables 1 and 2: ours beside the paper's (DATA/PROFILE/tabl
 	@cat $(TABLE_DIR)/table1.md; echo; cat $(TABLE_DIR)/table2.md
 
 $(TABLES) &: $(filter %.json,$(FITS)) $(PUBLISHED) | $(TOOLS)
-	@mkdir -p $(TABLE_DIR)
+	@mkdir -p $(TABLE_DIR) && $(call clear_stale,$(TABLES))
 	@$(RUN) $(BUILD)/engine/softpack-table --fits $(filter %.json,$(FITS)) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
 	  --gnuplot $(TABLE_DIR)/published.gp > /dev/null 2> $(TABLE_DIR)/tables.log \
 	  || { echo "tables: FAILED for $(PROFILE); see $(TABLE_DIR)/tables.log"; cat $(TABLE_DIR)/tables.log; exit 1; }

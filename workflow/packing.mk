@@ -16,7 +16,7 @@ TOOLS := $(if $(findstring n,$(MAKE_LETTERS))$(findstring q,$(MAKE_LETTERS)),,bu
 packings: $(PACKINGS)  ## packings of the profile's seeds (DATA/PROFILE/packings/, with .vtp and .xyz)
 
 $(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | $(TOOLS)
-	@mkdir -p $(@D)
+	@mkdir -p $(@D) && $(call clear_stale,$@ $(@:.h5=.vtp) $(@:.h5=.xyz))
 	@$(call from_archive,$@ $(@:.h5=.vtp) $(@:.h5=.xyz),$(PACK_STAMP)) || { \
 	  echo "pack: $(PROFILE) seed $* -> $@ (log $(@:.h5=.log))"; \
 	  $(RUN) $(PACK) --config experiments/$(PROFILE).yaml --seed $* --out $@ --vtp $(@:.h5=.vtp) --xyz $(@:.h5=.xyz) \

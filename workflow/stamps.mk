@@ -36,3 +36,8 @@ from_archive = [ -z "$(FROM_SCRATCH)" ] && cmp -s $(call archived,$(2)) $(2) && 
   $(foreach f,$(1),[ -f $(call archived,$(f)) ] &&) \
   $(foreach f,$(1),cp $(call archived,$(f)) $(f).tmp.archive && mv $(f).tmp.archive $(f) &&) \
   echo "reused $(1) from $(ARCHIVE) (same configuration)"
+
+# clear_stale FILES [DIRS]: removes what a killed run may have left: temporaries of FILES
+# (FILE.tmp.<pid>) and of anything in DIRS. Only this recipe writes these names, so concurrent
+# jobs (make -j, RUN=srun) never remove each other's files.
+clear_stale = rm -f $(addsuffix .tmp.*,$(1)) $(addsuffix /*.tmp.*,$(2))

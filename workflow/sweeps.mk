@@ -19,14 +19,15 @@ sweep_args = --config experiments/$(PROFILE).yaml --scene $(1) --seed $(2) --pac
 define sweep_rules
 $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5: $(NORMAL_STAMP) $(PACKING_DIR)/seed-$(2).h5 \
     $(if $(filter soft-soft,$(1)),$(PACKING_DIR)/seed-$(call next_seed,$(2)).h5) | $(TOOLS)
-	@mkdir -p $$(@D)
+	@mkdir -p $$(@D) && $$(call clear_stale,$$@,$(CHECKPOINTS)/normal/$(1)/seed-$(2))
 	@$$(call from_archive,$$@,$(NORMAL_STAMP)) || { \
 	  echo "normal: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"; \
 	  $(RUN) $(BUILD)/engine/softpack-normal $(call sweep_args,$(1),$(2)) \
 	    --checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) --out $$@ 2> $$(@:.h5=.log) \
 	  || { echo "normal: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }; }
 $(SWEEP_DIR)/tangential/$(1)-seed-$(2).h5: $(TANGENTIAL_STAMP) $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5 | $(TOOLS)
-	@mkdir -p $$(@D)
+	@mkdir -p $$(@D) && $$(call clear_stale,$$@ $$(@:.h5=.normal-states.h5),$(CHECKPOINTS)/normal/$(1)/seed-$(2) \
+	  $(CHECKPOINTS)/tangential/$(1)/seed-$(2))
 	@$$(call from_archive,$$@,$(TANGENTIAL_STAMP)) || { \
 	  echo "tangential: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"; \
 	  { [ -d $(CHECKPOINTS)/normal/$(1)/seed-$(2) ] || $(RUN) $(BUILD)/engine/softpack-normal $(call sweep_args,$(1),$(2)) \
