@@ -46,8 +46,10 @@ int main(int argc, char** argv) {
   try {
     const auto start = std::chrono::steady_clock::now();
     std::vector<SweepData> ns, ts;
-    for (const auto& p : normal) ns.push_back(read_sweep(p));
-    for (const auto& p : tangential) ts.push_back(read_sweep(p));
+    if (scene != "soft-solid" && scene != "soft-soft")
+      throw InputError(fmt::format("--scene: '{}' is not allowed; allowed: soft-solid, soft-soft", scene));
+    for (const auto& p : normal) ns.push_back(read_sweep(p, "normal", scene));
+    for (const auto& p : tangential) ts.push_back(read_sweep(p, "tangential", scene));
     const NormalAverage n = average_normal(ns);
     const TangentialAverage t = average_tangential(ts);
     namespace fs = std::filesystem;
@@ -110,5 +112,11 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     fmt::print(stderr, "softpack-average: error: {}\n", e.what());
     return 2;
+  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
+    fmt::print(stderr, "softpack-average: numerical error: {}\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "softpack-average: internal error: {}\n", e.what());
+    return 1;
   }
 }

@@ -10,28 +10,17 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "analysis/average.hpp"
 #include "analysis/fit_json.hpp"
 #include "analysis/power_fit.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
-#include "io/hdf5_file.hpp"
 
 namespace {
 
 using namespace softpack;
 using json = nlohmann::ordered_json;
-
-/// Same length as `ref` and finite, or InputError naming the file and datasets.
-void check_column(const std::string& path, const std::string& name, const std::vector<double>& v, const std::string& ref_name,
-                  std::size_t ref_size) {
-  if (v.size() != ref_size)
-    throw InputError(fmt::format("{}: {} has {} values but {} has {}; allowed: the same number", path, name, v.size(), ref_name,
-                                 ref_size));
-  for (std::size_t i = 0; i < v.size(); ++i)
-    if (!std::isfinite(v[i]))
-      throw InputError(fmt::format("{}: {}[{}] = {} is not allowed; allowed: finite numbers", path, name, i, v[i]));
-}
 
 }  // namespace
 
@@ -50,23 +39,12 @@ int main(int argc, char** argv) {
 
   try {
     const auto start = Clock::now();
-    const h5::File in = h5::File::open(average_path);
-    const std::string scene = in.read_string("provenance/scene");
-    if (scene != "soft-solid" && scene != "soft-soft")
-      throw InputError(fmt::format("{}: /provenance/scene: '{}' is not allowed; allowed: soft-solid, soft-soft", average_path, scene));
-    const std::string profile = in.read_string("provenance/profile");
-    const std::string input_version = in.read_string("provenance/code_version");
-    const std::int64_t seeds = in.read_scalar_int64("normal/seeds");
-
-    const std::vector<double> dn = in.read_doubles("normal/delta_n");
-    const std::vector<double> Fn = in.read_doubles("normal/Fn_mean");
-    const std::vector<double> Fn_err = in.read_doubles("normal/Fn_stderr");
-    check_column(average_path, "/normal/Fn_mean", Fn, "/normal/delta_n", dn.size());
-    check_column(average_path, "/normal/Fn_stderr", Fn_err, "/normal/delta_n", dn.size());
-    check_column(average_path, "/normal/delta_n", dn, "/normal/delta_n", dn.size());
+    const AverageFile in = read_average_file(average_path);
+    const std::string& scene = in.scene;
+    const std::int64_t seeds = in.seeds;
     fit::PowerLawFit normal;
     try {
-      normal = fit::fit_normal_law(dn, Fn, Fn_err);
+      normal = fit::fit_normal_law(in.delta_n, in.Fn, in.Fn_stderr);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: /normal: {}", average_path, e.what()));
     }
@@ -74,17 +52,11 @@ int main(int argc, char** argv) {
     json tangential = nullptr;
     std::string reason;
     fit::PowerLawFit kt_fit;
-    if (!in.exists("kt")) {
+    if (!in.has_kt) {
       reason = fmt::format("{} has no /kt group (no tangential sweep averaged)", average_path);
     } else {
-      const std::vector<double> kdn = in.read_doubles("kt/delta_n");
-      const std::vector<double> kt = in.read_doubles("kt/mean");
-      const std::vector<double> kt_err = in.read_doubles("kt/stderr");
-      check_column(average_path, "/kt/delta_n", kdn, "/kt/delta_n", kdn.size());
-      check_column(average_path, "/kt/mean", kt, "/kt/delta_n", kdn.size());
-      check_column(average_path, "/kt/stderr", kt_err, "/kt/delta_n", kdn.size());
       try {
-        kt_fit = fit::fit_tangential_law(kdn, kt, kt_err, normal.delta);
+        kt_fit = fit::fit_tangential_law(in.kt_delta_n, in.kt, in.kt_stderr, normal.delta);
         tangential = fit::to_json(kt_fit, false);
       } catch (const InputError& e) {
         reason = fmt::format("/kt: {}", e.what());
@@ -107,8 +79,8 @@ int main(int argc, char** argv) {
         {"code_version", code_version()},
         {"inputs", json::array({{{"path", average_path},
                                  {"scene", scene},
-                                 {"profile", profile},
-                                 {"code_version", input_version},
+                                 {"profile", in.profile},
+                                 {"code_version", in.code_version},
                                  {"seeds", seeds}}})},
         {"seconds", std::chrono::duration<double>(Clock::now() - start).count()}};
     write_file_atomically(out_path, out.dump(2) + "\n");
@@ -141,6 +113,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     fmt::print(stderr, "softpack-fit: error: {}\n", e.what());
     return 2;
+  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
+    fmt::print(stderr, "softpack-fit: numerical error: {}\n", e.what());
+    return 3;
   } catch (const std::exception& e) {
     fmt::print(stderr, "softpack-fit: internal error: {}\n", e.what());
     return 1;

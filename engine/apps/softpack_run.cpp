@@ -132,6 +132,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     fmt::print(stderr, "softpack-run: error: {}\n", e.what());
     return 2;
+  } catch (const NumericalError& e) {  // the watchdog stopped the run (sim/watchdog.hpp); no report
+    fmt::print(stderr, "softpack-run: numerical error: {}\n", e.what());
+    return 3;
   } catch (const std::exception& e) {
     fmt::print(stderr, "softpack-run: internal error: {}\n", e.what());
     return 1;

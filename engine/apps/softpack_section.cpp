@@ -43,5 +43,8 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     fmt::print(stderr, "softpack-section: error: {}\n", e.what());
     return 2;
+  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
+    fmt::print(stderr, "softpack-section: numerical error: {}\n", e.what());
+    return 3;
   }
 }

@@ -134,6 +134,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     fmt::print(stderr, "softpack-table: error: {}\n", e.what());
     return 2;
+  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
+    fmt::print(stderr, "softpack-table: numerical error: {}\n", e.what());
+    return 3;
   } catch (const std::exception& e) {
     fmt::print(stderr, "softpack-table: internal error: {}\n", e.what());
     return 1;

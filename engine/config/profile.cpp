@@ -10,8 +10,10 @@ namespace softpack {
 
 const std::vector<std::string>& profile_sections() {
   // "description" is free text for people; no stage reads it, so editing it reruns nothing.
-  static const std::vector<std::string> sections{"profile",    "description", "seeds",  "material", "packing",
-                                                 "simulation", "relaxation",  "normal", "tangential"};
+  // "watchdog" holds the thresholds that stop a run gone wrong (sim/watchdog.hpp): it changes
+  // no result, so no stage stamp or recorded configuration includes it.
+  static const std::vector<std::string> sections{"profile",    "description", "seeds",  "material",   "packing",
+                                                 "simulation", "relaxation",  "normal", "tangential", "watchdog"};
   return sections;
 }
 

@@ -93,6 +93,8 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   m.tangential.alpha_deg = alpha;
   m.tangential.rate = tn.at("rate").positive();
   m.tangential.after = tn.at("after_rotation").choice({"release", "hold"}) == "release" ? AfterRotation::release : AfterRotation::hold;
+
+  if (auto w = root.find("watchdog")) m.watchdog = parse_watchdog(*w);
   return m;
 }
 

@@ -1,6 +1,8 @@
 // Settings of the contact-law measurement (paper §4), read from a profile's `material`,
 // `simulation`, `relaxation`, `normal` and `tangential` sections. Every value is named in the
-// profile; the choices the paper leaves open are justified in docs/measurement.md.
+// profile; the choices the paper leaves open are justified in docs/measurement.md. The optional
+// `watchdog` section sets when a run that has gone wrong stops (sim/watchdog.hpp); it changes
+// no result and is not part of the configuration recorded with the points.
 #pragma once
 #include <string>
 #include <vector>
@@ -53,6 +55,7 @@ struct MeasurementSettings {
   RelaxationDef relaxation;
   NormalSettings normal;
   TangentialSettings tangential;
+  WatchdogDef watchdog;  ///< `watchdog` section (optional; defaults of WatchdogDef)
 };
 
 /// Reads and validates the sections; InputError names file, key and allowed values.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -16,14 +17,31 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The first line where two section texts differ, as "'<packing line>' in the packing, '<profile
+// line>' in the profile" ("(none)" past the end of one).
+std::string first_difference(const std::string& packing, const std::string& profile) {
+  std::size_t a = 0, b = 0;
+  while (a < packing.size() || b < profile.size()) {
+    const std::size_t ea = std::min(packing.find('\n', a), packing.size()), eb = std::min(profile.find('\n', b), profile.size());
+    const std::string la = a < packing.size() ? packing.substr(a, ea - a) : "(none)";
+    const std::string lb = b < profile.size() ? profile.substr(b, eb - b) : "(none)";
+    if (la != lb) {
+      const auto trim = [](std::string s) { return s.erase(0, std::min(s.find_first_not_of(' '), s.size())); };
+      return fmt::format("'{}' in the packing, '{}' in the profile", trim(la), trim(lb));
+    }
+    a = ea + 1, b = eb + 1;
+  }
+  return "";
+}
+
 // The packing must come from this profile's packing section (same text), else the sweep
 // would silently measure another soft-particle.
 PackingFile checked_packing(const std::string& path, const std::string& packing_section, const std::string& config_path) {
   PackingFile p = read_packing_file(path);
   if (p.provenance.config != packing_section)
     throw InputError(fmt::format("{}: this packing was made from another packing configuration than the `packing` section of "
-                                 "{} (regenerate it with softpack-pack --config {})",
-                                 path, config_path, config_path));
+                                 "{} ({}; regenerate it with softpack-pack --config {})",
+                                 path, config_path, first_difference(p.provenance.config, packing_section), config_path));
   return p;
 }
 
@@ -68,6 +86,7 @@ int run_stage(const StageOptions& o) {
         c.setup = soft_solid_setup(first, settings.simulation);
       }
     }
+    c.setup.scene.watchdog = settings.watchdog;  // when to stop a run gone wrong; changes no result
     // What every point depends on: the sections read, the scene and the packings used.
     c.config = "# stage: " + o.stage + ", scene: " + o.scene + (o.hertz_check ? " (Hertz check)" : "") + "\n# packings: " +
                packings + "\n" + packing_section + section_text(root, "material") + section_text(root, "simulation") +
@@ -105,6 +124,9 @@ int run_stage(const StageOptions& o) {
   } catch (const InputError& e) {
     fmt::print(stderr, "{}: error: {}\n", program, e.what());
     return 2;
+  } catch (const NumericalError& e) {
+    fmt::print(stderr, "{}: numerical error: {} seed {}, {}\n", program, o.scene, o.seed, e.what());
+    return 3;
   } catch (const std::exception& e) {
     fmt::print(stderr, "{}: internal error: {}\n", program, e.what());
     return 1;

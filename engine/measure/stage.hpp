@@ -19,7 +19,8 @@ struct StageOptions {
   long stop_after = 0;       ///< testing: stop after this many new points
 };
 
-/// Runs a stage; returns the exit code (0, 2 for bad input) after printing any error.
+/// Runs a stage; returns the exit code (0; 2 for bad input; 3 when the watchdog stopped a run,
+/// sim/watchdog.hpp; 1 for an internal error) after printing any error.
 int run_stage(const StageOptions& o);
 
 }  // namespace softpack

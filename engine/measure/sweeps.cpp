@@ -44,6 +44,16 @@ void approach(Simulation& sim, const ContactSetup& setup, double distance, doubl
   while (sim.drivers_moving()) sim.step();
 }
 
+// Runs fn(); when the watchdog stops the run, its diagnostic names the point.
+template <class Fn>
+void at_point(const std::string& point, Fn&& fn) {
+  try {
+    fn();
+  } catch (const NumericalError& e) {
+    throw NumericalError(point + ": " + e.what());
+  }
+}
+
 // A point file is reused only when it holds the same configuration.
 bool usable(const std::string& path, const std::string& config) {
   if (!std::filesystem::exists(path)) return false;
@@ -99,9 +109,12 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
       sim.restore(k == done && done > 0 ? undeformed_if_direct : read_point_file(normal_point_path(c.checkpoint_dir, 0), true).state);
       hn_now = 0.0;
     }
-    approach(sim, c.setup, hn - hn_now, c.settings.normal.speed);
+    RelaxationReport relax;
+    at_point(fmt::format("normal point {}/{} (delta_n = {})", k + 1, grid.size(), grid[k]), [&] {
+      approach(sim, c.setup, hn - hn_now, c.settings.normal.speed);
+      relax = softpack::relax(sim, c.settings.relaxation);
+    });
     hn_now = hn;
-    const RelaxationReport relax = softpack::relax(sim, c.settings.relaxation);
     PointResult r = measure(sim, c.setup, relax);
     r.delta_n = grid[k];
     r.hn = hn;
@@ -142,19 +155,24 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
       sim.restore(*normal_state);
       const long step0 = sim.step_count();
       const double alpha = alphas[b] * std::numbers::pi / 180.0;
-      if (alpha != 0.0) {
-        RotateGroupDef rot;
-        rot.group = GroupDef{GroupDef::Kind::body, c.setup.first_body};
-        rot.centre = Vec3::Zero();  // the first shell's centre
-        rot.axis = Vec3::UnitZ();
-        rot.rate = std::copysign(c.settings.tangential.rate, alpha);
-        rot.angle = std::abs(alpha);
-        rot.after = c.settings.tangential.after == AfterRotation::hold ? AfterDrive::hold : AfterDrive::release;
-        rot.with_shell = !c.setup.first_shell.empty();
-        sim.add_driver(rot);
-        while (sim.drivers_moving()) sim.step();
-      }
-      const RelaxationReport relax = softpack::relax(sim, c.settings.relaxation);
+      RelaxationReport relax;
+      const std::string point =
+          fmt::format("tangential point {}/{} (delta_n = {}, alpha = {} deg)", points.size() + 1, total, hn_grid[a], alphas[b]);
+      at_point(point, [&] {
+        if (alpha != 0.0) {
+          RotateGroupDef rot;
+          rot.group = GroupDef{GroupDef::Kind::body, c.setup.first_body};
+          rot.centre = Vec3::Zero();  // the first shell's centre
+          rot.axis = Vec3::UnitZ();
+          rot.rate = std::copysign(c.settings.tangential.rate, alpha);
+          rot.angle = std::abs(alpha);
+          rot.after = c.settings.tangential.after == AfterRotation::hold ? AfterDrive::hold : AfterDrive::release;
+          rot.with_shell = !c.setup.first_shell.empty();
+          sim.add_driver(rot);
+          while (sim.drivers_moving()) sim.step();
+        }
+        relax = softpack::relax(sim, c.settings.relaxation);
+      });
       PointResult r = measure(sim, c.setup, relax);
       r.delta_n = hn_grid[a];
       r.hn = hn_grid[a] * c.setup.Rs;

@@ -122,6 +122,27 @@ struct NeighborDef {
   double level_ratio = 0.0;  ///< cell size ratio between levels of the hierarchical grid (> 1)
 };
 
+/// Thresholds of the watchdog (sim/watchdog.hpp), which stops a run that has gone wrong with a
+/// NumericalError; it never changes a result. Unlike the physics, these have defaults: the
+/// values below, documented in docs/scene-format.md (scene key `watchdog`) and docs/measurement.md
+/// (profile section `watchdog`).
+struct WatchdogDef {
+  static constexpr double kMaxOverlapFraction = 1.0;
+  static constexpr double kEnergyGrowth = 10.0;
+  static constexpr long kCheckInterval = 100;
+
+  /// Largest overlap allowed, as a fraction of the smaller radius of the pair (of the sphere's
+  /// radius against a wall). +infinity switches the criterion off (from C++ only).
+  double max_overlap_fraction = kMaxOverlapFraction;
+  /// The run stops when kinetic + elastic energy exceeds this factor times its budget: the
+  /// largest energy the run has been given so far (initial energy + positive work of the
+  /// drivers + work of gravity). > 1.
+  double energy_growth = kEnergyGrowth;
+  /// Steps between two full checks (also done at construction, restore, and the end of each
+  /// run_steps()). >= 1.
+  long check_interval = kCheckInterval;
+};
+
 struct SceneDef {
   std::vector<Material> materials;
   EffectsDef effects;
@@ -131,6 +152,7 @@ struct SceneDef {
   std::vector<DriverDef> drivers;
   IntegrationDef integration;
   NeighborDef neighbor;
+  WatchdogDef watchdog;
 
   int material_index(const std::string& name) const;  ///< -1 if absent
 };

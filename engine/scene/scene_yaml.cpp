@@ -122,8 +122,24 @@ RelaxationDef parse_relaxation(const ConfigNode& n) {
   return c;
 }
 
+WatchdogDef parse_watchdog(const ConfigNode& n) {
+  n.allow_only({"max_overlap_fraction", "energy_growth", "check_interval"});
+  WatchdogDef w;
+  if (auto c = n.find("max_overlap_fraction")) w.max_overlap_fraction = c->positive();
+  if (auto c = n.find("energy_growth")) {
+    w.energy_growth = c->number();
+    if (!(w.energy_growth > 1.0)) c->fail(fmt::format("{} is not allowed; allowed: > 1", c->yaml().Scalar()));
+  }
+  if (auto c = n.find("check_interval")) {
+    w.check_interval = c->integer();
+    if (w.check_interval < 1) c->fail(fmt::format("{} is not allowed; allowed: an integer >= 1 (steps)", w.check_interval));
+  }
+  return w;
+}
+
 SceneFile parse_scene(const ConfigNode& root) {
-  root.allow_only({"materials", "effects", "particles", "shells", "planes", "drivers", "integration", "neighbor", "run"});
+  root.allow_only(
+      {"materials", "effects", "particles", "shells", "planes", "drivers", "integration", "neighbor", "watchdog", "run"});
   SceneFile out;
   SceneDef& s = out.scene;
 
@@ -191,6 +207,8 @@ SceneFile parse_scene(const ConfigNode& root) {
   nb.allow_only({"skin", "level_ratio"});
   s.neighbor.skin = nb.at("skin").positive();
   s.neighbor.level_ratio = nb.at("level_ratio").in_range(1.0, true, 1e3, false);
+
+  if (auto w = root.find("watchdog")) s.watchdog = parse_watchdog(*w);
 
   if (auto run = root.find("run")) {
     run->allow_only({"duration", "relaxation"});

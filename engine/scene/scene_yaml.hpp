@@ -28,4 +28,8 @@ SceneFile load_scene_file(const std::string& path);
 
 RelaxationDef parse_relaxation(const ConfigNode& node);
 
+/// The optional `watchdog` map of a scene or a profile: every key optional, defaults in
+/// WatchdogDef (scene/scene_def.hpp).
+WatchdogDef parse_watchdog(const ConfigNode& node);
+
 }  // namespace softpack

@@ -2,8 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <numeric>
 #include <set>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -15,6 +19,28 @@ namespace {
 }
 
 bool finite(const Vec3& v) { return v.allFinite(); }
+
+// Two spheres with the same centre have no contact normal (d / |d| is 0/0): refused here, by
+// sorting the centres (O(N log N)), instead of turning into NaN forces at the first step.
+void check_distinct_centres(const SceneDef& s) {
+  std::vector<std::size_t> order(s.particles.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto key = [&](std::size_t i) {
+    const Vec3& x = s.particles[i].x;
+    return std::array<double, 3>{x.x(), x.y(), x.z()};
+  };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const std::size_t i = order[k - 1], j = order[k];
+    if (key(i) == key(j)) {
+      const Vec3& x = s.particles[i].x;
+      fail(fmt::format("particles[{}]", std::max(i, j)),
+           fmt::format("its centre [{}, {}, {}] m is that of particles[{}]; spheres with coincident centres have no "
+                       "contact normal (move one of them)",
+                       x.x(), x.y(), x.z(), std::min(i, j)));
+    }
+  }
+}
 
 void check_materials(const SceneDef& s) {
   if (s.materials.empty()) fail("materials", "at least one material is required");
@@ -141,6 +167,7 @@ void validate(const SceneDef& s) {
     if (p.body < kNoBody) fail(key + ".body", fmt::format("{} is not allowed; allowed: a body id >= 0, or none", p.body));
     check_material_ref(s, p.material, key + ".material");
   }
+  check_distinct_centres(s);
 
   const EffectsDef& e = s.effects;
   if (e.friction && !e.normal) fail("effects.friction", "friction needs the normal law (declare effects.normal)");
@@ -195,6 +222,14 @@ void validate(const SceneDef& s) {
   if (!(s.neighbor.level_ratio > 1.0 && std::isfinite(s.neighbor.level_ratio))) fail("neighbor.level_ratio", fmt::format("{} is not allowed; allowed: level_ratio > 1", s.neighbor.level_ratio));
 
   check_drivers(s);
+
+  const WatchdogDef& wd = s.watchdog;
+  if (!(wd.max_overlap_fraction > 0.0))
+    fail("watchdog.max_overlap_fraction", fmt::format("{} is not allowed; allowed: > 0 (overlap / smaller radius)", wd.max_overlap_fraction));
+  if (!(wd.energy_growth > 1.0))
+    fail("watchdog.energy_growth", fmt::format("{} is not allowed; allowed: > 1", wd.energy_growth));
+  if (wd.check_interval < 1)
+    fail("watchdog.check_interval", fmt::format("{} is not allowed; allowed: an integer >= 1 (steps)", wd.check_interval));
 }
 
 int SceneDef::material_index(const std::string& name) const {

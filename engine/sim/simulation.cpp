@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "contact/contact_force.hpp"
 #include "contact/hertz_normal.hpp"
@@ -31,6 +32,7 @@ double Measurement::energy_ratio() const {
 
 Simulation::Simulation(const SceneDef& scene) : scene_(scene) {
   validate(scene_);
+  watchdog_ = Watchdog(scene_.watchdog);
   const EffectsDef& fx = scene_.effects;
 
   nmat_ = scene_.materials.size();
@@ -102,6 +104,7 @@ Simulation::Simulation(const SceneDef& scene) : scene_(scene) {
 
   rebuild_neighbours();
   compute_forces(0.0);  // F(t0); springs start unstretched
+  watchdog_.start(*this);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -318,7 +321,10 @@ void Simulation::update_neighbours() {
   for (std::size_t k = 0; k < shells_.size(); ++k)
     wall_disp = std::max(wall_disp, (shells_[k].centre - shell_at_build_[k]).norm());
   const double disp = std::sqrt(max_disp2_);
-  if (rebuild_requested_ || 2.0 * disp >= skin_ || disp + wall_disp >= skin_) rebuild_neighbours();
+  if (rebuild_requested_ || 2.0 * disp >= skin_ || disp + wall_disp >= skin_) {
+    watchdog_.check_positions(*this);  // the grid must not see NaN or infinity
+    rebuild_neighbours();
+  }
 }
 
 void Simulation::rebuild_neighbours() {
@@ -327,7 +333,12 @@ void Simulation::rebuild_neighbours() {
   if (scene_.effects.normal) {
     // Pairs as (i, j) with i < j, sorted: a counting sort by i, then each sphere's few
     // partners sorted by j.
-    grid_.build(p_.x, p_.r, skin_, scene_.neighbor.level_ratio);
+    try {
+      grid_.build(p_.x, p_.r, skin_, scene_.neighbor.level_ratio);
+    } catch (const std::invalid_argument&) {
+      watchdog_.check(*this);  // spheres flung out of any sensible domain: report the blow-up
+      throw;
+    }
     found_.clear();
     first_.assign(n + 1, 0);
     grid_.for_each_pair([&](int i, int j) {
@@ -545,13 +556,46 @@ void Simulation::step() {
   update_neighbours();
   compute_forces(dt_);
   half_kick();
-  if (!drivers_.empty()) finish_drivers();
+  if (!drivers_.empty()) {
+    watchdog_.add_driver_work(driver_work());
+    finish_drivers();
+  }
   time_ += dt_;
   ++steps_;
+  if (++since_check_ >= scene_.watchdog.check_interval) check_now();
 }
 
 void Simulation::run_steps(long n) {
   for (long s = 0; s < n; ++s) step();
+  if (since_check_ > 0) check_now();
+}
+
+void Simulation::check_now() {
+  since_check_ = 0;
+  watchdog_.check(*this);
+}
+
+// Positive work each driver did on the spheres during the step just made, for the watchdog's
+// energy budget: the force at the end of the step times the step's motion (a driven sphere's
+// velocity and spin are its displacement and turn over dt; walls receive -F from the spheres).
+double Simulation::driver_work() const {
+  double total = 0.0;
+  for (const ActiveDriver& d : drivers_) {
+    if (d.retired || std::holds_alternative<HoldGroupDef>(d.def)) continue;
+    double work = 0.0;
+    if (std::holds_alternative<MoveWallDef>(d.def)) {
+      if (d.plane >= 0) work -= plane_loads_[d.plane].force.dot(planes_[d.plane].velocity);
+      else work -= shell_loads_[d.shell].force.dot(shells_[d.shell].velocity);
+    } else {
+      for (int i : d.members) {
+        work -= p_.F[i].dot(p_.v[i]);
+        if (p_.rotates()) work -= p_.T[i].dot(p_.w[i]);
+      }
+      if (d.shell >= 0) work -= shell_loads_[d.shell].torque.dot(shells_[d.shell].spin);  // turned with its spheres
+    }
+    total += std::max(0.0, work * dt_);
+  }
+  return total;
 }
 
 long Simulation::steps_for(double duration) const {
@@ -640,6 +684,8 @@ void Simulation::restore(const SimulationState& s) {
     install(plane_lists_, s.plane_springs);
     install(shell_lists_, s.shell_springs);
   }
+  watchdog_.start(*this);
+  since_check_ = 0;
 }
 
 Vec3 Simulation::force_between(int from, int on) const {

@@ -8,6 +8,9 @@
 //   compute_forces      contact laws (contact/contact_force.hpp), gravity, wall loads
 //   half_kick           v += F/m dt/2, w += T/I dt/2
 //
+// The watchdog (sim/watchdog.hpp) checks the state every scene.watchdog.check_interval steps and
+// stops a run gone wrong with a NumericalError; it only reads the state.
+//
 // Only the declared effects run (scene/scene_def.hpp): the force loop is compiled for each
 // combination of friction, damping and rotation, and state of undeclared effects is never
 // allocated.
@@ -23,6 +26,7 @@
 #include "neighbor/contact_list.hpp"
 #include "neighbor/hierarchical_grid.hpp"
 #include "scene/scene_def.hpp"
+#include "sim/watchdog.hpp"
 #include "walls/plane_wall.hpp"
 #include "walls/spherical_shell.hpp"
 
@@ -69,10 +73,12 @@ struct SimulationState {
 
 class Simulation {
  public:
-  /// Validates the scene (InputError naming the key on failure) and computes the initial forces.
+  /// Validates the scene (InputError naming the key on failure), computes the initial forces
+  /// and checks the initial state (NumericalError, e.g. for an overlap beyond the watchdog's limit).
   explicit Simulation(const SceneDef& scene);
 
   void step();
+  /// n steps, then a watchdog check: a state a caller sees after run_steps() has been checked.
   void run_steps(long n);
   /// Number of steps that make up `duration` (rounded, at least 1).
   long steps_for(double duration) const;
@@ -89,7 +95,8 @@ class Simulation {
 
   /// The state of the spheres, walls and springs (no drivers may be moving).
   SimulationState state() const;
-  /// Continues from a state of the same scene; InputError when it does not fit the scene.
+  /// Continues from a state of the same scene; InputError when it does not fit the scene. The
+  /// watchdog checks the state and restarts its energy budget from it.
   void restore(const SimulationState& s);
   /// Elastic contact force (Hertz and tangential springs, no damping) that the spheres of body
   /// `from` exert on the spheres of body `on`.
@@ -111,6 +118,7 @@ class Simulation {
   const std::vector<WallList>& plane_lists() const { return plane_lists_; }
   const std::vector<WallList>& shell_lists() const { return shell_lists_; }
   long neighbour_rebuilds() const { return rebuilds_; }
+  const Watchdog& watchdog() const { return watchdog_; }
 
   /// How far a driver has gone: distance [m] or angle [rad] along its path.
   struct ActiveDriverProgress {
@@ -133,6 +141,8 @@ class Simulation {
   void update_neighbours();
   void rebuild_neighbours();
   void compute_forces(double spring_dt);
+  void check_now();
+  double driver_work() const;
   template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
   void compute_forces_for(double spring_dt);
 
@@ -169,6 +179,9 @@ class Simulation {
   long rebuilds_ = 0;
 
   std::vector<ActiveDriver> drivers_;
+
+  Watchdog watchdog_;
+  long since_check_ = 0;  ///< steps since the last watchdog check
 
   std::vector<int> closed_;                 ///< scratch of the pair forces: touching pairs
   std::vector<std::pair<int, int>> found_;  ///< scratch of rebuild_neighbours: pairs found

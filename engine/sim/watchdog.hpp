@@ -1,0 +1,69 @@
+// The watchdog: stops a run that has left the physical regime, with a diagnostic, before it
+// writes wrong results. Simulation calls it; it only reads the state, so it changes no result.
+// Criteria (thresholds in WatchdogDef, scene/scene_def.hpp; docs/physics.md §13):
+//
+//   non-finite  a position, velocity, force (angular velocity, torque) is NaN or infinite;
+//   energy      E > energy_growth * B, with E the kinetic (free spheres) + elastic (contacts)
+//               energy and B its budget: the largest value so far of E_0 + W_drivers + W_gravity.
+//               E_0 is E when the budget started (construction, restore), W_drivers the positive
+//               work of each driver since then, summed step by step, and W_gravity =
+//               sum m_i g . (x_i - x_i(start)). Damping only removes energy, so a sound run keeps
+//               E <= B up to the integration error; a blow-up multiplies E by orders of magnitude
+//               within a few steps;
+//   overlap     h / min(r_i, r_j) > max_overlap_fraction for a sphere pair, h / r for a sphere
+//               on a plane or shell.
+//
+// checked in this order; the first that fails is reported.
+//
+// Simulation runs the full check every check_interval steps, at construction and restore (the
+// states it is given), at the end of every run_steps() (what a caller writes after a run has been
+// checked), and before a neighbour rebuild sees a non-finite position.
+#pragma once
+#include <vector>
+
+#include "core/types.hpp"
+#include "scene/scene_def.hpp"
+
+namespace softpack {
+
+class Simulation;
+
+class Watchdog {
+ public:
+  Watchdog() = default;
+  explicit Watchdog(const WatchdogDef& def) : def_(def) {}
+
+  const WatchdogDef& def() const { return def_; }
+
+  /// Checks the state and starts the energy budget from it (construction, restore).
+  void start(const Simulation& sim);
+  /// Adds the positive work the drivers did on the spheres during one step [J].
+  void add_driver_work(double work) { driver_work_ += work; }
+  /// Checks the current state; throws NumericalError with the diagnostic.
+  void check(const Simulation& sim);
+  /// Only the positions (cheap): a neighbour rebuild must not see NaN or infinity. Runs the full
+  /// check, and so throws, when one is not finite.
+  void check_positions(const Simulation& sim);
+
+  /// Energy budget B of the last check [J].
+  double budget() const { return budget_; }
+  /// Largest overlap fraction and largest E / B met at the checks so far: how close a run came
+  /// to the thresholds (tests, choice of the thresholds).
+  double largest_overlap_fraction() const { return largest_fraction_; }
+  double largest_energy_ratio() const { return largest_energy_ratio_; }
+
+ private:
+  WatchdogDef def_;
+  bool started_ = false;
+  double start_energy_ = 0.0;   ///< E_0 [J]
+  double driver_work_ = 0.0;    ///< W_drivers since the start [J]
+  double budget_ = 0.0;         ///< B [J]
+  std::vector<Vec3> x_start_;   ///< positions at the start (with gravity only)
+  double largest_fraction_ = 0.0, largest_energy_ratio_ = 0.0;
+  struct Last {
+    long step = 0;
+    double fraction = 0.0, energy_ratio = 0.0;
+  } last_;  ///< what the last check found, for the diagnostic of a non-finite value
+};
+
+}  // namespace softpack
