@@ -19,7 +19,7 @@ CMAKE_FLAGS := -DCMAKE_BUILD_TYPE=Release $(if $(filter true,$(CI)),-DSOFTPACK_W
 APT_PACKAGES := cmake g++ make git pkg-config gnuplot-nox \
   libeigen3-dev libyaml-cpp-dev libhdf5-dev hdf5-tools nlohmann-json3-dev \
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev \
-  lammps python3-numpy python3-h5py
+  lammps python3-numpy python3-h5py clang libclang-rt-14-dev
 # The report (make paper): TeX Live without its recommends (about a tenth of the download).
 APT_TEX_PACKAGES := latexmk texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended poppler-utils
 SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
@@ -76,7 +76,7 @@ bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side b
 	bench/run_benchmarks.sh $(BUILD)
 
 clean:  ## remove the builds and the profile's generated data and figures (keeps data/archive)
-	rm -rf $(BUILD) $(BUILD_SANITIZE) data/scenes $(DATA)/$(PROFILE) $(DATA)/studies figures/generated $(PAPER_PDF)
+	rm -rf $(BUILD) $(BUILD_SANITIZE) $(FUZZ_BUILD) data/scenes $(DATA)/$(PROFILE) $(DATA)/studies figures/generated $(PAPER_PDF)
 
 include workflow/stamps.mk
 include workflow/packing.mk
@@ -84,3 +84,4 @@ include workflow/sweeps.mk
 include workflow/analysis.mk
 include workflow/archive.mk
 include workflow/paper.mk
+include workflow/fuzz.mk

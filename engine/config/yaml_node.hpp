@@ -19,6 +19,9 @@ namespace softpack {
 class ConfigNode {
  public:
   /// Parses a file; malformed YAML and unreadable files throw InputError with line and column.
+  /// Refused too, with line and column: text that is not UTF-8 or holds control characters,
+  /// keys that are not text or appear twice in a map, nesting deeper than 64 levels, aliases
+  /// that loop or repeat more than 100000 nodes, a second document.
   static ConfigNode load_file(const std::string& path);
   /// Parses text (tests, fuzzing); `name` stands for the file in messages.
   static ConfigNode load_string(const std::string& text, const std::string& name);
@@ -43,7 +46,7 @@ class ConfigNode {
   double number() const;
   long integer() const;
   bool boolean() const;
-  std::string string() const;
+  std::string string() const;  ///< one line of text: no control characters
   Vec3 vec3() const;
   /// One of `allowed`.
   std::string choice(const std::vector<std::string>& allowed) const;
@@ -59,6 +62,7 @@ class ConfigNode {
  private:
   ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file);
   ConfigNode child(const YAML::Node& node, const std::string& path) const;
+  std::string key_text(const YAML::Node& key) const;
   std::string where() const;
 
   YAML::Node node_;

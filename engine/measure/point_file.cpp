@@ -1,7 +1,13 @@
 #include "measure/point_file.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "core/error.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace softpack {
@@ -14,24 +20,64 @@ std::vector<double> flatten(const std::vector<Vec3>& v) {
   return out;
 }
 
-std::vector<Vec3> unflatten(const std::vector<double>& v) {
-  std::vector<Vec3> out;
-  for (std::size_t k = 0; k + 2 < v.size(); k += 3) out.emplace_back(v[k], v[k + 1], v[k + 2]);
-  return out;
+void write_vec3s(h5::File& f, const std::string& name, const std::vector<Vec3>& v) { f.write(name, flatten(v), {v.size(), 3}); }
+
+// Every number read back must be finite: a checkpoint's state is restored into a simulation.
+void check_finite(const h5::File& f, const std::string& name, const std::vector<double>& v) {
+  for (std::size_t k = 0; k < v.size(); ++k)
+    if (!std::isfinite(v[k]))
+      throw InputError(fmt::format("{}: /{}: value {} is {}; allowed: finite numbers", f.path(), name, k, v[k]));
 }
 
-void write_vec3s(h5::File& f, const std::string& name, const std::vector<Vec3>& v) { f.write(name, flatten(v), {v.size(), 3}); }
+double read_finite(const h5::File& f, const std::string& name) {
+  const double v = f.read_scalar_double(name);
+  check_finite(f, name, {v});
+  return v;
+}
+
+long read_count(const h5::File& f, const std::string& name) {
+  const std::int64_t v = f.read_scalar_int64(name);
+  if (v < 0) throw InputError(fmt::format("{}: /{}: {} is not allowed; allowed: >= 0", f.path(), name, v));
+  return static_cast<long>(v);
+}
 
 std::vector<Vec3> read_vec3s(const h5::File& f, const std::string& name) {
   std::vector<std::size_t> dims;
   const auto v = f.read_doubles(name, &dims);
-  return unflatten(v);
+  if (dims.size() != 2 || dims[1] != 3)
+    throw InputError(fmt::format("{}: /{}: expected shape (N, 3), found ({})", f.path(), name, fmt::join(dims, ", ")));
+  check_finite(f, name, v);
+  std::vector<Vec3> out;
+  out.reserve(dims[0]);
+  for (std::size_t k = 0; k < dims[0]; ++k) out.emplace_back(v[3 * k], v[3 * k + 1], v[3 * k + 2]);
+  return out;
+}
+
+// Sphere ids of springs: 0 <= id < the number of spheres of the state.
+std::vector<int> read_ids(const h5::File& f, const std::string& name, std::size_t spheres) {
+  const auto v = f.read_int64s(name);
+  std::vector<int> out;
+  out.reserve(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (v[k] < 0 || static_cast<std::uint64_t>(v[k]) >= spheres)
+      throw InputError(fmt::format("{}: /{}: value {} = {} is not a sphere of the state (0 to {})", f.path(), name, k, v[k],
+                                   spheres == 0 ? std::string("none") : std::to_string(spheres - 1)));
+    out.push_back(static_cast<int>(v[k]));
+  }
+  return out;
+}
+
+void same_length(const h5::File& f, const std::string& name, std::size_t n, const std::string& ref, std::size_t n_ref) {
+  if (n != n_ref)
+    throw InputError(fmt::format("{}: /{} has {} entries but /{} has {}; allowed: the same number", f.path(), name, n, ref, n_ref));
 }
 
 void write_vec3(h5::File& f, const std::string& name, const Vec3& v) { f.write(name, std::vector<double>{v.x(), v.y(), v.z()}); }
 Vec3 read_vec3(const h5::File& f, const std::string& name) {
   const auto v = f.read_doubles(name);
-  return v.size() == 3 ? Vec3(v[0], v[1], v[2]) : Vec3::Zero();
+  if (v.size() != 3) throw InputError(fmt::format("{}: /{}: expected 3 values, found {}", f.path(), name, v.size()));
+  check_finite(f, name, v);
+  return Vec3(v[0], v[1], v[2]);
 }
 
 void write_wall_springs(h5::File& f, const std::string& group, const std::vector<std::vector<SimulationState::WallSpring>>& walls) {
@@ -44,13 +90,16 @@ void write_wall_springs(h5::File& f, const std::string& group, const std::vector
   }
 }
 
-std::vector<std::vector<SimulationState::WallSpring>> read_wall_springs(const h5::File& f, const std::string& group) {
+std::vector<std::vector<SimulationState::WallSpring>> read_wall_springs(const h5::File& f, const std::string& group,
+                                                                      std::size_t spheres) {
   std::vector<std::vector<SimulationState::WallSpring>> out;
   for (std::size_t w = 0; f.exists(fmt::format("{}/{}/i", group, w)); ++w) {
-    const auto ids = f.read_int64s(fmt::format("{}/{}/i", group, w));
-    const auto xi = read_vec3s(f, fmt::format("{}/{}/xi", group, w));
+    const std::string i_name = fmt::format("{}/{}/i", group, w), xi_name = fmt::format("{}/{}/xi", group, w);
+    const auto ids = read_ids(f, i_name, spheres);
+    const auto xi = read_vec3s(f, xi_name);
+    same_length(f, xi_name, xi.size(), i_name, ids.size());
     out.emplace_back();
-    for (std::size_t k = 0; k < ids.size() && k < xi.size(); ++k) out.back().push_back({static_cast<int>(ids[k]), xi[k]});
+    for (std::size_t k = 0; k < ids.size(); ++k) out.back().push_back({ids[k], xi[k]});
   }
   return out;
 }
@@ -87,30 +136,39 @@ void write_result(h5::File& f, const std::string& g, const PointResult& r) {
 
 PointResult read_result(const h5::File& f, const std::string& g) {
   PointResult r;
-  r.delta_n = f.read_scalar_double(g + "/delta_n");
-  r.hn = f.read_scalar_double(g + "/hn");
-  r.alpha_deg = f.read_scalar_double(g + "/alpha_deg");
-  r.ht = f.read_scalar_double(g + "/ht");
+  r.delta_n = read_finite(f, g + "/delta_n");
+  r.hn = read_finite(f, g + "/hn");
+  r.alpha_deg = read_finite(f, g + "/alpha_deg");
+  r.ht = read_finite(f, g + "/ht");
   r.force = read_vec3(f, g + "/force");
   r.force_first = read_vec3(f, g + "/force_first");
   r.force_between = read_vec3(f, g + "/force_between");
-  r.contacts = f.read_scalar_int64(g + "/contacts");
-  r.relax_steps = f.read_scalar_int64(g + "/relax_steps");
-  r.relax_time = f.read_scalar_double(g + "/relax_time");
-  r.steps = f.read_scalar_int64(g + "/steps");
+  r.contacts = read_count(f, g + "/contacts");
+  r.relax_steps = read_count(f, g + "/relax_steps");
+  r.relax_time = read_finite(f, g + "/relax_time");
+  r.steps = read_count(f, g + "/steps");
   r.seconds = f.read_scalar_double(g + "/seconds");
-  const auto t = f.read_doubles(g + "/checks/time"), ke = f.read_doubles(g + "/checks/kinetic_energy"),
-             ee = f.read_doubles(g + "/checks/elastic_energy"), mu = f.read_doubles(g + "/checks/max_unbalanced_force"),
-             mc = f.read_doubles(g + "/checks/mean_contact_force"), nc = f.read_doubles(g + "/checks/contacts");
+  const std::string c = g + "/checks/";
+  const auto t = f.read_doubles(c + "time"), ke = f.read_doubles(c + "kinetic_energy"), ee = f.read_doubles(c + "elastic_energy"),
+             mu = f.read_doubles(c + "max_unbalanced_force"), mc = f.read_doubles(c + "mean_contact_force"),
+             nc = f.read_doubles(c + "contacts");
+  same_length(f, c + "kinetic_energy", ke.size(), c + "time", t.size());
+  same_length(f, c + "elastic_energy", ee.size(), c + "time", t.size());
+  same_length(f, c + "max_unbalanced_force", mu.size(), c + "time", t.size());
+  same_length(f, c + "mean_contact_force", mc.size(), c + "time", t.size());
+  same_length(f, c + "contacts", nc.size(), c + "time", t.size());
   for (std::size_t k = 0; k < t.size(); ++k) {
-    RelaxationCheck c;
-    c.time = t[k];
-    c.residuals.kinetic_energy = ke[k];
-    c.residuals.elastic_energy = ee[k];
-    c.residuals.max_unbalanced_force = mu[k];
-    c.residuals.mean_contact_force = mc[k];
-    c.residuals.contacts = static_cast<std::size_t>(nc[k]);
-    r.checks.push_back(c);
+    if (!(nc[k] >= 0.0 && nc[k] <= 9007199254740992.0 && nc[k] == std::floor(nc[k])))
+      throw InputError(fmt::format("{}: /{}contacts: value {} = {} is not allowed; allowed: a count of contacts", f.path(), c, k,
+                                   nc[k]));
+    RelaxationCheck check;
+    check.time = t[k];
+    check.residuals.kinetic_energy = ke[k];
+    check.residuals.elastic_energy = ee[k];
+    check.residuals.max_unbalanced_force = mu[k];
+    check.residuals.mean_contact_force = mc[k];
+    check.residuals.contacts = static_cast<std::size_t>(nc[k]);
+    r.checks.push_back(check);
   }
   return r;
 }
@@ -151,16 +209,23 @@ void write_point_file(const std::string& path, const PointResult& r, const Simul
 
 PointFile read_point_file(const std::string& path, bool with_state) {
   const h5::File f = h5::File::open(path);
+  if (!f.exists("result") || !f.exists("provenance/stage")) {
+    const std::string kind = h5::kind_of(f);
+    throw InputError(fmt::format("{}: not a softpack sweep point file ({})", path,
+                                 kind.empty() ? "no /result or /provenance/stage" : "it is " + kind));
+  }
   PointFile p;
-  p.result = read_result(f, "result");
   p.provenance.stage = f.read_string("provenance/stage");
+  if (p.provenance.stage != "normal" && p.provenance.stage != "tangential")
+    throw InputError(fmt::format("{}: /provenance/stage: '{}' is not allowed; allowed: normal, tangential", path, p.provenance.stage));
   p.provenance.scene = f.read_string("provenance/scene");
   p.provenance.config = f.read_string("provenance/config");
   p.provenance.code_version = f.read_string("provenance/code_version");
+  p.result = read_result(f, "result");
   if (with_state) {
     SimulationState& s = p.state;
-    s.time = f.read_scalar_double("state/time");
-    s.steps = f.read_scalar_int64("state/steps");
+    s.time = read_finite(f, "state/time");
+    s.steps = read_count(f, "state/steps");
     s.x = read_vec3s(f, "state/x");
     s.v = read_vec3s(f, "state/v");
     s.w = read_vec3s(f, "state/w");
@@ -168,11 +233,16 @@ PointFile read_point_file(const std::string& path, bool with_state) {
     s.T = read_vec3s(f, "state/T");
     s.plane_points = read_vec3s(f, "state/plane_points");
     s.shell_centres = read_vec3s(f, "state/shell_centres");
-    const auto pi = f.read_int64s("state/pair_springs/i"), pj = f.read_int64s("state/pair_springs/j");
+    const std::size_t n = s.x.size();
+    same_length(f, "state/v", s.v.size(), "state/x", n);
+    same_length(f, "state/F", s.F.size(), "state/x", n);
+    const auto pi = read_ids(f, "state/pair_springs/i", n), pj = read_ids(f, "state/pair_springs/j", n);
     const auto pxi = read_vec3s(f, "state/pair_springs/xi");
-    for (std::size_t k = 0; k < pi.size(); ++k) s.pair_springs.push_back({static_cast<int>(pi[k]), static_cast<int>(pj[k]), pxi[k]});
-    s.plane_springs = read_wall_springs(f, "state/plane_springs");
-    s.shell_springs = read_wall_springs(f, "state/shell_springs");
+    same_length(f, "state/pair_springs/j", pj.size(), "state/pair_springs/i", pi.size());
+    same_length(f, "state/pair_springs/xi", pxi.size(), "state/pair_springs/i", pi.size());
+    for (std::size_t k = 0; k < pi.size(); ++k) s.pair_springs.push_back({pi[k], pj[k], pxi[k]});
+    s.plane_springs = read_wall_springs(f, "state/plane_springs", n);
+    s.shell_springs = read_wall_springs(f, "state/shell_springs", n);
   }
   return p;
 }

@@ -34,8 +34,9 @@ struct PointProvenance {
 void write_point_file(const std::string& path, const PointResult& r, const SimulationState& state,
                       const PointProvenance& prov);
 
-/// Reads a point file; nullopt-like `ok = false` when the file is missing. InputError when it is
-/// unreadable.
+/// Reads a point file, with the simulation state when `with_state`. InputError, naming the file
+/// and the dataset, when it is missing, unreadable, not a point file, or inconsistent (columns of
+/// different lengths, values that are not finite, spring ids outside the state).
 struct PointFile {
   PointResult result;
   SimulationState state;

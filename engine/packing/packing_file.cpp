@@ -1,6 +1,9 @@
 #include "packing/packing_file.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
 
 #include "core/error.hpp"
 #include "io/hdf5_file.hpp"
@@ -59,15 +62,25 @@ void write_packing_file(const std::string& path, const PackingParameters& p, con
 
 PackingFile read_packing_file(const std::string& path) {
   const h5::File f = h5::File::open(path);
-  if (!f.exists("centres") || !f.exists("radii") || !f.exists("provenance/program"))
-    throw InputError(fmt::format("{}: not a softpack packing file (no /centres, /radii or /provenance)", path));
+  if (!f.exists("centres") || !f.exists("radii") || !f.exists("provenance/program")) {
+    const std::string kind = h5::kind_of(f);
+    throw InputError(fmt::format("{}: not a softpack packing file ({})", path,
+                                 kind.empty() ? "no /centres, /radii or /provenance/program" : "it is " + kind));
+  }
   PackingFile out;
+  PackingProvenance& v = out.provenance;
+  v.program = f.read_string("provenance/program");
+  if (v.program != "softpack-pack")
+    throw InputError(fmt::format("{}: not a softpack packing file (/provenance/program is '{}', not 'softpack-pack')", path,
+                                 v.program));
   std::vector<std::size_t> dims;
   const std::vector<double> c = f.read_doubles("centres", &dims);
-  if (dims.size() != 2 || dims[1] != 3) throw InputError(fmt::format("{}: /centres must be (N, 3)", path));
+  if (dims.size() != 2 || dims[1] != 3)
+    throw InputError(fmt::format("{}: /centres must be (N, 3), found ({})", path, fmt::join(dims, ", ")));
   out.radii = f.read_doubles("radii");
   if (out.radii.size() != dims[0])
     throw InputError(fmt::format("{}: /centres has {} rows but /radii {} values", path, dims[0], out.radii.size()));
+  if (out.radii.empty()) throw InputError(fmt::format("{}: /radii: the packing holds no spheres", path));
   for (std::size_t i = 0; i < dims[0]; ++i) out.centres.emplace_back(c[3 * i], c[3 * i + 1], c[3 * i + 2]);
   out.Rs = f.read_scalar_double("shell/radius");
   PackingParameters& p = out.parameters;
@@ -77,14 +90,40 @@ PackingFile read_packing_file(const std::string& path) {
   p.exponent = f.read_scalar_double("parameters/exponent");
   p.beta = f.read_scalar_double("parameters/beta");
   p.trials = f.read_scalar_int64("parameters/trials");
-  p.shell_is_neighbour = f.read_scalar_int64("parameters/shell_is_neighbour") != 0;
+  const std::int64_t shell_is_neighbour = f.read_scalar_int64("parameters/shell_is_neighbour");
+  if (shell_is_neighbour != 0 && shell_is_neighbour != 1)
+    throw InputError(fmt::format("{}: /parameters/shell_is_neighbour: {} is not allowed; allowed: 0 or 1", path,
+                                 shell_is_neighbour));
+  p.shell_is_neighbour = shell_is_neighbour == 1;
   p.level_ratio = f.read_scalar_double("parameters/level_ratio");
-  PackingProvenance& v = out.provenance;
-  v.program = f.read_string("provenance/program");
+  try {
+    validate(p);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: /parameters: {}", path, e.what()));
+  }
+  if (out.Rs != p.Rs)
+    throw InputError(fmt::format("{}: /shell/radius = {} differs from /parameters/Rs = {}", path, out.Rs, p.Rs));
+  // The spheres: finite, of positive radius, inside the shell (the generator's guarantee; the
+  // sweeps would otherwise start from overlaps with the shell).
+  const double reach = out.Rs * (1.0 + 1e-9);
+  for (std::size_t i = 0; i < out.radii.size(); ++i) {
+    const double r = out.radii[i];
+    const Vec3& x = out.centres[i];
+    if (!(std::isfinite(r) && r > 0.0))
+      throw InputError(fmt::format("{}: /radii[{}] = {} is not allowed; allowed: a finite radius > 0", path, i, r));
+    if (!x.allFinite())
+      throw InputError(fmt::format("{}: /centres[{}] = ({}, {}, {}) is not finite", path, i, x.x(), x.y(), x.z()));
+    if (!(x.norm() + r <= reach))
+      throw InputError(fmt::format("{}: sphere {} (/centres[{}], /radii[{}]) reaches {} m from the centre, beyond the shell "
+                                   "(/shell/radius = {} m)",
+                                   path, i, i, i, x.norm() + r, out.Rs));
+  }
   v.code_version = f.read_string("provenance/code_version");
   v.config_file = f.read_string("provenance/config_file");
   v.config = f.read_string("provenance/config");
-  v.seed = static_cast<std::uint64_t>(f.read_scalar_int64("provenance/seed"));
+  const std::int64_t seed = f.read_scalar_int64("provenance/seed");
+  if (seed < 0) throw InputError(fmt::format("{}: /provenance/seed: {} is not allowed; allowed: a seed >= 0", path, seed));
+  v.seed = static_cast<std::uint64_t>(seed);
   v.seconds = f.read_scalar_double("provenance/seconds");
   return out;
 }

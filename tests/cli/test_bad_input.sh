@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# Bad input never passes silently. For every executable that reads configuration or HDF5 files
+# (softpack-run, -pack, -normal, -tangential, -average, -fit): malformed YAML (with line and
+# column), an unknown key (with the closest valid key), a value out of range, a missing file, a
+# truncated HDF5 file, a foreign HDF5 file (not ours, or ours of another kind) and a packing of
+# another configuration each give one message naming the file (and the key or dataset), exit
+# code 2, and no output file or temporary left behind. The cases test_softpack_*.sh already
+# check are not repeated here.
+set -euo pipefail
+bin=$(cd "$1" && pwd)
+root=$(cd "$2" && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+cd "$tmp"
+
+# Valid inputs: a tiny profile (half a dozen grains per soft-particle), two packings, a normal
+# sweep of seed 1, an HDF5 file that is not ours (h5import, hdf5-tools), truncated copies.
+profile=$root/fuzz/seed-profile.yaml
+"$bin/softpack-pack" --config "$profile" --seed 1 --out p1.h5 --quiet
+"$bin/softpack-pack" --config "$profile" --seed 2 --out p2.h5 --quiet
+"$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 1 --packing p1.h5 --checkpoints n1 --out n1.h5 --quiet
+printf '1.0 2.0 3.0 4.0\n' > numbers.txt
+printf 'PATH /data\nINPUT-CLASS TEXTFP\nRANK 1\nDIMENSION-SIZES 4\nOUTPUT-CLASS FP\nOUTPUT-SIZE 64\n' > h5import.cfg
+h5import numbers.txt -c h5import.cfg -o foreign.h5
+head -c 1000 p1.h5 > truncated.h5
+head -c 3000 n1.h5 > truncated-results.h5
+sed 's/^  trials: .*/  trials: 299/' "$profile" > other.yaml  # another packing configuration
+"$bin/softpack-pack" --config other.yaml --seed 3 --out other.h5 --quiet
+scene=$root/experiments/scenes/sphere-on-wall.yaml
+[ -z "$(find . -name '*.tmp.*')" ] || fail "temporaries after the valid runs"
+
+# expect_error PATTERN OUTPUT COMMAND...: exit code 2; stderr is one line, "<program>: error: ",
+# matching PATTERN (extended regex); OUTPUT not created; no temporary anywhere.
+expect_error() {
+  local pattern=$1 output=$2
+  shift 2
+  set +e
+  "$@" 2> err > /dev/null
+  local code=$?
+  set -e
+  [ -z "${VERBOSE:-}" ] || cat err >&2
+  [ "$code" -eq 2 ] || fail "exit code $code (expected 2) for: $*: $(cat err)"
+  [ "$(wc -l < err)" -eq 1 ] || fail "expected one line on stderr for: $*, got: $(cat err)"
+  grep -qE "^softpack-[a-z]+: error: " err || fail "not an error line: $(cat err)"
+  grep -qE -- "$pattern" err || fail "expected /$pattern/, got: $(cat err)"
+  [ ! -e "$output" ] || fail "$output was written for bad input: $*"
+  [ -z "$(find . -name '*.tmp.*')" ] || fail "a temporary was left behind: $(find . -name '*.tmp.*')"
+}
+# edit FILE SED: FILE with one change (that must change something) -> bad.yaml.
+edit() { sed "$2" "$1" > bad.yaml; ! cmp -s bad.yaml "$1" || fail "edit $2 changed nothing"; }
+
+# --- softpack-run: scene files ------------------------------------------------------------------
+run() { "$bin/softpack-run" --scene "$1" --out run.json --quiet; }
+edit "$scene" 's/damping: {restitution: /damping: {restitution: [/'
+expect_error "^softpack-run: error: bad\.yaml:[0-9]+:[0-9]+: malformed YAML" run.json run bad.yaml
+edit "$scene" 's/restitution:/restitusion:/'
+expect_error "bad\.yaml:[0-9]+:[0-9]+: effects\.damping\.restitusion: unknown key; did you mean 'restitution'\?" run.json run bad.yaml
+edit "$scene" 's/nu: [0-9.]*/nu: 0.7/'
+expect_error "bad\.yaml:[0-9]+:[0-9]+: materials\.grain\.nu: 0\.7 is not allowed; allowed: -1 < value < 0\.5" run.json run bad.yaml
+expect_error "none\.yaml: cannot open the file" run.json run none.yaml
+expect_error "softpack-run: error: \.: is a directory, expected a YAML file" run.json run .
+edit "$scene" 's/^effects:/effects:\n  rotation: true\neffects:/'
+expect_error "bad\.yaml:[0-9]+:1: effects: duplicate key \(first at line [0-9]+, column 1\)" run.json run bad.yaml
+{ cat "$scene"; printf '# caf\xe9\n'; } > bad.yaml  # a Latin-1 comment: YAML is UTF-8
+expect_error "bad\.yaml:[0-9]+:6: not UTF-8 text \(byte 0xE9\)" run.json run bad.yaml
+
+# --- softpack-pack: the packing section of a profile --------------------------------------------
+pack() { "$bin/softpack-pack" --config "$1" --seed 1 --out pack.h5 --quiet; }
+printf 'packing:\n  Rs: [0.016\n  beta: 2\n' > bad.yaml
+expect_error "^softpack-pack: error: bad\.yaml:[0-9]+:[0-9]+: malformed YAML" pack.h5 pack bad.yaml
+edit "$profile" 's/polydispersity:/polydisperity:/'
+expect_error "bad\.yaml:[0-9]+:3: packing\.polydisperity: unknown key; did you mean 'polydispersity'\?" pack.h5 pack bad.yaml
+edit "$profile" 's/profile_bins: [0-9]*/profile_bins: 0/'
+expect_error "bad\.yaml:[0-9]+:[0-9]+: packing\.profile_bins: 0 is not allowed; allowed: 1 <= bins <= 100000" pack.h5 pack bad.yaml
+edit "$profile" 's/beta: [0-9.]*/beta: 1e999/'
+expect_error "bad\.yaml:[0-9]+:[0-9]+: packing\.beta: '1e999' is out of the range of numbers" pack.h5 pack bad.yaml
+{ cat "$profile"; printf -- '---\nseeds: [3]\n'; } > bad.yaml
+expect_error "bad\.yaml:[0-9]+:1: a second YAML document" pack.h5 pack bad.yaml
+
+# --- softpack-normal: profile and packings ------------------------------------------------------
+normal() { "$bin/softpack-normal" --config "$1" --scene "$2" --seed 1 --packing "$3" --second-packing "$4" \
+             --checkpoints ncp --out normal.h5 --quiet; }
+edit "$profile" 's/^normal:/normal: [/'
+expect_error "^softpack-normal: error: bad\.yaml:[0-9]+:[0-9]+: malformed YAML" normal.h5 normal bad.yaml soft-solid p1.h5 p2.h5
+edit "$profile" 's/  speed:/  sped:/'
+expect_error "bad\.yaml:[0-9]+:3: normal\.sped: unknown key; did you mean 'speed'\?" normal.h5 normal bad.yaml soft-solid p1.h5 p2.h5
+edit "$profile" 's/  safety: [0-9.]*/  safety: 1.5/'
+expect_error "bad\.yaml:[0-9]+:[0-9]+: simulation\.safety: 1\.5 is not allowed; allowed: 0 < value <= 1" normal.h5 \
+  normal bad.yaml soft-solid p1.h5 p2.h5
+expect_error "none\.h5: no such file" normal.h5 normal "$profile" soft-solid none.h5 p2.h5
+expect_error "truncated\.h5: truncated or corrupt HDF5 file: it has 1000 bytes, its superblock says [0-9]+" normal.h5 \
+  normal "$profile" soft-solid truncated.h5 p2.h5
+expect_error "foreign\.h5: not a softpack packing file \(no /centres, /radii or /provenance/program\)" normal.h5 \
+  normal "$profile" soft-solid foreign.h5 p2.h5
+expect_error "n1\.h5: not a softpack packing file \(it is a normal sweep results file \(softpack-normal\)\)" normal.h5 \
+  normal "$profile" soft-solid n1.h5 p2.h5
+expect_error "other\.h5: this packing was made from another packing configuration than the .packing. section of .*seed-profile\.yaml \('trials: 299' in the packing, 'trials: 300' in the profile;" normal.h5 \
+  normal "$profile" soft-soft p1.h5 other.h5
+expect_error "truncated\.h5: truncated or corrupt HDF5 file" normal.h5 normal "$profile" soft-soft p1.h5 truncated.h5
+[ ! -e ncp ] || [ -z "$(ls -A ncp)" ] || fail "checkpoints were written for bad input: $(ls ncp)"
+
+# --- softpack-tangential: profile, packings and the normal states --------------------------------
+tangential() { "$bin/softpack-tangential" --config "$1" --scene soft-solid --seed 1 --packing "$2" \
+                 --checkpoints tcp --normal-checkpoints "$3" --out tangential.h5 --quiet; }
+edit "$profile" 's/after_rotation:/after_rotaton:/'
+expect_error "^softpack-tangential: error: bad\.yaml:[0-9]+:3: tangential\.after_rotaton: unknown key; did you mean 'after_rotation'\?" \
+  tangential.h5 tangential bad.yaml p1.h5 n1
+edit "$profile" 's/alpha_deg: \[-0.5, 0.0, 0.5\]/alpha_deg: [-0.5, 0.0, 95]/'
+expect_error "bad\.yaml:[0-9]+:[0-9]+: tangential\.alpha_deg\[2\]: 95 is not allowed; allowed: -90 <= value <= 90" tangential.h5 \
+  tangential bad.yaml p1.h5 n1
+printf 'tangential: {rate: 0.1\n' > bad.yaml
+expect_error "bad\.yaml:[0-9]+:[0-9]+: malformed YAML" tangential.h5 tangential bad.yaml p1.h5 n1
+expect_error "none\.yaml: cannot open the file" tangential.h5 tangential none.yaml p1.h5 n1
+expect_error "other\.h5: this packing was made from another packing configuration" tangential.h5 \
+  tangential "$profile" other.h5 n1
+expect_error "foreign\.h5: not a softpack packing file" tangential.h5 tangential "$profile" foreign.h5 n1
+cp -r n1 n1-truncated
+head -c 2000 n1/point-003.h5 > n1-truncated/point-003.h5  # the normal state sheared first
+expect_error "n1-truncated/point-003\.h5: truncated or corrupt HDF5 file" tangential.h5 tangential "$profile" p1.h5 n1-truncated
+cp foreign.h5 n1-truncated/point-003.h5
+expect_error "n1-truncated/point-003\.h5: not a softpack sweep point file \(no /result or /provenance/stage\)" tangential.h5 \
+  tangential "$profile" p1.h5 n1-truncated
+[ ! -e tcp ] || [ -z "$(ls -A tcp)" ] || fail "checkpoints were written for bad input: $(ls tcp)"
+
+# --- softpack-average: sweep results ------------------------------------------------------------
+average() { "$bin/softpack-average" --scene "$1" --profile fuzz-seed --normal "$2" --tangential "$3" --out-dir avg; }
+expect_error "^softpack-average: error: none\.h5: no such file" avg average soft-solid none.h5 n1.h5
+expect_error "truncated-results\.h5: truncated or corrupt HDF5 file" avg average soft-solid n1.h5 truncated-results.h5
+expect_error "foreign\.h5: not a softpack sweep results file \(no /delta_n, /Fn or /provenance/stage\)" avg \
+  average soft-solid foreign.h5 n1.h5
+expect_error "p1\.h5: not a softpack sweep results file \(it is a packing file \(softpack-pack\)\)" avg average soft-solid p1.h5 n1.h5
+expect_error "n1\.h5: /provenance/stage: these are normal results, tangential ones are expected here" avg \
+  average soft-solid n1.h5 n1.h5
+expect_error "n1\.h5: /provenance/scene: these are results of the soft-solid scene, not of soft-soft" avg \
+  average soft-soft n1.h5 n1.h5
+expect_error "--scene: 'soft-hard' is not allowed; allowed: soft-solid, soft-soft" avg average soft-hard n1.h5 n1.h5
+
+# --- softpack-fit: average files ----------------------------------------------------------------
+fit() { "$bin/softpack-fit" --average "$1" --out fit.json --quiet; }
+expect_error "^softpack-fit: error: truncated\.h5: truncated or corrupt HDF5 file" fit.json fit truncated.h5
+expect_error "foreign\.h5: not a softpack average file \(no /normal/delta_n or /provenance/scene\)" fit.json fit foreign.h5
+expect_error "p1\.h5: not a softpack average file \(it is a packing file \(softpack-pack\)\)" fit.json fit p1.h5
+expect_error "n1\.h5: not a softpack average file \(it is a normal sweep results file \(softpack-normal\)\)" fit.json fit n1.h5
+echo "ok"
