@@ -711,6 +711,11 @@ void preflight(const std::string& path) {
   if (WIFSIGNALED(status))
     throw InputError(fmt::format("{}: corrupt HDF5 file: the HDF5 library crashes reading it ({})", path,
                                  strsignal(WTERMSIG(status))));
+  // The child ends with _exit(0); anything else is a crash that a handler turned into an exit
+  // (AddressSanitizer's SEGV handler exits with 1, for instance).
+  if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
+    throw InputError(fmt::format("{}: corrupt HDF5 file: the HDF5 library crashes reading it (exit status {})", path,
+                                 WEXITSTATUS(status)));
 }
 
 }  // namespace
