@@ -44,3 +44,12 @@ TANGENTIAL_RESULTS = $(foreach seed,$(SEEDS),$(SWEEP_DIR)/tangential/$(1)-seed-$
 normal: $(foreach scene,$(SCENES),$(call NORMAL_RESULTS,$(scene)))  ## normal sweeps of every scene and seed (make -j2: two at once)
 tangential: $(foreach scene,$(SCENES),$(call TANGENTIAL_RESULTS,$(scene)))  ## tangential sweeps (after the normal ones)
 sweeps: normal tangential  ## both sweeps
+
+# How long to relax: the soft-soft normal sweeps again with 30 stops instead of six, compared
+# with the archived results (docs/measurement.md; about 25 minutes on one core).
+.PHONY: study-relaxation
+study-relaxation: | $(TOOLS)  ## soft-soft normal law with 30 relaxation stops against the archived 6 (paper profile)
+	@$(MAKE) --no-print-directory packings PROFILE=paper
+	@mkdir -p $(DATA)/studies/relaxation-stops
+	DATA=$(DATA) workflow/studies/relaxation_stops.sh 30 $(DATA)/studies/relaxation-stops > $(DATA)/studies/relaxation-stops/table.md.tmp.$$$$ \
+	  && mv $(DATA)/studies/relaxation-stops/table.md.tmp.$$$$ $(DATA)/studies/relaxation-stops/table.md && cat $(DATA)/studies/relaxation-stops/table.md

@@ -176,15 +176,18 @@ void keep_worst(Worst& w, double v, const Sweep& s, std::size_t k) {
 //   tangential/soft-soft   37 of 74    worst 3.9 (seed 2, Delta_n = 0.45) and 1.04 (seed 5, Delta_n = 0.45)
 // Soft-solid fails only at the onset of force (the first one or two loaded points of a sweep);
 // soft-soft fails throughout: counting only points above 1% of the sweep's largest force, still
-// 13 of 20 normal (worst force ratio 0.18) and 13 of 50 tangential (0.49). The six stops of
-// 0.3 s do not bring the soft-soft scene to rest. Not an engine bug (nothing is NaN or blows
-// up; EveryFileIsCompleteAndFinite passes): a finding on the archived results, skipped so that
-// the suite stays green until the lead decides (longer protocol, converged protocol, or a
-// documented tolerance). Remove the skip to see every failing point.
+// 13 of 20 normal (worst force ratio 0.18) and 13 of 50 tangential (0.49). Not an engine bug
+// (nothing is NaN or blows up; EveryFileIsCompleteAndFinite passes) but the paper's protocol,
+// which has no convergence criterion. Measured (make study-relaxation, docs/measurement.md "How
+// long to relax"): 30 stops instead of six bring Delta_n = 0.5 to rest but not the onset, whose
+// barely overlapped Hertz contacts relax ever more slowly; they change single seeds by factors of
+// 0.6 to 3.9 and the seven-seed mean of Fn(0.5) by 3%, a tenth of its standard error. So the
+// profile keeps the paper's protocol and this test stays skipped, as a recorded finding. Remove
+// the skip to see every failing point.
 TEST(ArchivedPaperProfile, ResidualsAfterThePaperProtocolAreBelowTolerance) {
   GTEST_SKIP() << "finding (not an engine bug): 68 of 450 loaded points of data/archive/0.1.0/paper are above the "
-                  "tolerance (force ratio 1e-2, energy ratio 1e-4) after the paper's protocol; soft-soft is not "
-                  "relaxed (worst force ratio 6.7, energy ratio 38.5); see the comment above this test";
+                  "tolerance (force ratio 1e-2, energy ratio 1e-4) after the paper's six-stop protocol; 30 stops do not "
+                  "settle the onset either and move the seed mean by 3% (docs/measurement.md, How long to relax)";
   ASSERT_FALSE(all_archives().empty());
   std::ostringstream table;
   std::size_t loaded_total = 0, failing_total = 0;
