@@ -24,27 +24,28 @@ void InsertionGrid::rehash(Level& L) {
   const std::size_t buckets = L.head.size() * 4;
   L.head.assign(buckets, -1);
   L.shift = 64 - std::countr_zero(buckets);
-  const int level = static_cast<int>(&L - levels_.data());
-  for (int j = static_cast<int>(x_.size()) - 1; j >= 0; --j) {
-    if (level_of_[j] != level) continue;
+  for (const int j : L.members) {
     int& head = L.head[bucket(cell_[j], L)];
     next_[j] = head;
     head = j;
   }
 }
 
-int InsertionGrid::insert(const Vec3& x, double r) {
+std::size_t InsertionGrid::level_for(double r) const {
   std::size_t l = 0;
   while (l + 1 < levels_.size() && levels_[l].cell < 2.0 * r) ++l;
+  return l;
+}
+
+void InsertionGrid::link(int id, std::size_t l) {
   Level& L = levels_[l];
-  const int id = static_cast<int>(x_.size());
-  x_.push_back(x);
-  r_.push_back(r);
-  level_of_.push_back(static_cast<int>(l));
-  cell_.push_back(pack(coordinate(x.x(), L), coordinate(x.y(), L), coordinate(x.z(), L)));
-  next_.push_back(-1);
+  const Vec3& x = x_[id];
+  level_of_[id] = static_cast<int>(l);
+  cell_[id] = pack(coordinate(x.x(), L), coordinate(x.y(), L), coordinate(x.z(), L));
+  member_index_[id] = L.members.size();
+  L.members.push_back(id);
   ++L.population;
-  L.r_max = std::max(L.r_max, r);
+  L.r_max = std::max(L.r_max, r_[id]);
   if (L.population * 2 > L.head.size()) {
     rehash(L);  // includes the new sphere
   } else {
@@ -52,13 +53,46 @@ int InsertionGrid::insert(const Vec3& x, double r) {
     next_[id] = head;
     head = id;
   }
+}
+
+void InsertionGrid::unlink(int id) {
+  Level& L = levels_[level_of_[id]];
+  for (int* j = &L.head[bucket(cell_[id], L)]; *j != -1; j = &next_[*j])
+    if (*j == id) {
+      *j = next_[id];
+      break;
+    }
+  next_[id] = -1;
+  const int last = L.members.back();
+  L.members[member_index_[id]] = last;
+  member_index_[last] = member_index_[id];
+  L.members.pop_back();
+  --L.population;
+  level_of_[id] = -1;  // L.r_max stays an upper bound
+}
+
+int InsertionGrid::insert(const Vec3& x, double r) {
+  const int id = static_cast<int>(x_.size());
+  x_.push_back(x);
+  r_.push_back(r);
+  level_of_.push_back(-1);
+  cell_.push_back(0);
+  next_.push_back(-1);
+  member_index_.push_back(0);
+  link(id, level_for(r));
   return id;
 }
 
 void InsertionGrid::set_radius(int id, double r) {
   r_[id] = r;
-  Level& L = levels_[level_of_[id]];
-  L.r_max = std::max(L.r_max, r);  // queries reach every sphere whose radius is <= r_max
+  const std::size_t l = level_for(r);
+  if (l > static_cast<std::size_t>(level_of_[id])) {
+    unlink(id);  // grown beyond its cell: to the level that holds it
+    link(id, l);
+  } else {
+    Level& L = levels_[level_of_[id]];
+    L.r_max = std::max(L.r_max, r);  // queries reach every sphere whose radius is <= r_max
+  }
 }
 
 bool InsertionGrid::overlaps(const Vec3& x, double r) const {

@@ -2,9 +2,11 @@
 // stored one?" and "how far is the nearest stored sphere?". Multi-level hashed grid like
 // neighbor/hierarchical_grid.hpp (levels of cell size c_l = c_0 q^l, a sphere on the lowest
 // level whose cell holds its diameter), but incremental: spheres are inserted, and may grow.
-// A query scans, on every populated level, the cells its search box touches; as the
-// generator inserts and grows the largest spheres first, a large query meets only coarse,
-// sparse levels, and a small one scans a few cells per level.
+// A query scans, on every populated level, the cells its search box touches, or the level's
+// spheres one by one when they are fewer than those cells (a wide search on a fine, sparse
+// level: a tiny grain in a large void at high polydispersity). A sphere that grows beyond its
+// cell moves up to the level that fits it, so that a level's largest radius stays of the order
+// of its cell and queries on fine levels stay narrow.
 #pragma once
 #include <array>
 #include <cmath>
@@ -34,6 +36,8 @@ class InsertionGrid {
   std::size_t size() const { return x_.size(); }
   const Vec3& centre(int id) const { return x_[id]; }
   double radius(int id) const { return r_[id]; }
+  /// Level a sphere is stored on (0 is the finest).
+  int level(int id) const { return level_of_[id]; }
 
  private:
   using Key = std::uint64_t;
@@ -43,6 +47,7 @@ class InsertionGrid {
     std::vector<int> head;  ///< hash buckets, -1 when empty
     int shift = 64;
     std::size_t population = 0;
+    std::vector<int> members;  ///< the spheres stored on the level, in no particular order
   };
   static constexpr std::int64_t kOffset = std::int64_t{1} << 20;  // cell coordinates may be negative
 
@@ -57,6 +62,11 @@ class InsertionGrid {
     return static_cast<std::int64_t>(std::floor(v * L.inv_cell));
   }
   void rehash(Level& L);
+  /// Level whose cell holds a sphere of radius r (the top level for larger ones).
+  std::size_t level_for(double r) const;
+  /// Puts sphere `id` (position and radius set) on level l; unlinks it from its old level.
+  void link(int id, std::size_t l);
+  void unlink(int id);
   /// Calls visit(id) for every stored sphere whose centre lies within `range` (per axis) of x
   /// on level L; stops when visit returns true.
   template <class Visit>
@@ -68,6 +78,7 @@ class InsertionGrid {
   std::vector<int> level_of_;
   std::vector<Key> cell_;
   std::vector<int> next_;
+  std::vector<std::size_t> member_index_;  ///< position of each sphere in its level's members
 };
 
 template <class Visit>
@@ -75,6 +86,14 @@ bool InsertionGrid::scan(const Level& L, const Vec3& x, double range, Visit&& vi
   const std::int64_t x0 = coordinate(x.x() - range, L), x1 = coordinate(x.x() + range, L);
   const std::int64_t y0 = coordinate(x.y() - range, L), y1 = coordinate(x.y() + range, L);
   const std::int64_t z0 = coordinate(x.z() - range, L), z1 = coordinate(x.z() + range, L);
+  const double cells = static_cast<double>(x1 - x0 + 1) * static_cast<double>(y1 - y0 + 1) * static_cast<double>(z1 - z0 + 1);
+  if (cells > static_cast<double>(L.members.size())) {
+    // Fewer spheres than cells: every sphere of the level (a superset of the box's; the
+    // callers test the distance, and their answers do not depend on the order of visits).
+    for (const int j : L.members)
+      if (visit(j)) return true;
+    return false;
+  }
   for (std::int64_t cz = z0; cz <= z1; ++cz)
     for (std::int64_t cy = y0; cy <= y1; ++cy)
       for (std::int64_t cx = x0; cx <= x1; ++cx) {

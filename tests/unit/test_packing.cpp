@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 
 #include "config/profile.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "packing/generator.hpp"
+#include "packing/insertion_grid.hpp"
 #include "packing/power_law.hpp"
 #include "packing/statistics.hpp"
 
@@ -69,6 +71,44 @@ TEST(PowerLaw, MeanCubeMatchesQuadrature) {
   const int n = 200000;
   for (int k = 0; k < n; ++k) sum += std::pow(power_law::quantile(law, (k + 0.5) / n), 3);
   EXPECT_NEAR(power_law::mean_cube(law), sum / n, 1e-6 * sum / n);
+}
+
+// The insertion grid against brute force: a sphere inserted small and grown a hundredfold moves
+// to the level that holds it, and queries (overlap, nearest gap) still find it and every other
+// sphere exactly as a scan of all pairs does, on fine sparse levels (scanned sphere by sphere)
+// and coarse ones alike.
+TEST(InsertionGrid, GrownSpheresMoveUpAndQueriesMatchBruteForce) {
+  const double r_min = 1e-5, r_max = 1e-2;  // Pi = 1000: eleven levels at ratio 2
+  InsertionGrid grid(r_min, r_max, 2.0);
+  Random rng(5);
+  std::vector<Vec3> x;
+  std::vector<double> r;
+  for (int i = 0; i < 300; ++i) {
+    x.push_back(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * 0.1);
+    r.push_back(r_min * std::pow(r_max / r_min, rng.uniform()));
+    grid.insert(x.back(), r.back());
+  }
+  const int grown = 7;
+  const int before = grid.level(grown);
+  r[grown] = std::min(100.0 * r[grown], r_max);
+  grid.set_radius(grown, r[grown]);
+  EXPECT_GT(grid.level(grown), before) << "the grown sphere moved up";
+  EXPECT_EQ(grid.radius(grown), r[grown]);
+  for (int q = 0; q < 2000; ++q) {
+    const Vec3 y = q == 0 ? x[grown] : Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * 0.1;
+    const double s = r_min * std::pow(r_max / r_min, rng.uniform());
+    const double search = s * std::pow(2.0, static_cast<double>(q % 12));
+    bool overlap = false;
+    double gap = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      const double d = (y - x[j]).norm();
+      overlap = overlap || d < s + r[j];
+      const double g = d - s - r[j];
+      if (g < search) gap = std::min(gap, g);
+    }
+    ASSERT_EQ(grid.overlaps(y, s), overlap) << "query " << q;
+    ASSERT_EQ(grid.nearest_gap(y, s, -1, search), gap) << "query " << q;  // the same arithmetic: exact
+  }
 }
 
 TEST(PackingStatistics, VolumeInsideBall) {
