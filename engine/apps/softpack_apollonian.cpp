@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
@@ -78,14 +79,7 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "softpack-apollonian: {} circles, d_f = {:.4f}, {}\n", packing.circles.size() - 1,
                packing.fit.d_f, out_path);
     return 0;
-  } catch (const InputError& e) {
-    fmt::print(stderr, "softpack-apollonian: error: {}\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
-    fmt::print(stderr, "softpack-apollonian: numerical error: {}\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "softpack-apollonian: internal error: {}\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_on_error("softpack-apollonian");
   }
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "analysis/average.hpp"
+#include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
@@ -109,14 +110,7 @@ int main(int argc, char** argv) {
     f.write_scalar("provenance/seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     out.commit();
     return 0;
-  } catch (const InputError& e) {
-    fmt::print(stderr, "softpack-average: error: {}\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
-    fmt::print(stderr, "softpack-average: numerical error: {}\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "softpack-average: internal error: {}\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_on_error("softpack-average");
   }
 }

@@ -13,6 +13,7 @@
 #include "analysis/average.hpp"
 #include "analysis/fit_json.hpp"
 #include "analysis/power_fit.hpp"
+#include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
@@ -110,14 +111,7 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "softpack-fit {}: -> {}\n", scene, out_path);
     }
     return 0;
-  } catch (const InputError& e) {
-    fmt::print(stderr, "softpack-fit: error: {}\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
-    fmt::print(stderr, "softpack-fit: numerical error: {}\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "softpack-fit: internal error: {}\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_on_error("softpack-fit");
   }
 }

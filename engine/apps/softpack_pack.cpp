@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "config/profile.hpp"
+#include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/particle_export.hpp"
@@ -77,14 +78,7 @@ int main(int argc, char** argv) {
                  seed, packing.radii.size(), packing.sampled, packing.discarded, packing.grown, stats.solid_fraction,
                  stats.exponent.b, stats.exponent.b_error, prov.seconds, out_path);
     return 0;
-  } catch (const InputError& e) {
-    fmt::print(stderr, "softpack-pack: error: {}\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
-    fmt::print(stderr, "softpack-pack: numerical error: {}\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "softpack-pack: internal error: {}\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_on_error("softpack-pack");
   }
 }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "apps/exit_codes.hpp"
 #include "config/profile.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -121,11 +122,7 @@ int main(int argc, char** argv) {
     write_file_atomically((std::filesystem::path(out_dir) / "packing-density.md").string(), md);
     if (!quiet) fmt::print(stderr, "softpack-packing-study: {} rows in {:.1f} s -> {}\n", rows.size(), seconds, out_dir);
     return 0;
-  } catch (const InputError& e) {
-    fmt::print(stderr, "softpack-packing-study: error: {}\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
-    fmt::print(stderr, "softpack-packing-study: numerical error: {}\n", e.what());
-    return 3;
+  } catch (...) {
+    return exit_on_error("softpack-packing-study");
   }
 }

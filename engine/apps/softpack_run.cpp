@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
@@ -129,14 +130,7 @@ int main(int argc, char** argv) {
     if (out_path.empty()) std::cout << report.dump(2) << "\n";
     else write_file_atomically(out_path, report.dump(2) + "\n");
     return 0;
-  } catch (const InputError& e) {
-    fmt::print(stderr, "softpack-run: error: {}\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {  // the watchdog stopped the run (sim/watchdog.hpp); no report
-    fmt::print(stderr, "softpack-run: numerical error: {}\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "softpack-run: internal error: {}\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_on_error("softpack-run");
   }
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
@@ -40,11 +41,7 @@ int main(int argc, char** argv) {
     write_file_atomically(out_path, text);
     fmt::print(stderr, "softpack-section: {} of {} spheres cut by z = {} m -> {}\n", cut, pk.radii.size(), offset, out_path);
     return 0;
-  } catch (const InputError& e) {
-    fmt::print(stderr, "softpack-section: error: {}\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
-    fmt::print(stderr, "softpack-section: numerical error: {}\n", e.what());
-    return 3;
+  } catch (...) {
+    return exit_on_error("softpack-section");
   }
 }

@@ -14,6 +14,7 @@
 #include "analysis/fit_json.hpp"
 #include "analysis/fit_table.hpp"
 #include "config/yaml_node.hpp"
+#include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
@@ -131,14 +132,7 @@ int main(int argc, char** argv) {
     }
     fmt::print("{}\n{}", md1, md2);
     return 0;
-  } catch (const InputError& e) {
-    fmt::print(stderr, "softpack-table: error: {}\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {  // the watchdog stopped a simulation (sim/watchdog.hpp)
-    fmt::print(stderr, "softpack-table: numerical error: {}\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "softpack-table: internal error: {}\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_on_error("softpack-table");
   }
 }
