@@ -64,3 +64,31 @@ def mean_err(x): return x.mean(), x.std(ddof=1) / np.sqrt(n)
 print("| mean ± s.e. | " + " | ".join("{:.3g} ± {:.2g} / {:.3g} ± {:.2g}".format(
     *(1e3 * np.array(mean_err(fa[:, k]))), *(1e3 * np.array(mean_err(fb[:, k])))) for k in show) + " | | |")
 EOF
+
+# Are the states at rest relative to what is measured? The largest unbalanced grain force over
+# the force on the second body, from the saved states: the study's, and the six-stop ones when
+# this machine computed the paper profile ($DATA/paper/checkpoints; a clone that reused the
+# archive has none).
+/usr/bin/python3 - "$data/paper/checkpoints/normal/soft-soft" "$work" "$stops" $seeds <<'EOF'
+import sys, os, h5py, numpy as np
+six, work, stops, seeds = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+def ratios(folder):
+    if not os.path.isdir(folder): return None
+    out = {}
+    for name in sorted(os.listdir(folder)):
+        f = h5py.File(os.path.join(folder, name), "r")
+        body = np.linalg.norm(f["result/force"][:])
+        grain = np.linalg.norm(f["state/F"][:], axis=1).max()
+        out[round(float(f["result/delta_n"][()]), 6)] = grain / body if body > 0 else float("inf")
+    return out
+show = [0.425, 0.45, 0.475, 0.5]
+cell = lambda r, d: "-" if r is None or d not in r else f"{r[d]:.1e}"
+print()
+print(f"Largest unbalanced grain force / force on the second body, six stops / {stops} stops")
+print()
+print("| seed | " + " | ".join(f"Δn = {d}" for d in show) + " |")
+print("|---" * (len(show) + 1) + "|")
+for s in seeds:
+    a, b = ratios(f"{six}/seed-{s}"), ratios(f"{work}/seed-{s}")
+    print(f"| {s} | " + " | ".join(f"{cell(a, d)} / {cell(b, d)}" for d in show) + " |")
+EOF
