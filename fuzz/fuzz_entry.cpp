@@ -1,5 +1,6 @@
 #include "fuzz_entry.hpp"
 
+#include <cxxabi.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -141,6 +142,14 @@ void run_file(const std::string& target, const std::string& path) {
   if (target == "sweep") return sweep_file(path);
   if (target == "average") return average_file(path);
   throw std::invalid_argument("unknown fuzz target '" + target + "'");
+}
+
+std::string type_name(const std::type_info& t) {
+  int status = 0;
+  char* name = abi::__cxa_demangle(t.name(), nullptr, nullptr, &status);
+  std::string out = status == 0 && name != nullptr ? name : t.name();
+  std::free(name);
+  return out;
 }
 
 }  // namespace softpack::fuzz

@@ -16,6 +16,7 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <typeinfo>
 #include <vector>
 
 namespace softpack::fuzz {
@@ -32,6 +33,9 @@ void run_file(const std::string& target, const std::string& path);
 
 /// A scratch file for `target` in $TMPDIR (or /tmp), unique to this process.
 std::string scratch_path(const std::string& target);
+
+/// The demangled name of an exception type, for the report of one that escaped.
+std::string type_name(const std::type_info& t);
 
 // The entry points themselves.
 void config_text(const std::string& text, const std::string& name);

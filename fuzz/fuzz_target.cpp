@@ -1,8 +1,6 @@
 // One libFuzzer target per reader: compiled once per target with SOFTPACK_FUZZ_TARGET set to
 // its name (fuzz/CMakeLists.txt). An InputError is the expected answer to bad input; any other
 // exception is reported with its type and aborts, so libFuzzer keeps the input as a crash.
-#include <cxxabi.h>
-
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -17,18 +15,6 @@
 #ifndef SOFTPACK_FUZZ_TARGET
 #error "define SOFTPACK_FUZZ_TARGET (config, packing, sweep or average)"
 #endif
-
-namespace {
-
-std::string type_name(const std::type_info& t) {
-  int status = 0;
-  char* name = abi::__cxa_demangle(t.name(), nullptr, nullptr, &status);
-  std::string out = status == 0 && name != nullptr ? name : t.name();
-  std::free(name);
-  return out;
-}
-
-}  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   // A file on which the HDF5 library hangs is refused after 5 s (libFuzzer's -timeout is 30 s).
@@ -45,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // the expected answer to bad input
   } catch (const std::exception& e) {
     std::fprintf(stderr, "==softpack-fuzz== %s: an exception other than InputError escaped: %s: %s\n", target.c_str(),
-                 type_name(typeid(e)).c_str(), e.what());
+                 softpack::fuzz::type_name(typeid(e)).c_str(), e.what());
     std::abort();
   } catch (...) {
     std::fprintf(stderr, "==softpack-fuzz== %s: a non-standard exception escaped\n", target.c_str());

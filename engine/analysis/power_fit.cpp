@@ -130,6 +130,24 @@ std::pair<double, double> log_log_start(const Data& d) {
 }
 
 /// s² (JᵀWJ)⁻¹ at the solution, via the SVD of the column-scaled weighted Jacobian.
+// The better of Levenberg-Marquardt from the log-log start and from the scan's best point (when
+// the scan found one); InputError when neither converged; a note when it hit its limit.
+template <class Model>
+Solution best_of_two_starts(const Data& d, const Model& model, const VectorXd& log_log, double scan_chi2,
+                            const VectorXd& scan_start, const char* law, PowerLawFit& fit) {
+  Solution best = levenberg_marquardt(d, model, log_log);
+  if (std::isfinite(scan_chi2)) {
+    const Solution s = levenberg_marquardt(d, model, scan_start);
+    if (s.chi2 < best.chi2) best = s;
+  }
+  if (!std::isfinite(best.chi2))
+    throw InputError(fmt::format("{}: Levenberg-Marquardt did not converge on the {} points (delta_n {} to {})", law,
+                                 d.x.size(), d.x.front(), d.x.back()));
+  if (best.status == static_cast<int>(Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation))
+    fit.notes.push_back("Levenberg-Marquardt stopped at its evaluation limit");
+  return best;
+}
+
 template <class Model>
 MatrixXd covariance(const Data& data, const Model& model, const VectorXd& p, double s2, const char* law) {
   Residuals<Model> functor{data, model};
@@ -239,7 +257,6 @@ PowerLawFit fit_normal_law(std::span<const double> delta_n, std::span<const doub
   const NormalModel model;
   // Start 1: log-log line, c = 0.
   const auto [a0, b0] = log_log_start(d);
-  Solution best = levenberg_marquardt(d, model, VectorXd{{a0, b0, 0.0}});
   // Start 2: the scan over b with (a, c) by linear least squares.
   double scan_chi2 = std::numeric_limits<double>::infinity();
   VectorXd scan_start(3);
@@ -256,15 +273,7 @@ PowerLawFit fit_normal_law(std::span<const double> delta_n, std::span<const doub
     const double c2 = chi2(d, model, p);
     if (c2 < scan_chi2) scan_chi2 = c2, scan_start = p;
   }
-  if (std::isfinite(scan_chi2)) {
-    const Solution s = levenberg_marquardt(d, model, scan_start);
-    if (s.chi2 < best.chi2) best = s;
-  }
-  if (!std::isfinite(best.chi2))
-    throw InputError(fmt::format("{}: Levenberg-Marquardt did not converge on the {} points (delta_n {} to {})", law, n,
-                                 d.x.front(), d.x.back()));
-  if (best.status == static_cast<int>(Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation))
-    fit.notes.push_back("Levenberg-Marquardt stopped at its evaluation limit");
+  const Solution best = best_of_two_starts(d, model, VectorXd{{a0, b0, 0.0}}, scan_chi2, scan_start, law, fit);
 
   const VectorXd& p = best.p;
   if (!(p[0] > 0.0) || !(p[1] > 0.0))
@@ -335,7 +344,6 @@ PowerLawFit fit_tangential_law(std::span<const double> delta_n, std::span<const 
   TangentialModel model;
   model.delta = delta;
   const auto [a0, b0] = log_log_start(d);
-  Solution best = levenberg_marquardt(d, model, VectorXd{{a0, b0}});
   double scan_chi2 = std::numeric_limits<double>::infinity();
   VectorXd scan_start(2);
   for (double b : exponent_grid()) {
@@ -350,15 +358,7 @@ PowerLawFit fit_tangential_law(std::span<const double> delta_n, std::span<const 
     const double c2 = chi2(d, model, p);
     if (c2 < scan_chi2) scan_chi2 = c2, scan_start = p;
   }
-  if (std::isfinite(scan_chi2)) {
-    const Solution s = levenberg_marquardt(d, model, scan_start);
-    if (s.chi2 < best.chi2) best = s;
-  }
-  if (!std::isfinite(best.chi2))
-    throw InputError(fmt::format("{}: Levenberg-Marquardt did not converge on the {} points (delta_n {} to {})", law, n,
-                                 d.x.front(), d.x.back()));
-  if (best.status == static_cast<int>(Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation))
-    fit.notes.push_back("Levenberg-Marquardt stopped at its evaluation limit");
+  const Solution best = best_of_two_starts(d, model, VectorXd{{a0, b0}}, scan_chi2, scan_start, law, fit);
   const VectorXd& p = best.p;
   if (!(p[0] > 0.0) || !(p[1] > 0.0))
     throw InputError(fmt::format("{}: fitted a = {:.6g}, b = {:.6g}; allowed: a > 0 and b > 0 (kt growing with delta_n)", law,

@@ -719,29 +719,43 @@ Measurement Simulation::measure() const {
     sum_Fn += hertz::force(k.kn, h);
     ++m.contacts;
   };
+  const auto deepest = [&](double h, double radius, Measurement::Deepest site) {
+    if (!(h / radius > m.deepest.fraction)) return;
+    site.fraction = h / radius, site.overlap = h;
+    m.deepest = site;
+  };
   const bool friction = scene_.effects.friction;
   for (std::size_t k = 0; k < pairs_.pairs.size(); ++k) {
     const PairEntry& e = pairs_.pairs[k];
     const double h = e.r_sum - (p_.x[e.i] - p_.x[e.j]).norm();
-    if (h > 0.0) add_contact(pairs_.k[k], h, friction ? &pairs_.spring[k] : nullptr);
+    if (!(h > 0.0)) continue;
+    add_contact(pairs_.k[k], h, friction ? &pairs_.spring[k] : nullptr);
+    deepest(h, std::min(p_.r[e.i], p_.r[e.j]), {0.0, 0.0, e.i, e.j, -1, -1});
   }
   for (std::size_t w = 0; w < planes_.size(); ++w)
     for (std::size_t k = 0; k < plane_lists_[w].entries.size(); ++k) {
       const WallEntry& e = plane_lists_[w].entries[k];
       const double h = planes_[w].overlap(p_.x[e.i], p_.r[e.i]);
-      if (h > 0.0) add_contact(e.k, h, friction ? &plane_lists_[w].spring[k] : nullptr);
+      if (!(h > 0.0)) continue;
+      add_contact(e.k, h, friction ? &plane_lists_[w].spring[k] : nullptr);
+      deepest(h, p_.r[e.i], {0.0, 0.0, e.i, -1, static_cast<int>(w), -1});
     }
   for (std::size_t w = 0; w < shells_.size(); ++w)
     for (std::size_t k = 0; k < shell_lists_[w].entries.size(); ++k) {
       const WallEntry& e = shell_lists_[w].entries[k];
       const double h = shells_[w].overlap(p_.x[e.i], p_.r[e.i]);
-      if (h > 0.0) add_contact(e.k, h, friction ? &shell_lists_[w].spring[k] : nullptr);
+      if (!(h > 0.0)) continue;
+      add_contact(e.k, h, friction ? &shell_lists_[w].spring[k] : nullptr);
+      deepest(h, p_.r[e.i], {0.0, 0.0, e.i, -1, -1, static_cast<int>(w)});
     }
   m.mean_contact_force = m.contacts ? sum_Fn / static_cast<double>(m.contacts) : 0.0;
   for (std::size_t i = 0; i < p_.size(); ++i) {
     if (p_.is_driven(i)) continue;
-    m.kinetic_energy += 0.5 * p_.m[i] * p_.v[i].squaredNorm();
-    if (p_.rotates()) m.kinetic_energy += 0.5 * p_.w[i].squaredNorm() / p_.inv_I[i];
+    const double translation = 0.5 * p_.m[i] * p_.v[i].squaredNorm();
+    const double rotation = p_.rotates() ? 0.5 * p_.w[i].squaredNorm() / p_.inv_I[i] : 0.0;
+    m.kinetic_energy += translation;  // two sums, in this order: the recorded residuals keep their bits
+    if (p_.rotates()) m.kinetic_energy += rotation;
+    if (translation + rotation > m.hottest_energy) m.hottest_energy = translation + rotation, m.hottest = static_cast<int>(i);
     m.max_unbalanced_force = std::max(m.max_unbalanced_force, p_.F[i].norm());
   }
   return m;

@@ -46,6 +46,14 @@ struct Measurement {
   double max_unbalanced_force = 0.0;  ///< largest |net force| on a free sphere [N]
   double mean_contact_force = 0.0;    ///< mean Hertz force over closed contacts [N]
   std::size_t contacts = 0;           ///< closed contacts (sphere-sphere and sphere-wall)
+  /// Deepest contact relative to its smaller radius (a sphere's own radius against a wall):
+  /// spheres i and j, or sphere i and plane `plane` or shell `shell` (j = -1). i = -1: none.
+  struct Deepest {
+    double fraction = 0.0, overlap = 0.0;  ///< h / radius [-], h [m]
+    int i = -1, j = -1, plane = -1, shell = -1;
+  } deepest;
+  int hottest = -1;             ///< free sphere with the largest kinetic energy (-1: none moves)
+  double hottest_energy = 0.0;  ///< its kinetic energy [J]
   /// max unbalanced force / mean contact force (0 for a state with no force at all).
   double force_ratio() const;
   /// kinetic energy / elastic energy (0 when both vanish).

@@ -4,12 +4,9 @@
 # tangential fit with too few points is written as null with the reason (exit 0); the tables
 # are written and printed; bad input gives one message, exit code 2 and no output file.
 # Exit 77 (skipped) without python3-h5py.
-set -euo pipefail
+source "$(dirname "$0")/common.sh"
 bin=$1
 root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
 py=/usr/bin/python3
 "$py" -c 'import h5py, numpy' 2> /dev/null || { echo "python3-h5py is not installed: skipped"; exit 77; }
 
@@ -70,19 +67,6 @@ grep -qF "| a [N/m] | 0.74 | 0.740 | 0.0% | — | 0.982 | — |" "$tmp/stdout" |
 grep -q "^% softpack-table" "$tmp/tables/table1.tex" || fail "no provenance in table1.tex"
 grep -q '\\toprule' "$tmp/tables/table2.tex" || fail "table2.tex is not booktabs"
 
-# expect_error MESSAGE OUTPUT COMMAND...: exit code 2, MESSAGE on stderr, OUTPUT not created.
-expect_error() {
-  local message=$1 output=$2
-  shift 2
-  set +e
-  "$@" 2> "$tmp/err" > /dev/null
-  local code=$?
-  set -e
-  [ "$code" -eq 2 ] || fail "exit code $code (expected 2) for: $*: $(cat "$tmp/err")"
-  grep -qF -- "$message" "$tmp/err" || fail "expected '$message', got: $(cat "$tmp/err")"
-  [ ! -e "$output" ] || fail "$output was written for bad input"
-  find "$tmp" -name '*.tmp.*' | grep -q . && fail "a temporary file was left behind" || true
-}
 fit() { "$bin/softpack-fit" --average "$1" --out "$2" --quiet; }
 out=$tmp/bad.json
 fake soft-solid 73.669 2.799 -10.0 0.740 2.100 7 "$tmp/late.h5"  # delta = 0.49: one positive point

@@ -2,12 +2,9 @@
 # softpack-pack, softpack-section and softpack-apollonian from the command line: --help, the
 # same seed gives the same datasets, another seed another packing, and every bad input gives
 # one message naming the key, exit code 2 and no output file.
-set -euo pipefail
+source "$(dirname "$0")/common.sh"
 bin=$1
 root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
 
 "$bin/softpack-pack" --help | grep -q -- "--seed" || fail "softpack-pack --help"
 "$bin/softpack-section" --help | grep -q -- "--packing" || fail "softpack-section --help"
@@ -25,19 +22,6 @@ h5dump -d /provenance/config "$tmp/a.h5" | grep -q "polydispersity" || fail "no 
 "$bin/softpack-section" --packing "$tmp/a.h5" --out "$tmp/section.dat" 2> /dev/null
 grep -q "^# shell" "$tmp/section.dat" || fail "section file has no shell line"
 
-# expect_error MESSAGE OUTPUT COMMAND...: exit code 2, MESSAGE on stderr, OUTPUT not created.
-expect_error() {
-  local message=$1 output=$2
-  shift 2
-  set +e
-  "$@" 2> "$tmp/err" > /dev/null
-  local code=$?
-  set -e
-  [ "$code" -eq 2 ] || fail "exit code $code (expected 2) for: $*"
-  grep -qF -- "$message" "$tmp/err" || fail "expected '$message', got: $(cat "$tmp/err")"
-  [ ! -e "$output" ] || fail "$output was written for bad input"
-  ls "$tmp" | grep -q '\.tmp\.' && fail "a temporary file was left behind" || true
-}
 # edit SED: the quick profile with one key changed (whatever its value there), which must change.
 edit() { sed "$1" "$root/experiments/quick.yaml" > "$tmp/bad.yaml"; ! cmp -s "$tmp/bad.yaml" "$root/experiments/quick.yaml" || fail "edit $1 changed nothing"; }
 out=$tmp/bad.h5

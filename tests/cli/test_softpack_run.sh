@@ -1,12 +1,9 @@
 #!/usr/bin/env bash
 # softpack-run answers --help, runs an example scene, and rejects bad input with one clear
 # message, exit code 2 and no output file.
-set -euo pipefail
+source "$(dirname "$0")/common.sh"
 exe=$1
 root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
 
 "$exe" --help | grep -q -- "--scene" || fail "--help does not list --scene"
 

@@ -2,12 +2,9 @@
 # softpack-normal and softpack-tangential from the command line: --help, a run with progress,
 # resumption after a kill, and bad input (a packing of another profile, a missing normal
 # state, a grid that does not increase) refused with one message, exit 2, no output.
-set -euo pipefail
+source "$(dirname "$0")/common.sh"
 bin=$1
 root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
 profile=$root/tests/data/sweep-profile.yaml
 
 "$bin/softpack-normal" --help | grep -q -- "--checkpoints" || fail "softpack-normal --help"
@@ -30,17 +27,6 @@ normal --checkpoints "$tmp/b" --out "$tmp/b.h5" --quiet
 numbers() { h5dump -d /Fn -d /force -d /force_first -d /contacts -d /steps -d /relaxation/checks/force_ratio "$1" | tail -n +2; }
 [ "$(numbers "$tmp/a.h5")" = "$(numbers "$tmp/b.h5")" ] || fail "resumed run differs from the uninterrupted one"
 
-expect_error() {
-  local message=$1 output=$2
-  shift 2
-  set +e
-  "$@" 2> "$tmp/err" > /dev/null
-  local code=$?
-  set -e
-  [ "$code" -eq 2 ] || fail "exit code $code (expected 2): $(cat "$tmp/err")"
-  grep -qF -- "$message" "$tmp/err" || fail "expected '$message', got: $(cat "$tmp/err")"
-  [ ! -e "$output" ] || fail "$output was written for bad input"
-}
 sed 's/^  trials: .*/  trials: 2999/' "$profile" > "$tmp/other.yaml"  # another packing configuration
 "$bin/softpack-pack" --config "$tmp/other.yaml" --seed 1 --out "$tmp/other.h5" --quiet
 expect_error "this packing was made from another packing configuration" "$tmp/x.h5" \

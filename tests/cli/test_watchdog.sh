@@ -2,12 +2,9 @@
 # The watchdog (engine/sim/watchdog.hpp) from the command line: a run that goes wrong stops with
 # "softpack-<name>: numerical error: <diagnostic>", exit code 3, and no output file; the
 # profile's `watchdog` section sets the thresholds without touching the recorded configuration.
-set -euo pipefail
+source "$(dirname "$0")/common.sh"
 bin=$1
 root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
 
 # run NAME EXPECTED_CODE CMD...: runs CMD with stderr to $tmp/NAME.err and checks its exit code.
 run() {

@@ -5,8 +5,6 @@
 // Under the sanitizer build (make test-sanitize) crashes and memory errors show too.
 //
 //   replay_fuzz_inputs TARGET DIR...
-#include <cxxabi.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -20,14 +18,6 @@
 #include "fuzz_entry.hpp"
 
 namespace {
-
-std::string type_name(const std::type_info& t) {
-  int status = 0;
-  char* name = abi::__cxa_demangle(t.name(), nullptr, nullptr, &status);
-  std::string out = status == 0 && name != nullptr ? name : t.name();
-  std::free(name);
-  return out;
-}
 
 std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
 
@@ -65,7 +55,7 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
       ++failed;
       std::printf("FAILED    %s\n          %s escaped (not InputError): %s\n", f.string().c_str(),
-                  type_name(typeid(e)).c_str(), e.what());
+                  softpack::fuzz::type_name(typeid(e)).c_str(), e.what());
     }
   }
   // "read": the entry point returned (the config target answers each parser's InputError itself).
