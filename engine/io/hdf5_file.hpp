@@ -93,12 +93,6 @@ class File {
 /// file corrupt (InputError). The fuzz targets lower it.
 void set_preflight_seconds(int seconds);
 
-/// What a softpack file is, from its layout: "a packing file (softpack-pack)", "a sweep point
-/// file (a checkpoint of softpack-normal or softpack-tangential)", "a normal sweep results file
-/// (softpack-normal)", "an average file (softpack-average)", ...; "" for any other HDF5 file.
-/// Readers use it to say what a file given in the wrong place is.
-std::string kind_of(const File& f);
-
 /// An HDF5 output written atomically: file() writes "<final>.tmp.<pid>"; commit() closes it
 /// and renames it to `final`. Without commit() (an exception, an early return) the destructor
 /// removes the temporary, so a failed run leaves no file.

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "io/file_kind.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace softpack {

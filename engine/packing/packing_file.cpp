@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "io/file_kind.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace softpack {
