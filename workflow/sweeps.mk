@@ -46,7 +46,7 @@ tangential: $(foreach scene,$(SCENES),$(call TANGENTIAL_RESULTS,$(scene)))  ## t
 sweeps: normal tangential  ## both sweeps
 
 # How long to relax: the soft-soft normal sweeps again with 30 stops instead of six, compared
-# with the archived results (docs/measurement.md; about 25 minutes on one core).
+# with the archived results (docs/measurement.md; about 30 minutes on one core).
 .PHONY: study-relaxation
 study-relaxation: | $(TOOLS)  ## soft-soft normal law with 30 relaxation stops against the archived 6 (paper profile)
 	@$(MAKE) --no-print-directory packings PROFILE=paper

@@ -5,7 +5,7 @@
 #   make study-relaxation                                    (the same, with the packings made first)
 #
 # Reruns the paper profile's soft-soft normal sweep of every seed with STOPS stops of the paper's
-# protocol instead of six (everything else as experiments/paper.yaml; about 3.5 min per seed on
+# protocol instead of six (everything else as experiments/paper.yaml; about 4.5 min per seed on
 # one core for 30 stops) and compares it, point by point, with the archived six-stop results of
 # data/archive/<version>/paper/normal/. Needs the paper profile's packings ($DATA/paper/packings/,
 # DATA=data by default: make packings) and
