@@ -6,24 +6,44 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 
 #include "contact/viscous_damping.hpp"
 #include "core/material.hpp"
 #include "sim/simulation.hpp"
 #include "support/confined_packing.hpp"
 
+namespace {
+
+// FNV-1a over the bytes of the state: equal digests mean a change left every result bit alone.
+std::uint64_t state_digest(const softpack::SimulationState& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto add = [&h](const void* data, std::size_t bytes) {
+    for (std::size_t b = 0; b < bytes; ++b) h = (h ^ static_cast<const unsigned char*>(data)[b]) * 1099511628211ull;
+  };
+  for (const auto* a : {&s.x, &s.v, &s.w, &s.F, &s.T}) add(a->data(), a->size() * sizeof(softpack::Vec3));
+  for (const auto& sp : s.pair_springs) add(&sp.i, sizeof sp.i), add(&sp.j, sizeof sp.j), add(&sp.xi, sizeof sp.xi);
+  for (const auto* lists : {&s.plane_springs, &s.shell_springs})
+    for (const auto& l : *lists)
+      for (const auto& sp : l) add(&sp.i, sizeof sp.i), add(&sp.xi, sizeof sp.xi);
+  return h;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace softpack;
   CLI::App app{"softpack-bench-scene: time softpack on the benchmark packing (make bench)"};
   std::string packing_path;
   long steps = 2000;
-  bool frictionless = false, parameters_only = false;
+  bool frictionless = false, parameters_only = false, digest = false;
   int n = 5000;
   app.add_option("--packing", packing_path, "x y z r file; made (about --spheres spheres) when missing")->required();
   app.add_option("--spheres", n, "sphere count when the packing has to be made");
   app.add_option("--steps", steps, "velocity-Verlet steps to time");
   app.add_flag("--frictionless", frictionless, "Hertz + damping only (no friction, no rotation)");
   app.add_flag("--parameters", parameters_only, "print the physical parameters (for LAMMPS) and exit");
+  app.add_flag("--digest", digest, "also print a digest of the final state's bits (x, v, w, F, T, springs)");
   CLI11_PARSE(app, argc, argv);
 
   const bench::BenchParameters p;
@@ -49,5 +69,6 @@ int main(int argc, char** argv) {
   fmt::print("softpack_loop_time_s={:.6g} particle_steps_per_s={:.4g} contacts={} listed_pairs={} rebuilds={} friction={}\n", seconds,
              static_cast<double>(spheres.size()) * static_cast<double>(steps) / seconds, meas.contacts, sim.pair_list().pairs.size(),
              sim.neighbour_rebuilds(), frictionless ? 0 : 1);
+  if (digest) fmt::print("state_digest={:016x}\n", state_digest(sim.state()));
   return 0;
 }

@@ -34,6 +34,7 @@ std::vector<std::size_t> PairList::replace(std::vector<PairEntry>&& fresh, bool 
   pairs = std::move(fresh);
   k = std::move(coefficients);
   spring = std::move(springs);
+  spring_live.clear();
   return new_ones;
 }
 

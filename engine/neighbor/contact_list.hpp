@@ -24,6 +24,9 @@ struct PairList {
   std::vector<PairEntry> pairs;
   std::vector<ContactCoefficients> k;  ///< constants per pair, read for touching pairs only
   std::vector<Vec3> spring;            ///< tangential spring per pair; empty without friction
+  /// 1 where the spring may be non-zero (the pair touched at the last force evaluation).
+  /// Kept by the force loop (sim/touching_pairs.hpp); empty means every spring may be.
+  std::vector<std::uint8_t> spring_live;
 
   /// Replaces the list by `fresh` (sorted by (i, j)); pairs already listed keep their
   /// constants and spring. Returns the indices of the new pairs, whose constants are unset.

@@ -1,7 +1,12 @@
 #include "sim/pair_forces.hpp"
 
+#include "sim/touching_pairs.hpp"
+
+#include <immintrin.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace softpack {
 namespace {
@@ -16,168 +21,271 @@ struct Batch {
   alignas(64) double wjx[kBatch], wjy[kBatch], wjz[kBatch];
   alignas(64) double ri[kBatch], rj[kBatch], r_sum[kBatch];
   alignas(64) double kn[kBatch], kt0[kBatch], gamma0[kBatch], gamma_t0[kBatch], mu[kBatch];
-  alignas(64) double sx[kBatch], sy[kBatch], sz[kBatch];     // springs
+  alignas(64) double sx[kBatch], sy[kBatch], sz[kBatch];     // springs before the step
+  alignas(64) int i[kBatch], j[kBatch];                      // the spheres
   // results
   alignas(64) double Fx[kBatch], Fy[kBatch], Fz[kBatch];
   alignas(64) double nFx[kBatch], nFy[kBatch], nFz[kBatch];  // n x Ft
   alignas(64) double ai[kBatch], aj[kBatch];                 // branch lengths
+  alignas(64) double new_sx[kBatch], new_sy[kBatch], new_sz[kBatch];  // springs after the step
+  alignas(64) double slow[kBatch];  // lanes the common case does not cover (see compute)
 };
 
-// tsuji::rotate_into_tangent_plane for one lane, without branches.
-[[gnu::always_inline]] inline void rotate_lane(double& x, double& y, double& z, double nx, double ny, double nz) {
+// tsuji::rotate_into_tangent_plane for one lane, without branches. The exact restoring factor
+// 1/sqrt(1 - s) is only needed when the spring leans out of the plane by more than the series
+// covers (s >= 1e-6); `Common` computes the series alone and marks the other lanes `slow`.
+template <bool Common>
+[[gnu::always_inline]] inline void rotate_lane(double& x, double& y, double& z, double nx, double ny, double nz, double& slow) {
   const double len2 = x * x + y * y + z * z;
   const double c = x * nx + y * ny + z * nz;
   const double s = len2 > 0.0 ? c * c / len2 : 0.0;
-  const double restore = s < 1e-6 ? 1.0 + s * (0.5 + 0.375 * s) : 1.0 / std::sqrt(1.0 - s);
+  const double series = 1.0 + s * (0.5 + 0.375 * s);
+  double restore = series;
+  if constexpr (Common) {
+    slow += s < 1e-6 ? 0.0 : 1.0;  // arithmetic, not a bool: the loop must stay branch-free
+  } else {
+    restore = s < 1e-6 ? series : 1.0 / std::sqrt(1.0 - s);
+  }
   const bool keep = s < 1.0;
   x = keep ? (x - c * nx) * restore : 0.0;
   y = keep ? (y - c * ny) * restore : 0.0;
   z = keep ? (z - c * nz) * restore : 0.0;
 }
 
-// Forces of one batch: geometry -> spring history -> Hertz normal (Eq. 3) -> damping ->
-// Coulomb limit and tangential spring (Eq. 5), as contact_force() does for one contact.
+// Forces of one contact of a batch: geometry -> spring history -> Hertz normal (Eq. 3) ->
+// damping -> Coulomb limit and tangential spring (Eq. 5), as contact_force() does for one contact.
+//
+// `Common` is the common case, written for speed: springs that lean out of the tangent plane by
+// less than the series covers, and no sliding. It skips four square roots and six divisions, and
+// marks the lanes it cannot do as `slow`; those are redone with Common = false from the same
+// inputs. For every other lane both give the same bits: the operations they share are the same.
+template <bool Friction, bool Damping, bool Rotation, bool Synchronized, bool Common>
+[[gnu::always_inline]] inline void lane(Batch& b, int m, double dt) {
+  const double half_dt = 0.5 * dt;
+  double slow = 0.0;
+  const double dist = std::sqrt(b.dx[m] * b.dx[m] + b.dy[m] * b.dy[m] + b.dz[m] * b.dz[m]);
+  const double inv = 1.0 / dist;
+  const double nx = b.dx[m] * inv, ny = b.dy[m] * inv, nz = b.dz[m] * inv;
+  const double h = b.r_sum[m] - dist;
+  // Contact-point velocity at the full step, vc = vij - (ai wi + aj wj) x n.
+  double vcx = b.vx[m], vcy = b.vy[m], vcz = b.vz[m];
+  double ai = 0.0, aj = 0.0;
+  if constexpr (Rotation) {
+    ai = b.ri[m] - 0.5 * h;
+    aj = b.rj[m] - 0.5 * h;
+    const double px = ai * b.wix[m] + aj * b.wjx[m], py = ai * b.wiy[m] + aj * b.wjy[m],
+                 pz = ai * b.wiz[m] + aj * b.wjz[m];
+    vcx -= py * nz - pz * ny;
+    vcy -= pz * nx - px * nz;
+    vcz -= px * ny - py * nx;
+  }
+  double sx = 0.0, sy = 0.0, sz = 0.0;
+  if constexpr (Friction) {
+    sx = b.sx[m], sy = b.sy[m], sz = b.sz[m];
+    double fx = nx, fy = ny, fz = nz;  // frame of the spring update
+    double ux = vcx, uy = vcy, uz = vcz;
+    if constexpr (Synchronized) {
+      const double hx = b.dx[m] - half_dt * b.vx[m], hy = b.dy[m] - half_dt * b.vy[m],
+                   hz = b.dz[m] - half_dt * b.vz[m];
+      const double dist_half = std::sqrt(hx * hx + hy * hy + hz * hz);
+      const double inv_half = 1.0 / dist_half;
+      fx = hx * inv_half, fy = hy * inv_half, fz = hz * inv_half;
+      ux = b.vx[m], uy = b.vy[m], uz = b.vz[m];
+      if constexpr (Rotation) {
+        const double h_half = b.r_sum[m] - dist_half;
+        const double ahi = b.ri[m] - 0.5 * h_half, ahj = b.rj[m] - 0.5 * h_half;
+        const double px = ahi * b.wix[m] + ahj * b.wjx[m], py = ahi * b.wiy[m] + ahj * b.wjy[m],
+                     pz = ahi * b.wiz[m] + ahj * b.wjz[m];
+        ux -= py * fz - pz * fy;
+        uy -= pz * fx - px * fz;
+        uz -= px * fy - py * fx;
+      }
+    }
+    // advance_spring: into the update frame, add the tangential displacement, into n.
+    rotate_lane<Common>(sx, sy, sz, fx, fy, fz, slow);
+    const double un = ux * fx + uy * fy + uz * fz;
+    sx += (ux - un * fx) * dt;
+    sy += (uy - un * fy) * dt;
+    sz += (uz - un * fz) * dt;
+    rotate_lane<Common>(sx, sy, sz, nx, ny, nz, slow);
+  }
+  // contact_force
+  const double sqrt_h = std::sqrt(h);
+  const double Fn = b.kn[m] * h * sqrt_h;  // Eq. 3
+  const double vn = vcx * nx + vcy * ny + vcz * nz;
+  double h_quarter = 0.0;
+  double F_normal = Fn;
+  if constexpr (Damping) {
+    h_quarter = std::sqrt(sqrt_h);
+    F_normal -= b.gamma0[m] * h_quarter * vn;
+  }
+  double Ftx = 0.0, Fty = 0.0, Ftz = 0.0;
+  if constexpr (Friction) {
+    const double vtx = vcx - vn * nx, vty = vcy - vn * ny, vtz = vcz - vn * nz;
+    const double kt = b.kt0[m] * sqrt_h;  // Eq. 5
+    const double gamma_t = Damping ? b.gamma_t0[m] * h_quarter : 0.0;
+    Ftx = -kt * sx - gamma_t * vtx;
+    Fty = -kt * sy - gamma_t * vty;
+    Ftz = -kt * sz - gamma_t * vtz;
+    const double Ft2 = Ftx * Ftx + Fty * Fty + Ftz * Ftz;
+    const double mu_Fn = b.mu[m] * Fn;
+    const bool slide = Ft2 > mu_Fn * mu_Fn;  // Coulomb limit: slide at mu Fn
+    const double scale = slide ? mu_Fn / std::sqrt(Ft2) : 1.0;
+    Ftx *= scale;
+    Fty *= scale;
+    Ftz *= scale;
+    sx = slide ? -Ftx / kt : sx;
+    sy = slide ? -Fty / kt : sy;
+    sz = slide ? -Ftz / kt : sz;
+    b.new_sx[m] = sx;
+    b.new_sy[m] = sy;
+    b.new_sz[m] = sz;
+  }
+  b.Fx[m] = F_normal * nx + Ftx;
+  b.Fy[m] = F_normal * ny + Fty;
+  b.Fz[m] = F_normal * nz + Ftz;
+  if constexpr (Rotation) {
+    b.nFx[m] = ny * Ftz - nz * Fty;
+    b.nFy[m] = nz * Ftx - nx * Ftz;
+    b.nFz[m] = nx * Fty - ny * Ftx;
+    b.ai[m] = ai;
+    b.aj[m] = aj;
+  }
+  if constexpr (Common) b.slow[m] = slow;
+}
+
+template <bool Friction, bool Damping, bool Rotation, bool Synchronized, bool Common>
+[[gnu::always_inline]] inline void compute_all(Batch& b, int n, double dt) {
+  for (int m = 0; m < n; ++m) lane<Friction, Damping, Rotation, Synchronized, Common>(b, m, dt);
+}
+
+// Forces of one batch. With friction, the common case first; its slow lanes are redone one by
+// one, or, when they are many (a sliding packing), the whole batch again in full.
 template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
 [[gnu::always_inline]] inline void compute(Batch& b, int n, double dt) {
-  const double half_dt = 0.5 * dt;
+  if constexpr (!Friction) {
+    compute_all<Friction, Damping, Rotation, Synchronized, false>(b, n, dt);
+  } else {
+    compute_all<Friction, Damping, Rotation, Synchronized, true>(b, n, dt);
+    int nslow = 0;
+    for (int m = 0; m < n; ++m) nslow += b.slow[m] != 0.0 ? 1 : 0;
+    if (nslow == 0) return;
+    if (4 * nslow > n) return compute_all<Friction, Damping, Rotation, Synchronized, false>(b, n, dt);
+    for (int m = 0; m < n; ++m)
+      if (b.slow[m] != 0.0) lane<Friction, Damping, Rotation, Synchronized, false>(b, m, dt);
+  }
+}
+
+// Copies the contacts closed[0..n) into the batch, one by one.
+template <bool Friction, bool Rotation>
+[[gnu::always_inline]] inline void gather_portable(Batch& b, const int* closed, int n, const PairList& list,
+                                                   const PairForceArrays& a) {
   for (int m = 0; m < n; ++m) {
-    const double dist = std::sqrt(b.dx[m] * b.dx[m] + b.dy[m] * b.dy[m] + b.dz[m] * b.dz[m]);
-    const double inv = 1.0 / dist;
-    const double nx = b.dx[m] * inv, ny = b.dy[m] * inv, nz = b.dz[m] * inv;
-    const double h = b.r_sum[m] - dist;
-    // Contact-point velocity at the full step, vc = vij - (ai wi + aj wj) x n.
-    double vcx = b.vx[m], vcy = b.vy[m], vcz = b.vz[m];
-    double ai = 0.0, aj = 0.0;
+    const int k = closed[m];
+    const PairEntry& e = list.pairs[k];
+    b.i[m] = e.i, b.j[m] = e.j;
+    const Vec3 d = a.x[e.i] - a.x[e.j], v = a.v[e.i] - a.v[e.j];
+    b.dx[m] = d.x(), b.dy[m] = d.y(), b.dz[m] = d.z();
+    b.vx[m] = v.x(), b.vy[m] = v.y(), b.vz[m] = v.z();
+    const ContactCoefficients& c = list.k[k];
+    b.r_sum[m] = e.r_sum, b.kn[m] = c.kn, b.kt0[m] = c.kt0;
+    b.gamma0[m] = c.gamma0, b.gamma_t0[m] = c.gamma_t0, b.mu[m] = c.mu;
     if constexpr (Rotation) {
-      ai = b.ri[m] - 0.5 * h;
-      aj = b.rj[m] - 0.5 * h;
-      const double px = ai * b.wix[m] + aj * b.wjx[m], py = ai * b.wiy[m] + aj * b.wjy[m],
-                   pz = ai * b.wiz[m] + aj * b.wjz[m];
-      vcx -= py * nz - pz * ny;
-      vcy -= pz * nx - px * nz;
-      vcz -= px * ny - py * nx;
+      b.wix[m] = a.w[e.i].x(), b.wiy[m] = a.w[e.i].y(), b.wiz[m] = a.w[e.i].z();
+      b.wjx[m] = a.w[e.j].x(), b.wjy[m] = a.w[e.j].y(), b.wjz[m] = a.w[e.j].z();
+      b.ri[m] = a.r[e.i], b.rj[m] = a.r[e.j];
     }
-    double sx = 0.0, sy = 0.0, sz = 0.0;
     if constexpr (Friction) {
-      sx = b.sx[m], sy = b.sy[m], sz = b.sz[m];
-      double fx = nx, fy = ny, fz = nz;  // frame of the spring update
-      double ux = vcx, uy = vcy, uz = vcz;
-      if constexpr (Synchronized) {
-        const double hx = b.dx[m] - half_dt * b.vx[m], hy = b.dy[m] - half_dt * b.vy[m],
-                     hz = b.dz[m] - half_dt * b.vz[m];
-        const double dist_half = std::sqrt(hx * hx + hy * hy + hz * hz);
-        const double inv_half = 1.0 / dist_half;
-        fx = hx * inv_half, fy = hy * inv_half, fz = hz * inv_half;
-        ux = b.vx[m], uy = b.vy[m], uz = b.vz[m];
-        if constexpr (Rotation) {
-          const double h_half = b.r_sum[m] - dist_half;
-          const double ahi = b.ri[m] - 0.5 * h_half, ahj = b.rj[m] - 0.5 * h_half;
-          const double px = ahi * b.wix[m] + ahj * b.wjx[m], py = ahi * b.wiy[m] + ahj * b.wjy[m],
-                       pz = ahi * b.wiz[m] + ahj * b.wjz[m];
-          ux -= py * fz - pz * fy;
-          uy -= pz * fx - px * fz;
-          uz -= px * fy - py * fx;
-        }
-      }
-      // advance_spring: into the update frame, add the tangential displacement, into n.
-      rotate_lane(sx, sy, sz, fx, fy, fz);
-      const double un = ux * fx + uy * fy + uz * fz;
-      sx += (ux - un * fx) * dt;
-      sy += (uy - un * fy) * dt;
-      sz += (uz - un * fz) * dt;
-      rotate_lane(sx, sy, sz, nx, ny, nz);
+      const Vec3& s = list.spring[k];
+      b.sx[m] = s.x(), b.sy[m] = s.y(), b.sz[m] = s.z();
     }
-    // contact_force
-    const double sqrt_h = std::sqrt(h);
-    const double Fn = b.kn[m] * h * sqrt_h;  // Eq. 3
-    const double vn = vcx * nx + vcy * ny + vcz * nz;
-    double h_quarter = 0.0;
-    double F_normal = Fn;
-    if constexpr (Damping) {
-      h_quarter = std::sqrt(sqrt_h);
-      F_normal -= b.gamma0[m] * h_quarter * vn;
-    }
-    double Ftx = 0.0, Fty = 0.0, Ftz = 0.0;
-    if constexpr (Friction) {
-      const double vtx = vcx - vn * nx, vty = vcy - vn * ny, vtz = vcz - vn * nz;
-      const double kt = b.kt0[m] * sqrt_h;  // Eq. 5
-      const double gamma_t = Damping ? b.gamma_t0[m] * h_quarter : 0.0;
-      Ftx = -kt * sx - gamma_t * vtx;
-      Fty = -kt * sy - gamma_t * vty;
-      Ftz = -kt * sz - gamma_t * vtz;
-      const double Ft2 = Ftx * Ftx + Fty * Fty + Ftz * Ftz;
-      const double mu_Fn = b.mu[m] * Fn;
-      const bool slide = Ft2 > mu_Fn * mu_Fn;  // Coulomb limit: slide at mu Fn
-      const double scale = slide ? mu_Fn / std::sqrt(Ft2) : 1.0;
-      Ftx *= scale;
-      Fty *= scale;
-      Ftz *= scale;
-      b.sx[m] = slide ? -Ftx / kt : sx;
-      b.sy[m] = slide ? -Fty / kt : sy;
-      b.sz[m] = slide ? -Ftz / kt : sz;
-    }
-    b.Fx[m] = F_normal * nx + Ftx;
-    b.Fy[m] = F_normal * ny + Fty;
-    b.Fz[m] = F_normal * nz + Ftz;
+  }
+}
+
+#define SOFTPACK_AVX512 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq")))
+
+// Eight doubles base[idx], lanes outside `live` zero.
+SOFTPACK_AVX512 [[gnu::always_inline]] inline __m512d gather8(const double* base, __m256i idx, __mmask8 live) {
+  return _mm512_mask_i32gather_pd(_mm512_setzero_pd(), live, idx, base, 8);
+}
+
+// The same copy as gather_portable, eight contacts per instruction. Vec3 is three doubles, so
+// component c of sphere i is at 3i + c; a pair's i and j are ints 4k and 4k + 1 of the list, its
+// r_sum double 2k + 1; the constants of pair k are doubles 5k to 5k + 4, its spring 3k to 3k + 2.
+template <bool Friction, bool Rotation>
+SOFTPACK_AVX512 void gather_avx512(Batch& b, const int* closed, int n, const PairList& list, const PairForceArrays& a) {
+  static_assert(sizeof(ContactCoefficients) == 5 * sizeof(double) && sizeof(Vec3) == 3 * sizeof(double));
+  const int* const pair_ints = reinterpret_cast<const int*>(list.pairs.data());
+  const double* const pair_doubles = reinterpret_cast<const double*>(list.pairs.data());
+  const double* const constants = reinterpret_cast<const double*>(list.k.data());
+  const double* const x = a.x->data();
+  const double* const v = a.v->data();
+  const __m256i one = _mm256_set1_epi32(1);
+  for (int m = 0; m < n; m += 8) {
+    const __mmask8 live = n - m >= 8 ? __mmask8{0xff} : static_cast<__mmask8>((1u << (n - m)) - 1u);
+    const __m256i k = _mm256_maskz_loadu_epi32(live, closed + m);
+    const __m256i k2 = _mm256_add_epi32(k, k), k4 = _mm256_add_epi32(k2, k2);
+    const __m256i i = _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), live, k4, pair_ints, 4);
+    const __m256i j = _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), live, _mm256_add_epi32(k4, one), pair_ints, 4);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(b.i + m), i);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(b.j + m), j);
+    const __m256i i3 = _mm256_add_epi32(i, _mm256_add_epi32(i, i)), j3 = _mm256_add_epi32(j, _mm256_add_epi32(j, j));
+    _mm512_store_pd(b.dx + m, _mm512_sub_pd(gather8(x, i3, live), gather8(x, j3, live)));
+    _mm512_store_pd(b.dy + m, _mm512_sub_pd(gather8(x + 1, i3, live), gather8(x + 1, j3, live)));
+    _mm512_store_pd(b.dz + m, _mm512_sub_pd(gather8(x + 2, i3, live), gather8(x + 2, j3, live)));
+    _mm512_store_pd(b.vx + m, _mm512_sub_pd(gather8(v, i3, live), gather8(v, j3, live)));
+    _mm512_store_pd(b.vy + m, _mm512_sub_pd(gather8(v + 1, i3, live), gather8(v + 1, j3, live)));
+    _mm512_store_pd(b.vz + m, _mm512_sub_pd(gather8(v + 2, i3, live), gather8(v + 2, j3, live)));
+    _mm512_store_pd(b.r_sum + m, gather8(pair_doubles + 1, k2, live));
+    const __m256i k5 = _mm256_add_epi32(k4, k);
+    _mm512_store_pd(b.kn + m, gather8(constants, k5, live));
+    _mm512_store_pd(b.kt0 + m, gather8(constants + 1, k5, live));
+    _mm512_store_pd(b.gamma0 + m, gather8(constants + 2, k5, live));
+    _mm512_store_pd(b.gamma_t0 + m, gather8(constants + 3, k5, live));
+    _mm512_store_pd(b.mu + m, gather8(constants + 4, k5, live));
     if constexpr (Rotation) {
-      b.nFx[m] = ny * Ftz - nz * Fty;
-      b.nFy[m] = nz * Ftx - nx * Ftz;
-      b.nFz[m] = nx * Fty - ny * Ftx;
-      b.ai[m] = ai;
-      b.aj[m] = aj;
+      const double* const w = a.w->data();
+      _mm512_store_pd(b.wix + m, gather8(w, i3, live));
+      _mm512_store_pd(b.wiy + m, gather8(w + 1, i3, live));
+      _mm512_store_pd(b.wiz + m, gather8(w + 2, i3, live));
+      _mm512_store_pd(b.wjx + m, gather8(w, j3, live));
+      _mm512_store_pd(b.wjy + m, gather8(w + 1, j3, live));
+      _mm512_store_pd(b.wjz + m, gather8(w + 2, j3, live));
+      _mm512_store_pd(b.ri + m, gather8(a.r, i, live));
+      _mm512_store_pd(b.rj + m, gather8(a.r, j, live));
+    }
+    if constexpr (Friction) {
+      const double* const spring = list.spring.data()->data();
+      const __m256i k3 = _mm256_add_epi32(k2, k);
+      _mm512_store_pd(b.sx + m, gather8(spring, k3, live));
+      _mm512_store_pd(b.sy + m, gather8(spring + 1, k3, live));
+      _mm512_store_pd(b.sz + m, gather8(spring + 2, k3, live));
     }
   }
 }
 
 template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
 [[gnu::always_inline]] inline void run(PairList& list, const PairForceArrays& a, double dt, std::vector<int>& closed) {
-  // Pick out the touching pairs without a branch (about half of a Verlet list touches, at
-  // random); open pairs have their spring cleared.
-  const std::size_t npairs = list.pairs.size();
-  closed.resize(npairs);
-  std::size_t nclosed = 0;
-  for (std::size_t k = 0; k < npairs; ++k) {
-    const PairEntry& e = list.pairs[k];
-    const bool touching = (a.x[e.i] - a.x[e.j]).squaredNorm() < e.r_sum * e.r_sum;
-    closed[nclosed] = static_cast<int>(k);
-    nclosed += touching ? 1 : 0;
-    if constexpr (Friction) list.spring[k] *= touching ? 1.0 : 0.0;  // open: spring cleared
-  }
+  closed.resize(list.pairs.size());
+  const std::size_t nclosed = select_touching_pairs(list, a.x, Friction, closed.data());
+  const bool avx512 = detail::avx512_in_use();
   Batch b;
   for (std::size_t base = 0; base < nclosed; base += kBatch) {
     const int n = static_cast<int>(std::min<std::size_t>(kBatch, nclosed - base));
-    for (int m = 0; m < n; ++m) {
-      const int k = closed[base + m];
-      const PairEntry& e = list.pairs[k];
-      const Vec3 d = a.x[e.i] - a.x[e.j], v = a.v[e.i] - a.v[e.j];
-      b.dx[m] = d.x(), b.dy[m] = d.y(), b.dz[m] = d.z();
-      b.vx[m] = v.x(), b.vy[m] = v.y(), b.vz[m] = v.z();
-      const ContactCoefficients& c = list.k[k];
-      b.r_sum[m] = e.r_sum, b.kn[m] = c.kn, b.kt0[m] = c.kt0;
-      b.gamma0[m] = c.gamma0, b.gamma_t0[m] = c.gamma_t0, b.mu[m] = c.mu;
-      if constexpr (Rotation) {
-        b.wix[m] = a.w[e.i].x(), b.wiy[m] = a.w[e.i].y(), b.wiz[m] = a.w[e.i].z();
-        b.wjx[m] = a.w[e.j].x(), b.wjy[m] = a.w[e.j].y(), b.wjz[m] = a.w[e.j].z();
-        b.ri[m] = a.r[e.i], b.rj[m] = a.r[e.j];
-      }
-      if constexpr (Friction) {
-        const Vec3& s = list.spring[k];
-        b.sx[m] = s.x(), b.sy[m] = s.y(), b.sz[m] = s.z();
-      }
-    }
+    if (avx512) gather_avx512<Friction, Rotation>(b, closed.data() + base, n, list, a);
+    else gather_portable<Friction, Rotation>(b, closed.data() + base, n, list, a);
     compute<Friction, Damping, Rotation, Synchronized>(b, n, dt);
     for (int m = 0; m < n; ++m) {
-      const int k = closed[base + m];
-      const PairEntry& e = list.pairs[k];
+      const int i = b.i[m], j = b.j[m];
       const Vec3 F(b.Fx[m], b.Fy[m], b.Fz[m]);
-      a.F[e.i] += F;
-      a.F[e.j] -= F;
+      a.F[i] += F;
+      a.F[j] -= F;
       if constexpr (Rotation) {
         const Vec3 nxFt(b.nFx[m], b.nFy[m], b.nFz[m]);
-        a.T[e.i] -= b.ai[m] * nxFt;
-        a.T[e.j] -= b.aj[m] * nxFt;
+        a.T[i] -= b.ai[m] * nxFt;
+        a.T[j] -= b.aj[m] * nxFt;
       }
-      if constexpr (Friction) list.spring[k] = Vec3(b.sx[m], b.sy[m], b.sz[m]);
+      if constexpr (Friction) list.spring[closed[base + m]] = Vec3(b.new_sx[m], b.new_sy[m], b.new_sz[m]);
     }
   }
 }

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "contact/contact_force.hpp"
 #include "sim/pair_forces.hpp"
+#include "sim/touching_pairs.hpp"
 #include "support/scenes.hpp"
 
 namespace softpack {
@@ -146,6 +148,92 @@ INSTANTIATE_TEST_SUITE_P(Effects, PairForces, ::testing::Values(0, 4, 8, 9, 10, 
                            if (b & 1) name += "_synchronized";
                            return name;
                          });
+
+
+// The AVX-512 paths (touching-pair selection, batch gathers) and the portable ones must give
+// the same bits, step after step: pairs open and close, springs slide, tilt and are cleared.
+class PairPaths : public ::testing::TestWithParam<int> {};  // bits as above
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+TEST_P(PairPaths, Avx512AndPortablePathsGiveTheSameBits) {
+  if (!detail::avx512_in_use()) GTEST_SKIP() << "this processor has no AVX-512: only the portable path runs here";
+  const int bits = GetParam();
+  const PairForceEffects fx{(bits & 8) != 0, (bits & 4) != 0, (bits & 2) != 0, (bits & 1) != 0};
+  World fast = random_world(fx.friction), portable = fast;
+  testing::Random rng(5);
+  std::vector<int> scratch_fast, scratch_portable;
+  std::size_t opened = 0, closed_again = 0;
+  for (int step = 0; step < 20; ++step) {
+    for (World* wd : {&fast, &portable}) {
+      detail::allow_avx512(wd == &fast);
+      accumulate_pair_forces(wd->list, PairForceArrays{wd->x.data(), wd->v.data(), fx.rotation ? wd->w.data() : nullptr,
+                                                       wd->r.data(), wd->F.data(), fx.rotation ? wd->T.data() : nullptr},
+                             fx, 1e-5, wd == &fast ? scratch_fast : scratch_portable);
+    }
+    detail::allow_avx512(true);
+    ASSERT_TRUE(same_bits(fast.F, portable.F)) << "step " << step;
+    ASSERT_TRUE(same_bits(fast.T, portable.T)) << "step " << step;
+    ASSERT_TRUE(same_bits(fast.list.spring, portable.list.spring)) << "step " << step;
+    // Jiggle every sphere by up to 2% of the smallest radius, the same way in both worlds.
+    std::vector<bool> touching_before;
+    for (const PairEntry& e : fast.list.pairs) touching_before.push_back((fast.x[e.i] - fast.x[e.j]).norm() < e.r_sum);
+    for (std::size_t i = 0; i < fast.x.size(); ++i) {
+      const Vec3 dx = rng.in_box(1e-5);
+      fast.x[i] += dx;
+      portable.x[i] += dx;
+    }
+    for (std::size_t k = 0; k < fast.list.pairs.size(); ++k) {
+      const PairEntry& e = fast.list.pairs[k];
+      const bool now = (fast.x[e.i] - fast.x[e.j]).norm() < e.r_sum;
+      opened += touching_before[k] && !now;
+      closed_again += !touching_before[k] && now;
+    }
+  }
+  EXPECT_GT(opened, 10u);  // the test saw contacts open and close
+  EXPECT_GT(closed_again, 10u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Effects, PairPaths, ::testing::Values(0, 4, 8, 9, 10, 11, 12, 13, 14, 15),
+                         [](const auto& info) {
+                           const int b = info.param;
+                           std::string name = (b & 8) ? "friction" : "frictionless";
+                           if (b & 4) name += "_damped";
+                           if (b & 2) name += "_rotation";
+                           if (b & 1) name += "_synchronized";
+                           return name;
+                         });
+
+// The selection: exactly the pairs closer than Ri + Rj, in list order; the springs of the pairs
+// that do not touch are cleared, loaded or not, whatever the flags said before a replace().
+TEST(TouchingPairs, SelectsTheTouchingPairsAndClearsTheSpringsOfOpenOnes) {
+  World wd = random_world(true);
+  for (const bool avx512 : {false, true}) {
+    if (avx512 && !detail::avx512_in_use()) continue;
+    World w = wd;
+    w.list.spring_live.assign(w.list.pairs.size(), 0);  // stale flags, as a hand-made list might carry...
+    w.list.replace(std::vector<PairEntry>(w.list.pairs), true);  // ...until replace() forgets them
+    for (auto& s : w.list.spring) s = Vec3(1e-6, -2e-6, 3e-6);
+    std::vector<int> closed(w.list.pairs.size());
+    const std::size_t n = avx512 ? detail::select_touching_pairs_avx512(w.list, w.x.data(), true, closed.data())
+                                 : detail::select_touching_pairs_portable(w.list, w.x.data(), true, closed.data());
+    std::vector<int> expected;
+    for (std::size_t k = 0; k < w.list.pairs.size(); ++k) {
+      const PairEntry& e = w.list.pairs[k];
+      const bool touching = (w.x[e.i] - w.x[e.j]).squaredNorm() < e.r_sum * e.r_sum;
+      if (touching) expected.push_back(static_cast<int>(k));
+      EXPECT_EQ(w.list.spring[k] == Vec3::Zero(), !touching) << "pair " << k;
+      EXPECT_EQ(w.list.spring_live[k], touching ? 1 : 0) << "pair " << k;
+    }
+    ASSERT_EQ(n, expected.size()) << (avx512 ? "AVX-512" : "portable");
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), closed.begin())) << (avx512 ? "AVX-512" : "portable");
+    EXPECT_GT(n, 100u);
+    EXPECT_LT(n, w.list.pairs.size());
+  }
+}
 
 }  // namespace
 }  // namespace softpack
