@@ -28,7 +28,11 @@ struct Batch {
   alignas(64) double nFx[kBatch], nFy[kBatch], nFz[kBatch];  // n x Ft
   alignas(64) double ai[kBatch], aj[kBatch];                 // branch lengths
   alignas(64) double new_sx[kBatch], new_sy[kBatch], new_sz[kBatch];  // springs after the step
-  alignas(64) double slow[kBatch];  // lanes the common case does not cover (see compute)
+  alignas(64) double slow[kBatch];
+  // The Coulomb limit, deferred by the common case (slide_group): the unscaled tangential force,
+  // what scaling it needs, and whether the contact slides (1) or sticks (0).
+  alignas(64) double Ftx[kBatch], Fty[kBatch], Ftz[kBatch], Ft2[kBatch], mu_Fn[kBatch], kt[kBatch];
+  alignas(64) double F_normal[kBatch], nx[kBatch], ny[kBatch], nz[kBatch], slide[kBatch];  // lanes the common case does not cover (see compute)
 };
 
 // tsuji::rotate_into_tangent_plane for one lane, without branches. The exact restoring factor
@@ -130,13 +134,19 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized, bool Co
     const double Ft2 = Ftx * Ftx + Fty * Fty + Ftz * Ftz;
     const double mu_Fn = b.mu[m] * Fn;
     const bool slide = Ft2 > mu_Fn * mu_Fn;  // Coulomb limit: slide at mu Fn
-    const double scale = slide ? mu_Fn / std::sqrt(Ft2) : 1.0;
-    Ftx *= scale;
-    Fty *= scale;
-    Ftz *= scale;
-    sx = slide ? -Ftx / kt : sx;
-    sy = slide ? -Fty / kt : sy;
-    sz = slide ? -Ftz / kt : sz;
+    if constexpr (Common) {  // sticking assumed here; slide_group() corrects the lanes that slide
+      b.slide[m] = slide ? 1.0 : 0.0;
+      b.Ftx[m] = Ftx, b.Fty[m] = Fty, b.Ftz[m] = Ftz, b.Ft2[m] = Ft2, b.mu_Fn[m] = mu_Fn, b.kt[m] = kt;
+      b.F_normal[m] = F_normal, b.nx[m] = nx, b.ny[m] = ny, b.nz[m] = nz;
+    } else {
+      const double scale = slide ? mu_Fn / std::sqrt(Ft2) : 1.0;
+      Ftx *= scale;
+      Fty *= scale;
+      Ftz *= scale;
+      sx = slide ? -Ftx / kt : sx;
+      sy = slide ? -Fty / kt : sy;
+      sz = slide ? -Ftz / kt : sz;
+    }
     b.new_sx[m] = sx;
     b.new_sy[m] = sy;
     b.new_sz[m] = sz;
@@ -159,14 +169,49 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized, bool Co
   for (int m = 0; m < n; ++m) lane<Friction, Damping, Rotation, Synchronized, Common>(b, m, dt);
 }
 
-// Forces of one batch. With friction, the common case first; its slow lanes are redone one by
-// one, or, when they are many (a sliding packing), the whole batch again in full.
+// The Coulomb limit for lanes [begin, end) of a batch the common case went through: the
+// operations lane<..., false> does after the spring, on what the common case stored. A lane that
+// sticks gets the bits it has (its scale is 1).
+template <bool Rotation>
+[[gnu::always_inline]] inline void slide_group(Batch& b, int begin, int end) {
+  for (int m = begin; m < end; ++m) {
+    const bool slide = b.slide[m] != 0.0;
+    const double scale = slide ? b.mu_Fn[m] / std::sqrt(b.Ft2[m]) : 1.0;
+    const double Ftx = b.Ftx[m] * scale, Fty = b.Fty[m] * scale, Ftz = b.Ftz[m] * scale;
+    const double kt = b.kt[m];
+    b.new_sx[m] = slide ? -Ftx / kt : b.new_sx[m];
+    b.new_sy[m] = slide ? -Fty / kt : b.new_sy[m];
+    b.new_sz[m] = slide ? -Ftz / kt : b.new_sz[m];
+    const double nx = b.nx[m], ny = b.ny[m], nz = b.nz[m];
+    b.Fx[m] = b.F_normal[m] * nx + Ftx;
+    b.Fy[m] = b.F_normal[m] * ny + Fty;
+    b.Fz[m] = b.F_normal[m] * nz + Ftz;
+    if constexpr (Rotation) {
+      b.nFx[m] = ny * Ftz - nz * Fty;
+      b.nFy[m] = nz * Ftx - nx * Ftz;
+      b.nFz[m] = nx * Fty - ny * Ftx;
+    }
+  }
+}
+
+// Forces of one batch. With friction, the common case first; then the Coulomb limit for each
+// group of eight lanes (one AVX-512 vector) in which a contact slides; then the rare lanes whose
+// spring leans out of the tangent plane, one by one, or, when they are many, the whole batch.
 template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
 [[gnu::always_inline]] inline void compute(Batch& b, int n, double dt) {
   if constexpr (!Friction) {
     compute_all<Friction, Damping, Rotation, Synchronized, false>(b, n, dt);
   } else {
     compute_all<Friction, Damping, Rotation, Synchronized, true>(b, n, dt);
+    constexpr int kGroup = 8;
+    for (int begin = 0; begin < n; begin += kGroup) {
+      const int end = std::min(begin + kGroup, n);
+      bool any = false;
+      for (int m = begin; m < end; ++m) any |= b.slide[m] != 0.0;
+      if (!any) continue;
+      if (end - begin == kGroup) slide_group<Rotation>(b, begin, begin + kGroup);  // a fixed count: one vector
+      else slide_group<Rotation>(b, begin, end);
+    }
     int nslow = 0;
     for (int m = 0; m < n; ++m) nslow += b.slow[m] != 0.0 ? 1 : 0;
     if (nslow == 0) return;
