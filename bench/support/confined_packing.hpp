@@ -25,7 +25,7 @@ struct BenchParameters {
   double restitution = 0.5;
   double safety = 0.2;          ///< dt = safety * Rayleigh time
   double skin = 1.0;            ///< Verlet skin / r_min
-  double level_ratio = 4.0;     ///< hierarchical grid (measured best at Pi = 10..1000)
+  double level_ratio = 2.0;     ///< hierarchical grid: the best of 2, 3, 4, 6 for this scene (docs/physics.md §8)
 };
 
 /// Makes (or reads from `cache`, when it exists) a packing of about n spheres.

@@ -59,19 +59,56 @@ TEST_P(GridMatchesBruteForce, OnRandomConfigurations) {
       r.push_back(p.r);
     }
     const double skin = c.skin_fraction * r_min;
-    HierarchicalGrid grid;
-    grid.build(x, r, skin, c.level_ratio);
-    PairSet found;
-    std::size_t reports = 0;
-    grid.for_each_pair([&](int i, int j) {
-      found.insert({std::min(i, j), std::max(i, j)});
-      ++reports;
-    });
     const PairSet expected = brute_force(x, r, skin);
-    EXPECT_EQ(reports, found.size()) << "a pair was reported twice";
-    EXPECT_EQ(found, expected) << "polydispersity " << c.polydispersity << " seed " << seed;
     EXPECT_GT(expected.size(), 100u);
+    // Both indexings: automatic (this compact cloud: dense levels, cross-level pairs searched
+    // from the side the cost estimate picks) and every level hashed, searched from the fine side.
+    for (const auto indexing : {HierarchicalGrid::Indexing::automatic, HierarchicalGrid::Indexing::hashed}) {
+      HierarchicalGrid grid;
+      grid.build(x, r, skin, c.level_ratio, indexing);
+      PairSet found;
+      std::size_t reports = 0;
+      grid.for_each_pair([&](int i, int j) {
+        found.insert({std::min(i, j), std::max(i, j)});
+        ++reports;
+      });
+      const bool hashed = indexing == HierarchicalGrid::Indexing::hashed;
+      EXPECT_EQ(reports, found.size()) << "a pair was reported twice" << (hashed ? " (hashed)" : "");
+      EXPECT_EQ(found, expected) << "polydispersity " << c.polydispersity << " seed " << seed << (hashed ? " (hashed)" : "");
+      for (std::size_t l = 0; l < grid.level_count(); ++l)
+        if (hashed) EXPECT_FALSE(grid.level_is_dense(l));
+    }
   }
+}
+
+// The two search directions and the dense indexing are really used where they pay: a power law
+// with few big spheres searches their pairs with the small ones from the big side.
+TEST(HierarchicalGrid, SparseCoarseLevelsAreSearchedFromTheCoarseSide) {
+  testing::Random rng(7);
+  const double r_max = 0.05, r_min = r_max / 100;
+  auto cloud = testing::random_cloud(rng, 3000, 0.5, r_min, r_max, 3.5);
+  double volume = 0.0;
+  for (const auto& p : cloud) volume += 4.0 / 3.0 * std::numbers::pi * std::pow(p.r, 3);
+  const double side = std::cbrt(volume / 0.5);
+  std::vector<Vec3> x;
+  std::vector<double> r;
+  for (const auto& p : cloud) {
+    x.push_back(p.x * side);
+    r.push_back(p.r);
+  }
+  HierarchicalGrid grid;
+  grid.build(x, r, 0.2 * r_min, 4.0);
+  ASSERT_GE(grid.level_count(), 3u);
+  std::size_t dense = 0, from_coarse = 0;
+  for (std::size_t f = 0; f < grid.level_count(); ++f) {
+    dense += grid.level_is_dense(f) ? 1 : 0;
+    for (std::size_t c = f + 1; c < grid.level_count(); ++c) from_coarse += grid.searched_from_coarse(f, c) ? 1 : 0;
+  }
+  EXPECT_GE(dense, 2u);
+  EXPECT_GE(from_coarse, 1u);
+  PairSet found;
+  grid.for_each_pair([&](int i, int j) { found.insert({std::min(i, j), std::max(i, j)}); });
+  EXPECT_EQ(found, brute_force(x, r, 0.2 * r_min));
 }
 
 INSTANTIATE_TEST_SUITE_P(Polydispersity, GridMatchesBruteForce,
