@@ -2,6 +2,8 @@
 //  * Confined/{frictional,frictionless}: velocity-Verlet steps of a ~5000-sphere packing
 //    (polydispersity 10) compressed in a shell, Hertz + Tsuji friction + damping + rotation,
 //    or Hertz + damping only; counters: particle steps and contacts per second;
+//  * SameState/{frictional,frictionless}: the same first steps from the same state, for the
+//    price of friction on identical contacts;
 //  * ContactDetection/Pi: hierarchical-grid neighbour search (build + every pair) per sphere
 //    at equal N and solid fraction for polydispersity 1, 10, 100, 1000.
 #include <benchmark/benchmark.h>
@@ -46,6 +48,38 @@ void Confined(benchmark::State& state, bool friction) {
 }
 BENCHMARK_CAPTURE(Confined, frictional, true)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK_CAPTURE(Confined, frictionless, false)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+// What friction costs on identical contacts: the first steps from the packing's initial state,
+// restored (untimed) before every iteration. Confined and the whole runs of `make bench` let each
+// scene evolve, and from this jammed frictional packing the frictionless one flows at once: its
+// lists are rebuilt every ~7 steps at first and 86 times in 2000 steps, against 14, so those
+// compare different work. Here both scenes step the same spheres with the same contacts, from
+// lists built once, for fewer steps than the first rebuild takes (rebuilds_per_step must be 0).
+// step() rather than run_steps(): no watchdog check at the end of each iteration.
+void SameState(benchmark::State& state, bool friction) {
+  Simulation sim(bench::bench_scene(packing(), bench::BenchParameters{}, friction));
+  const SimulationState start = sim.state();
+  const long steps = 5;
+  double contacts = 0.0;
+  long rebuilds = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    sim.restore(start);
+    const long before = sim.neighbour_rebuilds();
+    state.ResumeTiming();
+    for (long s = 0; s < steps; ++s) sim.step();
+    state.PauseTiming();
+    rebuilds += sim.neighbour_rebuilds() - before;
+    contacts += static_cast<double>(sim.measure().contacts) * steps;
+    state.ResumeTiming();
+  }
+  const double n = static_cast<double>(sim.particles().size());
+  state.counters["particle_steps_per_s"] = benchmark::Counter(n * steps * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["contacts"] = contacts / (steps * state.iterations());
+  state.counters["rebuilds_per_step"] = static_cast<double>(rebuilds) / (steps * state.iterations());
+}
+BENCHMARK_CAPTURE(SameState, frictional, true)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK_CAPTURE(SameState, frictionless, false)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 // About N spheres from the power law b = 3.5 on [r_max / Pi, r_max], placed without overlap
 // (random sequential addition) in a ball sized for a solid fraction of 0.30, whatever Pi.

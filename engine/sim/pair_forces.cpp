@@ -221,8 +221,8 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
   }
 }
 
-// Copies the contacts closed[0..n) into the batch, one by one.
-template <bool Friction, bool Rotation>
+// Copies the contacts closed[0..n) into the batch, one by one: what the declared effects read.
+template <bool Friction, bool Damping, bool Rotation>
 [[gnu::always_inline]] inline void gather_portable(Batch& b, const int* closed, int n, const PairList& list,
                                                    const PairForceArrays& a) {
   for (int m = 0; m < n; ++m) {
@@ -233,8 +233,10 @@ template <bool Friction, bool Rotation>
     b.dx[m] = d.x(), b.dy[m] = d.y(), b.dz[m] = d.z();
     b.vx[m] = v.x(), b.vy[m] = v.y(), b.vz[m] = v.z();
     const ContactCoefficients& c = list.k[k];
-    b.r_sum[m] = e.r_sum, b.kn[m] = c.kn, b.kt0[m] = c.kt0;
-    b.gamma0[m] = c.gamma0, b.gamma_t0[m] = c.gamma_t0, b.mu[m] = c.mu;
+    b.r_sum[m] = e.r_sum, b.kn[m] = c.kn;
+    if constexpr (Damping) b.gamma0[m] = c.gamma0;
+    if constexpr (Friction) b.kt0[m] = c.kt0, b.mu[m] = c.mu;
+    if constexpr (Friction && Damping) b.gamma_t0[m] = c.gamma_t0;
     if constexpr (Rotation) {
       b.wix[m] = a.w[e.i].x(), b.wiy[m] = a.w[e.i].y(), b.wiz[m] = a.w[e.i].z();
       b.wjx[m] = a.w[e.j].x(), b.wjy[m] = a.w[e.j].y(), b.wjz[m] = a.w[e.j].z();
@@ -257,7 +259,7 @@ SOFTPACK_AVX512 [[gnu::always_inline]] inline __m512d gather8(const double* base
 // The same copy as gather_portable, eight contacts per instruction. Vec3 is three doubles, so
 // component c of sphere i is at 3i + c; a pair's i and j are ints 4k and 4k + 1 of the list, its
 // r_sum double 2k + 1; the constants of pair k are doubles 5k to 5k + 4, its spring 3k to 3k + 2.
-template <bool Friction, bool Rotation>
+template <bool Friction, bool Damping, bool Rotation>
 SOFTPACK_AVX512 void gather_avx512(Batch& b, const int* closed, int n, const PairList& list, const PairForceArrays& a) {
   static_assert(sizeof(ContactCoefficients) == 5 * sizeof(double) && sizeof(Vec3) == 3 * sizeof(double));
   const int* const pair_ints = reinterpret_cast<const int*>(list.pairs.data());
@@ -284,10 +286,12 @@ SOFTPACK_AVX512 void gather_avx512(Batch& b, const int* closed, int n, const Pai
     _mm512_store_pd(b.r_sum + m, gather8(pair_doubles + 1, k2, live));
     const __m256i k5 = _mm256_add_epi32(k4, k);
     _mm512_store_pd(b.kn + m, gather8(constants, k5, live));
-    _mm512_store_pd(b.kt0 + m, gather8(constants + 1, k5, live));
-    _mm512_store_pd(b.gamma0 + m, gather8(constants + 2, k5, live));
-    _mm512_store_pd(b.gamma_t0 + m, gather8(constants + 3, k5, live));
-    _mm512_store_pd(b.mu + m, gather8(constants + 4, k5, live));
+    if constexpr (Damping) _mm512_store_pd(b.gamma0 + m, gather8(constants + 2, k5, live));
+    if constexpr (Friction) {
+      _mm512_store_pd(b.kt0 + m, gather8(constants + 1, k5, live));
+      _mm512_store_pd(b.mu + m, gather8(constants + 4, k5, live));
+    }
+    if constexpr (Friction && Damping) _mm512_store_pd(b.gamma_t0 + m, gather8(constants + 3, k5, live));
     if constexpr (Rotation) {
       const double* const w = a.w->data();
       _mm512_store_pd(b.wix + m, gather8(w, i3, live));
@@ -317,8 +321,8 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
   Batch b;
   for (std::size_t base = 0; base < nclosed; base += kBatch) {
     const int n = static_cast<int>(std::min<std::size_t>(kBatch, nclosed - base));
-    if (avx512) gather_avx512<Friction, Rotation>(b, closed.data() + base, n, list, a);
-    else gather_portable<Friction, Rotation>(b, closed.data() + base, n, list, a);
+    if (avx512) gather_avx512<Friction, Damping, Rotation>(b, closed.data() + base, n, list, a);
+    else gather_portable<Friction, Damping, Rotation>(b, closed.data() + base, n, list, a);
     compute<Friction, Damping, Rotation, Synchronized>(b, n, dt);
     for (int m = 0; m < n; ++m) {
       const int i = b.i[m], j = b.j[m];
