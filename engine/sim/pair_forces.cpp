@@ -1,5 +1,6 @@
 #include "sim/pair_forces.hpp"
 
+#include "core/cpu_features.hpp"
 #include "sim/touching_pairs.hpp"
 
 #include <immintrin.h>
@@ -317,7 +318,7 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
 [[gnu::always_inline]] inline void run(PairList& list, const PairForceArrays& a, double dt, std::vector<int>& closed) {
   closed.resize(list.pairs.size());
   const std::size_t nclosed = select_touching_pairs(list, a.x, Friction, closed.data());
-  const bool avx512 = detail::avx512_in_use();
+  const bool avx512 = cpu::avx512_in_use();
   Batch b;
   for (std::size_t base = 0; base < nclosed; base += kBatch) {
     const int n = static_cast<int>(std::min<std::size_t>(kBatch, nclosed - base));

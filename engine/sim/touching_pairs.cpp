@@ -1,8 +1,9 @@
 #include "sim/touching_pairs.hpp"
 
+#include "core/cpu_features.hpp"
+
 #include <immintrin.h>
 
-#include <atomic>
 #include <bit>
 #include <cstdint>
 #include <cstddef>
@@ -45,22 +46,6 @@ std::size_t select_touching_pairs_portable(PairList& list, const Vec3* x, bool f
   return select_range_portable(list, x, friction, closed, 0, list.pairs.size(), 0);
 }
 
-namespace {
-std::atomic<bool> avx512_allowed{true};
-
-bool avx512_present() {
-  __builtin_cpu_init();  // may run before the library's own initialisation
-  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
-         __builtin_cpu_supports("avx512dq");
-}
-}  // namespace
-
-bool avx512_in_use() {
-  static const bool present = avx512_present();
-  return present && avx512_allowed.load(std::memory_order_relaxed);
-}
-
-void allow_avx512(bool allowed) { avx512_allowed.store(allowed, std::memory_order_relaxed); }
 
 // Eight pairs at a time. PairEntry is {int i, int j, double r_sum}, 16 bytes: two 512-bit
 // loads hold eight entries, which permutes split into i, j and r_sum.
@@ -108,7 +93,7 @@ __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq"))) std::size_t select
 }  // namespace detail
 
 std::size_t select_touching_pairs(PairList& list, const Vec3* x, bool friction, int* closed) {
-  return detail::avx512_in_use() ? detail::select_touching_pairs_avx512(list, x, friction, closed)
+  return cpu::avx512_in_use() ? detail::select_touching_pairs_avx512(list, x, friction, closed)
                                     : detail::select_touching_pairs_portable(list, x, friction, closed);
 }
 

@@ -21,13 +21,8 @@ std::size_t select_touching_pairs(PairList& list, const Vec3* x, bool friction, 
 
 namespace detail {
 std::size_t select_touching_pairs_portable(PairList& list, const Vec3* x, bool friction, int* closed);
-/// Requires avx512_in_use().
+/// Requires cpu::avx512_in_use() (core/cpu_features.hpp).
 std::size_t select_touching_pairs_avx512(PairList& list, const Vec3* x, bool friction, int* closed);
-/// Whether the pair loop takes its AVX-512 paths: the processor has AVX-512 (F, VL, BW, DQ)
-/// and no test switched them off.
-bool avx512_in_use();
-/// Tests run both paths on one machine: false makes avx512_in_use() false; true restores it.
-void allow_avx512(bool allowed);
 }  // namespace detail
 
 }  // namespace softpack

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "contact/contact_force.hpp"
+#include "core/cpu_features.hpp"
 #include "sim/pair_forces.hpp"
 #include "sim/touching_pairs.hpp"
 #include "support/scenes.hpp"
@@ -160,7 +161,7 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
 }
 
 TEST_P(PairPaths, Avx512AndPortablePathsGiveTheSameBits) {
-  if (!detail::avx512_in_use()) GTEST_SKIP() << "this processor has no AVX-512: only the portable path runs here";
+  if (!cpu::avx512_in_use()) GTEST_SKIP() << "this processor has no AVX-512: only the portable path runs here";
   const int bits = GetParam();
   const PairForceEffects fx{(bits & 8) != 0, (bits & 4) != 0, (bits & 2) != 0, (bits & 1) != 0};
   World fast = random_world(fx.friction), portable = fast;
@@ -169,12 +170,12 @@ TEST_P(PairPaths, Avx512AndPortablePathsGiveTheSameBits) {
   std::size_t opened = 0, closed_again = 0;
   for (int step = 0; step < 20; ++step) {
     for (World* wd : {&fast, &portable}) {
-      detail::allow_avx512(wd == &fast);
+      cpu::allow_avx512(wd == &fast);
       accumulate_pair_forces(wd->list, PairForceArrays{wd->x.data(), wd->v.data(), fx.rotation ? wd->w.data() : nullptr,
                                                        wd->r.data(), wd->F.data(), fx.rotation ? wd->T.data() : nullptr},
                              fx, 1e-5, wd == &fast ? scratch_fast : scratch_portable);
     }
-    detail::allow_avx512(true);
+    cpu::allow_avx512(true);
     ASSERT_TRUE(same_bits(fast.F, portable.F)) << "step " << step;
     ASSERT_TRUE(same_bits(fast.T, portable.T)) << "step " << step;
     ASSERT_TRUE(same_bits(fast.list.spring, portable.list.spring)) << "step " << step;
@@ -212,7 +213,7 @@ INSTANTIATE_TEST_SUITE_P(Effects, PairPaths, ::testing::Values(0, 4, 8, 9, 10, 1
 TEST(TouchingPairs, SelectsTheTouchingPairsAndClearsTheSpringsOfOpenOnes) {
   World wd = random_world(true);
   for (const bool avx512 : {false, true}) {
-    if (avx512 && !detail::avx512_in_use()) continue;
+    if (avx512 && !cpu::avx512_in_use()) continue;
     World w = wd;
     w.list.spring_live.assign(w.list.pairs.size(), 0);  // stale flags, as a hand-made list might carry...
     w.list.replace(std::vector<PairEntry>(w.list.pairs), true);  // ...until replace() forgets them
