@@ -278,7 +278,7 @@ void Simulation::advance_drivers() {
           // HoldGroupDef: the spheres stay where they are, at rest.
         },
         d.def);
-    for (int i : d.members) max_disp2_ = std::max(max_disp2_, (p_.x[i] - x_at_build_[i]).squaredNorm());
+    for (int i : d.members) disp2_.add((p_.x[i] - x_at_build_[i]).squaredNorm());
   }
 }
 
@@ -313,15 +313,16 @@ void Simulation::finish_drivers() {
 // Neighbour lists
 
 void Simulation::update_neighbours() {
-  // A pair's gap shrinks by at most the sum of both displacements since the last build, and a
-  // wall gap by the sphere's plus the wall's: rebuild before either can exceed the skin.
+  // A pair's gap shrinks by at most the sum of both displacements since the last build, at most
+  // the two largest; a wall gap by the sphere's plus the wall's: rebuild before either can
+  // exceed the skin.
   double wall_disp = 0.0;
   for (std::size_t k = 0; k < planes_.size(); ++k)
     wall_disp = std::max(wall_disp, (planes_[k].point - plane_at_build_[k]).norm());
   for (std::size_t k = 0; k < shells_.size(); ++k)
     wall_disp = std::max(wall_disp, (shells_[k].centre - shell_at_build_[k]).norm());
-  const double disp = std::sqrt(max_disp2_);
-  if (rebuild_requested_ || 2.0 * disp >= skin_ || disp + wall_disp >= skin_) {
+  const double disp = std::sqrt(disp2_.first);
+  if (rebuild_requested_ || disp + std::sqrt(disp2_.second) >= skin_ || disp + wall_disp >= skin_) {
     watchdog_.check_positions(*this);  // the grid must not see NaN or infinity
     rebuild_neighbours();
   }
@@ -383,7 +384,7 @@ void Simulation::rebuild_neighbours() {
   for (const auto& pl : planes_) plane_at_build_.push_back(pl.point);
   shell_at_build_.clear();
   for (const auto& s : shells_) shell_at_build_.push_back(s.centre);
-  max_disp2_ = 0.0;
+  disp2_ = {};
   rebuild_requested_ = false;
   ++rebuilds_;
 }
@@ -532,21 +533,21 @@ void Simulation::half_kick() {
   }
 }
 
-// Drift: x += v dt for every free sphere, tracking the largest displacement since the last
-// neighbour build.
+// Drift: x += v dt for every free sphere, noting the two largest displacements since the last
+// neighbour build (driven spheres are added by advance_drivers()).
 void Simulation::drift() {
   const std::size_t n = p_.size();
   const std::uint8_t* const driven = p_.driven.empty() ? nullptr : p_.driven.data();
   Vec3* const x = p_.x.data();
   const Vec3* const v = p_.v.data();
   const Vec3* const x0 = x_at_build_.data();
-  double max_disp2 = max_disp2_;
+  LargestTwo disp2;
   for (std::size_t i = 0; i < n; ++i) {
     if (driven && driven[i]) continue;
     x[i] += dt_ * v[i];
-    max_disp2 = std::max(max_disp2, (x[i] - x0[i]).squaredNorm());
+    disp2.add((x[i] - x0[i]).squaredNorm());
   }
-  max_disp2_ = max_disp2;
+  disp2_ = disp2;
 }
 
 void Simulation::step() {

@@ -182,7 +182,15 @@ class Simulation {
   PairList pairs_;
   std::vector<WallList> plane_lists_, shell_lists_;
   std::vector<Vec3> x_at_build_, plane_at_build_, shell_at_build_;
-  double max_disp2_ = 0.0;
+  /// The two largest squared displacements since the last neighbour build, over the spheres'
+  /// current positions (different spheres): a pair's gap has shrunk by at most their roots' sum.
+  struct LargestTwo {
+    double first = 0.0, second = 0.0;
+    void add(double d2) {
+      if (d2 > first) second = first, first = d2;
+      else if (d2 > second) second = d2;
+    }
+  } disp2_;
   bool rebuild_requested_ = true;
   long rebuilds_ = 0;
 
