@@ -253,7 +253,7 @@ template <bool Friction, bool Damping, bool Rotation>
 #define SOFTPACK_AVX512 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq")))
 
 // Eight doubles base[idx], lanes outside `live` zero.
-SOFTPACK_AVX512 [[gnu::always_inline]] inline __m512d gather8(const double* base, __m256i idx, __mmask8 live) {
+[[gnu::always_inline]] SOFTPACK_AVX512 inline __m512d gather8(const double* base, __m256i idx, __mmask8 live) {
   return _mm512_mask_i32gather_pd(_mm512_setzero_pd(), live, idx, base, 8);
 }
 
