@@ -140,15 +140,19 @@ TEST_P(PairForces, VectorisedLoopMatchesThePerContactRoutine) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Effects, PairForces, ::testing::Values(0, 4, 8, 9, 10, 11, 12, 13, 14, 15),
-                         [](const auto& info) {
-                           const int b = info.param;
-                           std::string name = (b & 8) ? "friction" : "frictionless";
-                           if (b & 4) name += "_damped";
-                           if (b & 2) name += "_rotation";
-                           if (b & 1) name += "_synchronized";
-                           return name;
-                         });
+// The combinations of effects the engine compiles (bits: friction, damping, rotation, sync),
+// named for the test list.
+const auto kEffectCombinations = ::testing::Values(0, 4, 8, 9, 10, 11, 12, 13, 14, 15);
+std::string effects_name(const ::testing::TestParamInfo<int>& info) {
+  const int b = info.param;
+  std::string name = (b & 8) ? "friction" : "frictionless";
+  if (b & 4) name += "_damped";
+  if (b & 2) name += "_rotation";
+  if (b & 1) name += "_synchronized";
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Effects, PairForces, kEffectCombinations, effects_name);
 
 
 // The AVX-512 paths (touching-pair selection, batch gathers) and the portable ones must give
@@ -198,15 +202,7 @@ TEST_P(PairPaths, Avx512AndPortablePathsGiveTheSameBits) {
   EXPECT_GT(closed_again, 10u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Effects, PairPaths, ::testing::Values(0, 4, 8, 9, 10, 11, 12, 13, 14, 15),
-                         [](const auto& info) {
-                           const int b = info.param;
-                           std::string name = (b & 8) ? "friction" : "frictionless";
-                           if (b & 4) name += "_damped";
-                           if (b & 2) name += "_rotation";
-                           if (b & 1) name += "_synchronized";
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Effects, PairPaths, kEffectCombinations, effects_name);
 
 // The selection: exactly the pairs closer than Ri + Rj, in list order; the springs of the pairs
 // that do not touch are cleared, loaded or not, whatever the flags said before a replace().
