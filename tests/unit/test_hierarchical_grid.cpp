@@ -75,8 +75,9 @@ TEST_P(GridMatchesBruteForce, OnRandomConfigurations) {
       const bool hashed = indexing == HierarchicalGrid::Indexing::hashed;
       EXPECT_EQ(reports, found.size()) << "a pair was reported twice" << (hashed ? " (hashed)" : "");
       EXPECT_EQ(found, expected) << "polydispersity " << c.polydispersity << " seed " << seed << (hashed ? " (hashed)" : "");
-      for (std::size_t l = 0; l < grid.level_count(); ++l)
-        if (hashed) EXPECT_FALSE(grid.level_is_dense(l));
+      if (hashed) {
+        for (std::size_t l = 0; l < grid.level_count(); ++l) EXPECT_FALSE(grid.level_is_dense(l)) << "level " << l;
+      }
     }
   }
 }
