@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "scene/validate.hpp"
 #include "sim/pair_forces.hpp"
+#include "sim/shell_forces.hpp"
 
 namespace softpack {
 
@@ -481,34 +482,12 @@ void Simulation::compute_forces_for(double spring_dt) {
       wall_contact(list, k, i, pl.normal, h, pl.normal, h_half, pl.velocity, pl.velocity, pl.point, plane_loads_[w_]);
     }
   }
-  for (std::size_t w_ = 0; w_ < shells_.size(); ++w_) {
-    const SphericalShell& s = shells_[w_];
-    WallList& list = shell_lists_[w_];
-    for (std::size_t k = 0; k < list.entries.size(); ++k) {
-      const int i = list.entries[k].i;
-      const Vec3 d = x[i] - s.centre;
-      const double dist = d.norm();
-      const double h = dist + r[i] - s.radius;
-      if (h <= 0.0) {
-        if constexpr (Friction) list.spring[k].setZero();
-        continue;
-      }
-      const Vec3 nrm = d * (-1.0 / dist);  // pushes inward
-      // A turning shell moves its surface with it (rigid rotation of a soft-particle).
-      const Vec3 surface_velocity = s.surface_velocity(x[i] - (r[i] - 0.5 * h) * nrm);
-      Vec3 n_half = nrm, surface_velocity_half = surface_velocity;
-      double h_half = h;
-      if constexpr (Friction && Synchronized) {
-        const Vec3 d_half = d - half_dt * (v[i] - s.velocity);
-        const double dist_half = d_half.norm();
-        n_half = d_half * (-1.0 / dist_half);
-        h_half = dist_half + r[i] - s.radius;
-        surface_velocity_half = s.surface_velocity(s.centre + d_half - (r[i] - 0.5 * h_half) * n_half);
-      }
-      wall_contact(list, k, i, nrm, h, n_half, h_half, surface_velocity, surface_velocity_half, s.centre,
-                   shell_loads_[w_]);
-    }
-  }
+  // Sphere-shell contacts: the vectorised loop of sim/shell_forces.cpp (same arithmetic as
+  // wall_contact() above with the shell's geometry; a turning shell moves its surface with it).
+  for (std::size_t w_ = 0; w_ < shells_.size(); ++w_)
+    accumulate_shell_forces(shell_lists_[w_], shells_[w_], PairForceArrays{x, v, w, r, F, T},
+                            PairForceEffects{Friction, Damping, Rotation, Synchronized}, spring_dt,
+                            shell_loads_[w_].force, shell_loads_[w_].torque);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include "core/cpu_features.hpp"
 #include "sim/pair_forces.hpp"
 #include "sim/touching_pairs.hpp"
+#include "support/effect_combinations.hpp"
 #include "support/scenes.hpp"
 
 namespace softpack {
@@ -108,7 +109,7 @@ class PairForces : public ::testing::TestWithParam<int> {};  // bits: friction, 
 
 TEST_P(PairForces, VectorisedLoopMatchesThePerContactRoutine) {
   const int bits = GetParam();
-  const PairForceEffects fx{(bits & 8) != 0, (bits & 4) != 0, (bits & 2) != 0, (bits & 1) != 0};
+  const PairForceEffects fx = testing::effects_of(bits);
   World ref = random_world(fx.friction), vec = ref;
   const double dt = 1e-5;
   reference(ref, fx, dt);
@@ -140,19 +141,7 @@ TEST_P(PairForces, VectorisedLoopMatchesThePerContactRoutine) {
   }
 }
 
-// The combinations of effects the engine compiles (bits: friction, damping, rotation, sync),
-// named for the test list.
-const auto kEffectCombinations = ::testing::Values(0, 4, 8, 9, 10, 11, 12, 13, 14, 15);
-std::string effects_name(const ::testing::TestParamInfo<int>& info) {
-  const int b = info.param;
-  std::string name = (b & 8) ? "friction" : "frictionless";
-  if (b & 4) name += "_damped";
-  if (b & 2) name += "_rotation";
-  if (b & 1) name += "_synchronized";
-  return name;
-}
-
-INSTANTIATE_TEST_SUITE_P(Effects, PairForces, kEffectCombinations, effects_name);
+INSTANTIATE_TEST_SUITE_P(Effects, PairForces, testing::effect_combinations(), testing::effects_name);
 
 
 // The AVX-512 paths (touching-pair selection, batch gathers) and the portable ones must give
@@ -167,7 +156,7 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
 TEST_P(PairPaths, Avx512AndPortablePathsGiveTheSameBits) {
   if (!cpu::avx512_in_use()) GTEST_SKIP() << "this processor has no AVX-512: only the portable path runs here";
   const int bits = GetParam();
-  const PairForceEffects fx{(bits & 8) != 0, (bits & 4) != 0, (bits & 2) != 0, (bits & 1) != 0};
+  const PairForceEffects fx = testing::effects_of(bits);
   World fast = random_world(fx.friction), portable = fast;
   testing::Random rng(5);
   std::vector<int> scratch_fast, scratch_portable;
@@ -202,7 +191,7 @@ TEST_P(PairPaths, Avx512AndPortablePathsGiveTheSameBits) {
   EXPECT_GT(closed_again, 10u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Effects, PairPaths, kEffectCombinations, effects_name);
+INSTANTIATE_TEST_SUITE_P(Effects, PairPaths, testing::effect_combinations(), testing::effects_name);
 
 // The selection: exactly the pairs closer than Ri + Rj, in list order; the springs of the pairs
 // that do not touch are cleared, loaded or not, whatever the flags said before a replace().
