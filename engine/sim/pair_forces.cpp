@@ -1,13 +1,15 @@
 #include "sim/pair_forces.hpp"
 
-#include "core/cpu_features.hpp"
-#include "sim/touching_pairs.hpp"
-
 #include <immintrin.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+
+#include "core/cpu_features.hpp"
+#include "sim/avx512_helpers.hpp"
+#include "sim/contact_lanes.hpp"
+#include "sim/touching_pairs.hpp"
 
 namespace softpack {
 namespace {
@@ -29,41 +31,21 @@ struct Batch {
   alignas(64) double nFx[kBatch], nFy[kBatch], nFz[kBatch];  // n x Ft
   alignas(64) double ai[kBatch], aj[kBatch];                 // branch lengths
   alignas(64) double new_sx[kBatch], new_sy[kBatch], new_sz[kBatch];  // springs after the step
-  alignas(64) double slow[kBatch];
+  alignas(64) double slow[kBatch];  // lanes the common case does not cover (see compute)
   // The Coulomb limit, deferred by the common case (slide_group): the unscaled tangential force,
   // what scaling it needs, and whether the contact slides (1) or sticks (0).
   alignas(64) double Ftx[kBatch], Fty[kBatch], Ftz[kBatch], Ft2[kBatch], mu_Fn[kBatch], kt[kBatch];
-  alignas(64) double F_normal[kBatch], nx[kBatch], ny[kBatch], nz[kBatch], slide[kBatch];  // lanes the common case does not cover (see compute)
+  alignas(64) double F_normal[kBatch], nx[kBatch], ny[kBatch], nz[kBatch], slide[kBatch];
 };
-
-// tsuji::rotate_into_tangent_plane for one lane, without branches. The exact restoring factor
-// 1/sqrt(1 - s) is only needed when the spring leans out of the plane by more than the series
-// covers (s >= 1e-6); `Common` computes the series alone and marks the other lanes `slow`.
-template <bool Common>
-[[gnu::always_inline]] inline void rotate_lane(double& x, double& y, double& z, double nx, double ny, double nz, double& slow) {
-  const double len2 = x * x + y * y + z * z;
-  const double c = x * nx + y * ny + z * nz;
-  const double s = len2 > 0.0 ? c * c / len2 : 0.0;
-  const double series = 1.0 + s * (0.5 + 0.375 * s);
-  double restore = series;
-  if constexpr (Common) {
-    slow += s < 1e-6 ? 0.0 : 1.0;  // arithmetic, not a bool: the loop must stay branch-free
-  } else {
-    restore = s < 1e-6 ? series : 1.0 / std::sqrt(1.0 - s);
-  }
-  const bool keep = s < 1.0;
-  x = keep ? (x - c * nx) * restore : 0.0;
-  y = keep ? (y - c * ny) * restore : 0.0;
-  z = keep ? (z - c * nz) * restore : 0.0;
-}
 
 // Forces of one contact of a batch: geometry -> spring history -> Hertz normal (Eq. 3) ->
 // damping -> Coulomb limit and tangential spring (Eq. 5), as contact_force() does for one contact.
 //
 // `Common` is the common case, written for speed: springs that lean out of the tangent plane by
-// less than the series covers, and no sliding. It skips four square roots and six divisions, and
-// marks the lanes it cannot do as `slow`; those are redone with Common = false from the same
-// inputs. For every other lane both give the same bits: the operations they share are the same.
+// less than the series covers (the lanes it cannot do are marked `slow` and redone with Common =
+// false from the same inputs), and the Coulomb limit left to slide_group(). It skips two square
+// roots and two divisions per contact, and five more where no contact of a group slides. For
+// every other lane both give the same bits: the operations they share are the same.
 template <bool Friction, bool Damping, bool Rotation, bool Synchronized, bool Common>
 [[gnu::always_inline]] inline void lane(Batch& b, int m, double dt) {
   const double half_dt = 0.5 * dt;
@@ -80,9 +62,7 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized, bool Co
     aj = b.rj[m] - 0.5 * h;
     const double px = ai * b.wix[m] + aj * b.wjx[m], py = ai * b.wiy[m] + aj * b.wjy[m],
                  pz = ai * b.wiz[m] + aj * b.wjz[m];
-    vcx -= py * nz - pz * ny;
-    vcy -= pz * nx - px * nz;
-    vcz -= px * ny - py * nx;
+    lanes::subtract_cross(vcx, vcy, vcz, px, py, pz, nx, ny, nz);
   }
   double sx = 0.0, sy = 0.0, sz = 0.0;
   if constexpr (Friction) {
@@ -101,57 +81,27 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized, bool Co
         const double ahi = b.ri[m] - 0.5 * h_half, ahj = b.rj[m] - 0.5 * h_half;
         const double px = ahi * b.wix[m] + ahj * b.wjx[m], py = ahi * b.wiy[m] + ahj * b.wjy[m],
                      pz = ahi * b.wiz[m] + ahj * b.wjz[m];
-        ux -= py * fz - pz * fy;
-        uy -= pz * fx - px * fz;
-        uz -= px * fy - py * fx;
+        lanes::subtract_cross(ux, uy, uz, px, py, pz, fx, fy, fz);
       }
     }
-    // advance_spring: into the update frame, add the tangential displacement, into n.
-    rotate_lane<Common>(sx, sy, sz, fx, fy, fz, slow);
-    const double un = ux * fx + uy * fy + uz * fz;
-    sx += (ux - un * fx) * dt;
-    sy += (uy - un * fy) * dt;
-    sz += (uz - un * fz) * dt;
-    rotate_lane<Common>(sx, sy, sz, nx, ny, nz, slow);
+    lanes::advance_spring<Common>(sx, sy, sz, fx, fy, fz, ux, uy, uz, nx, ny, nz, dt, slow);
   }
-  // contact_force
-  const double sqrt_h = std::sqrt(h);
-  const double Fn = b.kn[m] * h * sqrt_h;  // Eq. 3
-  const double vn = vcx * nx + vcy * ny + vcz * nz;
-  double h_quarter = 0.0;
-  double F_normal = Fn;
-  if constexpr (Damping) {
-    h_quarter = std::sqrt(sqrt_h);
-    F_normal -= b.gamma0[m] * h_quarter * vn;
-  }
-  double Ftx = 0.0, Fty = 0.0, Ftz = 0.0;
+  lanes::Force f = lanes::contact_force<Friction, Damping>(nx, ny, nz, h, vcx, vcy, vcz, sx, sy, sz, b.kn[m], b.kt0[m],
+                                                           b.gamma0[m], b.gamma_t0[m], b.mu[m]);
+  const double F_normal = f.F_normal;
   if constexpr (Friction) {
-    const double vtx = vcx - vn * nx, vty = vcy - vn * ny, vtz = vcz - vn * nz;
-    const double kt = b.kt0[m] * sqrt_h;  // Eq. 5
-    const double gamma_t = Damping ? b.gamma_t0[m] * h_quarter : 0.0;
-    Ftx = -kt * sx - gamma_t * vtx;
-    Fty = -kt * sy - gamma_t * vty;
-    Ftz = -kt * sz - gamma_t * vtz;
-    const double Ft2 = Ftx * Ftx + Fty * Fty + Ftz * Ftz;
-    const double mu_Fn = b.mu[m] * Fn;
-    const bool slide = Ft2 > mu_Fn * mu_Fn;  // Coulomb limit: slide at mu Fn
     if constexpr (Common) {  // sticking assumed here; slide_group() corrects the lanes that slide
-      b.slide[m] = slide ? 1.0 : 0.0;
-      b.Ftx[m] = Ftx, b.Fty[m] = Fty, b.Ftz[m] = Ftz, b.Ft2[m] = Ft2, b.mu_Fn[m] = mu_Fn, b.kt[m] = kt;
+      b.slide[m] = f.slide ? 1.0 : 0.0;
+      b.Ftx[m] = f.Ftx, b.Fty[m] = f.Fty, b.Ftz[m] = f.Ftz, b.Ft2[m] = f.Ft2, b.mu_Fn[m] = f.mu_Fn, b.kt[m] = f.kt;
       b.F_normal[m] = F_normal, b.nx[m] = nx, b.ny[m] = ny, b.nz[m] = nz;
     } else {
-      const double scale = slide ? mu_Fn / std::sqrt(Ft2) : 1.0;
-      Ftx *= scale;
-      Fty *= scale;
-      Ftz *= scale;
-      sx = slide ? -Ftx / kt : sx;
-      sy = slide ? -Fty / kt : sy;
-      sz = slide ? -Ftz / kt : sz;
+      lanes::coulomb_limit(f.slide, f.mu_Fn, f.Ft2, f.kt, f.Ftx, f.Fty, f.Ftz, sx, sy, sz);
     }
     b.new_sx[m] = sx;
     b.new_sy[m] = sy;
     b.new_sz[m] = sz;
   }
+  const double Ftx = f.Ftx, Fty = f.Fty, Ftz = f.Ftz;
   b.Fx[m] = F_normal * nx + Ftx;
   b.Fy[m] = F_normal * ny + Fty;
   b.Fz[m] = F_normal * nz + Ftz;
@@ -176,13 +126,8 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized, bool Co
 template <bool Rotation>
 [[gnu::always_inline]] inline void slide_group(Batch& b, int begin, int end) {
   for (int m = begin; m < end; ++m) {
-    const bool slide = b.slide[m] != 0.0;
-    const double scale = slide ? b.mu_Fn[m] / std::sqrt(b.Ft2[m]) : 1.0;
-    const double Ftx = b.Ftx[m] * scale, Fty = b.Fty[m] * scale, Ftz = b.Ftz[m] * scale;
-    const double kt = b.kt[m];
-    b.new_sx[m] = slide ? -Ftx / kt : b.new_sx[m];
-    b.new_sy[m] = slide ? -Fty / kt : b.new_sy[m];
-    b.new_sz[m] = slide ? -Ftz / kt : b.new_sz[m];
+    double Ftx = b.Ftx[m], Fty = b.Fty[m], Ftz = b.Ftz[m];
+    lanes::coulomb_limit(b.slide[m] != 0.0, b.mu_Fn[m], b.Ft2[m], b.kt[m], Ftx, Fty, Ftz, b.new_sx[m], b.new_sy[m], b.new_sz[m]);
     const double nx = b.nx[m], ny = b.ny[m], nz = b.nz[m];
     b.Fx[m] = b.F_normal[m] * nx + Ftx;
     b.Fy[m] = b.F_normal[m] * ny + Fty;
@@ -250,18 +195,11 @@ template <bool Friction, bool Damping, bool Rotation>
   }
 }
 
-#define SOFTPACK_AVX512 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq")))
-
-// Eight doubles base[idx], lanes outside `live` zero.
-[[gnu::always_inline]] SOFTPACK_AVX512 inline __m512d gather8(const double* base, __m256i idx, __mmask8 live) {
-  return _mm512_mask_i32gather_pd(_mm512_setzero_pd(), live, idx, base, 8);
-}
-
 // The same copy as gather_portable, eight contacts per instruction. Vec3 is three doubles, so
 // component c of sphere i is at 3i + c; a pair's i and j are ints 4k and 4k + 1 of the list, its
 // r_sum double 2k + 1; the constants of pair k are doubles 5k to 5k + 4, its spring 3k to 3k + 2.
 template <bool Friction, bool Damping, bool Rotation>
-SOFTPACK_AVX512 void gather_avx512(Batch& b, const int* closed, int n, const PairList& list, const PairForceArrays& a) {
+SOFTPACK_TARGET_AVX512 void gather_avx512(Batch& b, const int* closed, int n, const PairList& list, const PairForceArrays& a) {
   static_assert(sizeof(ContactCoefficients) == 5 * sizeof(double) && sizeof(Vec3) == 3 * sizeof(double));
   const int* const pair_ints = reinterpret_cast<const int*>(list.pairs.data());
   const double* const pair_doubles = reinterpret_cast<const double*>(list.pairs.data());
@@ -278,38 +216,38 @@ SOFTPACK_AVX512 void gather_avx512(Batch& b, const int* closed, int n, const Pai
     _mm256_store_si256(reinterpret_cast<__m256i*>(b.i + m), i);
     _mm256_store_si256(reinterpret_cast<__m256i*>(b.j + m), j);
     const __m256i i3 = _mm256_add_epi32(i, _mm256_add_epi32(i, i)), j3 = _mm256_add_epi32(j, _mm256_add_epi32(j, j));
-    _mm512_store_pd(b.dx + m, _mm512_sub_pd(gather8(x, i3, live), gather8(x, j3, live)));
-    _mm512_store_pd(b.dy + m, _mm512_sub_pd(gather8(x + 1, i3, live), gather8(x + 1, j3, live)));
-    _mm512_store_pd(b.dz + m, _mm512_sub_pd(gather8(x + 2, i3, live), gather8(x + 2, j3, live)));
-    _mm512_store_pd(b.vx + m, _mm512_sub_pd(gather8(v, i3, live), gather8(v, j3, live)));
-    _mm512_store_pd(b.vy + m, _mm512_sub_pd(gather8(v + 1, i3, live), gather8(v + 1, j3, live)));
-    _mm512_store_pd(b.vz + m, _mm512_sub_pd(gather8(v + 2, i3, live), gather8(v + 2, j3, live)));
-    _mm512_store_pd(b.r_sum + m, gather8(pair_doubles + 1, k2, live));
+    _mm512_store_pd(b.dx + m, _mm512_sub_pd(avx512::gather8(x, i3, live), avx512::gather8(x, j3, live)));
+    _mm512_store_pd(b.dy + m, _mm512_sub_pd(avx512::gather8(x + 1, i3, live), avx512::gather8(x + 1, j3, live)));
+    _mm512_store_pd(b.dz + m, _mm512_sub_pd(avx512::gather8(x + 2, i3, live), avx512::gather8(x + 2, j3, live)));
+    _mm512_store_pd(b.vx + m, _mm512_sub_pd(avx512::gather8(v, i3, live), avx512::gather8(v, j3, live)));
+    _mm512_store_pd(b.vy + m, _mm512_sub_pd(avx512::gather8(v + 1, i3, live), avx512::gather8(v + 1, j3, live)));
+    _mm512_store_pd(b.vz + m, _mm512_sub_pd(avx512::gather8(v + 2, i3, live), avx512::gather8(v + 2, j3, live)));
+    _mm512_store_pd(b.r_sum + m, avx512::gather8(pair_doubles + 1, k2, live));
     const __m256i k5 = _mm256_add_epi32(k4, k);
-    _mm512_store_pd(b.kn + m, gather8(constants, k5, live));
-    if constexpr (Damping) _mm512_store_pd(b.gamma0 + m, gather8(constants + 2, k5, live));
+    _mm512_store_pd(b.kn + m, avx512::gather8(constants, k5, live));
+    if constexpr (Damping) _mm512_store_pd(b.gamma0 + m, avx512::gather8(constants + 2, k5, live));
     if constexpr (Friction) {
-      _mm512_store_pd(b.kt0 + m, gather8(constants + 1, k5, live));
-      _mm512_store_pd(b.mu + m, gather8(constants + 4, k5, live));
+      _mm512_store_pd(b.kt0 + m, avx512::gather8(constants + 1, k5, live));
+      _mm512_store_pd(b.mu + m, avx512::gather8(constants + 4, k5, live));
     }
-    if constexpr (Friction && Damping) _mm512_store_pd(b.gamma_t0 + m, gather8(constants + 3, k5, live));
+    if constexpr (Friction && Damping) _mm512_store_pd(b.gamma_t0 + m, avx512::gather8(constants + 3, k5, live));
     if constexpr (Rotation) {
       const double* const w = a.w->data();
-      _mm512_store_pd(b.wix + m, gather8(w, i3, live));
-      _mm512_store_pd(b.wiy + m, gather8(w + 1, i3, live));
-      _mm512_store_pd(b.wiz + m, gather8(w + 2, i3, live));
-      _mm512_store_pd(b.wjx + m, gather8(w, j3, live));
-      _mm512_store_pd(b.wjy + m, gather8(w + 1, j3, live));
-      _mm512_store_pd(b.wjz + m, gather8(w + 2, j3, live));
-      _mm512_store_pd(b.ri + m, gather8(a.r, i, live));
-      _mm512_store_pd(b.rj + m, gather8(a.r, j, live));
+      _mm512_store_pd(b.wix + m, avx512::gather8(w, i3, live));
+      _mm512_store_pd(b.wiy + m, avx512::gather8(w + 1, i3, live));
+      _mm512_store_pd(b.wiz + m, avx512::gather8(w + 2, i3, live));
+      _mm512_store_pd(b.wjx + m, avx512::gather8(w, j3, live));
+      _mm512_store_pd(b.wjy + m, avx512::gather8(w + 1, j3, live));
+      _mm512_store_pd(b.wjz + m, avx512::gather8(w + 2, j3, live));
+      _mm512_store_pd(b.ri + m, avx512::gather8(a.r, i, live));
+      _mm512_store_pd(b.rj + m, avx512::gather8(a.r, j, live));
     }
     if constexpr (Friction) {
       const double* const spring = list.spring.data()->data();
       const __m256i k3 = _mm256_add_epi32(k2, k);
-      _mm512_store_pd(b.sx + m, gather8(spring, k3, live));
-      _mm512_store_pd(b.sy + m, gather8(spring + 1, k3, live));
-      _mm512_store_pd(b.sz + m, gather8(spring + 2, k3, live));
+      _mm512_store_pd(b.sx + m, avx512::gather8(spring, k3, live));
+      _mm512_store_pd(b.sy + m, avx512::gather8(spring + 1, k3, live));
+      _mm512_store_pd(b.sz + m, avx512::gather8(spring + 2, k3, live));
     }
   }
 }

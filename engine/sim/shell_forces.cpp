@@ -1,5 +1,7 @@
 #include "sim/shell_forces.hpp"
 
+#include "sim/contact_lanes.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -29,19 +31,6 @@ struct Batch {
   alignas(64) double nx[kBatch], ny[kBatch], nz[kBatch], ai[kBatch];
 };
 
-// tsuji::rotate_into_tangent_plane for one lane, without branches but with its exact cases: a
-// zero spring stays as it is, one along n (s >= 1) is cleared.
-[[gnu::always_inline]] inline void rotate_lane(double& x, double& y, double& z, double nx, double ny, double nz) {
-  const double len2 = x * x + y * y + z * z;
-  const double c = x * nx + y * ny + z * nz;
-  const double s = len2 != 0.0 ? c * c / len2 : 0.0;
-  const double factor = s < 1e-6 ? 1.0 + s * (0.5 + 0.375 * s) : 1.0 / std::sqrt(1.0 - s);
-  const bool keep = len2 == 0.0, clear = s >= 1.0;
-  x = keep ? x : (clear ? 0.0 : (x - c * nx) * factor);
-  y = keep ? y : (clear ? 0.0 : (y - c * ny) * factor);
-  z = keep ? z : (clear ? 0.0 : (z - c * nz) * factor);
-}
-
 // One contact: the shell loop of Simulation::compute_forces_for and its wall_contact(), then
 // advance_spring() and contact_force(), in their order of operations.
 template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
@@ -62,9 +51,7 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
   double vcx = b.vx[m] - svx, vcy = b.vy[m] - svy, vcz = b.vz[m] - svz;
   if constexpr (Rotation) {
     const double tx = ai * b.wx[m], ty = ai * b.wy[m], tz = ai * b.wz[m];
-    vcx -= ty * nz - tz * ny;
-    vcy -= tz * nx - tx * nz;
-    vcz -= tx * ny - ty * nx;
+    lanes::subtract_cross(vcx, vcy, vcz, tx, ty, tz, nx, ny, nz);
   }
   double sx = 0.0, sy = 0.0, sz = 0.0;
   if constexpr (Friction) {
@@ -86,48 +73,19 @@ template <bool Friction, bool Damping, bool Rotation, bool Synchronized>
       uz = b.vz[m] - (s.uz + (s.ox * py - s.oy * px));
       if constexpr (Rotation) {
         const double tx = ah * b.wx[m], ty = ah * b.wy[m], tz = ah * b.wz[m];
-        ux -= ty * fz - tz * fy;
-        uy -= tz * fx - tx * fz;
-        uz -= tx * fy - ty * fx;
+        lanes::subtract_cross(ux, uy, uz, tx, ty, tz, fx, fy, fz);
       }
     }
-    // advance_spring: into the update frame, add the tangential displacement, into n.
-    rotate_lane(sx, sy, sz, fx, fy, fz);
-    const double un = ux * fx + uy * fy + uz * fz;
-    sx += (ux - un * fx) * dt;
-    sy += (uy - un * fy) * dt;
-    sz += (uz - un * fz) * dt;
-    rotate_lane(sx, sy, sz, nx, ny, nz);
+    double slow = 0.0;  // unused: no common-case shortcut here
+    lanes::advance_spring<false>(sx, sy, sz, fx, fy, fz, ux, uy, uz, nx, ny, nz, dt, slow);
   }
-  // contact_force
-  const double sqrt_h = std::sqrt(h);
-  const double Fn = b.kn[m] * h * sqrt_h;  // Eq. 3
-  const double vn = vcx * nx + vcy * ny + vcz * nz;
-  double h_quarter = 0.0;
-  double F_normal = Fn;
-  if constexpr (Damping) {
-    h_quarter = std::sqrt(sqrt_h);
-    F_normal -= b.gamma0[m] * h_quarter * vn;
-  }
-  double Ftx = 0.0, Fty = 0.0, Ftz = 0.0;
+  lanes::Force f = lanes::contact_force<Friction, Damping>(nx, ny, nz, h, vcx, vcy, vcz, sx, sy, sz, b.kn[m], b.kt0[m],
+                                                           b.gamma0[m], b.gamma_t0[m], b.mu[m]);
   if constexpr (Friction) {
-    const double vtx = vcx - vn * nx, vty = vcy - vn * ny, vtz = vcz - vn * nz;
-    const double kt = b.kt0[m] * sqrt_h;  // Eq. 5
-    const double gamma_t = Damping ? b.gamma_t0[m] * h_quarter : 0.0;
-    Ftx = -kt * sx - gamma_t * vtx;
-    Fty = -kt * sy - gamma_t * vty;
-    Ftz = -kt * sz - gamma_t * vtz;
-    const double Ft2 = Ftx * Ftx + Fty * Fty + Ftz * Ftz;
-    const double mu_Fn = b.mu[m] * Fn;
-    const bool slide = Ft2 > mu_Fn * mu_Fn;  // Coulomb limit: slide at mu Fn
-    const double scale = slide ? mu_Fn / std::sqrt(Ft2) : 1.0;
-    Ftx = slide ? Ftx * scale : Ftx;
-    Fty = slide ? Fty * scale : Fty;
-    Ftz = slide ? Ftz * scale : Ftz;
-    b.sx[m] = slide ? -Ftx / kt : sx;
-    b.sy[m] = slide ? -Fty / kt : sy;
-    b.sz[m] = slide ? -Ftz / kt : sz;
+    lanes::coulomb_limit(f.slide, f.mu_Fn, f.Ft2, f.kt, f.Ftx, f.Fty, f.Ftz, sx, sy, sz);
+    b.sx[m] = sx, b.sy[m] = sy, b.sz[m] = sz;
   }
+  const double F_normal = f.F_normal, Ftx = f.Ftx, Fty = f.Fty, Ftz = f.Ftz;
   b.Fx[m] = F_normal * nx + Ftx;
   b.Fy[m] = F_normal * ny + Fty;
   b.Fz[m] = F_normal * nz + Ftz;

@@ -1,12 +1,13 @@
 #include "sim/touching_pairs.hpp"
 
-#include "core/cpu_features.hpp"
-
 #include <immintrin.h>
 
 #include <bit>
-#include <cstdint>
 #include <cstddef>
+#include <cstdint>
+
+#include "core/cpu_features.hpp"
+#include "sim/avx512_helpers.hpp"
 
 namespace softpack {
 namespace detail {
@@ -46,17 +47,9 @@ std::size_t select_touching_pairs_portable(PairList& list, const Vec3* x, bool f
   return select_range_portable(list, x, friction, closed, 0, list.pairs.size(), 0);
 }
 
-
-// base[idx] for eight indices. Here and below the masked forms of the intrinsics, with a zero
-// source: the unmasked ones start from an undefined vector, which GCC 12 reports as
-// maybe-uninitialized (an error under CI's -Werror).
-[[gnu::always_inline]] __attribute__((target("avx512f"))) inline __m512d gather8(const double* base, __m256i idx) {
-  return _mm512_mask_i32gather_pd(_mm512_setzero_pd(), __mmask8{0xff}, idx, base, 8);
-}
-
 // Eight pairs at a time. PairEntry is {int i, int j, double r_sum}, 16 bytes: two 512-bit
 // loads hold eight entries, which permutes split into i, j and r_sum.
-__attribute__((target("avx512f,avx512vl,avx512bw,avx512dq"))) std::size_t select_touching_pairs_avx512(
+SOFTPACK_TARGET_AVX512 std::size_t select_touching_pairs_avx512(
     PairList& list, const Vec3* x, bool friction, int* closed) {
   static_assert(sizeof(PairEntry) == 16 && offsetof(PairEntry, j) == 4 && offsetof(PairEntry, r_sum) == 8);
   static_assert(sizeof(Vec3) == 3 * sizeof(double));
@@ -73,13 +66,13 @@ __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq"))) std::size_t select
     const __m512d lo = _mm512_loadu_pd(entries), hi = _mm512_loadu_pd(entries + 8);
     const __m512i ij = _mm512_permutex2var_epi64(_mm512_castpd_si512(lo), ij_words, _mm512_castpd_si512(hi));
     const __m512d r_sum = _mm512_permutex2var_pd(lo, r_sum_words, hi);
-    const __m256i i = _mm512_maskz_cvtepi64_epi32(0xff, ij);  // low halves (maskz: see gather8)
+    const __m256i i = _mm512_maskz_cvtepi64_epi32(0xff, ij);  // low halves (maskz: see avx512::gather8)
     const __m256i j = _mm512_maskz_cvtepi64_epi32(0xff, _mm512_maskz_srli_epi64(0xff, ij, 32));  // high halves
     const __m256i i3 = _mm256_add_epi32(i, _mm256_add_epi32(i, i));
     const __m256i j3 = _mm256_add_epi32(j, _mm256_add_epi32(j, j));
-    const __m512d dx = _mm512_sub_pd(gather8(xd, i3), gather8(xd, j3));
-    const __m512d dy = _mm512_sub_pd(gather8(xd + 1, i3), gather8(xd + 1, j3));
-    const __m512d dz = _mm512_sub_pd(gather8(xd + 2, i3), gather8(xd + 2, j3));
+    const __m512d dx = _mm512_sub_pd(avx512::gather8(xd, i3), avx512::gather8(xd, j3));
+    const __m512d dy = _mm512_sub_pd(avx512::gather8(xd + 1, i3), avx512::gather8(xd + 1, j3));
+    const __m512d dz = _mm512_sub_pd(avx512::gather8(xd + 2, i3), avx512::gather8(xd + 2, j3));
     const __m512d d2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
     const __mmask8 touch = _mm512_cmp_pd_mask(d2, _mm512_mul_pd(r_sum, r_sum), _CMP_LT_OQ);
     _mm256_mask_compressstoreu_epi32(closed + n, touch, kvec);
