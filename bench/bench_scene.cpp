@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "contact/viscous_damping.hpp"
+#include "core/cpu_features.hpp"
 #include "core/material.hpp"
 #include "sim/simulation.hpp"
 #include "support/confined_packing.hpp"
@@ -44,8 +45,13 @@ int main(int argc, char** argv) {
   app.add_flag("--frictionless", frictionless, "Hertz + damping only (no friction, no rotation)");
   app.add_flag("--parameters", parameters_only, "print the physical parameters (for LAMMPS) and exit");
   app.add_flag("--digest", digest, "also print a digest of the final state's bits (x, v, w, F, T, springs)");
+  std::string isa = "best";
+  app.add_option("--isa", isa, "instruction set of the force loops: best, avx512, avx2, portable (all give the same bits)")
+      ->check(CLI::IsMember({"best", "avx512", "avx2", "portable"}));
   CLI11_PARSE(app, argc, argv);
 
+  if (isa == "avx2") cpu::limit_vector_isa(cpu::VectorIsa::avx2);
+  if (isa == "portable") cpu::limit_vector_isa(cpu::VectorIsa::portable);
   const bench::BenchParameters p;
   const auto spheres = bench::confined_packing(n, p, packing_path);
   const SceneDef scene = bench::bench_scene(spheres, p, !frictionless);
@@ -66,9 +72,9 @@ int main(int argc, char** argv) {
   sim.run_steps(steps);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto meas = sim.measure();
-  fmt::print("softpack_loop_time_s={:.6g} particle_steps_per_s={:.4g} contacts={} listed_pairs={} rebuilds={} friction={}\n", seconds,
-             static_cast<double>(spheres.size()) * static_cast<double>(steps) / seconds, meas.contacts, sim.pair_list().pairs.size(),
-             sim.neighbour_rebuilds(), frictionless ? 0 : 1);
+  fmt::print("softpack_loop_time_s={:.6g} particle_steps_per_s={:.4g} contacts={} listed_pairs={} rebuilds={} friction={} isa={}\n", seconds,
+             static_cast<double>(spheres.size()) * static_cast<double>(steps) / seconds, meas.contacts, sim.pair_list().size(),
+             sim.neighbour_rebuilds(), frictionless ? 0 : 1, cpu::name(cpu::vector_isa()));
   if (digest) fmt::print("state_digest={:016x}\n", state_digest(sim.state()));
   return 0;
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/suggest.hpp"
 #include "core/types.hpp"
 
 namespace softpack {
@@ -69,8 +70,5 @@ class ConfigNode {
   std::string path_;
   std::shared_ptr<const std::string> file_;
 };
-
-/// The closest of `candidates` to `word` (Levenshtein), or "" when none is close.
-std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 
 }  // namespace softpack

@@ -1,25 +1,43 @@
 #include "core/cpu_features.hpp"
 
+#include <algorithm>
 #include <atomic>
 
 namespace softpack::cpu {
 namespace {
 
-std::atomic<bool> avx512_allowed{true};
+std::atomic<int> limit{static_cast<int>(VectorIsa::avx512)};
 
-bool avx512_present() {
+VectorIsa detect() {
   __builtin_cpu_init();  // may run before the library's own initialisation
-  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
-         __builtin_cpu_supports("avx512dq");
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
+      __builtin_cpu_supports("avx512dq"))
+    return VectorIsa::avx512;
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
+      __builtin_cpu_supports("bmi2"))
+    return VectorIsa::avx2;
+  return VectorIsa::portable;
 }
 
 }  // namespace
 
-bool avx512_in_use() {
-  static const bool present = avx512_present();
-  return present && avx512_allowed.load(std::memory_order_relaxed);
+VectorIsa best_vector_isa() {
+  static const VectorIsa best = detect();
+  return best;
 }
 
-void allow_avx512(bool allowed) { avx512_allowed.store(allowed, std::memory_order_relaxed); }
+VectorIsa vector_isa() {
+  return static_cast<VectorIsa>(std::min(static_cast<int>(best_vector_isa()), limit.load(std::memory_order_relaxed)));
+}
+
+void limit_vector_isa(VectorIsa isa) { limit.store(static_cast<int>(isa), std::memory_order_relaxed); }
+
+const char* name(VectorIsa isa) {
+  switch (isa) {
+    case VectorIsa::avx512: return "AVX-512";
+    case VectorIsa::avx2: return "AVX2";
+    default: return "portable";
+  }
+}
 
 }  // namespace softpack::cpu

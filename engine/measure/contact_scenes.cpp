@@ -10,7 +10,7 @@ namespace {
 SceneDef base_scene(const SimulationSettings& s) {
   SceneDef scene;
   scene.materials = {s.material};
-  scene.effects.normal = true;
+  scene.effects.normal = "hertz";
   scene.effects.friction = s.material.mu > 0.0;
   scene.effects.rotation = scene.effects.friction;
   scene.effects.restitution = s.restitution;

@@ -3,48 +3,67 @@
 namespace softpack {
 namespace {
 
-// Sorted merge of the old entries into the fresh ones (both sorted by `key`). For a fresh
-// entry found in the old list, `carry(old_index, fresh_index)` copies what it keeps; the
-// indices of the entries not found are returned, for the caller to compute their constants.
-template <class Entry, class Key, class Carry>
-std::vector<std::size_t> merge(const std::vector<Entry>& old_entries, const std::vector<Entry>& fresh, Key key,
-                               Carry carry) {
+// Sorted merge of the old keys into the fresh ones (both sorted). For a fresh entry found in
+// the old list, `carry(old_index, fresh_index)` copies what it keeps; the indices of the
+// entries not found are returned, for the caller to compute their constants.
+template <class OldKey, class FreshKey, class Carry>
+std::vector<std::size_t> merge(std::size_t old_count, std::size_t fresh_count, OldKey old_key, FreshKey fresh_key, Carry carry) {
   std::vector<std::size_t> new_ones;
   std::size_t a = 0;
-  for (std::size_t b = 0; b < fresh.size(); ++b) {
-    const auto kb = key(fresh[b]);
-    while (a < old_entries.size() && key(old_entries[a]) < kb) ++a;
-    if (a < old_entries.size() && key(old_entries[a]) == kb) carry(a, b);
+  for (std::size_t b = 0; b < fresh_count; ++b) {
+    const auto kb = fresh_key(b);
+    while (a < old_count && old_key(a) < kb) ++a;
+    if (a < old_count && old_key(a) == kb) carry(a, b);
     else new_ones.push_back(b);
   }
   return new_ones;
 }
 
+std::uint64_t pair_key(std::int32_t i, std::int32_t j) {
+  return (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(j);
+}
+
 }  // namespace
 
-std::vector<std::size_t> PairList::replace(std::vector<PairEntry>&& fresh, bool keep_springs) {
-  std::vector<ContactCoefficients> coefficients(fresh.size());
+void ConstantArrays::resize(std::size_t n) {
+  for (auto* a : {&kn, &kt0, &gamma0, &gamma_t0, &mu}) a->resize(n);
+}
+
+void ConstantArrays::set(std::size_t k, const ContactConstants<double>& c) {
+  kn[k] = c.kn, kt0[k] = c.kt0, gamma0[k] = c.gamma0, gamma_t0[k] = c.gamma_t0, mu[k] = c.mu;
+}
+
+std::vector<std::size_t> PairList::replace(const std::vector<PairEntry>& fresh, bool keep_springs) {
+  ConstantArrays constants;
+  constants.resize(fresh.size());
   std::vector<Vec3> springs(keep_springs ? fresh.size() : 0, Vec3::Zero());
   const auto new_ones = merge(
-      pairs, fresh, [](const PairEntry& e) { return (static_cast<std::uint64_t>(e.i) << 32) | static_cast<std::uint32_t>(e.j); },
+      size(), fresh.size(), [&](std::size_t a) { return pair_key(i[a], j[a]); },
+      [&](std::size_t b) { return pair_key(fresh[b].i, fresh[b].j); },
       [&](std::size_t a, std::size_t b) {
-        coefficients[b] = k[a];
+        constants.set(b, k.at(a));
         if (keep_springs) springs[b] = spring[a];
       });
-  pairs = std::move(fresh);
-  k = std::move(coefficients);
+  i.resize(fresh.size()), j.resize(fresh.size()), r_sum.resize(fresh.size());
+  for (std::size_t b = 0; b < fresh.size(); ++b) i[b] = fresh[b].i, j[b] = fresh[b].j, r_sum[b] = fresh[b].r_sum;
+  k = std::move(constants);
   spring = std::move(springs);
   spring_live.clear();
   return new_ones;
 }
 
-std::vector<std::size_t> WallList::replace(std::vector<WallEntry>&& fresh, bool keep_springs) {
+std::vector<std::size_t> WallList::replace(const std::vector<std::int32_t>& fresh, bool keep_springs) {
+  ConstantArrays constants;
+  constants.resize(fresh.size());
   std::vector<Vec3> springs(keep_springs ? fresh.size() : 0, Vec3::Zero());
-  const auto new_ones = merge(entries, fresh, [](const WallEntry& e) { return e.i; }, [&](std::size_t a, std::size_t b) {
-    fresh[b].k = entries[a].k;
-    if (keep_springs) springs[b] = spring[a];
-  });
-  entries = std::move(fresh);
+  const auto new_ones = merge(
+      size(), fresh.size(), [&](std::size_t a) { return i[a]; }, [&](std::size_t b) { return fresh[b]; },
+      [&](std::size_t a, std::size_t b) {
+        constants.set(b, k.at(a));
+        if (keep_springs) springs[b] = spring[a];
+      });
+  i = fresh;
+  k = std::move(constants);
   spring = std::move(springs);
   return new_ones;
 }

@@ -1,50 +1,66 @@
-// Verlet lists of potential contacts with their tangential history.
+// Verlet lists of potential contacts with their tangential history, one array per field
+// (structure of arrays): the force loops stream the indices and gather the rest by contact.
 //
 // Pairs (i < j) whose gap is below the skin are listed at each rebuild, sorted by (i, j), with
 // the contact constants precomputed. When the friction effect is on, each entry carries its
 // tangential spring xi; a rebuild carries constants and springs of surviving pairs over by a
 // sorted merge, O(N). A pair whose gap opens keeps its entry until the next rebuild but its spring
-// is cleared the moment the contact opens.
+// is cleared the moment the contact opens (forces/contact_loop.hpp).
 #pragma once
 #include <cstdint>
 #include <vector>
 
-#include "contact/contact_force.hpp"
+#include "contact/contact_law.hpp"
 #include "core/types.hpp"
 
 namespace softpack {
 
-/// What the every-step overlap test reads, kept small: the list is streamed each step.
+/// The constants of a list's contacts (contact/contact_law.hpp ContactConstants), one array each.
+struct ConstantArrays {
+  std::vector<double> kn, kt0, gamma0, gamma_t0, mu;
+
+  std::size_t size() const { return kn.size(); }
+  void resize(std::size_t n);
+  void set(std::size_t k, const ContactConstants<double>& c);
+  ContactConstants<double> at(std::size_t k) const { return {kn[k], kt0[k], gamma0[k], gamma_t0[k], mu[k]}; }
+};
+
+/// A pair found by a neighbour search.
 struct PairEntry {
-  int i = 0, j = 0;
+  std::int32_t i = 0, j = 0;
   double r_sum = 0.0;  ///< Ri + Rj
 };
 
 struct PairList {
-  std::vector<PairEntry> pairs;
-  std::vector<ContactCoefficients> k;  ///< constants per pair, read for touching pairs only
-  std::vector<Vec3> spring;            ///< tangential spring per pair; empty without friction
+  std::vector<std::int32_t> i, j;  ///< the spheres, i < j, sorted by (i, j)
+  std::vector<double> r_sum;       ///< Ri + Rj: what the every-step overlap test reads
+  ConstantArrays k;                ///< read for touching pairs only
+  std::vector<Vec3> spring;        ///< tangential spring per pair; empty without friction
   /// 1 where the spring may be non-zero (the pair touched at the last force evaluation).
-  /// Kept by the force loop (sim/touching_pairs.hpp); empty means every spring may be.
+  /// Kept by the force loop (forces/pair_contacts.hpp); empty means every spring may be.
   std::vector<std::uint8_t> spring_live;
 
+  std::size_t size() const { return i.size(); }
   /// Replaces the list by `fresh` (sorted by (i, j)); pairs already listed keep their
   /// constants and spring. Returns the indices of the new pairs, whose constants are unset.
-  std::vector<std::size_t> replace(std::vector<PairEntry>&& fresh, bool keep_springs);
+  std::vector<std::size_t> replace(const std::vector<PairEntry>& fresh, bool keep_springs);
 };
 
 /// Candidate contacts of one wall (plane or shell): sphere indices, sorted, with constants.
-struct WallEntry {
-  int i = 0;
-  ContactCoefficients k;
+struct WallList {
+  std::vector<std::int32_t> i;
+  ConstantArrays k;
+  std::vector<Vec3> spring;  ///< empty without friction
+
+  std::size_t size() const { return i.size(); }
+  /// As PairList::replace, keyed by the sphere.
+  std::vector<std::size_t> replace(const std::vector<std::int32_t>& fresh, bool keep_springs);
 };
 
-struct WallList {
-  std::vector<WallEntry> entries;
-  std::vector<Vec3> spring;
-
-  /// As PairList::replace, keyed by the sphere.
-  std::vector<std::size_t> replace(std::vector<WallEntry>&& fresh, bool keep_springs);
+/// Every list of a scene: sphere pairs, and the candidates of each plane and each shell.
+struct ContactLists {
+  PairList pairs;
+  std::vector<WallList> planes, shells;
 };
 
 }  // namespace softpack

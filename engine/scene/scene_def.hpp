@@ -43,7 +43,7 @@ struct PlaneDef {
 
 /// Effects a scene may declare. An undeclared effect costs nothing and allocates nothing.
 struct EffectsDef {
-  bool normal = false;    ///< Hertz normal law, Eq. 3-4
+  std::string normal;     ///< the normal law, by name (forces/normal_laws.cpp: hertz, Eq. 3-4); empty: none
   bool friction = false;  ///< Tsuji tangential spring with Coulomb limit, Eq. 5-6
   bool rotation = false;  ///< angular velocities and torques
   std::optional<double> restitution;             ///< damping declared: normal restitution e

@@ -87,7 +87,7 @@ DriverDef parse_driver(const ConfigNode& d) {
 
 void parse_effects(const ConfigNode& n, EffectsDef& e) {
   n.allow_only({"normal", "friction", "rotation", "damping", "gravity"});
-  if (auto c = n.find("normal")) e.normal = c->choice({"hertz"}) == "hertz";
+  if (auto c = n.find("normal")) e.normal = c->string();  // a registered law: checked when the simulation is built
   if (auto c = n.find("friction")) e.friction = c->choice({"tsuji"}) == "tsuji";
   if (auto c = n.find("rotation")) e.rotation = c->boolean();
   if (auto c = n.find("damping")) {

@@ -100,7 +100,7 @@ void check_stop(const std::optional<double>& a, const char* a_name, const std::o
     fail(key + "." + (a ? a_name : b_name), fmt::format("{} is not allowed; allowed: > 0", v));
 }
 
-void check_drivers(const SceneDef& s) {
+void check_drivers(const SceneDef& s, const std::vector<DriverDef>& drivers) {
   std::set<int> driven_bodies;
   bool all_driven = false;
   std::set<std::string> driven_walls;
@@ -111,7 +111,7 @@ void check_drivers(const SceneDef& s) {
     if (g.kind == GroupDef::Kind::all) all_driven = true;
     else driven_bodies.insert(g.body);
   };
-  for (std::size_t k = 0; k < s.drivers.size(); ++k) {
+  for (std::size_t k = 0; k < drivers.size(); ++k) {
     const std::string key = fmt::format("drivers[{}]", k);
     std::visit(
         [&](const auto& d) {
@@ -150,7 +150,7 @@ void check_drivers(const SceneDef& s) {
             claim(d.group, key + ".group");
           }
         },
-        s.drivers[k]);
+        drivers[k]);
   }
 }
 
@@ -170,8 +170,8 @@ void validate(const SceneDef& s) {
   check_distinct_centres(s);
 
   const EffectsDef& e = s.effects;
-  if (e.friction && !e.normal) fail("effects.friction", "friction needs the normal law (declare effects.normal)");
-  if (e.damping() && !e.normal) fail("effects.damping", "damping needs the normal law (declare effects.normal)");
+  if (e.friction && e.normal.empty()) fail("effects.friction", "friction needs the normal law (declare effects.normal)");
+  if (e.damping() && e.normal.empty()) fail("effects.damping", "damping needs the normal law (declare effects.normal)");
   if (e.rotation && !e.friction)
     fail("effects.rotation", "rotation without friction: nothing produces a torque (declare effects.friction or drop rotation)");
   if (e.friction) {
@@ -221,7 +221,7 @@ void validate(const SceneDef& s) {
   if (!(s.neighbor.skin > 0.0 && std::isfinite(s.neighbor.skin))) fail("neighbor.skin", fmt::format("{} is not allowed; allowed: skin > 0 (a fraction of the smallest radius)", s.neighbor.skin));
   if (!(s.neighbor.level_ratio > 1.0 && std::isfinite(s.neighbor.level_ratio))) fail("neighbor.level_ratio", fmt::format("{} is not allowed; allowed: level_ratio > 1", s.neighbor.level_ratio));
 
-  check_drivers(s);
+  check_drivers(s, s.drivers);
 
   const WatchdogDef& wd = s.watchdog;
   if (!(wd.max_overlap_fraction > 0.0))
@@ -231,6 +231,8 @@ void validate(const SceneDef& s) {
   if (wd.check_interval < 1)
     fail("watchdog.check_interval", fmt::format("{} is not allowed; allowed: an integer >= 1 (steps)", wd.check_interval));
 }
+
+void validate_drivers(const SceneDef& scene, const std::vector<DriverDef>& drivers) { check_drivers(scene, drivers); }
 
 int SceneDef::material_index(const std::string& name) const {
   for (std::size_t k = 0; k < materials.size(); ++k)

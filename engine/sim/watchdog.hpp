@@ -1,6 +1,7 @@
 // The watchdog: stops a run that has left the physical regime, with a diagnostic, before it
-// writes wrong results. Simulation calls it; it only reads the state, so it changes no result.
-// Criteria (thresholds in WatchdogDef, scene/scene_def.hpp; docs/physics.md §13):
+// writes wrong results. It reads the world and its residuals (sim/residuals.hpp) and changes
+// nothing, so it changes no result. Criteria (thresholds in WatchdogDef, scene/scene_def.hpp;
+// docs/physics.md §13):
 //
 //   non-finite  a position, velocity, force (angular velocity, torque) is NaN or infinite;
 //   energy      E > energy_growth * B, with E the kinetic (free spheres) + elastic (contacts)
@@ -15,35 +16,45 @@
 //
 // checked in this order; the first that fails is reported.
 //
-// Simulation runs the full check every check_interval steps, at construction and restore (the
-// states it is given), at the end of every run_steps() (what a caller writes after a run has been
-// checked), and before a neighbour rebuild sees a non-finite position.
+// The simulation runs the full check every check_interval steps, at construction and restore
+// (the states it is given), at the end of every run_steps() (what a caller writes after a run has
+// been checked), and before a neighbour rebuild sees a non-finite position.
 #pragma once
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
+#include "integrate/time_step.hpp"
 #include "scene/scene_def.hpp"
+#include "sim/residuals.hpp"
+#include "state/world.hpp"
 
 namespace softpack {
 
-class Simulation;
-
 class Watchdog {
  public:
+  /// What the diagnostics name: the time step and its limit, the walls, gravity.
+  struct Context {
+    double dt = 0.0;
+    StableLimit limit;
+    std::vector<std::string> plane_names, shell_names;
+    std::optional<Vec3> gravity;
+  };
+
   Watchdog() = default;
-  explicit Watchdog(const WatchdogDef& def) : def_(def) {}
+  Watchdog(const WatchdogDef& def, Context context) : def_(def), context_(std::move(context)) {}
 
   const WatchdogDef& def() const { return def_; }
 
   /// Checks the state and starts the energy budget from it (construction, restore).
-  void start(const Simulation& sim);
+  void start(const World& world, const Measurement& m);
   /// Adds the positive work the drivers did on the spheres during one step [J].
   void add_driver_work(double work) { driver_work_ += work; }
-  /// Checks the current state; throws NumericalError with the diagnostic.
-  void check(const Simulation& sim);
-  /// Only the positions (cheap): a neighbour rebuild must not see NaN or infinity. Runs the full
-  /// check, and so throws, when one is not finite.
-  void check_positions(const Simulation& sim);
+  /// Checks the current state and its residuals; throws NumericalError with the diagnostic.
+  void check(const World& world, const Measurement& m);
+  /// Only the positions (cheap): a neighbour rebuild must not see NaN or infinity.
+  static bool positions_finite(const World& world);
 
   /// Energy budget B of the last check [J].
   double budget() const { return budget_; }
@@ -53,7 +64,13 @@ class Watchdog {
   double largest_energy_ratio() const { return largest_energy_ratio_; }
 
  private:
+  std::string where(const World& world) const;
+  std::string time_step() const;
+  std::string overlap_text(const World& world, const Measurement::Deepest& d) const;
+  void check_finite(const World& world, const std::string& before) const;
+
   WatchdogDef def_;
+  Context context_;
   bool started_ = false;
   double start_energy_ = 0.0;   ///< E_0 [J]
   double driver_work_ = 0.0;    ///< W_drivers since the start [J]

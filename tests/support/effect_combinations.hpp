@@ -1,27 +1,24 @@
-// The combinations of effects the force loops are compiled for, as a GoogleTest parameter:
-// bits friction (8), damping (4), rotation (2), synchronized history update (1); rotation and the
-// history frame need friction. effects_name() names each case in the test list.
+// The combinations of effects the force loops are compiled for (contact/effects.hpp), as a
+// GoogleTest parameter: an index into kEffectCombinations; effects_name() names each case.
 #pragma once
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "sim/pair_forces.hpp"
+#include "contact/effects.hpp"
 
 namespace softpack::testing {
 
-inline auto effect_combinations() { return ::testing::Values(0, 4, 8, 9, 10, 11, 12, 13, 14, 15); }
+inline auto effect_combinations() { return ::testing::Range<std::size_t>(0, kEffectCombinations.size()); }
 
-inline PairForceEffects effects_of(int bits) {
-  return PairForceEffects{(bits & 8) != 0, (bits & 4) != 0, (bits & 2) != 0, (bits & 1) != 0};
-}
+inline Effects effects_of(std::size_t index) { return kEffectCombinations[index]; }
 
-inline std::string effects_name(const ::testing::TestParamInfo<int>& info) {
-  const int b = info.param;
-  std::string name = (b & 8) ? "friction" : "frictionless";
-  if (b & 4) name += "_damped";
-  if (b & 2) name += "_rotation";
-  if (b & 1) name += "_synchronized";
+inline std::string effects_name(const ::testing::TestParamInfo<std::size_t>& info) {
+  const Effects fx = effects_of(info.param);
+  std::string name = fx.friction ? "friction" : "frictionless";
+  if (fx.damping) name += "_damped";
+  if (fx.rotation) name += "_rotation";
+  if (fx.synchronized) name += "_synchronized";
   return name;
 }
 

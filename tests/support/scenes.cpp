@@ -18,7 +18,7 @@ Material stiff_grain() { return Material{"stiff", 2.0e6, 0.25, 0.5, 7800.0}; }
 SceneDef basic_scene() {
   SceneDef s;
   s.materials = {paper_grain()};
-  s.effects.normal = true;
+  s.effects.normal = "hertz";
   s.integration.safety = 0.2;
   s.neighbor = NeighborDef{0.2, 2.0};
   return s;

@@ -22,7 +22,7 @@ SceneDef pile(bool friction, bool rotation, bool damping) {
 TEST(Effects, FrictionlessSceneHasNoTangentialHistoryNoSpinNoDrivers) {
   Simulation sim(pile(false, false, false));
   sim.run_steps(50);
-  ASSERT_GT(sim.pair_list().pairs.size(), 0u);
+  ASSERT_GT(sim.pair_list().size(), 0u);
   EXPECT_EQ(sim.pair_list().spring.capacity(), 0u);
   EXPECT_EQ(sim.particles().w.capacity(), 0u);
   EXPECT_EQ(sim.particles().T.capacity(), 0u);
@@ -35,7 +35,7 @@ TEST(Effects, FrictionlessSceneHasNoTangentialHistoryNoSpinNoDrivers) {
 TEST(Effects, FrictionWithoutRotationHasSpringsButNoSpin) {
   Simulation sim(pile(true, false, false));
   sim.run_steps(50);
-  EXPECT_EQ(sim.pair_list().spring.size(), sim.pair_list().pairs.size());
+  EXPECT_EQ(sim.pair_list().spring.size(), sim.pair_list().size());
   EXPECT_EQ(sim.particles().w.capacity(), 0u);
 }
 

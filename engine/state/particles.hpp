@@ -1,4 +1,4 @@
-// The spheres, stored as parallel arrays (structure of arrays). Arrays that belong to an effect
+// The spheres of a world (state/world.hpp), stored as parallel arrays (structure of arrays). Arrays that belong to an effect
 // the scene did not declare stay empty: no angular state without rotation, no kinematic flags
 // without drivers.
 #pragma once

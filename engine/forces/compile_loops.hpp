@@ -1,0 +1,88 @@
+// make_normal_law<Law>(): a normal law type (contact/hertz_normal.hpp shows the members one
+// needs) turned into the run-time record of forces/normal_law.hpp, with its force loops compiled
+// for every combination of effects (contact/effects.hpp) and three instruction sets:
+//
+//   AVX-512 (x86-64-v4)   simd::Avx512 data movement, eight lanes in one register
+//   AVX2    (x86-64-v3)   portable data movement, eight lanes in two registers
+//   baseline              portable data movement, the release flags' x86-64-v2
+//
+// chosen at run time (core/cpu_features.hpp); all give the same bits. One step of a world is:
+// sphere pairs, then each plane, then each shell, each through forces/contact_loop.hpp.
+#pragma once
+#include <cmath>
+#include <memory>
+
+#include "core/cpu_features.hpp"
+#include "forces/contact_loop.hpp"
+#include "forces/normal_law.hpp"
+#include "forces/pair_contacts.hpp"
+#include "forces/wall_contacts.hpp"
+
+namespace softpack {
+namespace loops {
+
+template <class Law, Effects Fx, class Isa>
+[[gnu::always_inline]] inline void all_contacts(Isa isa, World& world, ContactLists& lists, double dt,
+                                                std::vector<std::int32_t>& closed) {
+  Particles& p = world.p;
+  const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), p.F.data(),
+                       Fx.rotation ? p.T.data() : nullptr};
+  PairContacts<Fx> pairs{lists.pairs, s};
+  contact_loop<Law, Fx>(isa, pairs, dt, closed);
+  for (std::size_t k = 0; k < world.planes.size(); ++k) {
+    WallContacts<Fx, PlaneWall> plane{lists.planes[k], world.planes[k], s, world.plane_loads[k]};
+    contact_loop<Law, Fx>(isa, plane, dt, closed);
+  }
+  for (std::size_t k = 0; k < world.shells.size(); ++k) {
+    WallContacts<Fx, SphericalShell> shell{lists.shells[k], world.shells[k], s, world.shell_loads[k]};
+    contact_loop<Law, Fx>(isa, shell, dt, closed);
+  }
+}
+
+template <class Law, Effects Fx>
+[[gnu::target("arch=x86-64-v4"), gnu::flatten]] void all_contacts_avx512(World& world, ContactLists& lists, double dt,
+                                                          std::vector<std::int32_t>& closed) {
+  all_contacts<Law, Fx>(simd::Avx512{}, world, lists, dt, closed);
+}
+
+template <class Law, Effects Fx>
+[[gnu::target("arch=x86-64-v3")]] void all_contacts_avx2(World& world, ContactLists& lists, double dt,
+                                                        std::vector<std::int32_t>& closed) {
+  all_contacts<Law, Fx>(simd::Portable{}, world, lists, dt, closed);
+}
+
+template <class Law, Effects Fx>
+void all_contacts_portable(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) {
+  all_contacts<Law, Fx>(simd::Portable{}, world, lists, dt, closed);
+}
+
+template <class Law, Effects Fx>
+class LoopsOf final : public ForceLoops {
+ public:
+  void run(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) const override {
+    switch (cpu::vector_isa()) {
+      case cpu::VectorIsa::avx512: return all_contacts_avx512<Law, Fx>(world, lists, dt, closed);
+      case cpu::VectorIsa::avx2: return all_contacts_avx2<Law, Fx>(world, lists, dt, closed);
+      default: return all_contacts_portable<Law, Fx>(world, lists, dt, closed);
+    }
+  }
+};
+
+}  // namespace loops
+
+template <class Law>
+NormalLaw make_normal_law() {
+  NormalLaw n;
+  n.name = Law::name;
+  n.equation = Law::equation;
+  n.stiffness = [](double R12, double D) { return Law::stiffness(R12, D); };
+  n.force = [](double kn, double h) { return Law::force(kn, h, std::sqrt(h)); };
+  n.energy = [](double kn, double h) { return Law::energy(kn, h); };
+  n.damping_coefficient = [](double e) { return Law::damping_coefficient(e); };
+  n.loops = [](Effects fx) {
+    return with_effects(fx, []<Effects Fx>() -> std::unique_ptr<ForceLoops> { return std::make_unique<loops::LoopsOf<Law, Fx>>(); });
+  };
+  return n;
+}
+
+}  // namespace softpack

@@ -1,0 +1,72 @@
+// The force loop every kind of contact goes through, eight contacts at a time:
+//
+//   select   which listed contacts touch (the springs of the others are cleared)
+//   gather   their geometry, constants and springs into the lanes of simd::Wide values
+//   law      contact_force() of contact/contact_law.hpp
+//   add      forces and torques to the spheres (and the wall's load), in list order
+//
+// A kind of contact (forces/pair_contacts.hpp, plane_contacts.hpp, shell_contacts.hpp) supplies
+// select(), gather() and add(); `Isa` is the data-movement back end of simd/isa.hpp. The sums
+// are made one contact after the other in list order, so the result bits do not depend on the
+// lane count or the instruction set.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "contact/contact_law.hpp"
+#include "simd/isa.hpp"
+
+namespace softpack {
+
+/// The lanes of one group of eight contacts, as gather() leaves them.
+struct ContactLanes {
+  ContactGeometry<simd::Wide> geometry;
+  ContactConstants<simd::Wide> constants;
+  V3<simd::Wide> spring;
+  simd::Index i, j;      ///< the spheres (j: pairs only)
+  simd::Wide ai, aj;     ///< branch lengths r - h/2 from the centres to the contact point
+};
+
+/// The value of lane m.
+[[gnu::always_inline]] inline double lane(const simd::Wide& w, int m) { return w.v[m]; }
+[[gnu::always_inline]] inline Vec3 lane(const V3<simd::Wide>& v, int m) { return {v.x.v[m], v.y.v[m], v.z.v[m]}; }
+
+template <class NormalLaw, Effects Fx, class Isa, class Contacts>
+[[gnu::always_inline]] inline void contact_loop(Isa isa, Contacts& contacts, double dt, std::vector<std::int32_t>& closed) {
+  closed.resize(contacts.size() + simd::kLanes);
+  const std::size_t touching = contacts.select(isa, closed.data());
+  if (touching == 0) return;
+  // The last group is filled up with copies of the last contact; add() ignores them.
+  std::fill(closed.begin() + static_cast<std::ptrdiff_t>(touching),
+            closed.begin() + static_cast<std::ptrdiff_t>(touching + simd::kLanes), closed[touching - 1]);
+  for (std::size_t m = 0; m < touching; m += simd::kLanes) {
+    const simd::Index k = simd::load(closed.data() + m);
+    ContactLanes c = contacts.gather(isa, k, dt);
+    const ContactForce<simd::Wide> f = contact_force<NormalLaw, Fx>(c.geometry, c.constants, c.spring, dt);
+    contacts.add(c, f, closed.data() + m, static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
+  }
+}
+
+/// The constants the declared effects read, gathered for contacts k.
+template <Effects Fx, class Isa, class Arrays>
+[[gnu::always_inline]] inline ContactConstants<simd::Wide> gather_constants(Isa isa, const Arrays& a, simd::Index k) {
+  ContactConstants<simd::Wide> c{0.0, 0.0, 0.0, 0.0, 0.0};
+  c.kn = simd::gather(isa, a.kn.data(), k);
+  if constexpr (Fx.damping) c.gamma0 = simd::gather(isa, a.gamma0.data(), k);
+  if constexpr (Fx.friction) c.kt0 = simd::gather(isa, a.kt0.data(), k), c.mu = simd::gather(isa, a.mu.data(), k);
+  if constexpr (Fx.friction && Fx.damping) c.gamma_t0 = simd::gather(isa, a.gamma_t0.data(), k);
+  return c;
+}
+
+/// Component c of the vectors base[idx] (Vec3 is three doubles: component c of vector i is
+/// double 3i + c).
+template <class Isa>
+[[gnu::always_inline]] inline V3<simd::Wide> gather_vec3(Isa isa, const Vec3* base, simd::Index idx) {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double));
+  const double* const d = base->data();
+  const simd::Index i3 = 3 * idx;
+  return {simd::gather(isa, d, i3), simd::gather(isa, d + 1, i3), simd::gather(isa, d + 2, i3)};
+}
+
+}  // namespace softpack

@@ -1,0 +1,87 @@
+#include "forces/force_field.hpp"
+
+#include "contact/hertz_normal.hpp"
+#include "contact/tsuji_tangential.hpp"
+#include "contact/viscous_damping.hpp"
+
+namespace softpack {
+
+ForceField::ForceField(const SceneDef& scene) {
+  const EffectsDef& e = scene.effects;
+  fx_ = Effects{e.friction, e.damping(), e.rotation, scene.integration.history_update == HistoryUpdate::synchronized};
+  if (e.normal.empty()) return;
+  law_ = &normal_law(e.normal);
+  loops_ = law_->loops(fx_);
+  if (e.damping()) alpha_ = law_->damping_coefficient(*e.restitution);
+  tangential_ratio_ = e.tangential_damping_ratio;
+  materials_ = scene.materials.size();
+  D_.resize(materials_ * materials_);
+  Dt_.resize(materials_ * materials_);
+  mu_.resize(materials_ * materials_);
+  for (std::size_t a = 0; a < materials_; ++a)
+    for (std::size_t b = 0; b < materials_; ++b) {
+      D_[a * materials_ + b] = hertz_D(scene.materials[a], scene.materials[b]);
+      Dt_[a * materials_ + b] = tsuji_Dt(scene.materials[a], scene.materials[b]);
+      mu_[a * materials_ + b] = contact_mu(scene.materials[a], scene.materials[b]);
+    }
+  for (const PlaneDef& p : scene.planes) plane_material_.push_back(p.material);
+  for (const ShellDef& s : scene.shells) {
+    shell_material_.push_back(s.material);
+    shell_contact_radius_.push_back(s.contact_radius);
+    shell_radius_.push_back(s.radius);
+  }
+}
+
+void ForceField::add_contact_forces(World& world, ContactLists& lists, double spring_dt) {
+  if (loops_) loops_->run(world, lists, spring_dt, closed_);
+}
+
+ContactConstants<double> ForceField::pair_constants(const Particles& p, int i, int j) const {
+  const std::size_t mm = static_cast<std::size_t>(p.material[i]) * materials_ + p.material[j];
+  const double R12 = hertz::reduced_radius(p.r[i], p.r[j]);
+  ContactConstants<double> k{};
+  k.kn = law_->stiffness(R12, D_[mm]);
+  k.kt0 = tsuji::stiffness_factor(R12, Dt_[mm]);
+  k.mu = mu_[mm];
+  const double m12 = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
+  k.gamma0 = damping::gamma_factor(alpha_, m12, k.kn);
+  // Inertia of the sliding-rolling mode: 1/mt = 1/mi + ri^2/Ii + 1/mj + rj^2/Ij.
+  double inv_mt = p.inv_m[i] + p.inv_m[j];
+  if (p.rotates()) inv_mt += p.r[i] * p.r[i] * p.inv_I[i] + p.r[j] * p.r[j] * p.inv_I[j];
+  k.gamma_t0 = tangential_ratio_ * damping::gamma_factor(alpha_, 1.0 / inv_mt, k.kt0);
+  return k;
+}
+
+ContactConstants<double> ForceField::wall_constants(const Particles& p, int i, int wall_material, double R12) const {
+  const std::size_t mm = static_cast<std::size_t>(p.material[i]) * materials_ + wall_material;
+  ContactConstants<double> k{};
+  k.kn = law_->stiffness(R12, D_[mm]);
+  k.kt0 = tsuji::stiffness_factor(R12, Dt_[mm]);
+  k.mu = mu_[mm];
+  k.gamma0 = damping::gamma_factor(alpha_, p.m[i], k.kn);  // a wall has infinite mass
+  double inv_mt = p.inv_m[i];
+  if (p.rotates()) inv_mt += p.r[i] * p.r[i] * p.inv_I[i];
+  k.gamma_t0 = tangential_ratio_ * damping::gamma_factor(alpha_, 1.0 / inv_mt, k.kt0);
+  return k;
+}
+
+void ForceField::set_constants(const World& world, ContactLists& lists, const NewContacts& added) const {
+  const Particles& p = world.p;
+  for (std::size_t k : added.pairs) lists.pairs.k.set(k, pair_constants(p, lists.pairs.i[k], lists.pairs.j[k]));
+  for (std::size_t w = 0; w < added.planes.size(); ++w) {
+    WallList& l = lists.planes[w];
+    for (std::size_t k : added.planes[w]) l.k.set(k, wall_constants(p, l.i[k], plane_material_[w], p.r[l.i[k]]));
+  }
+  for (std::size_t w = 0; w < added.shells.size(); ++w) {
+    WallList& l = lists.shells[w];
+    for (std::size_t k : added.shells[w]) {
+      const int i = l.i[k];
+      const double R12 = shell_contact_radius_[w] == ShellContactRadius::concave
+                             ? hertz::reduced_radius_concave(p.r[i], shell_radius_[w])
+                             : p.r[i];
+      l.k.set(k, wall_constants(p, i, shell_material_[w], R12));
+    }
+  }
+}
+
+}  // namespace softpack

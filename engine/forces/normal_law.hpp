@@ -1,0 +1,46 @@
+// A normal contact law as the engine sees it at run time: its scalar formulas (for the
+// constants of new contacts, the residuals, the watchdog and force_between) and its force loops,
+// compiled for every combination of effects (forces/compile_loops.hpp). The scene chooses one
+// by name (`effects.normal: hertz`).
+//
+// The registry: the engine's own laws are listed once, in forces/normal_laws.cpp; a program may
+// add its own with add_normal_law() (tests/physics/test_normal_law_registry.cpp adds a linear
+// spring). docs/architecture.md, "Adding a normal law", says how.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/effects.hpp"
+#include "neighbor/contact_list.hpp"
+#include "state/world.hpp"
+
+namespace softpack {
+
+/// The contact forces of every touching contact of a world, for one law and one set of effects:
+/// added to the spheres' F (and T) and to the wall loads; springs advanced by `spring_dt`.
+class ForceLoops {
+ public:
+  virtual ~ForceLoops() = default;
+  virtual void run(World& world, ContactLists& lists, double spring_dt, std::vector<std::int32_t>& scratch) const = 0;
+};
+
+struct NormalLaw {
+  std::string name;      ///< the value of effects.normal
+  std::string equation;  ///< for messages and provenance
+  double (*stiffness)(double R12, double D) = nullptr;  ///< the per-contact constant kn
+  double (*force)(double kn, double h) = nullptr;       ///< Fn [N]
+  double (*energy)(double kn, double h) = nullptr;      ///< elastic energy [J]
+  double (*damping_coefficient)(double restitution) = nullptr;
+  std::unique_ptr<ForceLoops> (*loops)(Effects fx) = nullptr;
+};
+
+/// The registered law of that name. InputError "effects.normal: ..." with the registered names
+/// (and the closest one) otherwise.
+const NormalLaw& normal_law(const std::string& name);
+std::vector<std::string> normal_law_names();
+/// Registers a law; std::invalid_argument when the name is taken.
+void add_normal_law(NormalLaw law);
+
+}  // namespace softpack

@@ -1,0 +1,132 @@
+// Sphere-wall contacts for the force loop (forces/contact_loop.hpp): body 1 is the sphere, body 2
+// the wall, which has infinite mass. The two walls differ only in their geometry:
+//
+//   plane  (walls/plane_wall.hpp)       h = r - (x - p).N,  n = N (towards the spheres),
+//                                        wall velocity u at every point;
+//   shell  (walls/spherical_shell.hpp)  h = |x - c| + r - Rs,  n = -(x - c) / |x - c| (inwards),
+//                                        surface velocity u + spin x (contact point - c).
+//
+// vc = v - (surface velocity) - (ai w) x n, ai = r - h/2. With the synchronized history update
+// the spring's frame is the half-step one (the sphere at x - dt/2 (v - u)). The wall receives
+// -F, with its torque about the wall's reference point (the plane's point, the shell's centre).
+#pragma once
+#include <cstdint>
+#include <type_traits>
+
+#include "forces/contact_loop.hpp"
+#include "forces/pair_contacts.hpp"
+#include "neighbor/contact_list.hpp"
+#include "state/world.hpp"
+
+namespace softpack {
+
+template <Effects Fx, class Wall>
+struct WallContacts {
+  WallList& list;
+  const Wall& wall;
+  SphereArrays s;
+  WallLoad& load;
+
+  std::size_t size() const { return list.size(); }
+
+  /// The indices of the entries whose sphere touches the wall (h > 0), in list order; with
+  /// friction the springs of the others are cleared.
+  template <class Isa>
+  std::size_t select(Isa, std::int32_t* closed) {
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const int i = list.i[k];
+      if (wall.overlap(s.x[i], s.r[i]) <= 0.0) {
+        if constexpr (Fx.friction) list.spring[k].setZero();
+        continue;
+      }
+      closed[n++] = static_cast<std::int32_t>(k);
+    }
+    return n;
+  }
+
+  template <class Isa>
+  [[gnu::always_inline]] ContactLanes gather(Isa isa, simd::Index k, double dt) const {
+    using simd::Wide;
+    ContactLanes c;
+    c.i = simd::gather(isa, list.i.data(), k);
+    const V3<Wide> x = gather_vec3(isa, s.x, c.i), v = gather_vec3(isa, s.v, c.i);
+    const Wide r = simd::gather(isa, s.r, c.i);
+    V3<Wide> w{};
+    if constexpr (Fx.rotation) w = gather_vec3(isa, s.w, c.i);
+    c.constants = gather_constants<Fx>(isa, list.k, k);
+    ContactGeometry<Wide>& g = c.geometry;
+    V3<Wide> surface_velocity;
+    geometry(x, r, g.n, g.h, c.ai, surface_velocity);
+    g.vc = v - surface_velocity;
+    if constexpr (Fx.rotation) g.vc = g.vc - cross(c.ai * w, g.n);
+    if constexpr (Fx.friction) {
+      c.spring = gather_vec3(isa, list.spring.data(), k);
+      g.n_frame = g.n, g.vc_frame = g.vc;
+      if constexpr (Fx.synchronized) half_step_frame(x, v, w, r, g.h, Wide(0.5 * dt), g);
+    }
+    return c;
+  }
+
+  /// F_i += F, T_i -= ai n x Ft; the wall's load -= F with its torque; the springs back.
+  [[gnu::always_inline]] void add(const ContactLanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
+    const Vec3 ref = reference_point();
+    for (int m = 0; m < live; ++m) {
+      const int i = c.i.v[m];
+      const Vec3 F = lane(f.F, m), n = lane(c.geometry.n, m);
+      const double ai = lane(c.ai, m);
+      s.F[i] += F;
+      if constexpr (Fx.rotation) s.T[i] -= ai * n.cross(lane(f.Ft, m));
+      load.force -= F;
+      load.torque += (s.x[i] - ai * n - ref).cross(-F);
+      if constexpr (Fx.friction) list.spring[k[m]] = lane(c.spring, m);
+    }
+  }
+
+ private:
+  using W = simd::Wide;
+
+  Vec3 reference_point() const {
+    if constexpr (std::is_same_v<Wall, PlaneWall>) return wall.point;
+    else return wall.centre;
+  }
+
+  /// Normal, overlap, branch length and the wall's surface velocity at the contact point.
+  [[gnu::always_inline]] void geometry(const V3<W>& x, const W& r, V3<W>& n, W& h, W& ai, V3<W>& u) const {
+    if constexpr (std::is_same_v<Wall, PlaneWall>) {
+      n = broadcast<W>(wall.normal);
+      h = r - dot(x - broadcast<W>(wall.point), n);
+      ai = r - W(0.5) * h;
+      u = broadcast<W>(wall.velocity);
+    } else {
+      const V3<W> c = broadcast<W>(wall.centre);
+      const V3<W> d = x - c;
+      const W dist = simd::sqrt(dot(d, d));
+      h = dist + r - W(wall.radius);
+      n = d * (W(-1.0) / dist);  // inwards
+      ai = r - W(0.5) * h;
+      u = broadcast<W>(wall.velocity) + cross(broadcast<W>(wall.spin), (x - ai * n) - c);
+    }
+  }
+
+  /// The synchronized history update's frame: the contact at t + dt/2.
+  [[gnu::always_inline]] void half_step_frame(const V3<W>& x, const V3<W>& v, const V3<W>& w, const W& r, const W& h,
+                                              const W& half_dt, ContactGeometry<W>& g) const {
+    if constexpr (std::is_same_v<Wall, PlaneWall>) {
+      const V3<W> u = broadcast<W>(wall.velocity);
+      const W h_half = h + half_dt * dot(v - u, g.n);
+      g.vc_frame = v - u;
+      if constexpr (Fx.rotation) g.vc_frame = g.vc_frame - cross((r - W(0.5) * h_half) * w, g.n);
+    } else {
+      const V3<W> c = broadcast<W>(wall.centre), u = broadcast<W>(wall.velocity);
+      const V3<W> d_half = (x - c) - half_dt * (v - u);
+      const W dist_half = simd::sqrt(dot(d_half, d_half));
+      g.n_frame = d_half * (W(-1.0) / dist_half);
+      const W a_half = r - W(0.5) * (dist_half + r - W(wall.radius));
+      g.vc_frame = v - (u + cross(broadcast<W>(wall.spin), ((c + d_half) - a_half * g.n_frame) - c));
+      if constexpr (Fx.rotation) g.vc_frame = g.vc_frame - cross(a_half * w, g.n_frame);
+    }
+  }
+};
+
+}  // namespace softpack

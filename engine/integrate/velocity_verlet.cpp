@@ -1,0 +1,38 @@
+#include "integrate/velocity_verlet.hpp"
+
+namespace softpack {
+
+void half_kick(Particles& p, double dt) {
+  const std::size_t n = p.size();
+  const double half = 0.5 * dt;
+  const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
+  Vec3* const v = p.v.data();
+  const Vec3* const F = p.F.data();
+  const double* const inv_m = p.inv_m.data();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!driven || !driven[i]) v[i] += (half * inv_m[i]) * F[i];
+  if (p.rotates()) {
+    Vec3* const w = p.w.data();
+    const Vec3* const T = p.T.data();
+    const double* const inv_I = p.inv_I.data();
+    for (std::size_t i = 0; i < n; ++i)
+      if (!driven || !driven[i]) w[i] += (half * inv_I[i]) * T[i];
+  }
+}
+
+void drift(Particles& p, double dt, Neighbours& neighbours) {
+  const std::size_t n = p.size();
+  const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
+  Vec3* const x = p.x.data();
+  const Vec3* const v = p.v.data();
+  const Vec3* const x0 = neighbours.x_at_build().data();
+  Neighbours::LargestTwo moved;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (driven && driven[i]) continue;
+    x[i] += dt * v[i];
+    moved.add((x[i] - x0[i]).squaredNorm());
+  }
+  neighbours.set_moved(moved);
+}
+
+}  // namespace softpack

@@ -1,0 +1,18 @@
+// The two integration phases of velocity Verlet over the free spheres (a driven sphere's motion
+// is prescribed by its driver, drivers/drivers.hpp):
+//
+//   half_kick   v += F/m dt/2,  w += T/I dt/2
+//   drift       x += v dt
+#pragma once
+#include "neighbor/neighbours.hpp"
+#include "state/particles.hpp"
+
+namespace softpack {
+
+void half_kick(Particles& p, double dt);
+
+/// Also starts the step's record of displacements since the last neighbour build
+/// (neighbours.moved(); the drivers add their spheres' to it).
+void drift(Particles& p, double dt, Neighbours& neighbours);
+
+}  // namespace softpack

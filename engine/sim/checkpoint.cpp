@@ -1,0 +1,89 @@
+// Simulation::state() and restore(): the saved form of a run (state/simulation_state.hpp), from
+// the world and the springs of the contact lists, and back.
+#include <fmt/format.h>
+
+#include <stdexcept>
+#include <utility>
+
+#include "core/error.hpp"
+#include "sim/simulation.hpp"
+
+namespace softpack {
+namespace {
+
+std::vector<std::vector<SimulationState::WallSpring>> wall_springs(const std::vector<WallList>& lists) {
+  std::vector<std::vector<SimulationState::WallSpring>> out;
+  for (const WallList& l : lists) {
+    out.emplace_back();
+    for (std::size_t k = 0; k < l.spring.size(); ++k)
+      if (l.spring[k] != Vec3::Zero()) out.back().push_back({l.i[k], l.spring[k]});
+  }
+  return out;
+}
+
+// Installs saved wall springs; a saved spring whose sphere is not listed cannot be: it touched.
+void install(std::vector<WallList>& lists, const std::vector<std::vector<SimulationState::WallSpring>>& saved) {
+  for (std::size_t w = 0; w < lists.size() && w < saved.size(); ++w) {
+    std::size_t a = 0;
+    for (const auto& sp : saved[w]) {
+      while (a < lists[w].size() && lists[w].i[a] < sp.i) ++a;
+      if (a == lists[w].size() || lists[w].i[a] != sp.i)
+        throw InputError(fmt::format("the saved state has a wall spring for sphere {}, which is off the wall", sp.i));
+      lists[w].spring[a] = sp.xi;
+    }
+  }
+}
+
+}  // namespace
+
+SimulationState Simulation::state() const {
+  if (drivers_moving()) throw std::logic_error("Simulation::state: a driver is still moving");
+  const Particles& p = world_.p;
+  const ContactLists& lists = neighbours_.lists();
+  SimulationState s;
+  s.time = world_.time;
+  s.steps = world_.steps;
+  s.x = p.x, s.v = p.v, s.w = p.w, s.F = p.F, s.T = p.T;
+  for (const auto& pl : world_.planes) s.plane_points.push_back(pl.point);
+  for (const auto& sh : world_.shells) s.shell_centres.push_back(sh.centre);
+  for (std::size_t k = 0; k < lists.pairs.spring.size(); ++k)
+    if (lists.pairs.spring[k] != Vec3::Zero()) s.pair_springs.push_back({lists.pairs.i[k], lists.pairs.j[k], lists.pairs.spring[k]});
+  s.plane_springs = wall_springs(lists.planes);
+  s.shell_springs = wall_springs(lists.shells);
+  return s;
+}
+
+void Simulation::restore(const SimulationState& s) {
+  Particles& p = world_.p;
+  const std::size_t n = p.size();
+  if (s.x.size() != n || s.v.size() != n || s.F.size() != n || s.w.size() != p.w.size() || s.T.size() != p.T.size() ||
+      s.plane_points.size() != world_.planes.size() || s.shell_centres.size() != world_.shells.size())
+    throw InputError(fmt::format("the saved state does not fit this scene ({} spheres saved, {} in the scene)", s.x.size(), n));
+  world_.time = s.time;
+  world_.steps = s.steps;
+  p.x = s.x, p.v = s.v, p.w = s.w, p.F = s.F, p.T = s.T;
+  for (std::size_t k = 0; k < world_.planes.size(); ++k) world_.planes[k].point = s.plane_points[k];
+  for (std::size_t k = 0; k < world_.shells.size(); ++k) world_.shells[k].centre = s.shell_centres[k];
+  rebuild_neighbours();
+  // Install the springs; a saved spring whose pair is not listed cannot be: it was touching.
+  if (scene_.effects.friction) {
+    ContactLists& lists = neighbours_.lists();
+    std::fill(lists.pairs.spring.begin(), lists.pairs.spring.end(), Vec3::Zero());
+    for (auto* walls : {&lists.planes, &lists.shells})
+      for (WallList& l : *walls) std::fill(l.spring.begin(), l.spring.end(), Vec3::Zero());
+    std::size_t a = 0;
+    const PairList& pl = lists.pairs;
+    for (const auto& sp : s.pair_springs) {
+      while (a < pl.size() && std::pair(pl.i[a], pl.j[a]) < std::pair(sp.i, sp.j)) ++a;
+      if (a == pl.size() || pl.i[a] != sp.i || pl.j[a] != sp.j)
+        throw InputError(fmt::format("the saved state has a spring for spheres {} and {}, which are apart", sp.i, sp.j));
+      lists.pairs.spring[a] = sp.xi;
+    }
+    install(lists.planes, s.plane_springs);
+    install(lists.shells, s.shell_springs);
+  }
+  watchdog_.start(world_, measure());
+  since_check_ = 0;
+}
+
+}  // namespace softpack

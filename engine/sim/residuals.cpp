@@ -1,0 +1,52 @@
+#include "sim/residuals.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "forces/contact_walk.hpp"
+
+namespace softpack {
+
+double Measurement::force_ratio() const {
+  if (max_unbalanced_force == 0.0) return 0.0;
+  if (mean_contact_force == 0.0) return std::numeric_limits<double>::infinity();
+  return max_unbalanced_force / mean_contact_force;
+}
+
+double Measurement::energy_ratio() const {
+  if (kinetic_energy == 0.0) return 0.0;
+  if (elastic_energy == 0.0) return std::numeric_limits<double>::infinity();
+  return kinetic_energy / elastic_energy;
+}
+
+Measurement residuals(const World& world, const ContactLists& lists, const ForceField& forces) {
+  Measurement m;
+  const Particles& p = world.p;
+  if (forces.active()) {
+    const NormalLaw& law = forces.law();
+    double sum_Fn = 0.0;
+    for_each_closed_contact(world, lists, forces.effects().friction, [&](const ClosedContact& c) {
+      m.elastic_energy += c.normal_energy(law);
+      if (c.spring) m.elastic_energy += c.spring_energy();
+      sum_Fn += c.Fn(law);
+      ++m.contacts;
+      const double radius = c.j >= 0 ? std::min(p.r[c.i], p.r[c.j]) : p.r[c.i];
+      if (!(c.h / radius > m.deepest.fraction)) return;
+      m.deepest = {c.h / radius, c.h, c.i, c.j, c.kind == ClosedContact::Kind::plane ? c.wall : -1,
+                   c.kind == ClosedContact::Kind::shell ? c.wall : -1};
+    });
+    m.mean_contact_force = m.contacts ? sum_Fn / static_cast<double>(m.contacts) : 0.0;
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.is_driven(i)) continue;
+    const double translation = 0.5 * p.m[i] * p.v[i].squaredNorm();
+    const double rotation = p.rotates() ? 0.5 * p.w[i].squaredNorm() / p.inv_I[i] : 0.0;
+    m.kinetic_energy += translation;  // two sums, in this order: the recorded residuals keep their bits
+    if (p.rotates()) m.kinetic_energy += rotation;
+    if (translation + rotation > m.hottest_energy) m.hottest_energy = translation + rotation, m.hottest = static_cast<int>(i);
+    m.max_unbalanced_force = std::max(m.max_unbalanced_force, p.F[i].norm());
+  }
+  return m;
+}
+
+}  // namespace softpack

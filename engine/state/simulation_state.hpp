@@ -1,0 +1,29 @@
+// Everything a run needs to continue bit for bit (the checkpoints of the sweeps, written and read
+// by measure/point_file): the world's positions, velocities, forces and clock, and the non-zero
+// tangential springs. Simulation::state() and restore() make and install it.
+#pragma once
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace softpack {
+
+struct SimulationState {
+  double time = 0.0;
+  long steps = 0;
+  std::vector<Vec3> x, v, w, F, T;  ///< w and T empty without rotation
+  std::vector<Vec3> plane_points, shell_centres;
+  /// Non-zero tangential springs: sphere pairs (i < j), and per wall (sphere, spring).
+  struct PairSpring {
+    int i = 0, j = 0;
+    Vec3 xi = Vec3::Zero();
+  };
+  struct WallSpring {
+    int i = 0;
+    Vec3 xi = Vec3::Zero();
+  };
+  std::vector<PairSpring> pair_springs;
+  std::vector<std::vector<WallSpring>> plane_springs, shell_springs;
+};
+
+}  // namespace softpack
