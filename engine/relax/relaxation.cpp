@@ -1,5 +1,7 @@
 #include "relax/relaxation.hpp"
 
+#include "scene/validate.hpp"
+
 #include <cmath>
 
 namespace softpack {

@@ -1,12 +1,12 @@
 // Relaxation: bring a deformed scene to rest before measuring forces, with one of the protocols
-// of relax/relaxation_def.hpp. Both report the steps and simulated time they used and the
+// of scene/relaxation_def.hpp. Both report the steps and simulated time they used and the
 // residuals after each stop/check.
 #pragma once
 #include <functional>
 #include <optional>
 #include <vector>
 
-#include "relax/relaxation_def.hpp"
+#include "scene/relaxation_def.hpp"
 #include "sim/simulation.hpp"
 
 namespace softpack {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "config/yaml_node.hpp"
-#include "relax/relaxation_def.hpp"
+#include "scene/relaxation_def.hpp"
 #include "scene/scene_def.hpp"
 
 namespace softpack {

@@ -232,6 +232,29 @@ void validate(const SceneDef& s) {
     fail("watchdog.check_interval", fmt::format("{} is not allowed; allowed: an integer >= 1 (steps)", wd.check_interval));
 }
 
+namespace {
+
+void require_positive_relaxation(double v, const char* key) {
+  if (!(v > 0.0 && std::isfinite(v))) throw InputError(fmt::format("relaxation.{}: {} is not allowed; allowed: > 0", key, v));
+}
+
+}  // namespace
+
+void validate(const RelaxationDef& def) {
+  if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
+    if (p->stops < 0) throw InputError(fmt::format("relaxation.stops: {} is not allowed; allowed: >= 0", p->stops));
+    if (p->stops > 0) require_positive_relaxation(p->wait, "wait");
+    require_positive_relaxation(p->final_wait, "final_wait");
+  } else {
+    const auto& c = std::get<ConvergedRelaxationDef>(def);
+    require_positive_relaxation(c.force_tolerance, "force_tolerance");
+    require_positive_relaxation(c.energy_tolerance, "energy_tolerance");
+    require_positive_relaxation(c.check_interval, "check_interval");
+    require_positive_relaxation(c.max_time, "max_time");
+  }
+}
+
+
 void validate_drivers(const SceneDef& scene, const std::vector<DriverDef>& drivers) { check_drivers(scene, drivers); }
 
 int SceneDef::material_index(const std::string& name) const {

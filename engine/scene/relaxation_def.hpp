@@ -1,5 +1,5 @@
 // The relaxation protocols as plain data (parsed with the scenes and profiles, scene/scene_yaml),
-// run by relax/relaxation.hpp:
+// run by relax/relaxation.hpp and validated by scene/validate.hpp:
 //
 // * paper (§4 of the paper): `stops` times, run for `wait` seconds then set every free
 //   sphere's translational and angular velocity to zero; then run `final_wait` more seconds.
@@ -28,8 +28,5 @@ struct ConvergedRelaxationDef {
 };
 
 using RelaxationDef = std::variant<PaperRelaxationDef, ConvergedRelaxationDef>;
-
-/// Validates the definition (InputError naming relaxation.<key>).
-void validate(const RelaxationDef& def);
 
 }  // namespace softpack
