@@ -29,7 +29,7 @@ SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 help:  ## list the targets
 	@echo "softpack — reproducible soft-particle contact laws (see README.md)"
 	@echo
-	@grep -hE '^[a-z0-9-]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z0-9-]+):.*## (.*)/  make \1\t\2/' | expand -t 24
+	@grep -hE '^[a-z0-9-]+:.*## ' Makefile workflow/*.mk | sed -E 's/^([a-z0-9-]+):.*## (.*)/  make \1\t\2/' | expand -t 24
 
 setup:  ## install the Debian packages (apt-get; quick when they are there)
 	@missing=$$(for p in $(APT_PACKAGES) $(APT_TEX_PACKAGES); do \
@@ -52,7 +52,9 @@ build-tools: $(BUILD)/CMakeCache.txt
 	  || { echo "build: FAILED; the end of $(BUILD)/build.log:"; tail -40 $(BUILD)/build.log; exit 1; }
 	@echo "build: $(BUILD) is up to date (log $(BUILD)/build.log)"
 
+ifneq ($(wildcard $(BUILD)/engine/softpack-config),)
 all: build tables figures paper scenes  ## the main job: Tables 1-2, Figures 1-6, paper/paper.pdf, the example scenes
+endif
 
 .PHONY: scenes
 scenes: | build-tools  ## run the example scenes of experiments/scenes/ (data/scenes/*.json)
@@ -78,10 +80,24 @@ bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side b
 clean:  ## remove the builds and the profile's generated data and figures (keeps data/archive)
 	rm -rf $(BUILD) $(BUILD_SANITIZE) $(FUZZ_BUILD) data/scenes $(DATA)/$(PROFILE) $(DATA)/studies figures/generated $(PAPER_PDF)
 
+# The pipeline's rules come from the profile, which softpack-config reads for Make
+# (workflow/stamps.mk). Before it is built (a fresh clone), the pipeline's goals build the tools,
+# then run make again, which then reads the profile.
+CONFIG_TOOL := $(BUILD)/engine/softpack-config
+PIPELINE_GOALS := all tables figures paper archive packings normal tangential sweeps averages fits figure1 figure2 \
+  study-packing study-relaxation
+ifneq ($(wildcard $(CONFIG_TOOL)),)
 include workflow/stamps.mk
 include workflow/packing.mk
 include workflow/sweeps.mk
 include workflow/analysis.mk
 include workflow/archive.mk
 include workflow/paper.mk
+else ifneq ($(SOFTPACK_TOOLS_BUILT),)
+$(error $(CONFIG_TOOL) is missing after the build (see $(BUILD)/build.log))
+else
+.PHONY: $(PIPELINE_GOALS)
+$(PIPELINE_GOALS): | build-tools
+	@$(MAKE) --no-print-directory SOFTPACK_TOOLS_BUILT=1 $@
+endif
 include workflow/fuzz.mk

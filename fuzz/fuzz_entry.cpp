@@ -14,6 +14,7 @@
 #include "analysis/fit_json.hpp"
 #include "analysis/power_fit.hpp"
 #include "config/profile.hpp"
+#include "packing/packing_profile.hpp"
 #include "core/error.hpp"
 #include "measure/point_file.hpp"
 #include "measure/settings.hpp"

@@ -54,8 +54,6 @@ FIGURE_NAMES := fig3_normal fig4_tangential_soft_solid fig5_tangential_soft_soft
 FIGURES_3_6 := $(foreach f,$(FIGURE_NAMES),$(FIGURES_OUT)/$(f).pdf $(FIGURES_OUT)/$(f).png)
 figures: figure1 figure2 $(FIGURES_3_6)  ## Figures 1-6 (figures/generated/PROFILE/, PDF and PNG)
 
-profile_value = $(shell sed -n 's/^ *$(1): *\([0-9.eE+-]*\).*/\1/p' experiments/$(PROFILE).yaml | head -1)
-profile_material = $(shell sed -n 's/^material:.*[{ ]$(1): *\([0-9.eE+-]*\).*/\1/p' experiments/$(PROFILE).yaml)
 # gnuplot_run SCRIPT OUT VARIABLES: draws via OUT.tmp.EXT, renamed into place.
 gnuplot_run = mkdir -p $(FIGURES_OUT) && gnuplot -e "avg='$(AVERAGE_DIR)'; out='$(2).tmp$(suffix $(2))'; $(3)" \
   -e "load '$(FIT_DIR)/soft-solid.gp'; load '$(FIT_DIR)/soft-soft.gp'; load '$(TABLE_DIR)/published.gp'" $(1) \
@@ -63,7 +61,7 @@ gnuplot_run = mkdir -p $(FIGURES_OUT) && gnuplot -e "avg='$(AVERAGE_DIR)'; out='
 FIGURE_INPUTS := $(AVERAGES) $(FITS) $(TABLE_DIR)/published.gp
 
 $(FIGURES_OUT)/fig3_normal.%: figures/fig3_normal.gp $(FIGURE_INPUTS)
-	@$(call gnuplot_run,$<,$@,Rs=$(call profile_value,Rs); E=$(call profile_material,E); nu=$(call profile_material,nu))
+	@$(call gnuplot_run,$<,$@,$$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot))
 $(FIGURES_OUT)/fig4_tangential_soft_solid.%: figures/fig45_tangential.gp $(FIGURE_INPUTS)
 	@$(call gnuplot_run,$<,$@,scene='soft-solid')
 $(FIGURES_OUT)/fig5_tangential_soft_soft.%: figures/fig45_tangential.gp $(FIGURE_INPUTS)

@@ -1,7 +1,6 @@
 # Packing stage: packings of the profile's seeds (with pictures), Figures 1 and 2, and the
 # packing density study. Included by the top-level Makefile.
 
-SEEDS := $(shell sed -n 's/^seeds: *\[\(.*\)\].*/\1/p' experiments/$(PROFILE).yaml | tr ',' ' ')
 PACKING_DIR := $(DATA)/$(PROFILE)/packings
 PACKINGS := $(foreach s,$(SEEDS),$(PACKING_DIR)/seed-$(s).h5)
 FIGURES_OUT := figures/generated/$(PROFILE)
@@ -36,14 +35,14 @@ $(FIGURES_OUT)/fig2_section.dat: $(PACKING_DIR)/seed-$(firstword $(SEEDS)).h5 | 
 	@mkdir -p $(@D)
 	@$(RUN) $(BUILD)/engine/softpack-section --packing $< --out $@ 2> /dev/null
 $(FIGURES_OUT)/fig2_softparticle.%: $(FIGURES_OUT)/fig2_section.dat figures/fig2_softparticle.gp
-	@gnuplot -e "data='$<'; Rs=$$(sed -n 's/^ *Rs: *\([0-9.e+-]*\).*/\1/p' experiments/$(PROFILE).yaml); out='$@.tmp.$*'" \
+	@gnuplot -e "data='$<'; $$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot); out='$@.tmp.$*'" \
 	  figures/fig2_softparticle.gp && mv $@.tmp.$* $@
 
 STUDY_DIR := $(DATA)/studies/packing-density
 study-packing: $(STUDY_DIR)/packing-density.md figures/generated/studies/packing-density.png  ## the packing density study (beta, I, r_max/Rs)
 	@cat $(STUDY_DIR)/packing-density.md
 # The study varies the paper profile's packing section: it depends on that section only.
-STUDY_STAMP = $(call stamp,packing-density,packing,experiments/paper.yaml,$(DATA)/studies/stamps)
+STUDY_STAMP := $(call stamp,packing-density,packing,experiments/paper.yaml,$(DATA)/studies/stamps)
 $(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/packing-density.yaml $(STUDY_STAMP) | $(TOOLS)
 	$(RUN) $(BUILD)/engine/softpack-packing-study --config experiments/packing-density.yaml --out $(STUDY_DIR)
 figures/generated/studies/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp

@@ -1,31 +1,43 @@
-# Configuration stamps: each stage depends on a file holding a hash of exactly the profile
-# sections it reads (and of the release version), not on the profile's timestamp. The stamps
-# are brought up to date while make reads the makefiles, so `make -n` and `make -q` see them:
-# a file is rewritten (new mtime) only when its hash changes, and make reruns exactly the
-# stages downstream of a changed stamp. Editing a comment or a key no stage reads reruns nothing.
+# Configuration: Make takes the profile's seeds, scenes and the stages' stamps from
+# softpack-config (engine/apps/softpack_config.cpp), which reads the profile with the stages' own
+# readers and section lists (engine/config/profile.cpp): Make never parses YAML.
+#
+# Stamps: each stage depends on a file holding a hash of exactly the profile sections it reads
+# (and of the release), not on the profile's timestamp. The hash is computed while make reads the
+# makefiles; the stamp file is rewritten by a rule, and only when the hash differs from what it
+# holds, so make reruns exactly the stages downstream of a changed section, and `make -n` and
+# `make -q` say so without writing anything. Editing a comment or a key no stage reads reruns
+# nothing.
 
 VERSION := $(shell awk '/^project/ { print $$3; exit }' CMakeLists.txt)
 STAMPS := $(DATA)/$(PROFILE)/stamps
+PROFILE_FILE := experiments/$(PROFILE).yaml
 
-# config_slice SECTIONS [FILE]: those top-level sections of FILE (the profile by default),
-# comments and blank lines dropped.
-config_slice = awk -v want="$(1)" 'BEGIN { n = split(want, w, " "); for (i = 1; i <= n; i++) keep[w[i]] = 1 } \
-  /^[A-Za-z_][A-Za-z0-9_-]*:/ { key = $$0; sub(/:.*/, "", key); on = (key in keep) } \
-  on { sub(/[ \t]+\#.*$$/, ""); if ($$0 ~ /^[ \t]*(\#|$$)/) next; print }' $(or $(2),experiments/$(PROFILE).yaml)
+# config ARGS [PROFILE]: what softpack-config says of the profile (ARGS: seeds, scenes, stamp STAGE);
+# a profile it refuses stops make with its message.
+config = $(shell $(CONFIG_TOOL) $(or $(2),$(PROFILE_FILE)) $(1))$(if $(filter-out 0,$(.SHELLSTATUS)),$(error \
+  $(or $(2),$(PROFILE_FILE)) is refused (the message above); fix it, or make build if softpack-config is out of date))
 
-# stamp NAME SECTIONS [FILE [DIR]]: the path of DIR/NAME.hash (DIR: $(STAMPS)), brought up to date.
-stamp = $(shell d=$(or $(4),$(STAMPS)) && mkdir -p $$d && \
-  h=$$( { echo "softpack $(VERSION)"; $(call config_slice,$(2),$(3)); } | sha256sum | cut -c1-16) && \
-  { [ "$$h" = "$$(cat $$d/$(1).hash 2> /dev/null)" ] || echo "$$h" > $$d/$(1).hash; } && echo $$d/$(1).hash)
+# stamp NAME STAGE [PROFILE [DIR]]: the path of DIR/NAME.hash (DIR: $(STAMPS)), with a rule that
+# writes the stage's current stamp into it when it holds another (or does not exist).
+stamp = $(eval $(call stamp_rule,$(or $(4),$(STAMPS))/$(1).hash,$(call config,stamp $(2) --release $(VERSION),$(3))))$(or \
+  $(4),$(STAMPS))/$(1).hash
+define stamp_rule
+$(1): $(if $(filter-out $(2),$(file < $(1))),FORCE)
+	@mkdir -p $$(@D) && echo $(2) > $$@.tmp.$$$$$$$$ && mv $$@.tmp.$$$$$$$$ $$@
+endef
+.PHONY: FORCE
+FORCE:
 
-ifneq ($(wildcard experiments/$(PROFILE).yaml),)
-PACK_STAMP := $(call stamp,packing,packing)
-NORMAL_STAMP := $(call stamp,normal,packing material simulation relaxation normal)
-TANGENTIAL_STAMP := $(call stamp,tangential,packing material simulation relaxation normal tangential)
-AVERAGE_STAMP := $(call stamp,average,seeds packing material simulation relaxation normal tangential)
-else
-$(error experiments/$(PROFILE).yaml: no such profile (PROFILE=$(PROFILE)); profiles: $(notdir $(basename $(wildcard experiments/*.yaml))))
+ifeq ($(wildcard $(PROFILE_FILE)),)
+$(error $(PROFILE_FILE): no such profile (PROFILE=$(PROFILE)); profiles: $(notdir $(basename $(wildcard experiments/*.yaml))))
 endif
+SEEDS := $(call config,seeds)
+SCENES := $(call config,scenes)
+PACK_STAMP := $(call stamp,packing,packing)
+NORMAL_STAMP := $(call stamp,normal,normal)
+TANGENTIAL_STAMP := $(call stamp,tangential,tangential)
+AVERAGE_STAMP := $(call stamp,average,average)
 
 # Results recorded in the archive are reused when their stage's stamp matches (FROM_SCRATCH=1
 # ignores the archive). from_archive FILES STAMP: copies the archived FILES (all of them), or fails.

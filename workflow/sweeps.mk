@@ -2,7 +2,6 @@
 # Soft-soft pairs the packing of seed k with that of the next seed of the profile (cyclic), so
 # that the two soft-particles are independent and no extra packing is made.
 
-SCENES := $(shell sed -n 's/^ *scenes: *\[\(.*\)\].*/\1/p' experiments/$(PROFILE).yaml | tr ',' ' ')
 SWEEP_DIR := $(DATA)/$(PROFILE)
 CHECKPOINTS := $(SWEEP_DIR)/checkpoints
 

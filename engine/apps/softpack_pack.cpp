@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "config/profile.hpp"
+#include "packing/packing_profile.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"

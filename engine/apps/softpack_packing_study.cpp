@@ -12,6 +12,7 @@
 
 #include "apps/exit_codes.hpp"
 #include "config/profile.hpp"
+#include "packing/packing_profile.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
@@ -60,7 +61,7 @@ int main(int argc, char** argv) {
       for (const ConfigNode& v : vary.at(key).items()) {
         Row row;
         row.parameter = key;
-        row.value = key == "shell_is_neighbour" ? (v.boolean() ? 1.0 : 0.0) : v.positive();
+        row.value = key == "shell_is_neighbour" ? (v.boolean() ? 1.0 : 0.0) : v.number();
         PackingParameters p = profile.parameters;
         set(p, key, row.value);
         try {

@@ -1,30 +1,37 @@
 // An experiment profile (experiments/<name>.yaml): every parameter of the workflow, in
-// sections read by the stages. Each stage reads only its slice and records it, with the
-// seed and code version, in the files it writes.
+// sections read by the stages. This is the profile's schema: which sections there are, which
+// stage reads which (the one list of them: the stages record these sections with their results,
+// softpack-config gives Make their stamps), and their canonical text. The sections' contents
+// are read by their owners: packing/packing_profile.hpp, measure/settings.hpp.
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "config/yaml_node.hpp"
-#include "packing/generator.hpp"
 
 namespace softpack {
 
-struct PackingProfile {
-  PackingParameters parameters;
-  int profile_bins = 0;  ///< bins of the radial solid-fraction profile
-};
-
-/// Reads and validates the `packing` section of a profile file.
-PackingProfile parse_packing(const ConfigNode& root);
-
-/// The keys a profile file may hold at its top level (the sections of the stages).
+/// The keys a profile file may hold at its top level.
 const std::vector<std::string>& profile_sections();
+
+/// The stages of the workflow, in order: packing, normal, tangential, average.
+const std::vector<std::string>& profile_stages();
+
+/// The sections a stage's results depend on (InputError for an unknown stage). `description`
+/// (free text) and `watchdog` (when to stop a run gone wrong; it changes no result) are in none.
+const std::vector<std::string>& stage_sections(const std::string& stage);
 
 /// Canonical text of a section (YAML, keys in file order, comments dropped), recorded as the
 /// provenance of the outputs that depend on it.
 std::string section_text(const ConfigNode& root, const std::string& section);
+
+/// The canonical text of a stage's sections, concatenated: what its results depend on.
+std::string stage_text(const ConfigNode& root, const std::string& stage);
+
+/// The stage's configuration stamp: 16 hex digits of a 64-bit FNV-1a hash of "softpack VERSION"
+/// and the stage's text. It changes when a section the stage reads changes, and only then.
+std::string stage_stamp(const ConfigNode& root, const std::string& stage, const std::string& version);
 
 /// The seeds of the profile (`seeds` list): non-negative, distinct.
 std::vector<std::uint64_t> parse_seeds(const ConfigNode& root);

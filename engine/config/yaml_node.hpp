@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/suggest.hpp"
 #include "core/types.hpp"
 
@@ -52,13 +53,14 @@ class ConfigNode {
   /// One of `allowed`.
   std::string choice(const std::vector<std::string>& allowed) const;
 
-  // Numbers with a range; the message states the allowed range.
-  double positive() const;      ///< > 0
-  double non_negative() const;  ///< >= 0
-  double in_range(double lo, bool lo_open, double hi, bool hi_open) const;
-
   /// Throws InputError "file:line:col: key.path: what".
   [[noreturn]] void fail(const std::string& what) const;
+
+  /// An error found after reading ("key.path: what", e.g. from validate()), placed in the file:
+  /// the message prefixed with the file, line and column of that key under this node (or of its
+  /// nearest ancestor that the file holds). A message that names no key of this node gets the
+  /// file's name.
+  InputError locate(const InputError& error) const;
 
  private:
   ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file);

@@ -6,5 +6,7 @@ namespace softpack {
 
 /// "<release> (<git describe>)", e.g. "0.1.0 (3f2a1bc-dirty)".
 std::string code_version();
+/// The release alone, e.g. "0.1.0" (CMakeLists.txt's project version).
+std::string release_version();
 
 }  // namespace softpack

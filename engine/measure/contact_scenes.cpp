@@ -10,14 +10,9 @@ namespace {
 SceneDef base_scene(const SimulationSettings& s) {
   SceneDef scene;
   scene.materials = {s.material};
-  scene.effects.normal = "hertz";
-  scene.effects.friction = s.material.mu > 0.0;
-  scene.effects.rotation = scene.effects.friction;
-  scene.effects.restitution = s.restitution;
-  scene.effects.tangential_damping_ratio = s.tangential_damping_ratio;
-  scene.integration.safety = s.safety;
-  scene.integration.history_update = s.history_update;
-  scene.neighbor = NeighborDef{s.skin, s.level_ratio};
+  scene.effects = s.effects;
+  scene.integration = s.integration;
+  scene.neighbor = s.neighbor;
   return scene;
 }
 

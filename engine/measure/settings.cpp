@@ -8,6 +8,7 @@
 #include "config/profile.hpp"
 #include "core/error.hpp"
 #include "scene/scene_yaml.hpp"
+#include "scene/validate.hpp"
 
 namespace softpack {
 
@@ -21,16 +22,12 @@ std::string scene_name(ContactScene s) { return s == ContactScene::soft_solid ? 
 
 namespace {
 
-Material parse_material(const ConfigNode& n) {
-  n.allow_only({"E", "nu", "mu", "density"});
-  return Material{"grain", n.at("E").positive(), n.at("nu").in_range(-1.0, true, 0.5, true), n.at("mu").non_negative(),
-                  n.at("density").positive()};
-}
-
+// Strictly increasing values in [lo, hi).
 std::vector<double> increasing_list(const ConfigNode& n, double lo, double hi) {
   std::vector<double> out;
   for (const ConfigNode& v : n.items()) {
-    const double x = v.in_range(lo, false, hi, true);
+    const double x = v.number();
+    if (!(x >= lo && x < hi)) v.fail(fmt::format("{} is not allowed; allowed: {} <= value < {}", x, lo, hi));
     if (!out.empty() && !(x > out.back()))
       v.fail(fmt::format("{} does not increase (after {}); the grid must be strictly increasing", x, out.back()));
     out.push_back(x);
@@ -45,22 +42,27 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   root.allow_only(profile_sections());
   MeasurementSettings m;
   SimulationSettings& s = m.simulation;
-  s.material = parse_material(root.at("material"));
+  s.material = parse_material(root.at("material"), "grain");
   const ConfigNode sim = root.at("simulation");
-  sim.allow_only({"restitution", "tangential_damping_ratio", "safety", "tangential_history", "skin", "level_ratio",
-                  "shell_contact_radius"});
-  s.restitution = sim.at("restitution").in_range(0.0, true, 1.0, false);
-  s.tangential_damping_ratio = sim.at("tangential_damping_ratio").non_negative();
-  s.safety = sim.at("safety").in_range(0.0, true, 1.0, false);
-  s.history_update = sim.at("tangential_history").choice({"synchronized", "standard"}) == "synchronized"
-                         ? HistoryUpdate::synchronized
-                         : HistoryUpdate::standard;
-  s.skin = sim.at("skin").positive();
-  s.level_ratio = sim.at("level_ratio").in_range(1.0, true, 1e3, false);
-  s.shell_contact_radius = sim.at("shell_contact_radius").choice({"concave", "particle"}) == "concave"
-                               ? ShellContactRadius::concave
-                               : ShellContactRadius::particle;
+  sim.allow_only({"effects", "integration", "neighbor", "shells"});
+  s.effects = parse_effects(sim.at("effects"));
+  s.integration = parse_integration(sim.at("integration"));
+  s.neighbor = parse_neighbor(sim.at("neighbor"));
+  const ConfigNode shells = sim.at("shells");
+  shells.allow_only({"contact_radius"});
+  s.shell_contact_radius = parse_contact_radius(shells.at("contact_radius"));
   m.relaxation = parse_relaxation(root.at("relaxation"));
+  if (auto w = root.find("watchdog")) m.watchdog = parse_watchdog(*w);
+  try {  // the scene's rules, named by the profile's keys
+    validate_material(s.material, "material");
+    validate_effects(s.effects, {s.material}, "simulation.effects");
+    validate_integration(s.integration, "simulation.integration");
+    validate_neighbor(s.neighbor, "simulation.neighbor");
+    validate(m.relaxation, "relaxation");
+    validate_watchdog(m.watchdog, "watchdog");
+  } catch (const InputError& e) {
+    throw root.locate(e);
+  }
 
   const ConfigNode nn = root.at("normal");
   nn.allow_only({"scenes", "delta_n", "speed", "path"});
@@ -73,7 +75,8 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   }
   m.normal.delta_n = increasing_list(nn.at("delta_n"), 0.0, 1.0);
   if (m.normal.delta_n.front() != 0.0) nn.at("delta_n").fail("must start at 0 (the undeformed state)");
-  m.normal.speed = nn.at("speed").positive();
+  m.normal.speed = nn.at("speed").number();
+  if (!(m.normal.speed > 0.0)) nn.at("speed").fail(fmt::format("{} m/s is not allowed; allowed: > 0", m.normal.speed));
   m.normal.incremental = nn.at("path").choice({"incremental", "direct"}) == "incremental";
 
   const ConfigNode tn = root.at("tangential");
@@ -85,16 +88,16 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
                                                    m.tangential.delta_n[k]));
   std::vector<double> alpha;
   for (const ConfigNode& v : tn.at("alpha_deg").items()) {
-    const double a = v.in_range(-90.0, false, 90.0, false);
+    const double a = v.number();
+    if (!(a >= -90.0 && a <= 90.0)) v.fail(fmt::format("{} is not allowed; allowed: -90 <= value <= 90 (degrees)", a));
     if (!alpha.empty() && !(a > alpha.back())) v.fail(fmt::format("{} does not increase; the grid must be strictly increasing", a));
     alpha.push_back(a);
   }
   if (alpha.empty()) tn.at("alpha_deg").fail("at least one angle is required");
   m.tangential.alpha_deg = alpha;
-  m.tangential.rate = tn.at("rate").positive();
+  m.tangential.rate = tn.at("rate").number();
+  if (!(m.tangential.rate > 0.0)) tn.at("rate").fail(fmt::format("{} rad/s is not allowed; allowed: > 0", m.tangential.rate));
   m.tangential.after = tn.at("after_rotation").choice({"release", "hold"}) == "release" ? AfterRotation::release : AfterRotation::hold;
-
-  if (auto w = root.find("watchdog")) m.watchdog = parse_watchdog(*w);
   return m;
 }
 

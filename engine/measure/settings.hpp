@@ -1,8 +1,11 @@
 // Settings of the contact-law measurement (paper §4), read from a profile's `material`,
-// `simulation`, `relaxation`, `normal` and `tangential` sections. Every value is named in the
-// profile; the choices the paper leaves open are justified in docs/measurement.md. The optional
-// `watchdog` section sets when a run that has gone wrong stops (sim/watchdog.hpp); it changes
-// no result and is not part of the configuration recorded with the points.
+// `simulation`, `relaxation`, `normal` and `tangential` sections. `material`, `simulation`,
+// `relaxation` and `watchdog` are parts of a scene and are read and validated as a scene's are
+// (scene/scene_yaml.hpp, scene/validate.hpp); `normal` and `tangential` are the sweeps' own.
+// Every value is named in the profile; the choices the paper leaves open are justified in
+// docs/measurement.md. The optional `watchdog` section sets when a run that has gone wrong stops
+// (sim/watchdog.hpp); it changes no result and is not part of the configuration recorded with
+// the points.
 #pragma once
 #include <string>
 #include <vector>
@@ -21,16 +24,14 @@ enum class ContactScene { soft_solid, soft_soft };
 ContactScene parse_contact_scene(const std::string& name);  ///< "soft-solid" | "soft-soft"
 std::string scene_name(ContactScene s);
 
-/// Engine settings of the measurement scenes.
+/// Engine settings of the measurement scenes: the profile's `material` and `simulation`
+/// sections, in the scene format's own terms (docs/scene-format.md), read by its own readers.
 struct SimulationSettings {
-  Material material;
-  double restitution = 0.0;
-  double tangential_damping_ratio = 0.0;
-  double safety = 0.0;
-  HistoryUpdate history_update = HistoryUpdate::synchronized;
-  double skin = 0.0;
-  double level_ratio = 0.0;
-  ShellContactRadius shell_contact_radius = ShellContactRadius::concave;
+  Material material;  ///< of the grains, the shells and the wall
+  EffectsDef effects;
+  IntegrationDef integration;
+  NeighborDef neighbor;
+  ShellContactRadius shell_contact_radius = ShellContactRadius::concave;  ///< `shells: {contact_radius}`
 };
 
 /// How the first soft-particle is turned for the tangential measurement.

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "config/profile.hpp"
+#include "packing/packing_profile.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "measure/sweeps.hpp"
@@ -89,9 +90,7 @@ int run_stage(const StageOptions& o) {
     c.setup.scene.watchdog = settings.watchdog;  // when to stop a run gone wrong; changes no result
     // What every point depends on: the sections read, the scene and the packings used.
     c.config = "# stage: " + o.stage + ", scene: " + o.scene + (o.hertz_check ? " (Hertz check)" : "") + "\n# packings: " +
-               packings + "\n" + packing_section + section_text(root, "material") + section_text(root, "simulation") +
-               section_text(root, "relaxation") + section_text(root, "normal") +
-               (o.stage == "tangential" ? section_text(root, "tangential") : "");
+               packings + "\n" + stage_text(root, o.stage);
     c.checkpoint_dir = o.checkpoints;
     c.code_version = code_version();
     c.stop_after = static_cast<std::size_t>(std::max(0L, o.stop_after));

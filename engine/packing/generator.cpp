@@ -20,12 +20,12 @@ void validate(const PackingParameters& p) {
     throw InputError(fmt::format("packing.{}: {} is not allowed; allowed: {}", key, v, allowed));
   };
   if (!(p.Rs > 0.0 && std::isfinite(p.Rs))) bad("Rs", p.Rs, "Rs > 0 [m]");
-  if (!(p.r_max > 0.0 && p.r_max < p.Rs)) bad("r_max", p.r_max, "0 < r_max < Rs [m]");
-  if (!(p.polydispersity > 1.0 && std::isfinite(p.polydispersity))) bad("polydispersity", p.polydispersity, "Pi > 1");
-  if (!(p.exponent > 1.0 && std::isfinite(p.exponent))) bad("exponent", p.exponent, "b > 1");
+  if (!(p.r_max > 0.0 && p.r_max < p.Rs)) bad("r_max_over_Rs", p.r_max / p.Rs, "0 < r_max / Rs < 1");
+  if (!(p.polydispersity > 1.0 && p.polydispersity <= 1e6)) bad("polydispersity", p.polydispersity, "1 < Pi <= 1e6");
+  if (!(p.exponent > 1.0 && p.exponent <= 20.0)) bad("exponent", p.exponent, "1 < b <= 20");
   if (!(p.beta > 0.0 && std::isfinite(p.beta))) bad("beta", p.beta, "beta > 0");
   if (p.trials < 1) bad("trials", static_cast<double>(p.trials), "I >= 1");
-  if (!(p.level_ratio > 1.0 && std::isfinite(p.level_ratio))) bad("level_ratio", p.level_ratio, "level_ratio > 1");
+  if (!(p.level_ratio > 1.0 && p.level_ratio <= 1e3)) bad("level_ratio", p.level_ratio, "1 < level_ratio <= 1000");
 }
 
 namespace {

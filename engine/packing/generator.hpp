@@ -37,7 +37,8 @@ struct PackingParameters {
   double level_ratio = 0.0;     ///< cell size ratio of the insertion grid (cost only)
 };
 
-/// Validates the parameters; InputError names the key "packing.<name>" and the allowed range.
+/// Validates the parameters: the one owner of their ranges. InputError names the profile key
+/// "packing.<name>" and the allowed range.
 void validate(const PackingParameters& p);
 
 struct Packing {

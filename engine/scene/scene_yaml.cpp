@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <limits>
+
 #include "core/error.hpp"
 #include "scene/validate.hpp"
 
@@ -42,8 +45,8 @@ AfterDrive parse_after(const ConfigNode& d) {
   return d.at("after").choice({"release", "hold"}) == "hold" ? AfterDrive::hold : AfterDrive::release;
 }
 
-std::optional<double> optional_positive(const ConfigNode& n, const std::string& key) {
-  if (auto c = n.find(key)) return c->positive();
+std::optional<double> optional_number(const ConfigNode& n, const std::string& key) {
+  if (auto c = n.find(key)) return c->number();
   return std::nullopt;
 }
 
@@ -54,8 +57,8 @@ DriverDef parse_driver(const ConfigNode& d) {
     MoveWallDef m;
     m.wall = d.at("wall").string();
     m.velocity = d.at("velocity").vec3();
-    m.distance = optional_positive(d, "distance");
-    m.duration = optional_positive(d, "duration");
+    m.distance = optional_number(d, "distance");
+    m.duration = optional_number(d, "duration");
     return m;
   }
   if (type == "rotate") {
@@ -65,8 +68,8 @@ DriverDef parse_driver(const ConfigNode& d) {
     r.centre = d.at("centre").vec3();
     r.axis = d.at("axis").vec3();
     r.rate = d.at("rate").number();
-    r.angle = optional_positive(d, "angle");
-    r.duration = optional_positive(d, "duration");
+    r.angle = optional_number(d, "angle");
+    r.duration = optional_number(d, "duration");
     r.after = parse_after(d);
     if (auto c = d.find("with_shell")) r.with_shell = c->boolean();
     return r;
@@ -76,8 +79,8 @@ DriverDef parse_driver(const ConfigNode& d) {
     TranslateGroupDef t;
     t.group = parse_group(d.at("group"));
     t.velocity = d.at("velocity").vec3();
-    t.distance = optional_positive(d, "distance");
-    t.duration = optional_positive(d, "duration");
+    t.distance = optional_number(d, "distance");
+    t.duration = optional_number(d, "duration");
     t.after = parse_after(d);
     return t;
   }
@@ -85,39 +88,68 @@ DriverDef parse_driver(const ConfigNode& d) {
   return HoldGroupDef{parse_group(d.at("group"))};
 }
 
-void parse_effects(const ConfigNode& n, EffectsDef& e) {
+// An int: the integer the file gives must fit one (the range of the value is validate()'s).
+int int_of(const ConfigNode& n) {
+  const long v = n.integer();
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    n.fail(fmt::format("{} is too large; expected an integer of at most {} in magnitude", v, std::numeric_limits<int>::max()));
+  return static_cast<int>(v);
+}
+
+}  // namespace
+
+Material parse_material(const ConfigNode& m, const std::string& name) {
+  m.allow_only({"E", "nu", "mu", "density"});
+  return Material{name, m.at("E").number(), m.at("nu").number(), m.at("mu").number(), m.at("density").number()};
+}
+
+EffectsDef parse_effects(const ConfigNode& n) {
+  EffectsDef e;
   n.allow_only({"normal", "friction", "rotation", "damping", "gravity"});
   if (auto c = n.find("normal")) e.normal = c->string();  // a registered law: checked when the simulation is built
   if (auto c = n.find("friction")) e.friction = c->choice({"tsuji"}) == "tsuji";
   if (auto c = n.find("rotation")) e.rotation = c->boolean();
   if (auto c = n.find("damping")) {
     c->allow_only({"restitution", "tangential_ratio"});
-    e.restitution = c->at("restitution").in_range(0.0, true, 1.0, false);
-    e.tangential_damping_ratio = c->at("tangential_ratio").non_negative();
+    e.restitution = c->at("restitution").number();
+    e.tangential_damping_ratio = c->at("tangential_ratio").number();
   }
   if (auto c = n.find("gravity")) e.gravity = c->vec3();
+  return e;
 }
 
-}  // namespace
+IntegrationDef parse_integration(const ConfigNode& in) {
+  IntegrationDef d;
+  in.allow_only({"dt", "safety", "tangential_history"});
+  if (auto c = in.find("dt")) d.dt = c->number();
+  if (auto c = in.find("safety")) d.safety = c->number();
+  d.history_update = in.at("tangential_history").choice({"synchronized", "standard"}) == "synchronized" ? HistoryUpdate::synchronized
+                                                                                                        : HistoryUpdate::standard;
+  return d;
+}
+
+NeighborDef parse_neighbor(const ConfigNode& nb) {
+  nb.allow_only({"skin", "level_ratio"});
+  return NeighborDef{nb.at("skin").number(), nb.at("level_ratio").number()};
+}
+
+ShellContactRadius parse_contact_radius(const ConfigNode& n) {
+  return n.choice({"concave", "particle"}) == "concave" ? ShellContactRadius::concave : ShellContactRadius::particle;
+}
 
 RelaxationDef parse_relaxation(const ConfigNode& n) {
   const std::string protocol = n.at("protocol").choice({"paper", "converged"});
   if (protocol == "paper") {
     n.allow_only({"protocol", "stops", "wait", "final_wait"});
-    PaperRelaxationDef p;
-    p.stops = static_cast<int>(n.at("stops").integer());
-    if (p.stops < 0) n.at("stops").fail("allowed: stops >= 0");
-    p.wait = n.at("wait").positive();
-    p.final_wait = n.at("final_wait").positive();
-    return p;
+    return PaperRelaxationDef{int_of(n.at("stops")), n.at("wait").number(), n.at("final_wait").number()};
   }
   n.allow_only({"protocol", "force_tolerance", "energy_tolerance", "check_interval", "max_time",
                 "zero_velocities_at_checks"});
   ConvergedRelaxationDef c;
-  c.force_tolerance = n.at("force_tolerance").positive();
-  c.energy_tolerance = n.at("energy_tolerance").positive();
-  c.check_interval = n.at("check_interval").positive();
-  c.max_time = n.at("max_time").positive();
+  c.force_tolerance = n.at("force_tolerance").number();
+  c.energy_tolerance = n.at("energy_tolerance").number();
+  c.check_interval = n.at("check_interval").number();
+  c.max_time = n.at("max_time").number();
   c.zero_velocities_at_checks = n.at("zero_velocities_at_checks").boolean();
   return c;
 }
@@ -125,40 +157,28 @@ RelaxationDef parse_relaxation(const ConfigNode& n) {
 WatchdogDef parse_watchdog(const ConfigNode& n) {
   n.allow_only({"max_overlap_fraction", "energy_growth", "check_interval"});
   WatchdogDef w;
-  if (auto c = n.find("max_overlap_fraction")) w.max_overlap_fraction = c->positive();
-  if (auto c = n.find("energy_growth")) {
-    w.energy_growth = c->number();
-    if (!(w.energy_growth > 1.0)) c->fail(fmt::format("{} is not allowed; allowed: > 1", c->yaml().Scalar()));
-  }
-  if (auto c = n.find("check_interval")) {
-    w.check_interval = c->integer();
-    if (w.check_interval < 1) c->fail(fmt::format("{} is not allowed; allowed: an integer >= 1 (steps)", w.check_interval));
-  }
+  if (auto c = n.find("max_overlap_fraction")) w.max_overlap_fraction = c->number();
+  if (auto c = n.find("energy_growth")) w.energy_growth = c->number();
+  if (auto c = n.find("check_interval")) w.check_interval = c->integer();
   return w;
 }
 
 SceneFile parse_scene(const ConfigNode& root) {
   root.allow_only(
       {"materials", "effects", "particles", "shells", "planes", "drivers", "integration", "neighbor", "watchdog", "run"});
-  SceneFile out;
+  SceneFile out{SceneDef{}, RunDef{}, root};
   SceneDef& s = out.scene;
 
   const ConfigNode mats = root.at("materials");
   mats.allow_only(mats.keys());  // any names, but it must be a map
-  for (const std::string& name : mats.keys()) {
-    const ConfigNode m = mats.at(name);
-    m.allow_only({"E", "nu", "mu", "density"});
-    s.materials.push_back(Material{name, m.at("E").positive(), m.at("nu").in_range(-1.0, true, 0.5, true),
-                                   m.at("mu").non_negative(), m.at("density").positive()});
-  }
-
-  parse_effects(root.at("effects"), s.effects);
+  for (const std::string& name : mats.keys()) s.materials.push_back(parse_material(mats.at(name), name));
+  s.effects = parse_effects(root.at("effects"));
 
   for (const ConfigNode& p : root.at("particles").items()) {
     p.allow_only({"x", "r", "material", "body", "v", "w"});
     ParticleDef d;
     d.x = p.at("x").vec3();
-    d.r = p.at("r").positive();
+    d.r = p.at("r").number();
     d.material = material_ref(s, p.at("material"));
     if (auto b = p.find("body")) d.body = body_id(*b);
     if (auto v = p.find("v")) d.v = v->vec3();
@@ -173,11 +193,9 @@ SceneFile parse_scene(const ConfigNode& root) {
       d.name = n.at("name").string();
       d.body = body_id(n.at("body"));
       d.centre = n.at("centre").vec3();
-      d.radius = n.at("radius").positive();
+      d.radius = n.at("radius").number();
       d.material = material_ref(s, n.at("material"));
-      d.contact_radius = n.at("contact_radius").choice({"concave", "particle"}) == "concave"
-                             ? ShellContactRadius::concave
-                             : ShellContactRadius::particle;
+      d.contact_radius = parse_contact_radius(n.at("contact_radius"));
       s.shells.push_back(d);
     }
 
@@ -195,42 +213,29 @@ SceneFile parse_scene(const ConfigNode& root) {
   if (auto drivers = root.find("drivers"))
     for (const ConfigNode& d : drivers->items()) s.drivers.push_back(parse_driver(d));
 
-  const ConfigNode in = root.at("integration");
-  in.allow_only({"dt", "safety", "tangential_history"});
-  if (auto c = in.find("dt")) s.integration.dt = c->positive();
-  if (auto c = in.find("safety")) s.integration.safety = c->in_range(0.0, true, 1.0, false);
-  s.integration.history_update = in.at("tangential_history").choice({"synchronized", "standard"}) == "synchronized"
-                                     ? HistoryUpdate::synchronized
-                                     : HistoryUpdate::standard;
-
-  const ConfigNode nb = root.at("neighbor");
-  nb.allow_only({"skin", "level_ratio"});
-  s.neighbor.skin = nb.at("skin").positive();
-  s.neighbor.level_ratio = nb.at("level_ratio").in_range(1.0, true, 1e3, false);
+  s.integration = parse_integration(root.at("integration"));
+  s.neighbor = parse_neighbor(root.at("neighbor"));
 
   if (auto w = root.find("watchdog")) s.watchdog = parse_watchdog(*w);
 
   if (auto run = root.find("run")) {
     run->allow_only({"duration", "relaxation"});
-    if (auto d = run->find("duration")) out.run.duration = d->positive();
+    if (auto d = run->find("duration")) out.run.duration = d->number();
     if (auto r = run->find("relaxation")) out.run.relaxation = parse_relaxation(*r);
   }
 
-  // Semantic checks (load_scene_file prefixes the file name to their messages).
-  validate(s);
-  if (out.run.relaxation) validate(*out.run.relaxation);
+  // Ranges, references and contradictions: validate()'s, located in the file by their key.
+  try {
+    validate(s);
+    if (out.run.duration && !(*out.run.duration > 0.0 && std::isfinite(*out.run.duration)))
+      throw InputError(fmt::format("run.duration: {} s is not allowed; allowed: > 0", *out.run.duration));
+    if (out.run.relaxation) validate(*out.run.relaxation, "run.relaxation");
+  } catch (const InputError& e) {
+    throw root.locate(e);
+  }
   return out;
 }
 
-SceneFile load_scene_file(const std::string& path) {
-  const ConfigNode root = ConfigNode::load_file(path);
-  try {
-    return parse_scene(root);
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    if (msg.rfind(path, 0) == 0) throw;
-    throw InputError(path + ": " + msg);
-  }
-}
+SceneFile load_scene_file(const std::string& path) { return parse_scene(ConfigNode::load_file(path)); }
 
 }  // namespace softpack

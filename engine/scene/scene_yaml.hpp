@@ -1,6 +1,7 @@
 // Reads a scene from YAML (the format is documented in docs/scene-format.md and exercised by
 // experiments/scenes/*.yaml). Syntax, types and unknown keys are checked here with file, line
-// and column; ranges and cross-references by validate().
+// and column; ranges and cross-references by validate(), whose messages are placed in the file
+// by their key.
 #pragma once
 #include <optional>
 #include <string>
@@ -20,14 +21,21 @@ struct RunDef {
 struct SceneFile {
   SceneDef scene;
   RunDef run;
+  ConfigNode root;  ///< the document, to place later errors in it (ConfigNode::locate)
 };
 
 /// Parses and validates a scene document.
 SceneFile parse_scene(const ConfigNode& root);
 SceneFile load_scene_file(const std::string& path);
 
+// The readers of the scene's parts, shared with the profiles (measure/settings.cpp): types and
+// keys only; the ranges are validate()'s (scene/validate.hpp).
+Material parse_material(const ConfigNode& node, const std::string& name);
+EffectsDef parse_effects(const ConfigNode& node);
+IntegrationDef parse_integration(const ConfigNode& node);
+NeighborDef parse_neighbor(const ConfigNode& node);
+ShellContactRadius parse_contact_radius(const ConfigNode& node);
 RelaxationDef parse_relaxation(const ConfigNode& node);
-
 /// The optional `watchdog` map of a scene or a profile: every key optional, defaults in
 /// WatchdogDef (scene/scene_def.hpp).
 WatchdogDef parse_watchdog(const ConfigNode& node);

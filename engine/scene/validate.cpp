@@ -49,11 +49,7 @@ void check_materials(const SceneDef& s) {
     const Material& m = s.materials[k];
     const std::string key = fmt::format("materials.{}", m.name.empty() ? std::to_string(k) : m.name);
     if (!names.insert(m.name).second) fail(key, "material defined twice");
-    if (!(m.E > 0.0 && std::isfinite(m.E))) fail(key + ".E", fmt::format("{} Pa is not allowed; allowed: E > 0", m.E));
-    if (!(m.nu > -1.0 && m.nu < 0.5)) fail(key + ".nu", fmt::format("{} is not allowed; allowed: -1 < nu < 0.5", m.nu));
-    if (!(m.mu >= 0.0 && std::isfinite(m.mu))) fail(key + ".mu", fmt::format("{} is not allowed; allowed: mu >= 0", m.mu));
-    if (!(m.density > 0.0 && std::isfinite(m.density)))
-      fail(key + ".density", fmt::format("{} kg/m^3 is not allowed; allowed: density > 0", m.density));
+    validate_material(m, key);
   }
 }
 
@@ -169,21 +165,7 @@ void validate(const SceneDef& s) {
   }
   check_distinct_centres(s);
 
-  const EffectsDef& e = s.effects;
-  if (e.friction && e.normal.empty()) fail("effects.friction", "friction needs the normal law (declare effects.normal)");
-  if (e.damping() && e.normal.empty()) fail("effects.damping", "damping needs the normal law (declare effects.normal)");
-  if (e.rotation && !e.friction)
-    fail("effects.rotation", "rotation without friction: nothing produces a torque (declare effects.friction or drop rotation)");
-  if (e.friction) {
-    bool any_mu = false;
-    for (const auto& m : s.materials) any_mu = any_mu || m.mu > 0.0;
-    if (!any_mu) fail("effects.friction", "friction declared but every material has mu = 0");
-  }
-  if (e.damping() && !(*e.restitution > 0.0 && *e.restitution <= 1.0))
-    fail("effects.damping.restitution", fmt::format("{} is not allowed; allowed: 0 < e <= 1", *e.restitution));
-  if (!(e.tangential_damping_ratio >= 0.0 && std::isfinite(e.tangential_damping_ratio)))
-    fail("effects.damping.tangential_ratio", "allowed: >= 0");
-  if (e.gravity && !finite(*e.gravity)) fail("effects.gravity", "must be finite");
+  validate_effects(s.effects, s.materials);
 
   std::set<std::string> wall_names;
   std::set<int> shell_bodies;
@@ -213,47 +195,79 @@ void validate(const SceneDef& s) {
     }
   }
 
-  const IntegrationDef& in = s.integration;
-  if (in.dt && in.safety) fail("integration", "give 'dt' or 'safety', not both");
-  if (!in.dt && !in.safety) fail("integration", "one of 'dt' or 'safety' is required");
-  if (in.dt && !(*in.dt > 0.0 && std::isfinite(*in.dt))) fail("integration.dt", "allowed: dt > 0");
-  if (in.safety && !(*in.safety > 0.0 && *in.safety <= 1.0)) fail("integration.safety", fmt::format("{} is not allowed; allowed: 0 < safety <= 1", *in.safety));
-  if (!(s.neighbor.skin > 0.0 && std::isfinite(s.neighbor.skin))) fail("neighbor.skin", fmt::format("{} is not allowed; allowed: skin > 0 (a fraction of the smallest radius)", s.neighbor.skin));
-  if (!(s.neighbor.level_ratio > 1.0 && std::isfinite(s.neighbor.level_ratio))) fail("neighbor.level_ratio", fmt::format("{} is not allowed; allowed: level_ratio > 1", s.neighbor.level_ratio));
-
+  validate_integration(s.integration);
+  validate_neighbor(s.neighbor);
   check_drivers(s, s.drivers);
 
-  const WatchdogDef& wd = s.watchdog;
+  validate_watchdog(s.watchdog);
+}
+
+void validate_material(const Material& m, const std::string& key) {
+  if (!(m.E > 0.0 && std::isfinite(m.E))) fail(key + ".E", fmt::format("{} Pa is not allowed; allowed: E > 0", m.E));
+  if (!(m.nu > -1.0 && m.nu < 0.5)) fail(key + ".nu", fmt::format("{} is not allowed; allowed: -1 < nu < 0.5", m.nu));
+  if (!(m.mu >= 0.0 && std::isfinite(m.mu))) fail(key + ".mu", fmt::format("{} is not allowed; allowed: mu >= 0", m.mu));
+  if (!(m.density > 0.0 && std::isfinite(m.density)))
+    fail(key + ".density", fmt::format("{} kg/m^3 is not allowed; allowed: density > 0", m.density));
+}
+
+void validate_effects(const EffectsDef& e, const std::vector<Material>& materials, const std::string& key) {
+  if (e.friction && e.normal.empty()) fail(key + ".friction", "friction needs the normal law (declare effects.normal)");
+  if (e.damping() && e.normal.empty()) fail(key + ".damping", "damping needs the normal law (declare effects.normal)");
+  if (e.rotation && !e.friction)
+    fail(key + ".rotation", "rotation without friction: nothing produces a torque (declare effects.friction or drop rotation)");
+  if (e.friction) {
+    bool any_mu = false;
+    for (const auto& m : materials) any_mu = any_mu || m.mu > 0.0;
+    if (!any_mu) fail(key + ".friction", "friction declared but every material has mu = 0");
+  }
+  if (e.damping() && !(*e.restitution > 0.0 && *e.restitution <= 1.0))
+    fail(key + ".damping.restitution", fmt::format("{} is not allowed; allowed: 0 < e <= 1", *e.restitution));
+  if (!(e.tangential_damping_ratio >= 0.0 && std::isfinite(e.tangential_damping_ratio)))
+    fail(key + ".damping.tangential_ratio", fmt::format("{} is not allowed; allowed: >= 0", e.tangential_damping_ratio));
+  if (e.gravity && !finite(*e.gravity)) fail(key + ".gravity", "must be finite");
+}
+
+void validate_integration(const IntegrationDef& in, const std::string& key) {
+  if (in.dt && in.safety) fail(key, "give 'dt' or 'safety', not both");
+  if (!in.dt && !in.safety) fail(key, "one of 'dt' or 'safety' is required");
+  if (in.dt && !(*in.dt > 0.0 && std::isfinite(*in.dt))) fail(key + ".dt", fmt::format("{} s is not allowed; allowed: dt > 0", *in.dt));
+  if (in.safety && !(*in.safety > 0.0 && *in.safety <= 1.0))
+    fail(key + ".safety", fmt::format("{} is not allowed; allowed: 0 < safety <= 1", *in.safety));
+}
+
+void validate_neighbor(const NeighborDef& nb, const std::string& key) {
+  if (!(nb.skin > 0.0 && std::isfinite(nb.skin)))
+    fail(key + ".skin", fmt::format("{} is not allowed; allowed: skin > 0 (a fraction of the smallest radius)", nb.skin));
+  if (!(nb.level_ratio > 1.0 && std::isfinite(nb.level_ratio)))
+    fail(key + ".level_ratio", fmt::format("{} is not allowed; allowed: level_ratio > 1", nb.level_ratio));
+}
+
+void validate_watchdog(const WatchdogDef& wd, const std::string& key) {
   if (!(wd.max_overlap_fraction > 0.0))
-    fail("watchdog.max_overlap_fraction", fmt::format("{} is not allowed; allowed: > 0 (overlap / smaller radius)", wd.max_overlap_fraction));
+    fail(key + ".max_overlap_fraction",
+         fmt::format("{} is not allowed; allowed: > 0 (overlap / smaller radius)", wd.max_overlap_fraction));
   if (!(wd.energy_growth > 1.0))
-    fail("watchdog.energy_growth", fmt::format("{} is not allowed; allowed: > 1", wd.energy_growth));
+    fail(key + ".energy_growth", fmt::format("{} is not allowed; allowed: > 1", wd.energy_growth));
   if (wd.check_interval < 1)
-    fail("watchdog.check_interval", fmt::format("{} is not allowed; allowed: an integer >= 1 (steps)", wd.check_interval));
+    fail(key + ".check_interval", fmt::format("{} is not allowed; allowed: an integer >= 1 (steps)", wd.check_interval));
 }
 
-namespace {
-
-void require_positive_relaxation(double v, const char* key) {
-  if (!(v > 0.0 && std::isfinite(v))) throw InputError(fmt::format("relaxation.{}: {} is not allowed; allowed: > 0", key, v));
-}
-
-}  // namespace
-
-void validate(const RelaxationDef& def) {
+void validate(const RelaxationDef& def, const std::string& key) {
+  const auto positive = [&](double v, const char* name) {
+    if (!(v > 0.0 && std::isfinite(v))) fail(key + "." + name, fmt::format("{} is not allowed; allowed: > 0", v));
+  };
   if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
-    if (p->stops < 0) throw InputError(fmt::format("relaxation.stops: {} is not allowed; allowed: >= 0", p->stops));
-    if (p->stops > 0) require_positive_relaxation(p->wait, "wait");
-    require_positive_relaxation(p->final_wait, "final_wait");
+    if (p->stops < 0) fail(key + ".stops", fmt::format("{} is not allowed; allowed: >= 0", p->stops));
+    if (p->stops > 0) positive(p->wait, "wait");
+    positive(p->final_wait, "final_wait");
   } else {
     const auto& c = std::get<ConvergedRelaxationDef>(def);
-    require_positive_relaxation(c.force_tolerance, "force_tolerance");
-    require_positive_relaxation(c.energy_tolerance, "energy_tolerance");
-    require_positive_relaxation(c.check_interval, "check_interval");
-    require_positive_relaxation(c.max_time, "max_time");
+    positive(c.force_tolerance, "force_tolerance");
+    positive(c.energy_tolerance, "energy_tolerance");
+    positive(c.check_interval, "check_interval");
+    positive(c.max_time, "max_time");
   }
 }
-
 
 void validate_drivers(const SceneDef& scene, const std::vector<DriverDef>& drivers) { check_drivers(scene, drivers); }
 

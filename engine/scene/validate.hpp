@@ -1,4 +1,6 @@
-// Semantic checks of a scene: ranges, references between its parts and contradictions.
+// Semantic checks of a scene: ranges, references between its parts and contradictions. This is
+// the one owner of every range rule of a scene's parameters: the YAML readers check only types
+// and keys, then locate these messages in the file by their key path (ConfigNode::locate).
 // Each failure throws InputError with the key path ("drivers[1].group.body: ...").
 #pragma once
 #include <vector>
@@ -10,8 +12,15 @@ namespace softpack {
 
 void validate(const SceneDef& scene);
 
-/// Validates a relaxation protocol (InputError naming relaxation.<key>).
-void validate(const RelaxationDef& def);
+/// The checks of each part, for a part held elsewhere (a profile's sections): `key` is the part's
+/// key path, which the messages name ("simulation.effects.damping.restitution: ...").
+void validate_material(const Material& m, const std::string& key);
+void validate_effects(const EffectsDef& e, const std::vector<Material>& materials, const std::string& key = "effects");
+void validate_integration(const IntegrationDef& in, const std::string& key = "integration");
+void validate_neighbor(const NeighborDef& nb, const std::string& key = "neighbor");
+void validate_watchdog(const WatchdogDef& wd, const std::string& key = "watchdog");
+/// A relaxation protocol (InputError naming <key>.<name>).
+void validate(const RelaxationDef& def, const std::string& key = "relaxation");
 
 /// The checks of validate() for `drivers` run in `scene` (Drivers::add: a driver started during a run).
 void validate_drivers(const SceneDef& scene, const std::vector<DriverDef>& drivers);

@@ -57,7 +57,7 @@ expect_error "^softpack-run: error: bad\.yaml:[0-9]+:[0-9]+: malformed YAML" run
 edit "$scene" 's/restitution:/restitusion:/'
 expect_error "bad\.yaml:[0-9]+:[0-9]+: effects\.damping\.restitusion: unknown key; did you mean 'restitution'\?" run.json run bad.yaml
 edit "$scene" 's/nu: [0-9.]*/nu: 0.7/'
-expect_error "bad\.yaml:[0-9]+:[0-9]+: materials\.grain\.nu: 0\.7 is not allowed; allowed: -1 < value < 0\.5" run.json run bad.yaml
+expect_error "bad\.yaml:[0-9]+:[0-9]+: materials\.grain\.nu: 0\.7 is not allowed; allowed: -1 < nu < 0\.5" run.json run bad.yaml
 expect_error "none\.yaml: cannot open the file" run.json run none.yaml
 expect_error "softpack-run: error: \.: is a directory, expected a YAML file" run.json run .
 edit "$scene" 's/^effects:/effects:\n  rotation: true\neffects:/'
@@ -85,8 +85,8 @@ edit "$profile" 's/^normal:/normal: [/'
 expect_error "^softpack-normal: error: bad\.yaml:[0-9]+:[0-9]+: malformed YAML" normal.h5 normal bad.yaml soft-solid p1.h5 p2.h5
 edit "$profile" 's/  speed:/  sped:/'
 expect_error "bad\.yaml:[0-9]+:3: normal\.sped: unknown key; did you mean 'speed'\?" normal.h5 normal bad.yaml soft-solid p1.h5 p2.h5
-edit "$profile" 's/  safety: [0-9.]*/  safety: 1.5/'
-expect_error "bad\.yaml:[0-9]+:[0-9]+: simulation\.safety: 1\.5 is not allowed; allowed: 0 < value <= 1" normal.h5 \
+edit "$profile" 's/safety: [0-9.]*/safety: 1.5/'
+expect_error "bad\.yaml:[0-9]+:[0-9]+: simulation\.integration\.safety: 1\.5 is not allowed; allowed: 0 < safety <= 1" normal.h5 \
   normal bad.yaml soft-solid p1.h5 p2.h5
 expect_error "none\.h5: no such file" normal.h5 normal "$profile" soft-solid none.h5 p2.h5
 expect_error "truncated\.h5: truncated or corrupt HDF5 file: it has 1000 bytes, its superblock says [0-9]+" normal.h5 \

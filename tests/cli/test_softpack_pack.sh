@@ -26,13 +26,13 @@ grep -q "^# shell" "$tmp/section.dat" || fail "section file has no shell line"
 edit() { sed "$1" "$root/experiments/quick.yaml" > "$tmp/bad.yaml"; ! cmp -s "$tmp/bad.yaml" "$root/experiments/quick.yaml" || fail "edit $1 changed nothing"; }
 out=$tmp/bad.h5
 edit 's/polydispersity: [0-9.]*/polydispersity: 1/'
-expect_error "packing.polydispersity: 1 is not allowed; allowed: 1 < value" "$out" pack "$tmp/bad.yaml" 1 "$out"
+expect_error "packing.polydispersity: 1 is not allowed; allowed: 1 < Pi <= 1e6" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/exponent: [0-9.]*/exponent: 1/'
 expect_error "packing.exponent: 1 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/beta: [0-9.]*/beta: 0/'
-expect_error "packing.beta: 0 is not allowed; allowed: > 0" "$out" pack "$tmp/bad.yaml" 1 "$out"
+expect_error "packing.beta: 0 is not allowed; allowed: beta > 0" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/trials: [0-9]*/trials: 0/'
-expect_error "packing.trials: 0 is not allowed; allowed: trials >= 1" "$out" pack "$tmp/bad.yaml" 1 "$out"
+expect_error "packing.trials: 0 is not allowed; allowed: I >= 1" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/r_max_over_Rs: [0-9.]*/r_max_over_Rs: 1.2/'
 expect_error "packing.r_max_over_Rs: 1.2 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit '/beta:/d'

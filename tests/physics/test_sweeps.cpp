@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "config/profile.hpp"
+#include "packing/packing_profile.hpp"
 #include "measure/sweeps.hpp"
 #include "packing/generator.hpp"
 

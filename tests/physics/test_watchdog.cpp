@@ -8,6 +8,7 @@
 #include <string>
 
 #include "config/profile.hpp"
+#include "packing/packing_profile.hpp"
 #include "core/error.hpp"
 #include "measure/settings.hpp"
 #include "scene/scene_yaml.hpp"

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "config/profile.hpp"
+#include "packing/packing_profile.hpp"
 #include "packing/generator.hpp"
 #include "relax/relaxation.hpp"
 #include "stability/stability.hpp"

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "config/profile.hpp"
+#include "packing/packing_profile.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "packing/generator.hpp"
@@ -230,11 +231,12 @@ packing:
 TEST(PackingProfile, BadValuesNameTheKeyAndTheRange) {
   EXPECT_EQ(packing_error("", ""), "");
   const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
-      {{"polydispersity: 10", "polydispersity: 1"}, "packing.polydispersity: 1 is not allowed; allowed: 1 < value"},
-      {{"exponent: 3.5", "exponent: 0.5"}, "packing.exponent: 0.5 is not allowed; allowed: 1 < value"},
-      {{"beta: 1.0", "beta: 0"}, "packing.beta: 0 is not allowed; allowed: > 0"},
-      {{"trials: 100", "trials: 0"}, "packing.trials: 0 is not allowed; allowed: trials >= 1"},
-      {{"r_max_over_Rs: 0.2", "r_max_over_Rs: 1.0"}, "packing.r_max_over_Rs: 1.0 is not allowed; allowed: 0 < value < 1"},
+      // The ranges are PackingParameters' validate()'s, placed at the key (line and column).
+      {{"polydispersity: 10", "polydispersity: 1"}, ":6:19: packing.polydispersity: 1 is not allowed; allowed: 1 < Pi <= 1e6"},
+      {{"exponent: 3.5", "exponent: 0.5"}, ":7:13: packing.exponent: 0.5 is not allowed; allowed: 1 < b <= 20"},
+      {{"beta: 1.0", "beta: 0"}, ":8:9: packing.beta: 0 is not allowed; allowed: beta > 0"},
+      {{"trials: 100", "trials: 0"}, ":9:11: packing.trials: 0 is not allowed; allowed: I >= 1"},
+      {{"r_max_over_Rs: 0.2", "r_max_over_Rs: 1.0"}, ":5:18: packing.r_max_over_Rs: 1 is not allowed; allowed: 0 < r_max / Rs < 1"},
       {{"  beta: 1.0\n", ""}, "packing: missing required key 'beta'"},
       {{"trials: 100", "trials: many"}, "packing.trials: expected a number, got 'many'"},
       {{"beta: 1.0", "beta: 1.0\n  bta: 2"}, "packing.bta: unknown key; did you mean 'beta'?"},

@@ -1,0 +1,62 @@
+// softpack-config: what a profile holds, as the stages read it, for Make (workflow/stamps.mk)
+// and for people. The same readers and the same section lists as the stages
+// (config/profile.hpp, packing/packing_profile.hpp, measure/settings.hpp), so Make never parses
+// YAML and a profile the stages would refuse is refused here, with the same message.
+//
+//   softpack-config PROFILE seeds             the seeds, one line: 1 2 3
+//   softpack-config PROFILE scenes            the scenes of the sweeps: soft-solid soft-soft
+//   softpack-config PROFILE sections STAGE    the sections STAGE reads
+//   softpack-config PROFILE text STAGE        their canonical text (what the stamp covers)
+//   softpack-config PROFILE stamp STAGE       the stage's configuration stamp (16 hex digits)
+//   softpack-config PROFILE gnuplot           Rs, E and nu as gnuplot variables (the figures)
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "apps/exit_codes.hpp"
+#include "config/profile.hpp"
+#include "core/version.hpp"
+#include "measure/settings.hpp"
+#include "packing/packing_profile.hpp"
+
+int main(int argc, char** argv) {
+  using namespace softpack;
+  CLI::App app{"softpack-config: the seeds, scenes, sections and stamps of a profile, as the stages read it"};
+  app.require_subcommand(1);
+  std::string profile, stage, release = release_version();
+  app.add_option("profile", profile, "profile file, e.g. experiments/paper.yaml")->required();
+  auto* seeds = app.add_subcommand("seeds", "the profile's seeds, on one line");
+  auto* scenes = app.add_subcommand("scenes", "the scenes of its sweeps, on one line");
+  auto* sections = app.add_subcommand("sections", "the sections a stage reads, on one line");
+  auto* text = app.add_subcommand("text", "the canonical text of the sections a stage reads");
+  auto* stamp = app.add_subcommand("stamp", "the stage's configuration stamp: a hash of the release and of that text");
+  auto* gnuplot = app.add_subcommand("gnuplot", "Rs, E and nu as gnuplot variables: Rs=...; E=...; nu=...");
+  for (auto* sub : {sections, text, stamp})
+    sub->add_option("stage", stage, "packing, normal, tangential or average")
+        ->required()
+        ->check(CLI::IsMember(profile_stages()));
+  stamp->add_option("--release", release, "the release the stamp includes (default: this build's, " + release_version() + ")");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const ConfigNode root = ConfigNode::load_file(profile);
+    // Every section the stages read, read as they read it: a profile a stage would refuse is refused here.
+    const auto seed_list = parse_seeds(root);
+    (void)parse_packing(root);
+    const MeasurementSettings settings = parse_measurement(root);
+    if (*seeds) fmt::print("{}\n", fmt::join(seed_list, " "));
+    if (*scenes) {
+      std::vector<std::string> names;
+      for (const ContactScene s : settings.normal.scenes) names.push_back(scene_name(s));
+      fmt::print("{}\n", fmt::join(names, " "));
+    }
+    if (*sections) fmt::print("{}\n", fmt::join(stage_sections(stage), " "));
+    if (*text) fmt::print("{}", stage_text(root, stage));
+    if (*stamp) fmt::print("{}\n", stage_stamp(root, stage, release));
+    if (*gnuplot)
+      fmt::print("Rs={}; E={}; nu={}\n", parse_packing(root).parameters.Rs, settings.simulation.material.E,
+                 settings.simulation.material.nu);
+    return 0;
+  } catch (...) {
+    return exit_on_error("softpack-config");
+  }
+}
