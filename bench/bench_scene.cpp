@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
   const SceneDef scene = bench::bench_scene(spheres, p, !frictionless);
   Simulation sim(scene);
   const Material& m = scene.materials[0];
-  const double alpha = damping::alpha_from_restitution(p.restitution);
+  const double alpha = damping::zeta_from_restitution(p.restitution);  // LAMMPS calls the damping coefficient alpha
   // LAMMPS damps the tangential direction with xgammat * gamma_n; ours uses the sliding-rolling
   // mode's own stiffness and mass (contact/viscous_damping.hpp): the ratio is constant,
   // sqrt(Dt D / 3.5) for rotating solid spheres.

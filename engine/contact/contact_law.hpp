@@ -38,8 +38,8 @@ template <class T>
 struct ContactConstants {
   T kn;        ///< normal law's stiffness (Hertz: sqrt(R12)/D, Fn = kn h^(3/2))
   T kt0;       ///< Dt sqrt(R12), kt = kt0 sqrt(h)                     (Eq. 5)
-  T gamma0;    ///< alpha sqrt(m12 kn), gamma_n = gamma0 g(h)
-  T gamma_t0;  ///< ratio_t alpha sqrt(mt kt0), gamma_t = gamma_t0 g(h)
+  T gamma0;    ///< zeta sqrt(m12 kn), gamma_n = gamma0 g(h)
+  T gamma_t0;  ///< ratio_t zeta sqrt(mt kt0), gamma_t = gamma_t0 g(h)
   T mu;        ///< Coulomb coefficient
 };
 

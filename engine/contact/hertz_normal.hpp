@@ -13,7 +13,7 @@
 //   force(kn, h, sqrt_h)       Fn [N], a template over the number type (double or simd::Wide)
 //   damping_scale(sqrt_h)      g(h) of the normal damping gamma_n = gamma0 g(h)
 //   energy(kn, h)              elastic energy of the contact [J], the integral of Fn dh
-//   damping_coefficient(e)     the alpha of gamma0 = alpha sqrt(m12 kn) that gives restitution e
+//   damping_coefficient(e)     the zeta of gamma0 = zeta sqrt(m12 kn) that gives restitution e
 #pragma once
 #include <cmath>
 
@@ -35,7 +35,7 @@ struct HertzNormal {
     return kn * h * sqrt_h;
   }
 
-  /// Tsuji's damping of a Hertz contact: gamma_n = alpha sqrt(m12 kn) h^(1/4).
+  /// Tsuji's damping of a Hertz contact: gamma_n = zeta sqrt(m12 kn) h^(1/4).
   template <class T>
   [[gnu::always_inline]] static T damping_scale(const T& sqrt_h) {
     return simd::sqrt(sqrt_h);
@@ -44,8 +44,8 @@ struct HertzNormal {
   /// Elastic energy stored in the contact: integral of Fn dh = 2/5 kn h^(5/2) [J].
   static double energy(double kn, double h) { return 0.4 * kn * h * h * std::sqrt(h); }
 
-  /// With the h^(1/4) factor the restitution depends on alpha alone (contact/viscous_damping.hpp).
-  static double damping_coefficient(double restitution) { return damping::alpha_from_restitution(restitution); }
+  /// With the h^(1/4) factor the restitution depends on zeta alone (contact/viscous_damping.hpp).
+  static double damping_coefficient(double restitution) { return damping::zeta_from_restitution(restitution); }
 };
 
 namespace hertz {

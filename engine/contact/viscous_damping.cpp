@@ -8,27 +8,27 @@
 namespace softpack::damping {
 namespace {
 
-// Integration of X'' = -X^(3/2) - alpha X^(1/4) X' by classic RK4 in scaled time.
+// Integration of X'' = -X^(3/2) - zeta X^(1/4) X' by classic RK4 in scaled time.
 // The undamped contact lasts tau ~ 3.2; d_tau resolves it with 32 000 steps, which puts the
 // error of e well below 1e-9 (checked against the undamped e = 1 and against halving d_tau).
 constexpr double kScaledStep = 1.0e-4;
 constexpr double kScaledTimeLimit = 100.0;  // a contact still closed by then has stuck: e = 0
 
-double acceleration(double X, double V, double alpha) {
+double acceleration(double X, double V, double zeta) {
   const double Xp = X > 0.0 ? X : 0.0;
-  return -Xp * std::sqrt(Xp) - alpha * std::sqrt(std::sqrt(Xp)) * V;
+  return -Xp * std::sqrt(Xp) - zeta * std::sqrt(std::sqrt(Xp)) * V;
 }
 
 }  // namespace
 
-double restitution_from_alpha(double alpha) {
+double restitution_from_zeta(double zeta) {
   double X = 0.0, V = 1.0;
   const double h = kScaledStep;
   for (double tau = 0.0; tau < kScaledTimeLimit; tau += h) {
-    const double k1x = V, k1v = acceleration(X, V, alpha);
-    const double k2x = V + 0.5 * h * k1v, k2v = acceleration(X + 0.5 * h * k1x, k2x, alpha);
-    const double k3x = V + 0.5 * h * k2v, k3v = acceleration(X + 0.5 * h * k2x, k3x, alpha);
-    const double k4x = V + h * k3v, k4v = acceleration(X + h * k3x, k4x, alpha);
+    const double k1x = V, k1v = acceleration(X, V, zeta);
+    const double k2x = V + 0.5 * h * k1v, k2v = acceleration(X + 0.5 * h * k1x, k2x, zeta);
+    const double k3x = V + 0.5 * h * k2v, k3v = acceleration(X + 0.5 * h * k2x, k3x, zeta);
+    const double k4x = V + h * k3v, k4v = acceleration(X + h * k3x, k4x, zeta);
     const double Xn = X + h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x);
     const double Vn = V + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v);
     if (Xn <= 0.0 && tau > 0.0) {
@@ -43,7 +43,7 @@ double restitution_from_alpha(double alpha) {
   return 0.0;
 }
 
-double alpha_from_restitution(double e) {
+double zeta_from_restitution(double e) {
   if (!(e > 0.0 && e <= 1.0)) throw std::invalid_argument("restitution must be in (0, 1]");
   if (e == 1.0) return 0.0;
   // Scenes are built many times with the same e (tests, sweeps): remember the answers.
@@ -53,19 +53,19 @@ double alpha_from_restitution(double e) {
     const std::lock_guard lock(cache_mutex);
     if (auto it = cache.find(e); it != cache.end()) return it->second;
   }
-  // e(alpha) decreases monotonically; bracket, then bisect.
+  // e(zeta) decreases monotonically; bracket, then bisect.
   double lo = 0.0, hi = 1.0;
-  while (restitution_from_alpha(hi) > e) hi *= 2.0;
+  while (restitution_from_zeta(hi) > e) hi *= 2.0;
   while (hi - lo > 1e-11 * hi) {
     const double mid = 0.5 * (lo + hi);
-    (restitution_from_alpha(mid) > e ? lo : hi) = mid;
+    (restitution_from_zeta(mid) > e ? lo : hi) = mid;
   }
-  const double alpha = 0.5 * (lo + hi);
+  const double zeta = 0.5 * (lo + hi);
   const std::lock_guard lock(cache_mutex);
-  cache.emplace(e, alpha);
-  return alpha;
+  cache.emplace(e, zeta);
+  return zeta;
 }
 
-double gamma_factor(double alpha, double m, double k) { return alpha * std::sqrt(m * k); }
+double gamma_factor(double zeta, double m, double k) { return zeta * std::sqrt(m * k); }
 
 }  // namespace softpack::damping

@@ -1,10 +1,10 @@
 // Viscous contact damping of Tsuji, Tanaka & Ishida (1992):
 //
-//   Fd_n = -gamma_n vn,   gamma_n = alpha sqrt(m12 kn) h^(1/4)
-//   Fd_t = -gamma_t vt,   gamma_t = ratio_t alpha sqrt(mt kt0) h^(1/4)
+//   Fd_n = -gamma_n vn,   gamma_n = zeta sqrt(m12 kn) h^(1/4)
+//   Fd_t = -gamma_t vt,   gamma_t = ratio_t zeta sqrt(mt kt0) h^(1/4)
 //
 // with kn = sqrt(R12)/D the Hertz stiffness of Eq. 3, kt0 = Dt sqrt(R12) that of Eq. 5, and
-// m12 = m1 m2/(m1 + m2) (m12 = m for a wall). The tangential law applies the same alpha to its
+// m12 = m1 m2/(m1 + m2) (m12 = m for a wall). The tangential law applies the same zeta to its
 // own mode: stiffness kt0 and effective mass mt, 1/mt = sum over both bodies of
 // (1/m + a^2/I), the inertia the contact point feels when it slides and the spheres roll
 // (mt = m12/3.5 for rotating solid spheres, m12 without rotation). Tsuji et al. used
@@ -12,29 +12,29 @@
 // ~ 1.7: with the explicit integrator that makes small grains chatter at the Coulomb limit
 // and a frictional packing never relaxes (measured in docs/physics.md). ratio_t (scene key
 // effects.damping.tangential_ratio) scales it further. With this h^(1/4) factor the equation of motion of a binary collision,
-// m12 h'' = -kn h^(3/2) - alpha sqrt(m12 kn) h^(1/4) h', becomes in the scaled variables
+// m12 h'' = -kn h^(3/2) - zeta sqrt(m12 kn) h^(1/4) h', becomes in the scaled variables
 // X = h/L, tau = t/T (T = sqrt(m12/(kn L^(1/2))), L set by the impact speed)
 //
-//   X'' = -X^(3/2) - alpha X^(1/4) X',   X(0) = 0, X'(0) = 1,
+//   X'' = -X^(3/2) - zeta X^(1/4) X',   X(0) = 0, X'(0) = 1,
 //
 // independent of speed, masses and stiffness: the coefficient of restitution e = -X'(end)
-// depends on alpha alone. We prescribe e and obtain alpha(e) by integrating that equation
+// depends on zeta alone. We prescribe e and obtain zeta(e) by integrating that equation
 // (not by Tsuji's polynomial fit), so the restitution of a normal impact is e up to the time
 // discretisation of the simulation. The normal force is not clipped at zero: the same
-// unclipped equation defines alpha(e).
+// unclipped equation defines zeta(e).
 #pragma once
 
 namespace softpack::damping {
 
-/// Restitution coefficient of a normal Hertz impact with damping coefficient alpha >= 0
+/// Restitution coefficient of a normal Hertz impact with damping coefficient zeta >= 0
 /// (0 when the spheres stick).
-double restitution_from_alpha(double alpha);
+double restitution_from_zeta(double zeta);
 
-/// The alpha giving restitution e, 0 < e <= 1 (alpha = 0 for e = 1). Accurate to ~1e-9 in e.
-double alpha_from_restitution(double e);
+/// The zeta giving restitution e, 0 < e <= 1 (zeta = 0 for e = 1). Accurate to ~1e-9 in e.
+double zeta_from_restitution(double e);
 
-/// alpha sqrt(m k): with k = kn and m = m12 the normal damping factor gamma0
+/// zeta sqrt(m k): with k = kn and m = m12 the normal damping factor gamma0
 /// (gamma_n = gamma0 h^(1/4) [kg/s]); with k = kt0 and m = mt the tangential one.
-double gamma_factor(double alpha, double m, double k);
+double gamma_factor(double zeta, double m, double k);
 
 }  // namespace softpack::damping

@@ -12,7 +12,7 @@ ForceField::ForceField(const SceneDef& scene) {
   if (e.normal.empty()) return;
   law_ = &normal_law(e.normal);
   loops_ = law_->loops(fx_);
-  if (e.damping()) alpha_ = law_->damping_coefficient(*e.restitution);
+  if (e.damping()) zeta_ = law_->damping_coefficient(*e.restitution);
   tangential_ratio_ = e.tangential_damping_ratio;
   materials_ = scene.materials.size();
   D_.resize(materials_ * materials_);
@@ -44,11 +44,11 @@ ContactConstants<double> ForceField::pair_constants(const Particles& p, int i, i
   k.kt0 = tsuji::stiffness_factor(R12, Dt_[mm]);
   k.mu = mu_[mm];
   const double m12 = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
-  k.gamma0 = damping::gamma_factor(alpha_, m12, k.kn);
+  k.gamma0 = damping::gamma_factor(zeta_, m12, k.kn);
   // Inertia of the sliding-rolling mode: 1/mt = 1/mi + ri^2/Ii + 1/mj + rj^2/Ij.
   double inv_mt = p.inv_m[i] + p.inv_m[j];
   if (p.rotates()) inv_mt += p.r[i] * p.r[i] * p.inv_I[i] + p.r[j] * p.r[j] * p.inv_I[j];
-  k.gamma_t0 = tangential_ratio_ * damping::gamma_factor(alpha_, 1.0 / inv_mt, k.kt0);
+  k.gamma_t0 = tangential_ratio_ * damping::gamma_factor(zeta_, 1.0 / inv_mt, k.kt0);
   return k;
 }
 
@@ -58,10 +58,10 @@ ContactConstants<double> ForceField::wall_constants(const Particles& p, int i, i
   k.kn = law_->stiffness(R12, D_[mm]);
   k.kt0 = tsuji::stiffness_factor(R12, Dt_[mm]);
   k.mu = mu_[mm];
-  k.gamma0 = damping::gamma_factor(alpha_, p.m[i], k.kn);  // a wall has infinite mass
+  k.gamma0 = damping::gamma_factor(zeta_, p.m[i], k.kn);  // a wall has infinite mass
   double inv_mt = p.inv_m[i];
   if (p.rotates()) inv_mt += p.r[i] * p.r[i] * p.inv_I[i];
-  k.gamma_t0 = tangential_ratio_ * damping::gamma_factor(alpha_, 1.0 / inv_mt, k.kt0);
+  k.gamma_t0 = tangential_ratio_ * damping::gamma_factor(zeta_, 1.0 / inv_mt, k.kt0);
   return k;
 }
 

@@ -26,8 +26,8 @@ class ForceField {
   bool active() const { return law_ != nullptr; }
   const NormalLaw& law() const { return *law_; }
   const Effects& effects() const { return fx_; }
-  /// Damping coefficient alpha(e) of the normal law (0 without damping).
-  double alpha() const { return alpha_; }
+  /// Damping coefficient zeta(e) of the normal law (0 without damping).
+  double zeta() const { return zeta_; }
 
   /// Adds the force (and torque) of every touching contact to the spheres and the wall loads,
   /// advances the springs of touching contacts by `spring_dt` and clears those of open ones.
@@ -43,7 +43,7 @@ class ForceField {
   const NormalLaw* law_ = nullptr;
   Effects fx_;
   std::unique_ptr<ForceLoops> loops_;
-  double alpha_ = 0.0, tangential_ratio_ = 1.0;
+  double zeta_ = 0.0, tangential_ratio_ = 1.0;
   std::size_t materials_ = 0;
   std::vector<double> D_, Dt_, mu_;  ///< material pair constants, index a * materials + b
   std::vector<int> plane_material_, shell_material_;
