@@ -73,7 +73,15 @@ inline constexpr bool kQuarantine = true;
 /// layer, not by H5Dread. `what` names the file and dataset in messages.
 std::string read_vlen_string_dataset(hid_t ds, const std::string& what);
 
-/// Lets libhdf5 walk the file in a child process: InputError when the child crashes or hangs.
+/// Before the library decodes the object `name` (a path from the root) at `addr` of a file being
+/// read: when its header has no checksum (version 1) or points to structures without one, the
+/// file is walked in a child first (preflight).
+void guard_object(hid_t file, const std::string& name, haddr_t addr, const std::string& path);
+/// Before the library reads the dataset: a v1 B-tree chunk index has no checksum (preflight).
+void guard_chunk_index(hid_t ds, const std::string& path);
+
+/// Lets libhdf5 walk the file at `path` in a child process, once per process and file: InputError
+/// when the child crashes or does not finish.
 void preflight(const std::string& path);
 
 }  // namespace softpack::h5::detail

@@ -194,9 +194,9 @@ File File::open(const std::string& path) {
     throw InputError(fmt::format("{}: cannot read: {}", path, std::strerror(errno)));
   const int superblock = superblock_version(path);
   if (superblock < 0) throw InputError(fmt::format("{}: not an HDF5 file", path));
-  // libhdf5 walks the file in a child process first: it crashes on some damaged files
-  // (io/hdf5_quarantine.cpp).
-  detail::preflight(path);
+  // Where libhdf5 would decode metadata without a checksum, it walks the file in a child
+  // process first: it crashes on some damaged files (io/hdf5_quarantine.cpp).
+  if (superblock < 2) detail::preflight(path);
   const QuietErrors quiet;
   const Handle fapl = file_access(false);
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl.get());
@@ -210,7 +210,10 @@ File File::open(const std::string& path) {
                                    path, eof, base + stored));
     throw InputError(fmt::format("{}: truncated or corrupt HDF5 file ({})", path, reason));
   }
-  return File(id, path);
+  File file(id, path);
+  H5O_info_t root{};  // in the 1.8 format, the readers check each object before they use it
+  if (H5Oget_info2(id, &root, H5O_INFO_BASIC) >= 0) detail::guard_object(id, "/", root.addr, path);
+  return file;
 }
 
 File::File(File&& other) noexcept
