@@ -195,7 +195,8 @@ File File::open(const std::string& path) {
   const int superblock = superblock_version(path);
   if (superblock < 0) throw InputError(fmt::format("{}: not an HDF5 file", path));
   // Where libhdf5 would decode metadata without a checksum, it walks the file in a child
-  // process first: it crashes on some damaged files (io/hdf5_quarantine.cpp).
+  // process first: it crashes on some damaged files (io/hdf5_quarantine.cpp). The 1.6 format
+  // has no checksums: walked before the library opens it here.
   if (superblock < 2) detail::preflight(path);
   const QuietErrors quiet;
   const Handle fapl = file_access(false);
@@ -212,7 +213,8 @@ File File::open(const std::string& path) {
   }
   File file(id, path);
   H5O_info_t root{};  // in the 1.8 format, the readers check each object before they use it
-  if (H5Oget_info2(id, &root, H5O_INFO_BASIC) >= 0) detail::guard_object(id, "/", root.addr, path);
+  if (superblock < 2) detail::mark_walked(id);
+  else if (H5Oget_info2(id, &root, H5O_INFO_BASIC) >= 0) detail::guard_object(id, root.addr, path);
   return file;
 }
 

@@ -40,16 +40,17 @@
 //    tables: local heap, v1 B-tree), external file lists (local heap) and v1 B-tree chunk
 //    indexes. So File::open walks a 1.6-format file in a child before opening it; in a
 //    1.8-format one the readers call guard_object() for each object on a path before the library
-//    decodes it (it reads the header's signature itself, then, under the header's checksum, its
-//    message types) and guard_chunk_index() for each dataset they open, and the file is walked
-//    when one of them finds an unchecked structure. A file is walked once per process (while its
-//    device, inode, size and time stay). softpack's own files never need the child: opening a
-//    packing file and reading /radii takes 0.06-0.09 ms, it took 2.2-2.7 ms with a child at every
-//    open. Not covered: files crafted with valid checksums, a version 1 root object header in a
-//    1.8-format file (H5Fopen decodes it before it can be checked), the global heap of attributes
-//    (see 1). The checks look only at what the readers touch (a corrupt object header that the
-//    library fails to decode leaks cache memory, and at exit libhdf5 then prints "infinite loop
-//    closing library" on stderr; fuzz/regressions/average/string-heap-overflow.h5 has one).
+//    decodes its header (it reads the header's signature itself), guard_dataset_header() before
+//    they open a dataset (its message types, under the header's checksum: an external file
+//    list?) and guard_chunk_index() after, and the file is walked when one of them finds an
+//    unchecked structure, once per File::open. A symbol table in a version 2 header is not
+//    looked for: the library writes old-style groups only with version 1 headers. softpack's own
+//    files never need the child: opening a packing file and reading /radii takes 0.06-0.09 ms;
+//    it took 2.2-2.7 ms with a child at every open. The checks decode nothing the readers would
+//    not (a first version looked at every header's messages, and on a damaged one the library,
+//    failing, leaked cache memory and printed "infinite loop closing library" at exit). Not
+//    covered: files crafted with valid checksums, a version 1 root object header in a 1.8-format
+//    file (H5Fopen decodes it before it can be checked), the global heap of attributes (see 1).
 //
 // When to delete: build with -DSOFTPACK_HDF5_TRUST_LIBRARY (both workarounds off) and replay the
 // regressions (ctest -L fuzz-regression, and the same under the sanitizer build). Once a newer
@@ -58,7 +59,6 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <poll.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,7 +68,6 @@
 #include <cstdint>
 #include <cstring>
 #include <set>
-#include <tuple>
 #include <vector>
 
 #include "core/error.hpp"
@@ -120,20 +119,30 @@ void touch_dataset(hid_t ds, hsize_t file_bytes) {
 
 struct Walk {
   hsize_t file_bytes = 0;
-  std::size_t objects = 0;
+  std::set<haddr_t> seen;
 };
 
+void walk_group(hid_t group, Walk& walk);
+
 herr_t touch_link(hid_t group, const char* name, const H5L_info_t* info, void* data) {
-  auto* walk = static_cast<Walk*>(data);
-  if (++walk->objects > 100000) return 1;  // enough: stop the walk
-  if (info->type != H5L_TYPE_HARD) return 0;
+  auto& walk = *static_cast<Walk*>(data);
+  if (info->type != H5L_TYPE_HARD || walk.seen.size() > 100000 || !walk.seen.insert(info->u.address).second)
+    return 0;
   (void)H5Lexists(group, name, H5P_DEFAULT);  // the readers' lookup by name, not only iteration
   const detail::Handle obj(H5Oopen(group, name, H5P_DEFAULT), H5Oclose);
   if (!obj) return 0;
   hsize_t next = 0;
   (void)H5Aiterate2(obj.get(), H5_INDEX_NAME, H5_ITER_NATIVE, &next, touch_attribute, nullptr);
-  if (H5Iget_type(obj.get()) == H5I_DATASET) touch_dataset(obj.get(), walk->file_bytes);
+  if (H5Iget_type(obj.get()) == H5I_GROUP) walk_group(obj.get(), walk);
+  if (H5Iget_type(obj.get()) == H5I_DATASET) touch_dataset(obj.get(), walk.file_bytes);
   return 0;
+}
+
+// Group by group, both ways: an error in one (H5Literate stops at it; H5Lvisit would stop the
+// whole walk) must not hide the objects behind the others, which the readers reach by name.
+void walk_group(hid_t group, Walk& walk) {
+  for (const H5_iter_order_t order : {H5_ITER_INC, H5_ITER_DEC})
+    (void)H5Literate(group, H5_INDEX_NAME, order, nullptr, touch_link, &walk);
 }
 
 // In the child: the walk; its exit code does not matter, only that it ends. It runs library
@@ -157,14 +166,16 @@ herr_t touch_link(hid_t group, const char* name, const H5L_info_t* info, void* d
     (void)H5Fget_filesize(file, &walk.file_bytes);
     hsize_t next = 0;
     (void)H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_NATIVE, &next, touch_attribute, nullptr);
-    (void)H5Lvisit(file, H5_INDEX_NAME, H5_ITER_NATIVE, touch_link, &walk);
+    const detail::Handle root(H5Gopen2(file, "/", H5P_DEFAULT), H5Gclose);
+    if (root) walk_group(root.get(), walk);
   }
   ::_exit(0);
 }
 
-// A file walked once is not walked again while it is the same file (device, inode, size, time).
-using FileKey = std::tuple<dev_t, ino_t, off_t, std::int64_t, std::int64_t>;
-std::set<FileKey> walked;
+// The open files (identifiers) walked since they were opened: one walk per File::open. (The
+// library does not reuse identifiers; a file's name, inode, size and time do not tell whether it
+// changed: a rewrite within a clock tick keeps them, as the fuzzers found.)
+std::set<hid_t> walked;
 
 // A version 2 object header starts with "OHDR" (and ends with its checksum; version 1 has no
 // signature): read here, before the library decodes it.
@@ -191,31 +202,37 @@ void set_preflight_seconds(int seconds) { preflight_seconds = std::max(1, second
 
 namespace detail {
 
-void guard_object(hid_t file, const std::string& name, haddr_t addr, const std::string& path) {
-  // Messages that point to unchecked structures: a symbol table (an old-style group: local heap,
-  // v1 B-tree) and an external file list (its names are in a local heap). Types of the format.
-  constexpr std::uint64_t kExternalFiles = 1u << 0x07, kSymbolTable = 1u << 0x11;
-  if (!kQuarantine || being_written(file)) return;
-  H5O_info_t info{};
-  if (!checksummed_header(file, addr) ||
-      H5Oget_info_by_name2(file, name.c_str(), &info, H5O_INFO_HDR, H5P_DEFAULT) < 0 ||
-      (info.hdr.mesg.present & (kExternalFiles | kSymbolTable)) != 0)
-    preflight(path);
+void guard_object(hid_t file, haddr_t addr, const std::string& path) {
+  if (kQuarantine && !being_written(file) && walked.count(file) == 0 && !checksummed_header(file, addr))
+    walk_once(file, path);
 }
 
-void guard_chunk_index(hid_t ds, const std::string& path) {
-  H5D_chunk_index_t index{};  // fails when the dataset is not chunked
-  const Handle file(H5Iget_file_id(ds), H5Fclose);
-  if (kQuarantine && file && !being_written(file.get()) && H5Dget_chunk_index_type(ds, &index) >= 0 &&
-      index == H5D_CHUNK_IDX_BTREE)
-    preflight(path);
+void guard_dataset_header(hid_t file, const std::string& name, const std::string& path) {
+  constexpr std::uint64_t kExternalFiles = 1u << 0x07;  // the message type of the format
+  H5O_info_t info{};  // (a header that fails to decode fails H5Dopen2 as well: an error, no walk)
+  if (kQuarantine && !being_written(file) && walked.count(file) == 0 &&
+      H5Oget_info_by_name2(file, name.c_str(), &info, H5O_INFO_HDR, H5P_DEFAULT) >= 0 &&
+      (info.hdr.mesg.present & kExternalFiles) != 0)
+    walk_once(file, path);
 }
+
+void guard_chunk_index(hid_t file, hid_t ds, const std::string& path) {
+  H5D_chunk_index_t index{};  // fails when the dataset is not chunked
+  if (kQuarantine && !being_written(file) && H5Dget_chunk_index_type(ds, &index) >= 0 &&
+      index == H5D_CHUNK_IDX_BTREE)
+    walk_once(file, path);
+}
+
+void walk_once(hid_t file, const std::string& path) {
+  if (walked.count(file) != 0) return;
+  preflight(path);
+  mark_walked(file);
+}
+
+void mark_walked(hid_t file) { walked.insert(file); }
 
 void preflight(const std::string& path) {
-  struct stat st {};
-  if (!kQuarantine || ::stat(path.c_str(), &st) != 0) return;  // (File::open names a missing file)
-  const FileKey key{st.st_dev, st.st_ino, st.st_size, st.st_mtim.tv_sec, st.st_mtim.tv_nsec};
-  if (walked.count(key) != 0) return;
+  if (!kQuarantine) return;
   // The child holds the write end of a pipe: its end, by exit or by crash, closes it.
   int done[2];
   if (::pipe2(done, O_CLOEXEC) != 0) return;  // cannot: go without
@@ -251,7 +268,6 @@ void preflight(const std::string& path) {
   if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
     throw InputError(fmt::format("{}: corrupt HDF5 file: the HDF5 library crashes reading it (exit status {})",
                                  path, WEXITSTATUS(status)));
-  walked.insert(key);
 }
 
 // --- 1. A variable-length string from the global heap ------------------------------------------
