@@ -62,7 +62,7 @@ bool exists_in(hid_t file, const std::string& file_path, const std::string& path
 bool standard_layout(hid_t type);
 
 // The workarounds for libhdf5 bugs, io/hdf5_quarantine.cpp. -DSOFTPACK_HDF5_TRUST_LIBRARY turns
-// them off: the test of whether they are still needed (see that file).
+// them off (the heap reader and the preflight): the test of whether they are still needed.
 #ifdef SOFTPACK_HDF5_TRUST_LIBRARY
 inline constexpr bool kQuarantine = false;
 #else

@@ -29,7 +29,9 @@
 //    - The same wrap through a v1 B-tree chunk index whose child is the undefined address
 //      (H5B_find -> H5AC_protect -> H5F_block_read). Input, made by hand (the seed packing in
 //      the 1.8 format, /centres chunked by row in a B-tree of K = 1, one child address set to
-//      all ones): fuzz/regressions/packing/libhdf5-segv-chunk-btree.h5.
+//      all ones): fuzz/regressions/packing/libhdf5-segv-chunk-btree.h5; and the same behind a
+//      damaged root link index that stops H5Lvisit (hence the walk goes group by group):
+//      fuzz/regressions/packing/libhdf5-segv-walk-stopped-early.h5.
 //    No API gives these addresses to check before the library uses them, and a crash cannot be
 //    caught in the process, hence the child. It is needed only where the library decodes
 //    metadata that has no checksum: where there is one, the library verifies it before decoding,
@@ -52,10 +54,11 @@
 //    covered: files crafted with valid checksums, a version 1 root object header in a 1.8-format
 //    file (H5Fopen decodes it before it can be checked), the global heap of attributes (see 1).
 //
-// When to delete: build with -DSOFTPACK_HDF5_TRUST_LIBRARY (both workarounds off) and replay the
-// regressions (ctest -L fuzz-regression, and the same under the sanitizer build). Once a newer
-// libhdf5 refuses the four inputs above with an error (InputError from the reader), remove the
-// workaround concerned, this file when both go, and the macro.
+// When to delete: build with -DCMAKE_CXX_FLAGS=-DSOFTPACK_HDF5_TRUST_LIBRARY (both workarounds
+// off) and replay the regressions (ctest -L fuzz-regression, also in the sanitizer build). With
+// libhdf5 1.10.8 the five inputs above hang (string-heap-hang) or die with SIGSEGV. Once a newer
+// libhdf5 refuses them with errors (InputError from the readers), remove the workaround
+// concerned, this file when both go, and the macro.
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <poll.h>

@@ -268,7 +268,7 @@ std::string read_string_from(hid_t obj, const std::string& what) {
     throw InputError(fmt::format("{}: expected a scalar string, found {}", what, shape_text(shape)));
   const Handle file_type = type_of(obj, what);
   std::string s;
-  if (H5Tis_variable_str(file_type.get()) > 0 && !is_attribute(obj)) {
+  if (H5Tis_variable_str(file_type.get()) > 0 && !is_attribute(obj) && detail::kQuarantine) {
     s = detail::read_vlen_string_dataset(obj, what);  // not H5Dread: see io/hdf5_quarantine.cpp
   } else if (H5Tis_variable_str(file_type.get()) > 0) {
     const Handle mem_type = detail::must(Handle(H5Tcopy(file_type.get()), H5Tclose), "H5Tcopy");
