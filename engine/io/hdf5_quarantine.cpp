@@ -21,7 +21,7 @@
 // 2. A file in which libhdf5 would decode metadata that has no checksum is first walked by the
 //    library in a child process (every object, its attributes and the data the readers would
 //    read): if the child crashes or does not finish within set_preflight_seconds (60 s), the
-//    file is refused as corrupt. Two crashes of that kind, SIGSEGV in every build:
+//    file is refused as corrupt. Crashes of that kind, SIGSEGV in every build:
 //    - An old-style group whose symbol table names the undefined address (all ones) as its local
 //      heap: H5G__stab_lookup -> H5HL_protect -> H5F_block_read, whose range check lets
 //      `addr + size` wrap past 2^64, then H5F__accum_read copies from a wild address.
@@ -177,7 +177,8 @@ void walk_group(hid_t group, Walk& walk) {
 
 // The open files (identifiers) walked since they were opened: one walk per File::open. (The
 // library does not reuse identifiers; a file's name, inode, size and time do not tell whether it
-// changed: a rewrite within a clock tick keeps them, as the fuzzers found.)
+// changed: a rewrite within a clock tick keeps them, and the fuzzers rewrite their scratch file
+// hundreds of times a second.)
 std::set<hid_t> walked;
 
 // A version 2 object header starts with "OHDR" (and ends with its checksum; version 1 has no
