@@ -88,9 +88,10 @@ class File {
   std::string path_;
 };
 
-/// File::open first lets the library walk the file in a child process (libhdf5 crashes or loops
-/// on some corrupt files): a crash, or no end within this many seconds (default 60), makes the
-/// file corrupt (InputError). The fuzz targets lower it.
+/// File::open lets the library walk a file in a child process first when the library would
+/// decode metadata of it without a checksum (libhdf5 1.10 crashes or loops on some such corrupt
+/// files; io/hdf5_quarantine.cpp): a crash, or no end within this many seconds (default 60),
+/// makes the file corrupt (InputError). The fuzz targets lower it.
 void set_preflight_seconds(int seconds);
 
 /// An HDF5 output written atomically: file() writes "<final>.tmp.<pid>"; commit() closes it

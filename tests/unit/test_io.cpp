@@ -178,6 +178,24 @@ TEST_F(H5RoundTrip, DimsAndGroups) {
   EXPECT_EQ(f.get_attribute_int64("stats", "seed"), 7);
 }
 
+// A path of more than 1024 characters: no fixed-size buffer for names (the variable-length
+// strings are read from the file by the layer itself, io/hdf5_quarantine.cpp).
+TEST_F(H5RoundTrip, LongPath) {
+  fs::path dir = dir_;
+  while (dir.string().size() <= 1100) dir /= std::string(200, 'd');
+  fs::create_directories(dir);
+  const std::string p = (dir / "long.h5").string();
+  ASSERT_GT(p.size(), 1024u);
+  {
+    h5::File f = h5::File::create(p);
+    write_sample(f, 1.0);
+  }
+  const h5::File f = h5::File::open(p);
+  EXPECT_EQ(f.read_string("provenance"), "softpack test, scale 1");
+  EXPECT_EQ(f.get_attribute_string("/", "code_version"), "0.1.0 (test)");
+  EXPECT_EQ(input_error([&] { f.read_doubles("nope"); }), p + ": no dataset 'nope'");
+}
+
 // ---------------------------------------------------------------------------------------------
 
 using H5Errors = IoTest;
