@@ -73,19 +73,6 @@ inline constexpr bool kQuarantine = true;
 /// layer, not by H5Dread. `what` names the file and dataset in messages.
 std::string read_vlen_string_dataset(hid_t ds, const std::string& what);
 
-/// The checks of a file being read in the 1.8 format (version 2 or 3 superblock), each before the
-/// library would decode a structure that may have no checksum: the file is then walked in a child
-/// first (walk_once). guard_object: the object header at `addr` (version 1 has no checksum);
-/// guard_dataset_header: before H5Dopen2 of `name`, an external file list (names in a local
-/// heap); guard_chunk_index: after it, a v1 B-tree chunk index.
-void guard_object(hid_t file, haddr_t addr, const std::string& path);
-void guard_dataset_header(hid_t file, const std::string& name, const std::string& path);
-void guard_chunk_index(hid_t file, hid_t ds, const std::string& path);
-/// The preflight of the open `file` unless it had one since it was opened; mark_walked records
-/// File::open's, which runs before the library opens a 1.6-format file.
-void walk_once(hid_t file, const std::string& path);
-void mark_walked(hid_t file);
-
 /// Lets libhdf5 walk the file at `path` in a child process: InputError when the child crashes or
 /// does not finish.
 void preflight(const std::string& path);

@@ -194,10 +194,9 @@ File File::open(const std::string& path) {
     throw InputError(fmt::format("{}: cannot read: {}", path, std::strerror(errno)));
   const int superblock = superblock_version(path);
   if (superblock < 0) throw InputError(fmt::format("{}: not an HDF5 file", path));
-  // Where libhdf5 would decode metadata without a checksum, it walks the file in a child
-  // process first: it crashes on some damaged files (io/hdf5_quarantine.cpp). The 1.6 format
-  // has no checksums: walked before the library opens it here.
-  if (superblock < 2) detail::preflight(path);
+  // libhdf5 walks the file in a child process first: it crashes or hangs on some damaged files
+  // (io/hdf5_quarantine.cpp).
+  detail::preflight(path);
   const QuietErrors quiet;
   const Handle fapl = file_access(false);
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl.get());
@@ -211,11 +210,7 @@ File File::open(const std::string& path) {
                                    path, eof, base + stored));
     throw InputError(fmt::format("{}: truncated or corrupt HDF5 file ({})", path, reason));
   }
-  File file(id, path);
-  H5O_info_t root{};  // in the 1.8 format, the readers check each object before they use it
-  if (superblock < 2) detail::mark_walked(id);
-  else if (H5Oget_info2(id, &root, H5O_INFO_BASIC) >= 0) detail::guard_object(id, root.addr, path);
-  return file;
+  return File(id, path);
 }
 
 File::File(File&& other) noexcept

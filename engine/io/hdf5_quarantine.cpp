@@ -33,26 +33,12 @@
 //      damaged root link index that stops H5Lvisit (hence the walk goes group by group):
 //      fuzz/regressions/packing/libhdf5-segv-walk-stopped-early.h5.
 //    No API gives these addresses to check before the library uses them, and a crash cannot be
-//    caught in the process, hence the child. It is needed only where the library decodes
-//    metadata that has no checksum: where there is one, the library verifies it before decoding,
-//    so a damaged file fails with an error. The 1.8 format that softpack writes (version 2
-//    superblock, version 2 object headers "OHDR", v2 B-trees and fractal heaps) has checksums.
-//    Unchecked are everything in a file with a version 0 or 1 superblock (the 1.6 format, h5py's
-//    default), and in a 1.8-format file version 1 object headers, old-style groups (symbol
-//    tables: local heap, v1 B-tree), external file lists (local heap) and v1 B-tree chunk
-//    indexes. So File::open walks a 1.6-format file in a child before opening it; in a
-//    1.8-format one the readers call guard_object() for each object on a path before the library
-//    decodes its header (it reads the header's signature itself), guard_dataset_header() before
-//    they open a dataset (its message types, under the header's checksum: an external file
-//    list?) and guard_chunk_index() after, and the file is walked when one of them finds an
-//    unchecked structure, once per File::open. A symbol table in a version 2 header is not
-//    looked for: the library writes old-style groups only with version 1 headers. softpack's own
-//    files never need the child: opening a packing file and reading /radii takes 0.06-0.09 ms;
-//    it took 2.2-2.7 ms with a child at every open. The checks decode nothing the readers would
-//    not (a first version looked at every header's messages, and on a damaged one the library,
-//    failing, leaked cache memory and printed "infinite loop closing library" at exit). Not
-//    covered: files crafted with valid checksums, a version 1 root object header in a 1.8-format
-//    file (H5Fopen decodes it before it can be checked), the global heap of attributes (see 1).
+//    caught in the process, hence the child, before every File::open. (Measured, and not kept:
+//    walking only files whose metadata lacks checksums, as softpack's own 1.8-format files do
+//    not, cut an open from 2.2-2.7 ms to 0.05-0.09 ms, at the price of checking object header
+//    signatures, external file lists and chunk indexes before the library decodes them: ~90 more
+//    lines for a cost no run notices, a few hundred opens per sweep.) Not covered: the global
+//    heap of attributes (see 1).
 //
 // When to delete: build with -DCMAKE_CXX_FLAGS=-DSOFTPACK_HDF5_TRUST_LIBRARY (both workarounds
 // off) and replay the regressions (ctest -L fuzz-regression, also in the sanitizer build). With
@@ -175,65 +161,11 @@ void walk_group(hid_t group, Walk& walk) {
   ::_exit(0);
 }
 
-// The open files (identifiers) walked since they were opened: one walk per File::open. (The
-// library does not reuse identifiers; a file's name, inode, size and time do not tell whether it
-// changed: a rewrite within a clock tick keeps them, and the fuzzers rewrite their scratch file
-// hundreds of times a second.)
-std::set<hid_t> walked;
-
-// A version 2 object header starts with "OHDR" (and ends with its checksum; version 1 has no
-// signature): read here, before the library decodes it.
-bool checksummed_header(hid_t file, haddr_t addr) {
-  const detail::Handle fcpl(H5Fget_create_plist(file), H5Pclose);
-  void* handle = nullptr;  // the sec2 driver's: an int, the descriptor the library reads through
-  hsize_t base = 0;        // the user block: addresses are relative to the superblock
-  char head[4];
-  return fcpl && H5Pget_userblock(fcpl.get(), &base) >= 0 && H5Fget_vfd_handle(file, H5P_DEFAULT, &handle) >= 0 &&
-         handle != nullptr && addr != HADDR_UNDEF &&
-         ::pread(*static_cast<int*>(handle), head, 4, static_cast<off_t>(base + addr)) == 4 &&
-         std::memcmp(head, "OHDR", 4) == 0;
-}
-
-// Files being written are this process's own.
-bool being_written(hid_t file) {
-  unsigned intent = 0;
-  return H5Fget_intent(file, &intent) < 0 || (intent & H5F_ACC_RDWR) != 0;
-}
-
 }  // namespace
 
 void set_preflight_seconds(int seconds) { preflight_seconds = std::max(1, seconds); }
 
 namespace detail {
-
-void guard_object(hid_t file, haddr_t addr, const std::string& path) {
-  if (kQuarantine && !being_written(file) && walked.count(file) == 0 && !checksummed_header(file, addr))
-    walk_once(file, path);
-}
-
-void guard_dataset_header(hid_t file, const std::string& name, const std::string& path) {
-  constexpr std::uint64_t kExternalFiles = 1u << 0x07;  // the message type of the format
-  H5O_info_t info{};  // (a header that fails to decode fails H5Dopen2 as well: an error, no walk)
-  if (kQuarantine && !being_written(file) && walked.count(file) == 0 &&
-      H5Oget_info_by_name2(file, name.c_str(), &info, H5O_INFO_HDR, H5P_DEFAULT) >= 0 &&
-      (info.hdr.mesg.present & kExternalFiles) != 0)
-    walk_once(file, path);
-}
-
-void guard_chunk_index(hid_t file, hid_t ds, const std::string& path) {
-  H5D_chunk_index_t index{};  // fails when the dataset is not chunked
-  if (kQuarantine && !being_written(file) && H5Dget_chunk_index_type(ds, &index) >= 0 &&
-      index == H5D_CHUNK_IDX_BTREE)
-    walk_once(file, path);
-}
-
-void walk_once(hid_t file, const std::string& path) {
-  if (walked.count(file) != 0) return;
-  preflight(path);
-  mark_walked(file);
-}
-
-void mark_walked(hid_t file) { walked.insert(file); }
 
 void preflight(const std::string& path) {
   if (!kQuarantine) return;
