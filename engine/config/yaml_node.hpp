@@ -30,8 +30,6 @@ class ConfigNode {
 
   const std::string& path() const { return path_; }
   const YAML::Node& yaml() const { return node_; }
-  bool is_map() const { return node_.IsMap(); }
-  bool is_sequence() const { return node_.IsSequence(); }
 
   // Maps.
   bool has(const std::string& key) const;

@@ -37,7 +37,6 @@ class File {
   ~File();  ///< Closes quietly; call close() to see errors.
 
   const std::string& path() const { return path_; }
-  bool is_open() const { return id_ >= 0; }
   /// Flushes and closes. Throws std::runtime_error on failure. Idempotent.
   void close();
 

@@ -83,7 +83,6 @@ class Simulation {
   const std::vector<WallLoad>& shell_loads() const { return world_.shell_loads; }
   /// Load on the plane or shell of that name; throws InputError if there is none.
   const WallLoad& wall_load(const std::string& name) const;
-  const ContactLists& contact_lists() const { return neighbours_.lists(); }
   const PairList& pair_list() const { return neighbours_.lists().pairs; }
   const std::vector<WallList>& plane_lists() const { return neighbours_.lists().planes; }
   const std::vector<WallList>& shell_lists() const { return neighbours_.lists().shells; }
