@@ -15,9 +15,9 @@
 #include "analysis/power_fit.hpp"
 #include "config/profile.hpp"
 #include "core/error.hpp"
+#include "formats/packing_file.hpp"
 #include "measure/point_file.hpp"
 #include "measure/settings.hpp"
-#include "packing/packing_file.hpp"
 #include "scene/scene_yaml.hpp"
 
 namespace softpack::fuzz {

@@ -1,4 +1,4 @@
-#include "packing/packing_file.hpp"
+#include "formats/packing_file.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
