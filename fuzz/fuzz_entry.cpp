@@ -16,7 +16,8 @@
 #include "config/profile.hpp"
 #include "core/error.hpp"
 #include "formats/packing_file.hpp"
-#include "measure/point_file.hpp"
+#include "formats/sweep_point_file.hpp"
+#include "formats/sweep_results_file.hpp"
 #include "measure/settings.hpp"
 #include "scene/scene_yaml.hpp"
 
@@ -92,7 +93,7 @@ void sweep_file(const std::string& path) {
   // A checkpoint, as the resume reads it (with the state the tangential stage restores).
   attempt([&] { (void)read_point_file(path, true); });
   // A results file, as softpack-average reads and averages it.
-  const SweepData d = read_sweep(path);
+  const SweepResults d = read_sweep_results_file(path);
   (void)average_normal({d, d});
   (void)average_tangential({d, d});
 }

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "io/file_kind.hpp"
+#include "formats/file_kind.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace softpack {
@@ -21,39 +21,6 @@ MeanError mean_error(const std::vector<double>& v) {
     m.error = std::sqrt(ss / (n - 1.0) / n);
   }
   return m;
-}
-
-SweepData read_sweep(const std::string& path, const std::string& stage, const std::string& scene) {
-  const h5::File f = h5::File::open(path);
-  if (!f.exists("delta_n") || !f.exists("Fn") || !f.exists("provenance/stage")) {
-    const std::string kind = h5::kind_of(f);
-    throw InputError(fmt::format("{}: not a softpack sweep results file ({})", path,
-                                 kind.empty() ? "no /delta_n, /Fn or /provenance/stage" : "it is " + kind));
-  }
-  const std::string file_stage = f.read_string("provenance/stage");
-  if (!stage.empty() && file_stage != stage)
-    throw InputError(fmt::format("{}: /provenance/stage: these are {} results, {} ones are expected here", path, file_stage, stage));
-  const std::string file_scene = f.read_string("provenance/scene");
-  if (!scene.empty() && file_scene != scene)
-    throw InputError(fmt::format("{}: /provenance/scene: these are results of the {} scene, not of {}", path, file_scene, scene));
-  SweepData d;
-  d.path = path;
-  d.delta_n = f.read_doubles("delta_n");
-  if (d.delta_n.empty()) throw InputError(fmt::format("{}: /delta_n: the sweep holds no points", path));
-  const std::pair<const char*, std::vector<double> SweepData::*> columns[] = {
-      {"delta_n", &SweepData::delta_n}, {"alpha_deg", &SweepData::alpha_deg}, {"ht", &SweepData::ht},
-      {"Fn", &SweepData::Fn},           {"Ft_parallel", &SweepData::Ft_parallel}, {"Ft_perpendicular", &SweepData::Ft_perpendicular}};
-  for (const auto& [name, field] : columns) {
-    if (field != &SweepData::delta_n) d.*field = f.read_doubles(name);
-    const std::vector<double>& v = d.*field;
-    if (v.size() != d.delta_n.size())
-      throw InputError(fmt::format("{}: /{} has {} values but /delta_n has {}; allowed: the same number", path, name, v.size(),
-                                   d.delta_n.size()));
-    for (std::size_t i = 0; i < v.size(); ++i)
-      if (!std::isfinite(v[i]))
-        throw InputError(fmt::format("{}: /{}[{}] = {} is not allowed; allowed: finite numbers", path, name, i, v[i]));
-  }
-  return d;
 }
 
 namespace {
@@ -74,7 +41,7 @@ void check_column(const std::string& path, const std::string& name, const std::v
 AverageFile read_average_file(const std::string& path) {
   const h5::File in = h5::File::open(path);
   if (!in.exists("normal/delta_n") || !in.exists("provenance/scene")) {
-    const std::string kind = h5::kind_of(in);
+    const std::string kind = kind_of(in);
     throw InputError(fmt::format("{}: not a softpack average file ({})", path,
                                  kind.empty() ? "no /normal/delta_n or /provenance/scene" : "it is " + kind));
   }
@@ -107,17 +74,17 @@ AverageFile read_average_file(const std::string& path) {
 
 namespace {
 
-void same_grid(const std::vector<SweepData>& seeds) {
+void same_grid(const std::vector<SweepResults>& seeds) {
   if (seeds.empty()) throw InputError("no sweep results to average");
-  for (const SweepData& s : seeds)
+  for (const SweepResults& s : seeds)
     if (s.delta_n != seeds[0].delta_n || s.alpha_deg != seeds[0].alpha_deg)
       throw InputError(fmt::format("{}: its (delta_n, alpha) grid differs from that of {}; results of one profile share it",
                                    s.path, seeds[0].path));
 }
 
-MeanError column(const std::vector<SweepData>& seeds, std::vector<double> SweepData::*field, std::size_t k) {
+MeanError column(const std::vector<SweepResults>& seeds, std::vector<double> SweepResults::*field, std::size_t k) {
   std::vector<double> v;
-  for (const SweepData& s : seeds) v.push_back((s.*field)[k]);
+  for (const SweepResults& s : seeds) v.push_back((s.*field)[k]);
   return mean_error(v);
 }
 
@@ -132,38 +99,38 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
   return sxx > 0 ? sxy / sxx : 0.0;
 }
 
-NormalAverage average_normal(const std::vector<SweepData>& seeds) {
+NormalAverage average_normal(const std::vector<SweepResults>& seeds) {
   same_grid(seeds);
   NormalAverage a;
   a.seeds = seeds.size();
   a.delta_n = seeds[0].delta_n;
   for (std::size_t k = 0; k < a.delta_n.size(); ++k) {
-    a.Fn.push_back(column(seeds, &SweepData::Fn, k));
-    a.Ft_parallel.push_back(column(seeds, &SweepData::Ft_parallel, k));
-    a.Ft_perpendicular.push_back(column(seeds, &SweepData::Ft_perpendicular, k));
+    a.Fn.push_back(column(seeds, &SweepResults::Fn, k));
+    a.Ft_parallel.push_back(column(seeds, &SweepResults::Ft_parallel, k));
+    a.Ft_perpendicular.push_back(column(seeds, &SweepResults::Ft_perpendicular, k));
   }
   return a;
 }
 
-TangentialAverage average_tangential(const std::vector<SweepData>& seeds) {
+TangentialAverage average_tangential(const std::vector<SweepResults>& seeds) {
   same_grid(seeds);
   TangentialAverage a;
   a.seeds = seeds.size();
-  const SweepData& g = seeds[0];
+  const SweepResults& g = seeds[0];
   a.delta_n = g.delta_n;
   a.alpha_deg = g.alpha_deg;
   a.ht = g.ht;
   for (std::size_t k = 0; k < g.delta_n.size(); ++k) {
-    a.Ft_parallel.push_back(column(seeds, &SweepData::Ft_parallel, k));
-    a.Ft_perpendicular.push_back(column(seeds, &SweepData::Ft_perpendicular, k));
-    a.Fn.push_back(column(seeds, &SweepData::Fn, k));
+    a.Ft_parallel.push_back(column(seeds, &SweepResults::Ft_parallel, k));
+    a.Ft_perpendicular.push_back(column(seeds, &SweepResults::Ft_perpendicular, k));
+    a.Fn.push_back(column(seeds, &SweepResults::Fn, k));
   }
   // kt per seed and Delta_n: the slope of Ft_parallel(ht) over the alpha grid (around ht = 0).
   for (std::size_t k = 0; k < g.delta_n.size();) {
     std::size_t end = k;
     while (end < g.delta_n.size() && g.delta_n[end] == g.delta_n[k]) ++end;
     std::vector<double> per_seed;
-    for (const SweepData& s : seeds) {
+    for (const SweepResults& s : seeds) {
       const std::vector<double> ht(s.ht.begin() + k, s.ht.begin() + end), F(s.Ft_parallel.begin() + k, s.Ft_parallel.begin() + end);
       per_seed.push_back(slope(ht, F));
     }

@@ -46,11 +46,11 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<SweepData> ns, ts;
+    std::vector<SweepResults> ns, ts;
     if (scene != "soft-solid" && scene != "soft-soft")
       throw InputError(fmt::format("--scene: '{}' is not allowed; allowed: soft-solid, soft-soft", scene));
-    for (const auto& p : normal) ns.push_back(read_sweep(p, "normal", scene));
-    for (const auto& p : tangential) ts.push_back(read_sweep(p, "tangential", scene));
+    for (const auto& p : normal) ns.push_back(read_sweep_results_file(p, "normal", scene));
+    for (const auto& p : tangential) ts.push_back(read_sweep_results_file(p, "tangential", scene));
     const NormalAverage n = average_normal(ns);
     const TangentialAverage t = average_tangential(ts);
     namespace fs = std::filesystem;

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "io/file_kind.hpp"
+#include "formats/file_kind.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace softpack {
@@ -64,7 +64,7 @@ void write_packing_file(const std::string& path, const PackingParameters& p, con
 PackingFile read_packing_file(const std::string& path) {
   const h5::File f = h5::File::open(path);
   if (!f.exists("centres") || !f.exists("radii") || !f.exists("provenance/program")) {
-    const std::string kind = h5::kind_of(f);
+    const std::string kind = kind_of(f);
     throw InputError(fmt::format("{}: not a softpack packing file ({})", path,
                                  kind.empty() ? "no /centres, /radii or /provenance/program" : "it is " + kind));
   }

@@ -10,6 +10,7 @@
 #include "config/profile.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "formats/sweep_results_file.hpp"
 #include "measure/sweeps.hpp"
 
 namespace softpack {
@@ -117,7 +118,7 @@ int run_stage(const StageOptions& o) {
       return 0;
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    write_sweep_file(o.out, points, PointProvenance{o.stage, o.scene, c.config, c.code_version}, packings,
+    write_sweep_results_file(o.out, points, PointProvenance{o.stage, o.scene, c.config, c.code_version}, packings,
                      static_cast<std::uint64_t>(o.seed), seconds);
     if (!o.quiet) fmt::print(stderr, "{}: {} points in {:.1f} s -> {}\n", program, points.size(), seconds, o.out);
     return 0;
