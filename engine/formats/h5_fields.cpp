@@ -24,7 +24,7 @@ void put(h5::File& f, const std::string& name, const std::vector<Vec3>& v) {
 
 void get(const h5::File& f, const std::string& name, double& v) {
   v = f.read_scalar_double(name);
-  check_finite(f, name, {v});
+  if (!std::isfinite(v)) throw InputError(fmt::format("{}: /{} = {} is not allowed; allowed: a finite number", f.path(), name, v));
 }
 
 void get(const h5::File& f, const std::string& name, bool& v) {
