@@ -15,6 +15,7 @@
 #include "analysis/power_fit.hpp"
 #include "config/profile.hpp"
 #include "core/error.hpp"
+#include "formats/average_file.hpp"
 #include "formats/packing_file.hpp"
 #include "formats/sweep_point_file.hpp"
 #include "formats/sweep_results_file.hpp"

@@ -5,8 +5,6 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "formats/file_kind.hpp"
-#include "io/hdf5_file.hpp"
 
 namespace softpack {
 
@@ -21,55 +19,6 @@ MeanError mean_error(const std::vector<double>& v) {
     m.error = std::sqrt(ss / (n - 1.0) / n);
   }
   return m;
-}
-
-namespace {
-
-/// Same length as `ref` and finite, or InputError naming the file and datasets.
-void check_column(const std::string& path, const std::string& name, const std::vector<double>& v, const std::string& ref_name,
-                  std::size_t ref_size) {
-  if (v.size() != ref_size)
-    throw InputError(fmt::format("{}: {} has {} values but {} has {}; allowed: the same number", path, name, v.size(), ref_name,
-                                 ref_size));
-  for (std::size_t i = 0; i < v.size(); ++i)
-    if (!std::isfinite(v[i]))
-      throw InputError(fmt::format("{}: {}[{}] = {} is not allowed; allowed: finite numbers", path, name, i, v[i]));
-}
-
-}  // namespace
-
-AverageFile read_average_file(const std::string& path) {
-  const h5::File in = h5::File::open(path);
-  if (!in.exists("normal/delta_n") || !in.exists("provenance/scene")) {
-    const std::string kind = kind_of(in);
-    throw InputError(fmt::format("{}: not a softpack average file ({})", path,
-                                 kind.empty() ? "no /normal/delta_n or /provenance/scene" : "it is " + kind));
-  }
-  AverageFile a;
-  a.path = path;
-  a.scene = in.read_string("provenance/scene");
-  if (a.scene != "soft-solid" && a.scene != "soft-soft")
-    throw InputError(fmt::format("{}: /provenance/scene: '{}' is not allowed; allowed: soft-solid, soft-soft", path, a.scene));
-  a.profile = in.read_string("provenance/profile");
-  a.code_version = in.read_string("provenance/code_version");
-  a.seeds = in.read_scalar_int64("normal/seeds");
-  if (a.seeds < 1) throw InputError(fmt::format("{}: /normal/seeds: {} is not allowed; allowed: >= 1", path, a.seeds));
-  a.delta_n = in.read_doubles("normal/delta_n");
-  a.Fn = in.read_doubles("normal/Fn_mean");
-  a.Fn_stderr = in.read_doubles("normal/Fn_stderr");
-  check_column(path, "/normal/Fn_mean", a.Fn, "/normal/delta_n", a.delta_n.size());
-  check_column(path, "/normal/Fn_stderr", a.Fn_stderr, "/normal/delta_n", a.delta_n.size());
-  check_column(path, "/normal/delta_n", a.delta_n, "/normal/delta_n", a.delta_n.size());
-  a.has_kt = in.exists("kt");
-  if (a.has_kt) {
-    a.kt_delta_n = in.read_doubles("kt/delta_n");
-    a.kt = in.read_doubles("kt/mean");
-    a.kt_stderr = in.read_doubles("kt/stderr");
-    check_column(path, "/kt/delta_n", a.kt_delta_n, "/kt/delta_n", a.kt_delta_n.size());
-    check_column(path, "/kt/mean", a.kt, "/kt/delta_n", a.kt_delta_n.size());
-    check_column(path, "/kt/stderr", a.kt_stderr, "/kt/delta_n", a.kt_delta_n.size());
-  }
-  return a;
 }
 
 namespace {

@@ -4,8 +4,6 @@
 // parallel force against ht over the alpha grid, one per seed, then averaged. On the results
 // in memory (formats/sweep_results_file.hpp); the average file: formats/average_file.hpp.
 #pragma once
-#include <cstdint>
-#include <string>
 #include <vector>
 
 #include "formats/sweep_results_file.hpp"
@@ -34,20 +32,6 @@ struct TangentialAverage {
   std::size_t seeds = 0;
 };
 TangentialAverage average_tangential(const std::vector<SweepResults>& seeds);
-
-/// What softpack-fit reads from a seed-average file (softpack-average's HDF5 output).
-struct AverageFile {
-  std::string path;
-  std::string scene;  ///< soft-solid or soft-soft
-  std::string profile, code_version;
-  std::int64_t seeds = 0;
-  std::vector<double> delta_n, Fn, Fn_stderr;  ///< /normal
-  bool has_kt = false;                         ///< the /kt group is there
-  std::vector<double> kt_delta_n, kt, kt_stderr;
-};
-/// Reads and checks an average file; InputError names the file and the dataset (an unknown
-/// scene, columns of different lengths, values that are not finite).
-AverageFile read_average_file(const std::string& path);
 
 /// Least-squares slope of y against x.
 double slope(const std::vector<double>& x, const std::vector<double>& y);

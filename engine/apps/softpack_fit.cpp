@@ -10,12 +10,12 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "analysis/average.hpp"
 #include "analysis/fit_json.hpp"
 #include "analysis/power_fit.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "formats/average_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace {
