@@ -3,21 +3,17 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "formats/average_file.hpp"
+#include "formats/packing_file.hpp"
+#include "formats/sweep_point_file.hpp"
+#include "formats/sweep_results_file.hpp"
 
 namespace softpack {
 
 std::string kind_of(const h5::File& f) {
   try {
-    if (f.exists("centres") && f.exists("radii") && f.exists("provenance/program"))
-      return f.read_string("provenance/program") == "softpack-pack" ? "a packing file (softpack-pack)"
-                                                                    : "a packing file of another program";
-    if (f.exists("result") && f.exists("state") && f.exists("provenance/stage"))
-      return "a sweep point file (a checkpoint of softpack-" + f.read_string("provenance/stage") + ")";
-    if (f.exists("Fn") && f.exists("provenance/stage")) {
-      const std::string stage = f.read_string("provenance/stage");
-      return "a " + stage + " sweep results file (softpack-" + stage + ")";
-    }
-    if (f.exists("normal/Fn_mean") && f.exists("provenance/scene")) return "an average file (softpack-average)";
+    for (const auto describe : {describe_packing_file, describe_point_file, describe_sweep_results_file, describe_average_file})
+      if (std::string kind = describe(f); !kind.empty()) return kind;
   } catch (const InputError&) {
   }
   return "";

@@ -1,6 +1,7 @@
 // Which softpack file an HDF5 file is, so that a reader given the wrong one can say what it got
 // ("not a softpack packing file (it is a normal sweep results file (softpack-normal))"). Each
-// format module knows its own layout (has_layout, expect_layout).
+// format module knows its own layout and says whether a file has it (describe_*_file, with
+// has_layout); kind_of asks them all.
 #pragma once
 #include <span>
 #include <string>
