@@ -17,8 +17,7 @@
 #include "formats/average_file.hpp"
 #include "formats/fit_file.hpp"
 #include "formats/packing_file.hpp"
-#include "formats/sweep_point_file.hpp"
-#include "formats/sweep_results_file.hpp"
+#include "formats/sweep_file.hpp"
 #include "measure/settings.hpp"
 #include "scene/scene_yaml.hpp"
 

@@ -2,11 +2,11 @@
 // different simulations"): mean and standard error of the mean at every Delta_n (normal) and
 // every (Delta_n, alpha) (tangential), and the tangential spring constant kt: the slope of the
 // parallel force against ht over the alpha grid, one per seed, then averaged. On the results
-// in memory (formats/sweep_results_file.hpp); the average file: formats/average_file.hpp.
+// in memory (formats/sweep_file.hpp); the average file: formats/average_file.hpp.
 #pragma once
 #include <vector>
 
-#include "formats/sweep_results_file.hpp"
+#include "formats/sweep_file.hpp"
 
 namespace softpack {
 

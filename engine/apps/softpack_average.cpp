@@ -11,7 +11,7 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "formats/average_file.hpp"
-#include "formats/sweep_results_file.hpp"
+#include "formats/sweep_file.hpp"
 
 int main(int argc, char** argv) {
   using namespace softpack;

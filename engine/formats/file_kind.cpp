@@ -5,8 +5,7 @@
 #include "core/error.hpp"
 #include "formats/average_file.hpp"
 #include "formats/packing_file.hpp"
-#include "formats/sweep_point_file.hpp"
-#include "formats/sweep_results_file.hpp"
+#include "formats/sweep_file.hpp"
 
 namespace softpack {
 

@@ -1,5 +1,5 @@
 // What one measured point of a sweep gives (measure/sweeps.hpp); stored in the sweep point
-// files (formats/sweep_point_file.hpp) and, as columns, in the results files.
+// files (formats/sweep_file.hpp) and, as columns, in the results files.
 #pragma once
 #include <vector>
 

@@ -8,7 +8,7 @@
 #include "config/profile.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
-#include "formats/sweep_results_file.hpp"
+#include "formats/sweep_file.hpp"
 #include "measure/sweeps.hpp"
 
 namespace softpack {

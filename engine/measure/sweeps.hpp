@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/sweep_point_file.hpp"
+#include "formats/sweep_file.hpp"
 #include "measure/contact_scenes.hpp"
 #include "measure/settings.hpp"
 

@@ -1,6 +1,6 @@
 // Everything a run needs to continue bit for bit (the checkpoints of the sweeps, written and read
-// by formats/sweep_point_file): the world's positions, velocities, forces and clock, and the
-// non-zero tangential springs. Simulation::state() and restore() make and install it.
+// by formats/sweep_file): the world's positions, velocities, forces and clock, and the non-zero
+// tangential springs. Simulation::state() and restore() make and install it.
 #pragma once
 #include <vector>
 

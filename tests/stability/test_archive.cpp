@@ -1,6 +1,6 @@
 // The paper profile's relaxation, checked on the archived results instead of rerunning them
 // (25 CPU-minutes): every file of data/archive/<version>/paper/{normal,tangential}/ (HDF5,
-// formats/sweep_results_file.hpp) records per point the force on the second body and
+// formats/sweep_file.hpp) records per point the force on the second body and
 // the relaxation residuals after each of the protocol's stops and after its final wait:
 // force ratio (largest unbalanced force / mean contact force) and energy ratio (kinetic /
 // elastic energy).
@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "config/profile.hpp"
-#include "formats/sweep_results_file.hpp"
+#include "formats/sweep_file.hpp"
 #include "scene/scene_yaml.hpp"
 #include "stability/stability.hpp"
 
