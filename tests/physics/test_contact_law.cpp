@@ -127,8 +127,9 @@ TEST(ContactLaw, ForceFollowsEquation3AndStaysInTheCoulombCone) {
     EXPECT_LE(Ft, l.k.mu * f.Fn * (1.0 + 1e-14));  // |Ft| <= mu Fn (Eq. 5)
     EXPECT_NEAR(dot(f.Ft, l.g.n), 0.0, 1e-12 * std::max(Ft, 1e-300));  // tangential
     const double after = std::sqrt(dot(xi, xi));
-    if (Ft < l.k.mu * f.Fn * (1.0 - 1e-12) && tilt < 1.0 - 1e-12)
+    if (Ft < l.k.mu * f.Fn * (1.0 - 1e-12) && tilt < 1.0 - 1e-12) {
       EXPECT_NEAR(after, length, 1e-14 * length) << "a sticking spring keeps its length, case " << c % 6;
+    }
     slid += Ft >= l.k.mu * f.Fn * (1.0 - 1e-12);
   }
   EXPECT_GT(slid, 100);
