@@ -155,10 +155,10 @@ constexpr std::array kResultsLayout{kDeltaN, kFn, kStage};  // what makes a file
 
 struct Column {
   const char* name;
-  const char* unit = "";               ///< attribute "unit"
-  const char* description = nullptr;   ///< attribute "description"
-  bool per_check = false;              ///< one value per relaxation check (else per point)
-  bool finite = true;                  ///< numbers: the reader refuses NaN and infinities
+  const char* unit = "";              ///< attribute "unit"
+  const char* description = nullptr;  ///< attribute "description"
+  bool per_check = false;             ///< one value per relaxation check (else per point)
+  bool finite = true;                 ///< numbers: the reader refuses NaN and infinities
 };
 
 // f(column, member) for each column of `s`, in the file's order.
