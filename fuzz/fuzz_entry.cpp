@@ -11,14 +11,15 @@
 #include <stdexcept>
 
 #include "analysis/average.hpp"
-#include "analysis/fit_json.hpp"
 #include "analysis/power_fit.hpp"
 #include "config/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "core/error.hpp"
-#include "measure/point_file.hpp"
+#include "formats/average_file.hpp"
+#include "formats/fit_file.hpp"
+#include "formats/packing_file.hpp"
+#include "formats/sweep_file.hpp"
 #include "measure/settings.hpp"
-#include "packing/packing_file.hpp"
 #include "scene/scene_yaml.hpp"
 
 namespace softpack::fuzz {
@@ -93,7 +94,7 @@ void sweep_file(const std::string& path) {
   // A checkpoint, as the resume reads it (with the state the tangential stage restores).
   attempt([&] { (void)read_point_file(path, true); });
   // A results file, as softpack-average reads and averages it.
-  const SweepData d = read_sweep(path);
+  const SweepResults d = read_sweep_results_file(path);
   (void)average_normal({d, d});
   (void)average_tangential({d, d});
 }
@@ -101,19 +102,18 @@ void sweep_file(const std::string& path) {
 void average_file(const std::string& path) {
   // As softpack-fit reads it, fits it and writes the fit file.
   const AverageFile a = read_average_file(path);
-  fit::PowerLawFit normal = fit::fit_normal_law(a.delta_n, a.Fn, a.Fn_stderr);
-  nlohmann::ordered_json out;
-  out["scene"] = a.scene;
-  out["normal"] = fit::to_json(normal, true);
-  out["provenance"] = {{"profile", a.profile}, {"code_version", a.code_version}, {"seeds", a.seeds}};
+  FitFile out;
+  out.scene = a.scene;
+  out.input = {path, a.profile, a.code_version, a.seeds};
+  out.normal = fit::fit_normal_law(a.delta_n, a.Fn, a.Fn_stderr);
   if (a.has_kt) {
     try {
-      out["tangential"] = fit::to_json(fit::fit_tangential_law(a.kt_delta_n, a.kt, a.kt_stderr, normal.delta), false);
+      out.tangential = fit::fit_tangential_law(a.kt_delta_n, a.kt, a.kt_stderr, out.normal.delta);
     } catch (const InputError& e) {
-      out["tangential_reason"] = e.what();
+      out.tangential_reason = e.what();
     }
   }
-  (void)out.dump(2);
+  (void)fit_file_text(out);
 }
 
 std::string scratch_path(const std::string& target) {

@@ -1,11 +1,12 @@
 // Averages over seeds of the sweep results of one scene (paper §5: "averaging over seven
 // different simulations"): mean and standard error of the mean at every Delta_n (normal) and
 // every (Delta_n, alpha) (tangential), and the tangential spring constant kt: the slope of the
-// parallel force against ht over the alpha grid, one per seed, then averaged.
+// parallel force against ht over the alpha grid, one per seed, then averaged. On the results
+// in memory (formats/sweep_file.hpp); the average file: formats/average_file.hpp.
 #pragma once
-#include <cstdint>
-#include <string>
 #include <vector>
+
+#include "formats/sweep_file.hpp"
 
 namespace softpack {
 
@@ -15,23 +16,13 @@ struct MeanError {
 };
 MeanError mean_error(const std::vector<double>& values);
 
-struct SweepData {  ///< the columns of a sweep results file
-  std::string path;
-  std::vector<double> delta_n, alpha_deg, ht, Fn, Ft_parallel, Ft_perpendicular;
-};
-/// Reads a sweep results file (softpack-normal or softpack-tangential). With `stage` or `scene`
-/// given, the file must have been made by that stage (normal, tangential) for that scene. InputError
-/// names the file and the dataset: not a results file, another stage or scene, no points, columns
-/// of different lengths, values that are not finite.
-SweepData read_sweep(const std::string& path, const std::string& stage = "", const std::string& scene = "");
-
 struct NormalAverage {
   std::vector<double> delta_n;
   std::vector<MeanError> Fn, Ft_parallel, Ft_perpendicular;
   std::size_t seeds = 0;
 };
 /// All files must share the Delta_n grid (InputError names the file that differs).
-NormalAverage average_normal(const std::vector<SweepData>& seeds);
+NormalAverage average_normal(const std::vector<SweepResults>& seeds);
 
 struct TangentialAverage {
   std::vector<double> delta_n, alpha_deg, ht;  ///< one row per (Delta_n, alpha)
@@ -40,21 +31,7 @@ struct TangentialAverage {
   std::vector<MeanError> kt;       ///< [N/m]
   std::size_t seeds = 0;
 };
-TangentialAverage average_tangential(const std::vector<SweepData>& seeds);
-
-/// What softpack-fit reads from a seed-average file (softpack-average's HDF5 output).
-struct AverageFile {
-  std::string path;
-  std::string scene;  ///< soft-solid or soft-soft
-  std::string profile, code_version;
-  std::int64_t seeds = 0;
-  std::vector<double> delta_n, Fn, Fn_stderr;  ///< /normal
-  bool has_kt = false;                         ///< the /kt group is there
-  std::vector<double> kt_delta_n, kt, kt_stderr;
-};
-/// Reads and checks an average file; InputError names the file and the dataset (an unknown
-/// scene, columns of different lengths, values that are not finite).
-AverageFile read_average_file(const std::string& path);
+TangentialAverage average_tangential(const std::vector<SweepResults>& seeds);
 
 /// Least-squares slope of y against x.
 double slope(const std::vector<double>& x, const std::vector<double>& y);

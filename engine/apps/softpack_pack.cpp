@@ -8,13 +8,13 @@
 #include <chrono>
 #include <cstdio>
 
-#include "config/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "apps/exit_codes.hpp"
+#include "config/profile.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "formats/packing_file.hpp"
 #include "io/particle_export.hpp"
-#include "packing/packing_file.hpp"
 #include "packing/statistics.hpp"
 
 int main(int argc, char** argv) {

@@ -9,8 +9,8 @@
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "formats/packing_file.hpp"
 #include "io/atomic_file.hpp"
-#include "packing/packing_file.hpp"
 
 int main(int argc, char** argv) {
   using namespace softpack;

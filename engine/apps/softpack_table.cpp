@@ -1,44 +1,26 @@
 // softpack-table: Tables 1 and 2 of the paper with our fitted coefficients beside the published
-// ones (analysis/fit_table.hpp). Reads the fit files of softpack-fit and experiments/published.yaml,
-// writes table1.md, table1.tex, table2.md, table2.tex and prints the Markdown tables.
+// ones (analysis/fit_table.hpp). Reads the fit files of softpack-fit (formats/fit_file.hpp) and
+// experiments/published.yaml, writes table1.md, table1.tex, table2.md, table2.tex and prints the
+// Markdown tables.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
-#include "analysis/fit_json.hpp"
 #include "analysis/fit_table.hpp"
-#include "config/yaml_node.hpp"
 #include "apps/exit_codes.hpp"
+#include "config/yaml_node.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "formats/fit_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace {
 
 using namespace softpack;
-using json = nlohmann::json;
-
-json read_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("{}: cannot open the file", path));
-  try {
-    return json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw InputError(fmt::format("{}: not a JSON file: {}", path, e.what()));
-  }
-}
-
-std::string string_at(const json& j, const std::string& path, const std::string& key) {
-  const auto it = j.find(key);
-  if (it == j.end() || !it->is_string()) throw InputError(fmt::format("{}: {}: missing or not a string", path, key));
-  return it->get<std::string>();
-}
 
 /// The published coefficients of one scene in `table` ("table1" or "table2") into `column`,
 /// with their digits as written in the file.
@@ -81,26 +63,16 @@ int main(int argc, char** argv) {
     std::set<std::string> scenes;
     std::vector<std::string> sources;
     for (const std::string& path : fit_paths) {
-      const json fit = read_json(path);
-      if (!fit.is_object()) throw InputError(fmt::format("{}: expected a JSON object (a softpack-fit file)", path));
-      const std::string scene = string_at(fit, path, "scene");
-      if (!scenes.insert(scene).second)
-        throw InputError(fmt::format("{}: scene '{}' is given twice in --fits; allowed: one fit file per scene", path, scene));
-      if (!fit.contains("normal"))
-        throw InputError(fmt::format("{}: normal: missing (the Eq. 7 fit of softpack-fit)", path));
-      table::Column c1{scene, fit::estimates_from_json(fit["normal"], path + ": normal", {"a", "b", "c", "delta"}), {}, {}};
-      table::Column c2{scene, std::nullopt, {}, {}};
+      FitEstimates fit = read_fit_file(path);
+      if (!scenes.insert(fit.scene).second)
+        throw InputError(fmt::format("{}: scene '{}' is given twice in --fits; allowed: one fit file per scene", path, fit.scene));
+      table::Column c1{fit.scene, std::move(fit.normal), {}, {}};
+      table::Column c2{fit.scene, std::move(fit.tangential), {}, {}};
       add_published(c1, root, "table1", {"a", "b", "c", "delta"});
       add_published(c2, root, "table2", {"a", "b", "c"});
-      const auto tan = fit.find("tangential");
-      if (tan != fit.end() && !tan->is_null()) c2.ours = fit::estimates_from_json(*tan, path + ": tangential", {"a", "b", "c"});
       t1.columns.push_back(std::move(c1));
       t2.columns.push_back(std::move(c2));
-      std::string version = "?";
-      if (fit.contains("provenance") && fit["provenance"].is_object() && fit["provenance"].contains("code_version") &&
-          fit["provenance"]["code_version"].is_string())
-        version = fit["provenance"]["code_version"].get<std::string>();
-      sources.push_back(fmt::format("{} ({}, softpack-fit {})", path, scene, version));
+      sources.push_back(fmt::format("{} ({}, softpack-fit {})", path, fit.scene, fit.code_version));
     }
 
     const std::string md1 = table::to_markdown(t1), md2 = table::to_markdown(t2);

@@ -1,11 +1,16 @@
 // The command line of softpack-normal and softpack-tangential: the same options but one each
 // (--hertz-check for the normal stage, --normal-checkpoints for the tangential one), then
-// run_stage (measure/stage.hpp).
+// run_stage (measure/stage.hpp) with a progress line per point (with the time left), a summary
+// line, and the exit codes of apps/exit_codes.hpp.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <string>
 
+#include "apps/exit_codes.hpp"
 #include "measure/stage.hpp"
 
 namespace softpack {
@@ -13,6 +18,7 @@ namespace softpack {
 inline int stage_main(int argc, char** argv, const std::string& stage) {
   StageOptions o;
   o.stage = stage;
+  bool quiet = false;
   CLI::App app{"softpack-" + stage + ": the " + stage + " contact-law sweep of one scene and one seed"};
   app.add_option("--config", o.config_path, "profile file, e.g. experiments/paper.yaml")->required();
   app.add_option("--scene", o.scene, "soft-solid or soft-soft")->required();
@@ -26,10 +32,41 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
     app.add_option("--normal-checkpoints", o.normal_checkpoints, "point files of the normal stage (its states are sheared)")
         ->required();
   app.add_option("--out", o.out, "results file (HDF5)")->required();
-  app.add_flag("--quiet", o.quiet, "no progress lines");
+  app.add_flag("--quiet", quiet, "no progress lines");
   app.add_option("--stop-after", o.stop_after, "stop after this many new points (tests of the resume)")->group("");
   CLI11_PARSE(app, argc, argv);
-  return run_stage(o);
+
+  const std::string program = "softpack-" + stage;
+  // On a terminal each progress line replaces the previous one; in a log they follow each other.
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  bool line_open = false;  // a progress line waits for its newline (terminal)
+  double computed_seconds = 0.0;
+  std::size_t computed = 0;
+  const auto progress = [&](std::size_t k, std::size_t n, const PointResult& r, bool reused) {
+    if (!reused) computed_seconds += r.seconds, ++computed;
+    if (quiet) return;
+    const double eta = computed ? computed_seconds / static_cast<double>(computed) * static_cast<double>(n - k - 1) : 0.0;
+    const double ratio = r.checks.empty() ? 0.0 : r.checks.back().residuals.force_ratio();
+    const std::string what = stage == "normal" ? fmt::format("delta_n {:.4f}", r.delta_n)
+                                               : fmt::format("delta_n {:.4f} alpha {:+.3f} deg", r.delta_n, r.alpha_deg);
+    fmt::print(stderr, "{}{} {} seed {}: point {}/{} {}: Fn {:.4e} N, Ft {:+.3e} N, force ratio {:.1e}{}{}", tty ? "\r\033[K" : "",
+               program, o.scene, o.seed, k + 1, n, what, r.force.x(), r.force.y(), ratio,
+               reused ? " (checkpoint)" : fmt::format(", {:.1f} s, ETA {:.0f} s", r.seconds, eta), tty ? "" : "\n");
+    line_open = tty;
+  };
+  try {
+    const StageSummary s = run_stage(o, progress);
+    if (!quiet && tty) fmt::print(stderr, "\n");
+    if (quiet) return 0;
+    if (s.stopped)
+      fmt::print(stderr, "{}: stopped after {} new points as asked\n", program, o.stop_after);
+    else
+      fmt::print(stderr, "{}: {} points in {:.1f} s -> {}\n", program, s.points, s.seconds, o.out);
+    return 0;
+  } catch (...) {
+    if (line_open) fmt::print(stderr, "\n");
+    return exit_on_error(program);
+  }
 }
 
 }  // namespace softpack

@@ -15,8 +15,8 @@
 #pragma once
 #include <string>
 
+#include "formats/packing_file.hpp"
 #include "measure/settings.hpp"
-#include "packing/packing_file.hpp"
 #include "scene/scene_def.hpp"
 
 namespace softpack {

@@ -1,16 +1,15 @@
 #include "measure/stage.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 
 #include "config/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "formats/sweep_file.hpp"
 #include "measure/sweeps.hpp"
 
 namespace softpack {
@@ -46,89 +45,67 @@ PackingFile checked_packing(const std::string& path, const std::string& packing_
   return p;
 }
 
+StageSummary run(const StageOptions& o, const StageProgress& progress) {
+  const auto start = Clock::now();
+  if (o.seed < 0) throw InputError(fmt::format("--seed: {} is not allowed; allowed: a seed >= 0", o.seed));
+  const ConfigNode root = ConfigNode::load_file(o.config_path);
+  MeasurementSettings settings;
+  try {
+    settings = parse_measurement(root);
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    throw InputError(msg.rfind(o.config_path, 0) == 0 ? msg : o.config_path + ": " + msg);
+  }
+  const ContactScene kind = parse_contact_scene(o.scene);
+  const std::string packing_section = section_text(root, "packing");
+
+  SweepContext c;
+  c.settings = settings;
+  std::string packings;
+  if (o.hertz_check) {
+    if (kind != ContactScene::soft_solid) throw InputError("--hertz-check: only for the soft-solid scene");
+    c.setup = hertz_check_setup(parse_packing(root).parameters.Rs, settings.simulation);
+    packings = "none: Hertz check, one solid sphere of radius Rs";
+  } else {
+    if (o.packing.empty()) throw InputError("--packing: required (the packing file of this seed)");
+    const PackingFile first = checked_packing(o.packing, packing_section, o.config_path);
+    packings = fmt::format("{} (seed {})", o.packing, first.provenance.seed);
+    if (kind == ContactScene::soft_soft) {
+      if (o.second_packing.empty()) throw InputError("--second-packing: required for soft-soft (a packing of another seed)");
+      const PackingFile second = checked_packing(o.second_packing, packing_section, o.config_path);
+      if (second.provenance.seed == first.provenance.seed)
+        throw InputError(fmt::format("--second-packing: {} has the same seed as --packing; soft-soft needs two independent packings",
+                                     o.second_packing));
+      packings += fmt::format(", {} (seed {})", o.second_packing, second.provenance.seed);
+      c.setup = soft_soft_setup(first, second, settings.simulation);
+    } else {
+      c.setup = soft_solid_setup(first, settings.simulation);
+    }
+  }
+  c.setup.scene.watchdog = settings.watchdog;  // when to stop a run gone wrong; changes no result
+  // What every point depends on: the sections read, the scene and the packings used.
+  c.config = "# stage: " + o.stage + ", scene: " + o.scene + (o.hertz_check ? " (Hertz check)" : "") + "\n# packings: " +
+             packings + "\n" + stage_text(root, o.stage);
+  c.checkpoint_dir = o.checkpoints;
+  c.code_version = code_version();
+  c.stop_after = static_cast<std::size_t>(std::max(0L, o.stop_after));
+  c.progress = progress;
+  const std::vector<PointResult> points =
+      o.stage == "normal" ? run_normal_sweep(c) : run_tangential_sweep(c, o.normal_checkpoints);
+  if (points.empty()) return StageSummary{0, 0.0, true};  // stopped on purpose (tests)
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  write_sweep_results_file(o.out, points, PointProvenance{o.stage, o.scene, c.config, c.code_version}, packings,
+                           static_cast<std::uint64_t>(o.seed), seconds);
+  return StageSummary{points.size(), seconds, false};
+}
+
 }  // namespace
 
-int run_stage(const StageOptions& o) {
-  const std::string program = "softpack-" + o.stage;
+StageSummary run_stage(const StageOptions& o, const StageProgress& progress) {
   try {
-    const auto start = Clock::now();
-    if (o.seed < 0) throw InputError(fmt::format("--seed: {} is not allowed; allowed: a seed >= 0", o.seed));
-    const ConfigNode root = ConfigNode::load_file(o.config_path);
-    MeasurementSettings settings;
-    try {
-      settings = parse_measurement(root);
-    } catch (const InputError& e) {
-      const std::string msg = e.what();
-      throw InputError(msg.rfind(o.config_path, 0) == 0 ? msg : o.config_path + ": " + msg);
-    }
-    const ContactScene kind = parse_contact_scene(o.scene);
-    const std::string packing_section = section_text(root, "packing");
-
-    SweepContext c;
-    c.settings = settings;
-    std::string packings;
-    if (o.hertz_check) {
-      if (kind != ContactScene::soft_solid) throw InputError("--hertz-check: only for the soft-solid scene");
-      c.setup = hertz_check_setup(parse_packing(root).parameters.Rs, settings.simulation);
-      packings = "none: Hertz check, one solid sphere of radius Rs";
-    } else {
-      if (o.packing.empty()) throw InputError("--packing: required (the packing file of this seed)");
-      const PackingFile first = checked_packing(o.packing, packing_section, o.config_path);
-      packings = fmt::format("{} (seed {})", o.packing, first.provenance.seed);
-      if (kind == ContactScene::soft_soft) {
-        if (o.second_packing.empty()) throw InputError("--second-packing: required for soft-soft (a packing of another seed)");
-        const PackingFile second = checked_packing(o.second_packing, packing_section, o.config_path);
-        if (second.provenance.seed == first.provenance.seed)
-          throw InputError(fmt::format("--second-packing: {} has the same seed as --packing; soft-soft needs two independent packings",
-                                       o.second_packing));
-        packings += fmt::format(", {} (seed {})", o.second_packing, second.provenance.seed);
-        c.setup = soft_soft_setup(first, second, settings.simulation);
-      } else {
-        c.setup = soft_solid_setup(first, settings.simulation);
-      }
-    }
-    c.setup.scene.watchdog = settings.watchdog;  // when to stop a run gone wrong; changes no result
-    // What every point depends on: the sections read, the scene and the packings used.
-    c.config = "# stage: " + o.stage + ", scene: " + o.scene + (o.hertz_check ? " (Hertz check)" : "") + "\n# packings: " +
-               packings + "\n" + stage_text(root, o.stage);
-    c.checkpoint_dir = o.checkpoints;
-    c.code_version = code_version();
-    c.stop_after = static_cast<std::size_t>(std::max(0L, o.stop_after));
-    const bool tty = ::isatty(STDERR_FILENO) != 0;
-    double computed_seconds = 0.0;
-    std::size_t computed = 0;
-    c.progress = [&](std::size_t k, std::size_t n, const PointResult& r, bool reused) {
-      if (!reused) computed_seconds += r.seconds, ++computed;
-      if (o.quiet) return;
-      const double eta = computed ? computed_seconds / static_cast<double>(computed) * static_cast<double>(n - k - 1) : 0.0;
-      const double ratio = r.checks.empty() ? 0.0 : r.checks.back().residuals.force_ratio();
-      const std::string what = o.stage == "normal" ? fmt::format("delta_n {:.4f}", r.delta_n)
-                                                   : fmt::format("delta_n {:.4f} alpha {:+.3f} deg", r.delta_n, r.alpha_deg);
-      fmt::print(stderr, "{}{} {} seed {}: point {}/{} {}: Fn {:.4e} N, Ft {:+.3e} N, force ratio {:.1e}{}{}", tty ? "\r\033[K" : "",
-                 program, o.scene, o.seed, k + 1, n, what, r.force.x(), r.force.y(), ratio,
-                 reused ? " (checkpoint)" : fmt::format(", {:.1f} s, ETA {:.0f} s", r.seconds, eta), tty ? "" : "\n");
-    };
-    const std::vector<PointResult> points =
-        o.stage == "normal" ? run_normal_sweep(c) : run_tangential_sweep(c, o.normal_checkpoints);
-    if (!o.quiet && tty) fmt::print(stderr, "\n");
-    if (points.empty()) {  // stopped on purpose (tests)
-      if (!o.quiet) fmt::print(stderr, "{}: stopped after {} new points as asked\n", program, o.stop_after);
-      return 0;
-    }
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    write_sweep_file(o.out, points, PointProvenance{o.stage, o.scene, c.config, c.code_version}, packings,
-                     static_cast<std::uint64_t>(o.seed), seconds);
-    if (!o.quiet) fmt::print(stderr, "{}: {} points in {:.1f} s -> {}\n", program, points.size(), seconds, o.out);
-    return 0;
-  } catch (const InputError& e) {
-    fmt::print(stderr, "{}: error: {}\n", program, e.what());
-    return 2;
+    return run(o, progress);
   } catch (const NumericalError& e) {
-    fmt::print(stderr, "{}: numerical error: {} seed {}, {}\n", program, o.scene, o.seed, e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "{}: internal error: {}\n", program, e.what());
-    return 1;
+    throw NumericalError(fmt::format("{} seed {}, {}", o.scene, o.seed, e.what()));
   }
 }
 

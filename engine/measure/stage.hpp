@@ -1,9 +1,13 @@
-// The command-line stages softpack-normal and softpack-tangential share this: read the
-// profile and the packings, check that they belong together, build the scene, run the sweep
-// with progress lines, write the results file.
+// What the stages softpack-normal and softpack-tangential share: read the profile and the
+// packings, check that they belong together, build the scene, run the sweep (each point
+// reported through a callback), write the results file. The command line, the progress lines
+// and the exit codes are the executables' (apps/stage_cli.hpp).
 #pragma once
-#include <cstdint>
+#include <cstddef>
+#include <functional>
 #include <string>
+
+#include "measure/point_result.hpp"
 
 namespace softpack {
 
@@ -14,13 +18,22 @@ struct StageOptions {
   std::string normal_checkpoints;  ///< tangential: the normal stage's point files
   std::string out;
   long long seed = -1;
-  bool quiet = false;
   bool hertz_check = false;  ///< replace the soft-particle by a solid sphere of radius Rs
   long stop_after = 0;       ///< testing: stop after this many new points
 };
 
-/// Runs a stage; returns the exit code (0; 2 for bad input; 3 when the watchdog stopped a run,
-/// sim/watchdog.hpp; 1 for an internal error) after printing any error.
-int run_stage(const StageOptions& o);
+/// Called after each point: its index, the number of points, the point, and whether it was
+/// reused from a checkpoint (else computed).
+using StageProgress = std::function<void(std::size_t k, std::size_t n, const PointResult& r, bool reused)>;
+
+struct StageSummary {
+  std::size_t points = 0;  ///< in the results file
+  double seconds = 0.0;    ///< of the whole stage
+  bool stopped = false;    ///< stopped after `stop_after` new points: no results file
+};
+
+/// Runs a stage. Throws InputError for bad input, NumericalError when the watchdog stopped a run
+/// (sim/watchdog.hpp; the message starts with "<scene> seed <seed>, " and names the point).
+StageSummary run_stage(const StageOptions& o, const StageProgress& progress = {});
 
 }  // namespace softpack

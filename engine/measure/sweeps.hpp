@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "formats/sweep_file.hpp"
 #include "measure/contact_scenes.hpp"
-#include "measure/point_file.hpp"
 #include "measure/settings.hpp"
 
 namespace softpack {

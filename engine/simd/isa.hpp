@@ -66,21 +66,23 @@ struct Avx512 {};
 // the baseline too, where they cannot be inlined; the AVX-512 loop is `flatten`
 // (forces/compile_loops.hpp), which inlines them there. Masked forms with a zero source
 // throughout: the unmasked ones start from an undefined vector, which GCC 12 reports as
-// maybe-uninitialized (an error under CI's -Werror).
+// maybe-uninitialized (an error under CI's -Werror). Vectors are reinterpreted with
+// __builtin_bit_cast and assigned to the members, never passed to a function compiled without
+// the target (std::bit_cast, a constructor): clang refuses that (it would change the ABI).
 
 namespace avx512 {
 
 [[gnu::target("avx512f,avx512vl,avx512bw,avx512dq")]] inline void gather(const double* base, const Index& idx, Wide& out) {
-  out = Wide(std::bit_cast<Wide::Raw>(
-      _mm512_mask_i32gather_pd(_mm512_setzero_pd(), __mmask8{0xff}, std::bit_cast<__m256i>(idx.v), base, 8)));
+  const __m512d v = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), __mmask8{0xff}, __builtin_bit_cast(__m256i, idx.v), base, 8);
+  out.v = __builtin_bit_cast(Wide::Raw, v);
 }
 [[gnu::target("avx512f,avx512vl,avx512bw,avx512dq")]] inline void gather(const std::int32_t* base, const Index& idx, Index& out) {
-  out = Index{std::bit_cast<Index::Raw>(
-      _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), __mmask8{0xff}, std::bit_cast<__m256i>(idx.v), base, 4))};
+  const __m256i v = _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), __mmask8{0xff}, __builtin_bit_cast(__m256i, idx.v), base, 4);
+  out.v = __builtin_bit_cast(Index::Raw, v);
 }
 [[gnu::target("avx512f,avx512vl,avx512bw,avx512dq")]] inline int compress(std::int32_t* out, const Mask& m, const Index& values) {
-  const __mmask8 k = _mm512_movepi64_mask(std::bit_cast<__m512i>(m.m));
-  _mm256_mask_compressstoreu_epi32(out, k, std::bit_cast<__m256i>(values.v));
+  const __mmask8 k = _mm512_movepi64_mask(__builtin_bit_cast(__m512i, m.m));
+  _mm256_mask_compressstoreu_epi32(out, k, __builtin_bit_cast(__m256i, values.v));
   return std::popcount(static_cast<unsigned>(k));
 }
 [[gnu::target("avx512f,avx512vl,avx512bw,avx512dq")]] inline unsigned nonzero_bytes(const std::uint8_t* p) {

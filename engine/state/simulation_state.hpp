@@ -1,5 +1,5 @@
 // Everything a run needs to continue bit for bit (the checkpoints of the sweeps, written and read
-// by measure/point_file): the world's positions, velocities, forces and clock, and the non-zero
+// by formats/sweep_file): the world's positions, velocities, forces and clock, and the non-zero
 // tangential springs. Simulation::state() and restore() make and install it.
 #pragma once
 #include <vector>

@@ -1,6 +1,6 @@
 // The paper profile's relaxation, checked on the archived results instead of rerunning them
 // (25 CPU-minutes): every file of data/archive/<version>/paper/{normal,tangential}/ (HDF5,
-// measure/point_file.cpp: write_sweep_file) records per point the force on the second body and
+// formats/sweep_file.hpp) records per point the force on the second body and
 // the relaxation residuals after each of the protocol's stops and after its final wait:
 // force ratio (largest unbalanced force / mean contact force) and energy ratio (kinetic /
 // elastic energy).
@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "config/profile.hpp"
-#include "io/hdf5_file.hpp"
+#include "formats/sweep_file.hpp"
 #include "scene/scene_yaml.hpp"
 #include "stability/stability.hpp"
 
@@ -39,38 +39,14 @@ constexpr double kForceTolerance = 1e-2;
 constexpr double kEnergyTolerance = 1e-4;
 constexpr double kLoadedFraction = 1e-6;  // of the sweep's largest force
 
-struct Sweep {
-  std::string path, stage, scene;
-  std::uint64_t seed = 0;
-  std::vector<double> delta_n, alpha_deg, force_norm;
-  std::vector<std::int64_t> contacts;
-  std::vector<double> final_force_ratio, final_energy_ratio;
-  std::vector<std::int64_t> check_point;
-  std::vector<double> check_time, check_force_ratio, check_energy_ratio;
+// A results file as its reader gives it (which checks shapes and finite forces), with |force|.
+struct Sweep : SweepResults {
+  std::vector<double> force_norm;
 };
 
 Sweep read_sweep(const fs::path& path) {
-  const h5::File f = h5::File::open(path.string());
-  Sweep s;
-  s.path = path.string();
-  s.stage = f.read_string("provenance/stage");
-  s.scene = f.read_string("provenance/scene");
-  s.seed = static_cast<std::uint64_t>(f.read_scalar_int64("provenance/seed"));
-  s.delta_n = f.read_doubles("delta_n");
-  s.alpha_deg = f.read_doubles("alpha_deg");
-  std::vector<std::size_t> dims;
-  const std::vector<double> force = f.read_doubles("force", &dims);
-  if (dims.size() != 2 || dims[1] != 3) throw std::runtime_error(s.path + ": force is not (N, 3)");
-  for (std::size_t k = 0; k < dims[0]; ++k)
-    s.force_norm.push_back(std::sqrt(force[3 * k] * force[3 * k] + force[3 * k + 1] * force[3 * k + 1] +
-                                     force[3 * k + 2] * force[3 * k + 2]));
-  s.contacts = f.read_int64s("contacts");
-  s.final_force_ratio = f.read_doubles("relaxation/final_force_ratio");
-  s.final_energy_ratio = f.read_doubles("relaxation/final_energy_ratio");
-  s.check_point = f.read_int64s("relaxation/checks/point");
-  s.check_time = f.read_doubles("relaxation/checks/time");
-  s.check_force_ratio = f.read_doubles("relaxation/checks/force_ratio");
-  s.check_energy_ratio = f.read_doubles("relaxation/checks/energy_ratio");
+  Sweep s{read_sweep_results_file(path.string()), {}};
+  for (const Vec3& F : s.force) s.force_norm.push_back(F.norm());
   return s;
 }
 
@@ -121,8 +97,8 @@ TEST(ArchivedPaperProfile, EveryFileIsCompleteAndFinite) {
     std::map<std::string, int> seen;
     for (const Sweep& s : a.sweeps) {
       SCOPED_TRACE(s.path);
-      ++seen[s.stage + "/" + s.scene + "/" + std::to_string(s.seed)];
-      const std::size_t n = s.stage == "normal" ? normal_points : tangential_points;
+      ++seen[s.provenance.stage + "/" + s.provenance.scene + "/" + std::to_string(s.seed)];
+      const std::size_t n = s.provenance.stage == "normal" ? normal_points : tangential_points;
       ASSERT_EQ(s.force_norm.size(), n);
       ASSERT_EQ(s.final_force_ratio.size(), n);
       ASSERT_EQ(s.final_energy_ratio.size(), n);
@@ -164,7 +140,7 @@ void keep_worst(Worst& w, double v, const Sweep& s, std::size_t k) {
   std::ostringstream out;
   out << fs::path(s.path).parent_path().filename().string() << "/" << fs::path(s.path).filename().string() << " point " << k
       << " (Delta_n = " << s.delta_n[k];
-  if (s.stage == "tangential") out << ", alpha = " << s.alpha_deg[k] << " deg";
+  if (s.provenance.stage == "tangential") out << ", alpha = " << s.alpha_deg[k] << " deg";
   out << ", " << s.contacts[k] << " contacts, |F| = " << s.force_norm[k] << " N)";
   w = Worst{v, out.str()};
 }
@@ -196,7 +172,7 @@ TEST(ArchivedPaperProfile, ResidualsAfterThePaperProtocolAreBelowTolerance) {
   Worst worst_force_all, worst_energy_all;
   for (const Archive& a : all_archives()) {
     std::map<std::string, std::vector<const Sweep*>> groups;  // stage/scene
-    for (const Sweep& s : a.sweeps) groups[s.stage + "/" + s.scene].push_back(&s);
+    for (const Sweep& s : a.sweeps) groups[s.provenance.stage + "/" + s.provenance.scene].push_back(&s);
     for (const auto& [group, sweeps] : groups) {
       std::size_t loaded = 0, unloaded = 0, failing = 0;
       Worst worst_force, worst_energy;

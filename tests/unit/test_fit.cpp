@@ -2,16 +2,19 @@
 // data within 3 of the stated standard errors, the errors are calibrated (about 68% of fits
 // within one standard error), and too few points give a message with the count and the onset.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
 
-#include "analysis/fit_json.hpp"
 #include "analysis/power_fit.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "formats/fit_file.hpp"
 
 namespace {
 
@@ -148,8 +151,10 @@ TEST(PowerFit, NormalLawWithPositiveCHasNoThreshold) {
   bool said = false;
   for (const auto& note : f.notes) said = said || note.find("delta = 0") != std::string::npos;
   EXPECT_TRUE(said);
-  // The JSON writes the undefined error as null.
-  EXPECT_TRUE(softpack::fit::to_json(f, true)["delta_error"].is_null());
+  // The fit file writes the undefined error as null.
+  softpack::FitFile file;
+  file.normal = f;
+  EXPECT_NE(softpack::fit_file_text(file).find("\"delta_error\": null"), std::string::npos);
 }
 
 TEST(PowerFit, NormalLawLeavesOutAPositivePointBeforeAZero) {
@@ -265,23 +270,34 @@ TEST(PowerFit, TangentialLawRefusesTooFewPoints) {
   EXPECT_THROW(fit_tangential_law(x, kt, {}, -0.1), InputError);
 }
 
-TEST(PowerFit, FitJsonRoundTrip) {
+// The fit file (formats/fit_file.hpp): what softpack-fit writes, softpack-table reads back.
+TEST(PowerFit, FitFileRoundTrip) {
   const Series s = normal_series(kSoftSolid, nullptr);
-  const PowerLawFit f = fit_normal_law(s.x, s.y, s.e);
-  const nlohmann::json j = nlohmann::json::parse(softpack::fit::to_json(f, true).dump());
-  for (const char* key : {"a", "a_error", "b", "b_error", "c", "c_error", "delta", "delta_error", "points", "weighted",
-                          "chi2_per_dof", "range"})
-    EXPECT_TRUE(j.contains(key)) << key;
-  const auto e = softpack::fit::estimates_from_json(j, "fit.json: normal", {"a", "b", "c", "delta"});
-  EXPECT_EQ(e.at("a").value, f.a);
-  EXPECT_EQ(e.at("delta").error, f.delta_error);
-  EXPECT_EQ(j["range"][0].get<double>(), f.dn_min);
+  softpack::FitFile file;
+  file.scene = "soft-solid";
+  file.normal = fit_normal_law(s.x, s.y, s.e);
+  file.tangential_reason = "no /kt group";
+  const PowerLawFit& f = file.normal;
+  const std::string text = softpack::fit_file_text(file);
+  for (const char* key : {"\"a\"", "\"a_error\"", "\"b\"", "\"b_error\"", "\"c\"", "\"c_error\"", "\"delta\"",
+                          "\"delta_error\"", "\"points\"", "\"weighted\"", "\"chi2_per_dof\"", "\"range\"",
+                          "\"tangential_reason\""})
+    EXPECT_NE(text.find(key), std::string::npos) << key;
+  const std::string path = ::testing::TempDir() + "softpack-" + std::to_string(::getpid()) + "-fit.json";
+  softpack::write_fit_file(path, file);
+  const auto e = softpack::read_fit_file(path);
+  EXPECT_EQ(e.scene, "soft-solid");
+  EXPECT_EQ(e.normal.at("a").value, f.a);
+  EXPECT_EQ(e.normal.at("delta").error, f.delta_error);
+  EXPECT_FALSE(e.tangential.has_value());
+  std::ofstream(path) << R"({"scene": "soft-solid", "normal": {"a": 1.0}})";
   try {
-    softpack::fit::estimates_from_json(nlohmann::json{{"a", 1.0}}, "fit.json: normal", {"a", "b"});
+    softpack::read_fit_file(path);
     FAIL() << "no error";
   } catch (const InputError& err) {
     EXPECT_NE(std::string(err.what()).find("fit.json: normal.b: missing"), std::string::npos) << err.what();
   }
+  std::remove(path.c_str());
 }
 
 }  // namespace

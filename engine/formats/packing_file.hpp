@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "io/hdf5_file.hpp"
 #include "packing/generator.hpp"
 #include "packing/statistics.hpp"
 
@@ -46,5 +47,8 @@ struct PackingFile {
 
 /// Reads a packing file; InputError names the file and what is missing or wrong.
 PackingFile read_packing_file(const std::string& path);
+
+/// "a packing file (softpack-pack)" when `f` has the layout of one, else "" (formats/file_kind.hpp).
+std::string describe_packing_file(const h5::File& f);
 
 }  // namespace softpack

@@ -1,0 +1,149 @@
+#include "formats/fit_file.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <vector>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace softpack {
+namespace {
+
+using fit::PowerLawFit;
+using json = nlohmann::ordered_json;
+
+constexpr const char *kScene = "scene", *kNormal = "normal", *kTangential = "tangential";
+constexpr const char *kProvenance = "provenance", *kCodeVersion = "code_version";
+const std::string kError = "_error";  // the key of a coefficient's standard error: "a_error"
+
+// The coefficients of a law with a standard error, as the file names them: Eq. 7 has all four,
+// Eq. 8 the first three (its delta is Eq. 7's, written as "delta_used").
+struct Coefficient {
+  const char* key;
+  double PowerLawFit::*value;
+  double PowerLawFit::*error;
+};
+constexpr Coefficient kCoefficients[] = {{"a", &PowerLawFit::a, &PowerLawFit::a_error},
+                                         {"b", &PowerLawFit::b, &PowerLawFit::b_error},
+                                         {"c", &PowerLawFit::c, &PowerLawFit::c_error},
+                                         {"delta", &PowerLawFit::delta, &PowerLawFit::delta_error}};
+std::span<const Coefficient> coefficients(bool normal) { return std::span(kCoefficients).first(normal ? 4 : 3); }
+
+json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+json law(const PowerLawFit& f, bool normal) {
+  json j;
+  for (const Coefficient& c : coefficients(normal)) {
+    j[c.key] = number_or_null(f.*c.value);
+    j[c.key + kError] = number_or_null(f.*c.error);
+  }
+  if (!normal) j["delta_used"] = number_or_null(f.delta);
+  j["points"] = f.points;
+  j["weighted"] = f.weighted;
+  j["chi2_per_dof"] = number_or_null(f.chi2_per_dof);
+  j["range"] = json::array({f.dn_min, f.dn_max});
+  json cov = json::array();
+  for (Eigen::Index r = 0; r < f.covariance.rows(); ++r) {
+    json row = json::array();
+    for (Eigen::Index c = 0; c < f.covariance.cols(); ++c) row.push_back(number_or_null(f.covariance(r, c)));
+    cov.push_back(row);
+  }
+  j["covariance"] = cov;
+  j["notes"] = f.notes;
+  return j;
+}
+
+// {key: value ± error} of one law; `where` (e.g. "fit.json: normal") names it in messages.
+std::map<std::string, table::Estimate> estimates(const nlohmann::json& j, const std::string& where, bool normal) {
+  std::vector<std::string> keys;
+  for (const Coefficient& c : coefficients(normal)) keys.push_back(c.key);
+  if (!j.is_object()) throw InputError(fmt::format("{}: expected an object with {}", where, fmt::join(keys, ", ")));
+  std::map<std::string, table::Estimate> out;
+  for (const std::string& key : keys) {
+    const auto v = j.find(key);
+    if (v == j.end() || !v->is_number())
+      throw InputError(fmt::format("{}.{}: {}; allowed: a number", where, key, v == j.end() ? "missing" : "not a number"));
+    table::Estimate e{v->get<double>(), std::numeric_limits<double>::quiet_NaN()};
+    const auto err = j.find(key + kError);
+    if (err != j.end() && err->is_number()) e.error = err->get<double>();
+    else if (err != j.end() && !err->is_null())
+      throw InputError(fmt::format("{}.{}{}: not a number; allowed: a number or null", where, key, kError));
+    out[key] = e;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string fit_file_text(const FitFile& f) {
+  json out;
+  out[kScene] = f.scene;
+  out[kNormal] = law(f.normal, true);
+  out[kTangential] = f.tangential ? law(*f.tangential, false) : json(nullptr);
+  if (!f.tangential) out["tangential_reason"] = f.tangential_reason;
+  out["errors"] =
+      "standard errors from s^2 (J^T W J)^-1 with s^2 = chi2/(n - p) (chi2_per_dof; W = 1/stderr^2 when weighted, else 1); "
+      "delta_error by first-order propagation with the full covariance of (a, b, c); tangential c = -a delta^b with delta "
+      "treated as exact";
+  out["models"] = {{"normal", "Fn = a dn^b + c for dn >= delta, 0 below (Eq. 7); delta = (-c/a)^(1/b)"},
+                   {"tangential", "kt = a dn^b + c for dn >= delta, 0 below (Eq. 8); c = -a delta^b, delta from the normal fit"}};
+  out[kProvenance] = {{"program", "softpack-fit"},
+                      {kCodeVersion, f.code_version},
+                      {"inputs", json::array({{{"path", f.input.path},
+                                               {"scene", f.scene},
+                                               {"profile", f.input.profile},
+                                               {"code_version", f.input.code_version},
+                                               {"seeds", f.input.seeds}}})},
+                      {"seconds", f.seconds}};
+  return out.dump(2) + "\n";
+}
+
+void write_fit_file(const std::string& path, const FitFile& f) { write_file_atomically(path, fit_file_text(f)); }
+
+void write_fit_gnuplot_file(const std::string& path, const FitFile& f) {
+  // Suffix of the figure scripts' variables: soft-solid -> _solid, soft-soft -> _soft.
+  const std::string sfx = f.scene == "soft-solid" ? "solid" : "soft";
+  const bool has_kt = f.tangential.has_value();
+  const PowerLawFit kt = f.tangential.value_or(PowerLawFit{});
+  const auto num = [](bool known, double x) { return known && std::isfinite(x) ? fmt::format("{}", x) : "NaN"; };
+  std::string gp = fmt::format("# softpack-fit {} of {} ({}): Eq. 7 and Eq. 8 coefficients for gnuplot\n", f.code_version,
+                               f.input.path, f.scene);
+  gp += fmt::format("a_{0}={1}; b_{0}={2}; c_{0}={3}; delta_{0}={4}\n", sfx, num(true, f.normal.a), num(true, f.normal.b),
+                    num(true, f.normal.c), num(true, f.normal.delta));
+  gp += fmt::format("kt_a_{0}={1}; kt_b_{0}={2}; kt_c_{0}={3}; kt_delta_{0}={4}\n", sfx, num(has_kt, kt.a), num(has_kt, kt.b),
+                    num(has_kt, kt.c), num(has_kt, kt.delta));
+  write_file_atomically(path, gp);
+}
+
+FitEstimates read_fit_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot open the file", path));
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(fmt::format("{}: not a JSON file: {}", path, e.what()));
+  }
+  if (!j.is_object()) throw InputError(fmt::format("{}: expected a JSON object (a softpack-fit file)", path));
+  FitEstimates out;
+  const auto scene = j.find(kScene);
+  if (scene == j.end() || !scene->is_string()) throw InputError(fmt::format("{}: {}: missing or not a string", path, kScene));
+  out.scene = scene->get<std::string>();
+  if (!j.contains(kNormal)) throw InputError(fmt::format("{}: {}: missing (the Eq. 7 fit of softpack-fit)", path, kNormal));
+  out.normal = estimates(j.at(kNormal), fmt::format("{}: {}", path, kNormal), true);
+  const auto tan = j.find(kTangential);
+  if (tan != j.end() && !tan->is_null()) out.tangential = estimates(*tan, fmt::format("{}: {}", path, kTangential), false);
+  const auto prov = j.find(kProvenance);
+  if (prov != j.end() && prov->is_object() && prov->contains(kCodeVersion) && prov->at(kCodeVersion).is_string())
+    out.code_version = prov->at(kCodeVersion).get<std::string>();
+  return out;
+}
+
+}  // namespace softpack

@@ -1,0 +1,59 @@
+// The fit file of one scene (softpack-fit; read by softpack-table), JSON:
+//
+//   {"scene": "soft-solid",
+//    "normal": {"a", "a_error", "b", "b_error", "c", "c_error", "delta", "delta_error",
+//               "points", "weighted", "chi2_per_dof", "range": [dn_min, dn_max],
+//               "covariance": [[…]], "notes": […]},
+//    "tangential": {the same without delta/delta_error, plus "delta_used"} or null,
+//    "tangential_reason": "…" (only when "tangential" is null),
+//    "errors": "…", "models": {…},
+//    "provenance": {"program", "code_version", "inputs": [{"path", "scene", "profile",
+//                   "code_version", "seeds"}], "seconds"}}
+//
+// Undefined errors (NaN, e.g. δ's when c >= 0) are written as null. Beside it, on request, the
+// coefficients as gnuplot variables for figures/*.gp (a_solid=...; kt_a_solid=...; NaN when
+// missing).
+#pragma once
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "analysis/fit_table.hpp"
+#include "analysis/power_fit.hpp"
+
+namespace softpack {
+
+struct FitFile {
+  std::string scene;                           ///< soft-solid or soft-soft
+  fit::PowerLawFit normal;                     ///< Eq. 7
+  std::optional<fit::PowerLawFit> tangential;  ///< Eq. 8, or none with the reason:
+  std::string tangential_reason;
+  struct Input {  ///< the average file fitted (formats/average_file.hpp)
+    std::string path, profile, code_version;
+    std::int64_t seeds = 0;
+  } input;
+  std::string code_version;
+  double seconds = 0.0;
+};
+
+/// The JSON text of the file (what write_fit_file writes).
+std::string fit_file_text(const FitFile& f);
+/// Writes the fit file atomically.
+void write_fit_file(const std::string& path, const FitFile& f);
+/// Writes the gnuplot variables file atomically.
+void write_fit_gnuplot_file(const std::string& path, const FitFile& f);
+
+/// What softpack-table reads from a fit file: {key: value ± error} of each law (a null error
+/// is NaN).
+struct FitEstimates {
+  std::string scene;
+  std::map<std::string, table::Estimate> normal;                     ///< a, b, c, delta
+  std::optional<std::map<std::string, table::Estimate>> tangential;  ///< a, b, c; none when null
+  std::string code_version = "?";                                    ///< of softpack-fit ("?": not said)
+};
+/// InputError naming the file and the key: not JSON, no scene, a missing or non-numeric
+/// coefficient, an error that is neither a number nor null.
+FitEstimates read_fit_file(const std::string& path);
+
+}  // namespace softpack

@@ -1,0 +1,133 @@
+#include "formats/packing_file.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <array>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "formats/file_kind.hpp"
+#include "formats/h5_fields.hpp"
+
+namespace softpack {
+namespace {
+
+using namespace formats;
+
+constexpr const char *kCentres = "centres", *kRadii = "radii", *kShellRadius = "shell/radius";
+constexpr const char *kProgram = "provenance/program", *kParameters = "parameters", *kRs = "parameters/Rs";
+constexpr std::array kLayout{kCentres, kRadii, kProgram};  // what makes a file a packing file
+constexpr const char* kPack = "softpack-pack";              // the program that writes them
+
+// /parameters: f(dataset, member) for each of the generator's parameters, in the file's order.
+template <class P, class F>
+void each_parameter(P& p, F&& f) {
+  f(kRs, p.Rs);
+  f("parameters/r_max", p.r_max);
+  f("parameters/polydispersity", p.polydispersity);
+  f("parameters/exponent", p.exponent);
+  f("parameters/beta", p.beta);
+  f("parameters/trials", p.trials);
+  f("parameters/shell_is_neighbour", p.shell_is_neighbour);
+  f("parameters/level_ratio", p.level_ratio);
+}
+
+// /provenance: f(dataset, member) for each field of the provenance.
+template <class V, class F>
+void each_provenance(V& v, F&& f) {
+  f(kProgram, v.program);
+  f("provenance/code_version", v.code_version);
+  f("provenance/config_file", v.config_file);
+  f("provenance/config", v.config);
+  f("provenance/seed", v.seed);
+  f("provenance/seconds", v.seconds);
+}
+
+}  // namespace
+
+void write_packing_file(const std::string& path, const PackingParameters& p, const Packing& packing,
+                        const PackingStatistics& stats, const PackingProvenance& provenance) {
+  h5::AtomicH5 out(path);
+  h5::File& f = out.file();
+  const std::size_t n = packing.radii.size();
+  put(f, kCentres, packing.centres);
+  put(f, kRadii, packing.radii);
+  put(f, "radii_inserted", packing.radii_inserted);
+  f.set_attribute(kCentres, "unit", std::string("m"));
+  f.set_attribute(kRadii, "unit", std::string("m"));
+  put(f, kShellRadius, p.Rs);
+  put(f, "shell/centre", std::vector<double>{0.0, 0.0, 0.0});
+  each_parameter(p, writer(f));
+  put(f, "stats/sampled", packing.sampled);
+  put(f, "stats/inserted", n);
+  put(f, "stats/discarded", packing.discarded);
+  put(f, "stats/grown", packing.grown);
+  put(f, "stats/solid_fraction", stats.solid_fraction);
+  put(f, "stats/bulk_fraction", stats.bulk_fraction);
+  put(f, "stats/depletion_length", stats.depletion_length);
+  put(f, "stats/min_shell_gap", stats.min_shell_gap);
+  put(f, "stats/exponent", stats.exponent.b);
+  put(f, "stats/exponent_error", stats.exponent.b_error);
+  put(f, "stats/exponent_r_min", stats.exponent.r_min);
+  put(f, "stats/exponent_r_max", stats.exponent.r_max);
+  put(f, "stats/radial_profile/r_inner", stats.profile.r_inner);
+  put(f, "stats/radial_profile/r_outer", stats.profile.r_outer);
+  put(f, "stats/radial_profile/solid_fraction", stats.profile.solid_fraction);
+
+  each_provenance(provenance, writer(f));
+  out.commit();
+}
+
+PackingFile read_packing_file(const std::string& path) {
+  const h5::File f = h5::File::open(path);
+  expect_layout(f, "packing", kLayout);
+  PackingFile out;
+  PackingProvenance& v = out.provenance;
+  get(f, kProgram, v.program);
+  if (v.program != kPack)
+    throw InputError(fmt::format("{}: not a softpack packing file (/{} is '{}', not '{}')", path, kProgram, v.program, kPack));
+  std::vector<std::size_t> dims;
+  const std::vector<double> c = f.read_doubles(kCentres, &dims);
+  if (dims.size() != 2 || dims[1] != 3)
+    throw InputError(fmt::format("{}: /{} must be (N, 3), found ({})", path, kCentres, fmt::join(dims, ", ")));
+  out.radii = f.read_doubles(kRadii);
+  if (out.radii.size() != dims[0])
+    throw InputError(fmt::format("{}: /{} has {} rows but /{} {} values", path, kCentres, dims[0], kRadii, out.radii.size()));
+  if (out.radii.empty()) throw InputError(fmt::format("{}: /{}: the packing holds no spheres", path, kRadii));
+  for (std::size_t i = 0; i < dims[0]; ++i) out.centres.emplace_back(c[3 * i], c[3 * i + 1], c[3 * i + 2]);
+  out.Rs = f.read_scalar_double(kShellRadius);
+  PackingParameters& p = out.parameters;
+  each_parameter(p, reader(f));
+  try {
+    validate(p);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: /{}: {}", path, kParameters, e.what()));
+  }
+  if (out.Rs != p.Rs)
+    throw InputError(fmt::format("{}: /{} = {} differs from /{} = {}", path, kShellRadius, out.Rs, kRs, p.Rs));
+  // The spheres: finite, of positive radius, inside the shell (the generator's guarantee; the
+  // sweeps would otherwise start from overlaps with the shell).
+  const double reach = out.Rs * (1.0 + 1e-9);
+  for (std::size_t i = 0; i < out.radii.size(); ++i) {
+    const double r = out.radii[i];
+    const Vec3& x = out.centres[i];
+    if (!(std::isfinite(r) && r > 0.0))
+      throw InputError(fmt::format("{}: /{}[{}] = {} is not allowed; allowed: a finite radius > 0", path, kRadii, i, r));
+    if (!x.allFinite())
+      throw InputError(fmt::format("{}: /{}[{}] = ({}, {}, {}) is not finite", path, kCentres, i, x.x(), x.y(), x.z()));
+    if (!(x.norm() + r <= reach))
+      throw InputError(fmt::format("{}: sphere {} (/{}[{}], /{}[{}]) reaches {} m from the centre, beyond the shell "
+                                   "(/{} = {} m)",
+                                   path, i, kCentres, i, kRadii, i, x.norm() + r, kShellRadius, out.Rs));
+  }
+  each_provenance(v, reader(f));
+  return out;
+}
+
+std::string describe_packing_file(const h5::File& f) {
+  if (!has_layout(f, kLayout)) return "";
+  return f.read_string(kProgram) == kPack ? fmt::format("a packing file ({})", kPack) : "a packing file of another program";
+}
+
+}  // namespace softpack

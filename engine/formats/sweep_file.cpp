@@ -1,0 +1,322 @@
+#include "formats/sweep_file.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+#include <utility>
+
+#include "core/error.hpp"
+#include "formats/file_kind.hpp"
+#include "formats/h5_fields.hpp"
+
+namespace softpack {
+namespace {
+
+using namespace formats;
+
+// Both files: f(dataset, member) for each field of their PointProvenance.
+constexpr const char *kStage = "provenance/stage", *kScene = "provenance/scene";
+template <class P, class F>
+void each_provenance_field(P& p, F&& f) {
+  f(kStage, p.stage);
+  f(kScene, p.scene);
+  f("provenance/config", p.config);
+  f("provenance/code_version", p.code_version);
+}
+
+// --- The point file ---------------------------------------------------------------------------
+
+constexpr const char* kResult = "result";
+constexpr std::array kPointLayout{kResult, kStage};  // what makes a file a point file
+
+// /result: f(dataset, member) for each field of the PointResult but its checks, in the file's order.
+template <class R, class F>
+void each_result_field(R& r, F&& f) {
+  f("result/delta_n", r.delta_n);
+  f("result/hn", r.hn);
+  f("result/alpha_deg", r.alpha_deg);
+  f("result/ht", r.ht);
+  f("result/force", r.force);
+  f("result/force_first", r.force_first);
+  f("result/force_between", r.force_between);
+  f("result/contacts", r.contacts);
+  f("result/relax_steps", r.relax_steps);
+  f("result/relax_time", r.relax_time);
+  f("result/steps", r.steps);
+  f("result/seconds", r.seconds);
+}
+
+// /result/checks: one value per relaxation check. force_ratio and energy_ratio are written for
+// the file's readers; the resume reads the residuals they come from.
+const std::string kChecks = "result/checks/";
+constexpr std::pair<const char*, double Measurement::*> kResiduals[] = {
+    {"kinetic_energy", &Measurement::kinetic_energy},
+    {"elastic_energy", &Measurement::elastic_energy},
+    {"max_unbalanced_force", &Measurement::max_unbalanced_force},
+    {"mean_contact_force", &Measurement::mean_contact_force}};
+
+// /state: f(dataset, member) for each field of the SimulationState but its springs.
+constexpr const char *kX = "state/x", *kV = "state/v", *kF = "state/F";
+template <class S, class F>
+void each_state_field(S& s, F&& f) {
+  f("state/time", s.time);
+  f("state/steps", s.steps);
+  f(kX, s.x);
+  f(kV, s.v);
+  f("state/w", s.w);
+  f(kF, s.F);
+  f("state/T", s.T);
+  f("state/plane_points", s.plane_points);
+  f("state/shell_centres", s.shell_centres);
+}
+constexpr const char *kPairI = "state/pair_springs/i", *kPairJ = "state/pair_springs/j", *kPairXi = "state/pair_springs/xi";
+constexpr const char *kPlaneSprings = "state/plane_springs", *kShellSprings = "state/shell_springs";
+std::string wall_spring(const char* group, std::size_t wall, const char* field) { return fmt::format("{}/{}/{}", group, wall, field); }
+
+void write_checks(h5::File& f, const std::vector<RelaxationCheck>& checks) {
+  std::vector<double> t, fr, er, contacts;
+  std::vector<std::vector<double>> residuals(std::size(kResiduals));
+  for (const auto& c : checks) {
+    t.push_back(c.time), fr.push_back(c.residuals.force_ratio()), er.push_back(c.residuals.energy_ratio());
+    for (std::size_t k = 0; k < residuals.size(); ++k) residuals[k].push_back(c.residuals.*kResiduals[k].second);
+    contacts.push_back(static_cast<double>(c.residuals.contacts));
+  }
+  f.write(kChecks + "time", t);
+  f.write(kChecks + "force_ratio", fr);
+  f.write(kChecks + "energy_ratio", er);
+  for (std::size_t k = 0; k < residuals.size(); ++k) f.write(kChecks + kResiduals[k].first, residuals[k]);
+  f.write(kChecks + "contacts", contacts);
+}
+
+std::vector<RelaxationCheck> read_checks(const h5::File& f) {
+  const auto t = f.read_doubles(kChecks + "time");
+  std::vector<RelaxationCheck> checks(t.size());
+  for (std::size_t k = 0; k < t.size(); ++k) checks[k].time = t[k];
+  for (const auto& [name, member] : kResiduals) {
+    const auto v = f.read_doubles(kChecks + name);
+    same_length(f, kChecks + name, v.size(), kChecks + "time", t.size());
+    for (std::size_t k = 0; k < t.size(); ++k) checks[k].residuals.*member = v[k];
+  }
+  const auto nc = f.read_doubles(kChecks + "contacts");
+  same_length(f, kChecks + "contacts", nc.size(), kChecks + "time", t.size());
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (!(nc[k] >= 0.0 && nc[k] <= 9007199254740992.0 && nc[k] == std::floor(nc[k])))
+      throw InputError(fmt::format("{}: /{}contacts: value {} = {} is not allowed; allowed: a count of contacts", f.path(),
+                                   kChecks, k, nc[k]));
+    checks[k].residuals.contacts = static_cast<std::size_t>(nc[k]);
+  }
+  return checks;
+}
+
+// Sphere ids of springs: 0 <= id < the number of spheres of the state.
+std::vector<int> read_ids(const h5::File& f, const std::string& name, std::size_t spheres) {
+  const auto v = f.read_int64s(name);
+  std::vector<int> out;
+  out.reserve(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (v[k] < 0 || static_cast<std::uint64_t>(v[k]) >= spheres)
+      throw InputError(fmt::format("{}: /{}: value {} = {} is not a sphere of the state (0 to {})", f.path(), name, k, v[k],
+                                   spheres == 0 ? std::string("none") : std::to_string(spheres - 1)));
+    out.push_back(static_cast<int>(v[k]));
+  }
+  return out;
+}
+
+void write_wall_springs(h5::File& f, const char* group, const std::vector<std::vector<SimulationState::WallSpring>>& walls) {
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    std::vector<std::int64_t> ids;
+    std::vector<Vec3> xi;
+    for (const auto& s : walls[w]) ids.push_back(s.i), xi.push_back(s.xi);
+    put(f, wall_spring(group, w, "i"), ids);
+    put(f, wall_spring(group, w, "xi"), xi);
+  }
+}
+
+std::vector<std::vector<SimulationState::WallSpring>> read_wall_springs(const h5::File& f, const char* group, std::size_t spheres) {
+  std::vector<std::vector<SimulationState::WallSpring>> out;
+  for (std::size_t w = 0; f.exists(wall_spring(group, w, "i")); ++w) {
+    const auto ids = read_ids(f, wall_spring(group, w, "i"), spheres);
+    std::vector<Vec3> xi;
+    get(f, wall_spring(group, w, "xi"), xi);
+    same_length(f, wall_spring(group, w, "xi"), xi.size(), wall_spring(group, w, "i"), ids.size());
+    out.emplace_back();
+    for (std::size_t k = 0; k < ids.size(); ++k) out.back().push_back({ids[k], xi[k]});
+  }
+  return out;
+}
+
+// --- The results file -------------------------------------------------------------------------
+
+constexpr const char *kDeltaN = "delta_n", *kFn = "Fn", *kCheckPoint = "relaxation/checks/point";
+constexpr std::array kResultsLayout{kDeltaN, kFn, kStage};  // what makes a file a results file
+
+struct Column {
+  const char* name;
+  const char* unit = "";              ///< attribute "unit"
+  const char* description = nullptr;  ///< attribute "description"
+  bool per_check = false;             ///< one value per relaxation check (else per point)
+  bool finite = true;                 ///< numbers: the reader refuses NaN and infinities
+};
+
+// f(column, member) for each column of `s`, in the file's order.
+template <class S, class F>
+void each_column(S& s, F&& f) {
+  f({kDeltaN}, s.delta_n);
+  f({"hn", "m"}, s.hn);
+  f({"alpha_deg"}, s.alpha_deg);
+  f({"ht", "m"}, s.ht);
+  f({kFn, "N"}, s.Fn);
+  f({"Ft_parallel", "N"}, s.Ft_parallel);
+  f({"Ft_perpendicular", "N"}, s.Ft_perpendicular);
+  f({"force", "N"}, s.force);
+  f({"force_first", "N"}, s.force_first);
+  f({"force_between", "N"}, s.force_between);
+  f({"contacts"}, s.contacts);
+  f({"steps"}, s.steps);
+  f({"relaxation/steps"}, s.relax_steps);
+  f({"relaxation/time"}, s.relax_time);
+  f({.name = "relaxation/final_force_ratio", .finite = false}, s.final_force_ratio);
+  f({.name = "relaxation/final_energy_ratio", .finite = false}, s.final_energy_ratio);
+  f({.name = kCheckPoint, .per_check = true}, s.check_point);
+  f({.name = "relaxation/checks/time", .per_check = true}, s.check_time);
+  f({.name = "relaxation/checks/force_ratio", .per_check = true, .finite = false}, s.check_force_ratio);
+  f({.name = "relaxation/checks/energy_ratio", .per_check = true, .finite = false}, s.check_energy_ratio);
+  f({.name = "seconds", .description = "wall-clock time of each point"}, s.seconds);
+}
+
+// f(dataset, member) for each provenance field of `s`.
+template <class S, class F>
+void each_provenance(S& s, F&& f) {
+  each_provenance_field(s.provenance, f);
+  f("provenance/packings", s.packings);
+  f("provenance/seed", s.seed);
+  f("provenance/seconds", s.total_seconds);
+}
+
+SweepResults columns(const std::vector<PointResult>& points) {
+  SweepResults s;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const PointResult& r = points[k];
+    s.delta_n.push_back(r.delta_n), s.hn.push_back(r.hn), s.alpha_deg.push_back(r.alpha_deg), s.ht.push_back(r.ht);
+    s.Fn.push_back(r.force.x()), s.Ft_parallel.push_back(r.force.y()), s.Ft_perpendicular.push_back(r.force.z());
+    s.force.push_back(r.force), s.force_first.push_back(r.force_first), s.force_between.push_back(r.force_between);
+    s.contacts.push_back(r.contacts), s.steps.push_back(r.steps), s.relax_steps.push_back(r.relax_steps);
+    s.relax_time.push_back(r.relax_time), s.seconds.push_back(r.seconds);
+    s.final_force_ratio.push_back(r.checks.empty() ? 0.0 : r.checks.back().residuals.force_ratio());
+    s.final_energy_ratio.push_back(r.checks.empty() ? 0.0 : r.checks.back().residuals.energy_ratio());
+    for (const auto& c : r.checks) {
+      s.check_point.push_back(static_cast<std::int64_t>(k));
+      s.check_time.push_back(c.time);
+      s.check_force_ratio.push_back(c.residuals.force_ratio());
+      s.check_energy_ratio.push_back(c.residuals.energy_ratio());
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+void write_point_file(const std::string& path, const PointResult& r, const SimulationState& s, const PointProvenance& prov) {
+  h5::AtomicH5 out(path);
+  h5::File& f = out.file();
+  each_result_field(r, writer(f));
+  write_checks(f, r.checks);
+  each_state_field(s, writer(f));
+  std::vector<std::int64_t> pi, pj;
+  std::vector<Vec3> pxi;
+  for (const auto& sp : s.pair_springs) pi.push_back(sp.i), pj.push_back(sp.j), pxi.push_back(sp.xi);
+  put(f, kPairI, pi);
+  put(f, kPairJ, pj);
+  put(f, kPairXi, pxi);
+  write_wall_springs(f, kPlaneSprings, s.plane_springs);
+  write_wall_springs(f, kShellSprings, s.shell_springs);
+  each_provenance_field(prov, writer(f));
+  out.commit();
+}
+
+PointFile read_point_file(const std::string& path, bool with_state) {
+  const h5::File f = h5::File::open(path);
+  expect_layout(f, "sweep point", kPointLayout);
+  PointFile p;
+  each_provenance_field(p.provenance, reader(f));
+  if (p.provenance.stage != "normal" && p.provenance.stage != "tangential")
+    throw InputError(fmt::format("{}: /{}: '{}' is not allowed; allowed: normal, tangential", path, kStage, p.provenance.stage));
+  each_result_field(p.result, reader(f));
+  p.result.checks = read_checks(f);
+  if (with_state) {
+    SimulationState& s = p.state;
+    each_state_field(s, reader(f));
+    const std::size_t n = s.x.size();
+    same_length(f, kV, s.v.size(), kX, n);
+    same_length(f, kF, s.F.size(), kX, n);
+    const auto pi = read_ids(f, kPairI, n), pj = read_ids(f, kPairJ, n);
+    std::vector<Vec3> pxi;
+    get(f, kPairXi, pxi);
+    same_length(f, kPairJ, pj.size(), kPairI, pi.size());
+    same_length(f, kPairXi, pxi.size(), kPairI, pi.size());
+    for (std::size_t k = 0; k < pi.size(); ++k) s.pair_springs.push_back({pi[k], pj[k], pxi[k]});
+    s.plane_springs = read_wall_springs(f, kPlaneSprings, n);
+    s.shell_springs = read_wall_springs(f, kShellSprings, n);
+  }
+  return p;
+}
+
+std::string describe_point_file(const h5::File& f) {
+  return has_layout(f, kPointLayout) ? "a sweep point file (a checkpoint of softpack-" + f.read_string(kStage) + ")" : "";
+}
+
+void write_sweep_results_file(const std::string& path, const std::vector<PointResult>& points, const PointProvenance& prov,
+                              const std::string& packings, std::uint64_t seed, double seconds) {
+  SweepResults s = columns(points);
+  s.provenance = prov;
+  s.packings = packings;
+  s.seed = seed;
+  s.total_seconds = seconds;
+  h5::AtomicH5 out(path);
+  h5::File& f = out.file();
+  each_column(s, [&](const Column& c, const auto& column) { put(f, c.name, column); });
+  // The attributes in the order of the first files: the units N, then m, then descriptions.
+  for (const std::string unit : {"N", "m"})
+    each_column(s, [&](const Column& c, const auto&) {
+      if (c.unit == unit) f.set_attribute(c.name, "unit", unit);
+    });
+  each_column(s, [&](const Column& c, const auto&) {
+    if (c.description) f.set_attribute(c.name, "description", std::string(c.description));
+  });
+  each_provenance(s, writer(f));
+  out.commit();
+}
+
+SweepResults read_sweep_results_file(const std::string& path, const std::string& stage, const std::string& scene) {
+  const h5::File f = h5::File::open(path);
+  expect_layout(f, "sweep results", kResultsLayout);
+  SweepResults s;
+  s.path = path;
+  each_provenance(s, reader(f));
+  if (!stage.empty() && s.provenance.stage != stage)
+    throw InputError(
+        fmt::format("{}: /{}: these are {} results, {} ones are expected here", path, kStage, s.provenance.stage, stage));
+  if (!scene.empty() && s.provenance.scene != scene)
+    throw InputError(
+        fmt::format("{}: /{}: these are results of the {} scene, not of {}", path, kScene, s.provenance.scene, scene));
+  each_column(s, [&](const Column& c, auto& column) {
+    get(f, c.name, column);
+    if (c.per_check) same_length(f, c.name, column.size(), kCheckPoint, s.check_point.size());
+    else same_length(f, c.name, column.size(), kDeltaN, s.delta_n.size());
+    if constexpr (std::is_same_v<std::remove_cvref_t<decltype(column)>, std::vector<double>>)
+      if (c.finite) check_finite(f, c.name, column);
+  });
+  if (s.delta_n.empty()) throw InputError(fmt::format("{}: /{}: the sweep holds no points", path, kDeltaN));
+  return s;
+}
+
+std::string describe_sweep_results_file(const h5::File& f) {
+  if (!has_layout(f, kResultsLayout)) return "";
+  const std::string stage = f.read_string(kStage);
+  return "a " + stage + " sweep results file (softpack-" + stage + ")";
+}
+
+}  // namespace softpack

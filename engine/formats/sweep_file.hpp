@@ -1,0 +1,95 @@
+// The two files of a sweep (measure/sweeps.hpp), both HDF5.
+//
+// The point file: one measured point with the simulation state it ended in; the checkpoint
+// that lets an interrupted sweep resume, and the normal states the tangential stage shears.
+//   /result/...      PointResult: delta_n, hn, alpha_deg, ht, force, force_first, force_between
+//                    (3), contacts, relax_steps, relax_time, steps, seconds, and per relaxation
+//                    check checks/{time, force_ratio, energy_ratio, kinetic_energy,
+//                    elastic_energy, max_unbalanced_force, mean_contact_force, contacts}
+//   /state/...       SimulationState: time, steps, x, v, w, F, T, plane_points, shell_centres
+//                    (N, 3), pair_springs/{i, j, xi}, plane_springs/<w>/{i, xi},
+//                    shell_springs/<w>/{i, xi}
+//   /provenance/...  stage, scene, config, code_version
+//
+// The results file: the points of one sweep (one stage, scene and seed) as columns, read by
+// softpack-average and the checks of the archive (tests/stability/test_archive.cpp); one value
+// per point unless said:
+//   /delta_n, /hn [m], /alpha_deg, /ht [m]        the deformation (ht: tangential stage)
+//   /Fn, /Ft_parallel, /Ft_perpendicular [N]      the force on the second body along x, y, z
+//   /force, /force_first, /force_between (N, 3)   [N], as in PointResult
+//   /contacts, /steps, /relaxation/{steps, time, final_force_ratio, final_energy_ratio}
+//   /relaxation/checks/{point, time, force_ratio, energy_ratio}   one value per relaxation check
+//   /seconds                                      wall-clock time of each point
+//   /provenance/...  stage, scene, config, code_version, packings, seed, seconds (of the stage)
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "io/hdf5_file.hpp"
+#include "measure/point_result.hpp"
+#include "state/simulation_state.hpp"
+
+namespace softpack {
+
+struct PointProvenance {
+  std::string stage;   ///< "normal" or "tangential"
+  std::string scene;   ///< "soft-solid" or "soft-soft"
+  std::string config;  ///< the configuration the point depends on (YAML)
+  std::string code_version;
+};
+
+// --- The point file ---------------------------------------------------------------------------
+
+/// Writes a point file atomically.
+void write_point_file(const std::string& path, const PointResult& r, const SimulationState& state,
+                      const PointProvenance& prov);
+
+/// Reads a point file, with the simulation state when `with_state`. InputError, naming the file
+/// and the dataset, when it is missing, unreadable, not a point file, or inconsistent (columns of
+/// different lengths, values that are not finite, spring ids outside the state).
+struct PointFile {
+  PointResult result;
+  SimulationState state;
+  PointProvenance provenance;
+};
+PointFile read_point_file(const std::string& path, bool with_state);
+
+/// "a sweep point file (a checkpoint of softpack-normal)" when `f` has the layout of one, else
+/// "" (formats/file_kind.hpp).
+std::string describe_point_file(const h5::File& f);
+
+// --- The results file -------------------------------------------------------------------------
+
+struct SweepResults {
+  std::string path;  ///< the file read (for messages)
+  std::vector<double> delta_n, hn, alpha_deg, ht, Fn, Ft_parallel, Ft_perpendicular;
+  std::vector<Vec3> force, force_first, force_between;
+  std::vector<std::int64_t> contacts, steps, relax_steps;
+  std::vector<double> relax_time;
+  std::vector<double> final_force_ratio, final_energy_ratio;  ///< may be infinite (sim/residuals.hpp)
+  std::vector<std::int64_t> check_point;                      ///< per relaxation check: its point
+  std::vector<double> check_time, check_force_ratio, check_energy_ratio;
+  std::vector<double> seconds;
+  PointProvenance provenance;
+  std::string packings;
+  std::uint64_t seed = 0;
+  double total_seconds = 0.0;  ///< of the whole stage
+};
+
+/// Writes the results of a whole sweep atomically: arrays over the points, the relaxation
+/// checks flattened.
+void write_sweep_results_file(const std::string& path, const std::vector<PointResult>& points, const PointProvenance& prov,
+                              const std::string& packings, std::uint64_t seed, double seconds);
+
+/// Reads a sweep results file. With `stage` or `scene` given, the file must have been made by
+/// that stage (normal, tangential) for that scene. InputError names the file and the dataset:
+/// not a results file, another stage or scene, no points, columns of different lengths, values
+/// that are not finite (but the ratios).
+SweepResults read_sweep_results_file(const std::string& path, const std::string& stage = "", const std::string& scene = "");
+
+/// "a normal sweep results file (softpack-normal)" when `f` has the layout of one, else ""
+/// (formats/file_kind.hpp).
+std::string describe_sweep_results_file(const h5::File& f);
+
+}  // namespace softpack

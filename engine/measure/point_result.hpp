@@ -1,0 +1,25 @@
+// What one measured point of a sweep gives (measure/sweeps.hpp); stored in the sweep point
+// files (formats/sweep_file.hpp) and, as columns, in the results files.
+#pragma once
+#include <vector>
+
+#include "core/types.hpp"
+#include "relax/relaxation.hpp"
+
+namespace softpack {
+
+struct PointResult {
+  double delta_n = 0.0, hn = 0.0;    ///< normal deformation, hn = delta_n Rs [m]
+  double alpha_deg = 0.0, ht = 0.0;  ///< tangential stage: rotation and ht = pi Rs alpha / 180 [m]
+  Vec3 force = Vec3::Zero();          ///< on the second body [N]
+  Vec3 force_first = Vec3::Zero();    ///< load on the first shell [N] (minus force in balance)
+  Vec3 force_between = Vec3::Zero();  ///< elastic force of the first body's spheres on the second's [N]
+  long contacts = 0;                  ///< closed contacts at the end
+  long relax_steps = 0;
+  double relax_time = 0.0;            ///< simulated [s]
+  std::vector<RelaxationCheck> checks;
+  long steps = 0;                     ///< all steps of the point (loading, rotation, relaxation)
+  double seconds = 0.0;               ///< wall-clock time of the point
+};
+
+}  // namespace softpack
