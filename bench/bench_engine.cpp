@@ -37,7 +37,7 @@ void Confined(benchmark::State& state, bool friction) {
   for (auto _ : state) {
     sim.run_steps(steps);
     state.PauseTiming();
-    contacts += static_cast<double>(sim.measure().contacts) * steps;
+    contacts += static_cast<double>(sim.residuals().contacts) * steps;
     state.ResumeTiming();
   }
   const double n = static_cast<double>(sim.particles().size());
@@ -70,7 +70,7 @@ void SameState(benchmark::State& state, bool friction) {
     for (long s = 0; s < steps; ++s) sim.step();
     state.PauseTiming();
     rebuilds += sim.neighbour_rebuilds() - before;
-    contacts += static_cast<double>(sim.measure().contacts) * steps;
+    contacts += static_cast<double>(sim.residuals().contacts) * steps;
     state.ResumeTiming();
   }
   const double n = static_cast<double>(sim.particles().size());

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
   const auto t0 = std::chrono::steady_clock::now();
   sim.run_steps(steps);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const auto meas = sim.measure();
+  const auto meas = sim.residuals();
   fmt::print("softpack_loop_time_s={:.6g} particle_steps_per_s={:.4g} contacts={} listed_pairs={} rebuilds={} friction={} isa={}\n", seconds,
              static_cast<double>(spheres.size()) * static_cast<double>(steps) / seconds, meas.contacts, sim.pair_list().size(),
              sim.neighbour_rebuilds(), frictionless ? 0 : 1, cpu::name(cpu::vector_isa()));

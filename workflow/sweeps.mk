@@ -1,4 +1,6 @@
 # Measurement stage: the normal and tangential sweeps of every scene and seed of the profile.
+# The tangential stage shears the normal stage's checkpoints; when the normal results were taken
+# from the archive (which keeps no checkpoints), softpack-tangential computes those states itself.
 # Soft-soft pairs the packing of seed k with that of the next seed of the profile (cyclic), so
 # that the two soft-particles are independent and no extra packing is made.
 
@@ -25,13 +27,10 @@ $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5: $(NORMAL_STAMP) $(PACKING_DIR)/seed-$(2).
 	    --checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) --out $$@ 2> $$(@:.h5=.log) \
 	  || { echo "normal: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }; }
 $(SWEEP_DIR)/tangential/$(1)-seed-$(2).h5: $(TANGENTIAL_STAMP) $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5 | $(TOOLS)
-	@mkdir -p $$(@D) && $$(call clear_stale,$$@ $$(@:.h5=.normal-states.h5),$(CHECKPOINTS)/normal/$(1)/seed-$(2) \
-	  $(CHECKPOINTS)/tangential/$(1)/seed-$(2))
+	@mkdir -p $$(@D) && $$(call clear_stale,$$@,$(CHECKPOINTS)/normal/$(1)/seed-$(2) $(CHECKPOINTS)/tangential/$(1)/seed-$(2))
 	@$$(call from_archive,$$@,$(TANGENTIAL_STAMP)) || { \
 	  echo "tangential: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"; \
-	  { [ -d $(CHECKPOINTS)/normal/$(1)/seed-$(2) ] || $(RUN) $(BUILD)/engine/softpack-normal $(call sweep_args,$(1),$(2)) \
-	      --checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) --out $$(@:.h5=.normal-states.h5) --quiet; } \
-	  && $(RUN) $(BUILD)/engine/softpack-tangential $(call sweep_args,$(1),$(2)) \
+	  $(RUN) $(BUILD)/engine/softpack-tangential $(call sweep_args,$(1),$(2)) \
 	    --checkpoints $(CHECKPOINTS)/tangential/$(1)/seed-$(2) --normal-checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) \
 	    --out $$@ 2> $$(@:.h5=.log) \
 	  || { echo "tangential: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }; }

@@ -23,17 +23,17 @@ MeanError mean_error(const std::vector<double>& v) {
 
 namespace {
 
-void same_grid(const std::vector<SweepResults>& seeds) {
+void same_grid(const std::vector<SweepColumns>& seeds) {
   if (seeds.empty()) throw InputError("no sweep results to average");
-  for (const SweepResults& s : seeds)
+  for (const SweepColumns& s : seeds)
     if (s.delta_n != seeds[0].delta_n || s.alpha_deg != seeds[0].alpha_deg)
       throw InputError(fmt::format("{}: its (delta_n, alpha) grid differs from that of {}; results of one profile share it",
                                    s.path, seeds[0].path));
 }
 
-MeanError column(const std::vector<SweepResults>& seeds, std::vector<double> SweepResults::*field, std::size_t k) {
+MeanError column(const std::vector<SweepColumns>& seeds, std::vector<double> SweepColumns::*field, std::size_t k) {
   std::vector<double> v;
-  for (const SweepResults& s : seeds) v.push_back((s.*field)[k]);
+  for (const SweepColumns& s : seeds) v.push_back((s.*field)[k]);
   return mean_error(v);
 }
 
@@ -48,38 +48,38 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
   return sxx > 0 ? sxy / sxx : 0.0;
 }
 
-NormalAverage average_normal(const std::vector<SweepResults>& seeds) {
+NormalAverage average_normal(const std::vector<SweepColumns>& seeds) {
   same_grid(seeds);
   NormalAverage a;
   a.seeds = seeds.size();
   a.delta_n = seeds[0].delta_n;
   for (std::size_t k = 0; k < a.delta_n.size(); ++k) {
-    a.Fn.push_back(column(seeds, &SweepResults::Fn, k));
-    a.Ft_parallel.push_back(column(seeds, &SweepResults::Ft_parallel, k));
-    a.Ft_perpendicular.push_back(column(seeds, &SweepResults::Ft_perpendicular, k));
+    a.Fn.push_back(column(seeds, &SweepColumns::Fn, k));
+    a.Ft_parallel.push_back(column(seeds, &SweepColumns::Ft_parallel, k));
+    a.Ft_perpendicular.push_back(column(seeds, &SweepColumns::Ft_perpendicular, k));
   }
   return a;
 }
 
-TangentialAverage average_tangential(const std::vector<SweepResults>& seeds) {
+TangentialAverage average_tangential(const std::vector<SweepColumns>& seeds) {
   same_grid(seeds);
   TangentialAverage a;
   a.seeds = seeds.size();
-  const SweepResults& g = seeds[0];
+  const SweepColumns& g = seeds[0];
   a.delta_n = g.delta_n;
   a.alpha_deg = g.alpha_deg;
   a.ht = g.ht;
   for (std::size_t k = 0; k < g.delta_n.size(); ++k) {
-    a.Ft_parallel.push_back(column(seeds, &SweepResults::Ft_parallel, k));
-    a.Ft_perpendicular.push_back(column(seeds, &SweepResults::Ft_perpendicular, k));
-    a.Fn.push_back(column(seeds, &SweepResults::Fn, k));
+    a.Ft_parallel.push_back(column(seeds, &SweepColumns::Ft_parallel, k));
+    a.Ft_perpendicular.push_back(column(seeds, &SweepColumns::Ft_perpendicular, k));
+    a.Fn.push_back(column(seeds, &SweepColumns::Fn, k));
   }
   // kt per seed and Delta_n: the slope of Ft_parallel(ht) over the alpha grid (around ht = 0).
   for (std::size_t k = 0; k < g.delta_n.size();) {
     std::size_t end = k;
     while (end < g.delta_n.size() && g.delta_n[end] == g.delta_n[k]) ++end;
     std::vector<double> per_seed;
-    for (const SweepResults& s : seeds) {
+    for (const SweepColumns& s : seeds) {
       const std::vector<double> ht(s.ht.begin() + k, s.ht.begin() + end), F(s.Ft_parallel.begin() + k, s.Ft_parallel.begin() + end);
       per_seed.push_back(slope(ht, F));
     }

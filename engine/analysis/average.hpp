@@ -2,13 +2,18 @@
 // different simulations"): mean and standard error of the mean at every Delta_n (normal) and
 // every (Delta_n, alpha) (tangential), and the tangential spring constant kt: the slope of the
 // parallel force against ht over the alpha grid, one per seed, then averaged. On the results
-// in memory (formats/sweep_file.hpp); the average file: formats/average_file.hpp.
+// in memory (formats/sweep_file.hpp reads them); the average file: formats/average_file.hpp.
 #pragma once
+#include <string>
 #include <vector>
 
-#include "formats/sweep_file.hpp"
-
 namespace softpack {
+
+/// The columns of one seed's sweep results that the averages read.
+struct SweepColumns {
+  std::string path;  ///< the file they come from (for messages)
+  std::vector<double> delta_n, alpha_deg, ht, Fn, Ft_parallel, Ft_perpendicular;
+};
 
 /// Mean and standard error of the mean (0 for a single value).
 struct MeanError {
@@ -22,7 +27,7 @@ struct NormalAverage {
   std::size_t seeds = 0;
 };
 /// All files must share the Delta_n grid (InputError names the file that differs).
-NormalAverage average_normal(const std::vector<SweepResults>& seeds);
+NormalAverage average_normal(const std::vector<SweepColumns>& seeds);
 
 struct TangentialAverage {
   std::vector<double> delta_n, alpha_deg, ht;  ///< one row per (Delta_n, alpha)
@@ -31,7 +36,7 @@ struct TangentialAverage {
   std::vector<MeanError> kt;       ///< [N/m]
   std::size_t seeds = 0;
 };
-TangentialAverage average_tangential(const std::vector<SweepResults>& seeds);
+TangentialAverage average_tangential(const std::vector<SweepColumns>& seeds);
 
 /// Least-squares slope of y against x.
 double slope(const std::vector<double>& x, const std::vector<double>& y);

@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     if (p.scene != "soft-solid" && p.scene != "soft-soft")
       throw InputError(fmt::format("--scene: '{}' is not allowed; allowed: soft-solid, soft-soft", p.scene));
-    std::vector<SweepResults> normal, tangential;
+    std::vector<SweepColumns> normal, tangential;  // the columns of each seed the averages read
     for (const auto& path : p.normal_inputs) normal.push_back(read_sweep_results_file(path, "normal", p.scene));
     for (const auto& path : p.tangential_inputs) tangential.push_back(read_sweep_results_file(path, "tangential", p.scene));
     const NormalAverage n = average_normal(normal);

@@ -26,8 +26,9 @@
 #include <string>
 #include <vector>
 
+#include "analysis/average.hpp"
 #include "io/hdf5_file.hpp"
-#include "measure/point_result.hpp"
+#include "formats/point_result.hpp"
 #include "state/simulation_state.hpp"
 
 namespace softpack {
@@ -61,9 +62,9 @@ std::string describe_point_file(const h5::File& f);
 
 // --- The results file -------------------------------------------------------------------------
 
-struct SweepResults {
-  std::string path;  ///< the file read (for messages)
-  std::vector<double> delta_n, hn, alpha_deg, ht, Fn, Ft_parallel, Ft_perpendicular;
+/// Every column of a results file: those the averages read (analysis/average.hpp), and the rest.
+struct SweepResults : SweepColumns {
+  std::vector<double> hn;
   std::vector<Vec3> force, force_first, force_between;
   std::vector<std::int64_t> contacts, steps, relax_steps;
   std::vector<double> relax_time;

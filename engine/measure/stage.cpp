@@ -84,12 +84,22 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
   }
   c.setup.scene.watchdog = settings.watchdog;  // when to stop a run gone wrong; changes no result
   // What every point depends on: the sections read, the scene and the packings used.
-  c.config = "# stage: " + o.stage + ", scene: " + o.scene + (o.hertz_check ? " (Hertz check)" : "") + "\n# packings: " +
-             packings + "\n" + stage_text(root, o.stage);
+  const auto config = [&](const std::string& stage) {
+    return "# stage: " + stage + ", scene: " + o.scene + (o.hertz_check ? " (Hertz check)" : "") + "\n# packings: " + packings +
+           "\n" + stage_text(root, stage);
+  };
+  c.config = config(o.stage);
   c.checkpoint_dir = o.checkpoints;
   c.code_version = code_version();
   c.stop_after = static_cast<std::size_t>(std::max(0L, o.stop_after));
   c.progress = progress;
+  if (o.stage == "tangential") {  // the normal states to shear: reused, or computed where missing
+    SweepContext normal = c;
+    normal.config = config("normal");
+    normal.checkpoint_dir = o.normal_checkpoints;
+    normal.stop_after = 0;
+    run_normal_sweep(normal);
+  }
   const std::vector<PointResult> points =
       o.stage == "normal" ? run_normal_sweep(c) : run_tangential_sweep(c, o.normal_checkpoints);
   if (points.empty()) return StageSummary{0, 0.0, true};  // stopped on purpose (tests)

@@ -1,13 +1,15 @@
 // What the stages softpack-normal and softpack-tangential share: read the profile and the
 // packings, check that they belong together, build the scene, run the sweep (each point
-// reported through a callback), write the results file. The command line, the progress lines
+// reported through a callback), write the results file. The tangential stage shears the normal
+// stage's saved states; where they are missing (the normal results were taken from the archive,
+// which keeps no checkpoints) it computes them first, in the normal stage's checkpoint folder. The command line, the progress lines
 // and the exit codes are the executables' (apps/stage_cli.hpp).
 #pragma once
 #include <cstddef>
 #include <functional>
 #include <string>
 
-#include "measure/point_result.hpp"
+#include "formats/point_result.hpp"
 
 namespace softpack {
 
@@ -22,9 +24,11 @@ struct StageOptions {
   long stop_after = 0;       ///< testing: stop after this many new points
 };
 
-/// Called after each point: its index, the number of points, the point, and whether it was
-/// reused from a checkpoint (else computed).
-using StageProgress = std::function<void(std::size_t k, std::size_t n, const PointResult& r, bool reused)>;
+/// Called after each point: its stage ("normal" also in the tangential stage, for the normal
+/// states it computes), its index, the number of points, the point, and whether it was reused
+/// from a checkpoint (else computed).
+using StageProgress =
+    std::function<void(const std::string& stage, std::size_t k, std::size_t n, const PointResult& r, bool reused)>;
 
 struct StageSummary {
   std::size_t points = 0;  ///< in the results file

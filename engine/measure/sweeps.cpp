@@ -15,12 +15,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-PointResult measure(const Simulation& sim, const ContactSetup& setup, const RelaxationReport& relax) {
+PointResult record_point(const Simulation& sim, const ContactSetup& setup, const RelaxationReport& relax) {
   PointResult r;
   r.force = sim.wall_load(setup.second_wall).force;
   if (!setup.first_shell.empty()) r.force_first = sim.wall_load(setup.first_shell).force;
   r.force_between = setup.second_body >= 0 ? sim.force_between(setup.first_body, setup.second_body) : r.force;
-  r.contacts = static_cast<long>(sim.measure().contacts);
+  r.contacts = static_cast<long>(sim.residuals().contacts);
   r.relax_steps = relax.steps;
   r.relax_time = relax.simulated_time;
   r.checks = relax.checks;
@@ -84,7 +84,7 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
   std::size_t done = 0;  // points 0..done-1 are reusable
   while (done < grid.size() && usable(normal_point_path(c.checkpoint_dir, done), c.config)) {
     points[done] = read_point_file(normal_point_path(c.checkpoint_dir, done), false).result;
-    if (c.progress) c.progress(done, grid.size(), points[done], true);
+    if (c.progress) c.progress("normal", done, grid.size(), points[done], true);
     ++done;
   }
   if (done == grid.size()) return points;
@@ -115,14 +115,14 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
       relax = softpack::relax(sim, c.settings.relaxation);
     });
     hn_now = hn;
-    PointResult r = measure(sim, c.setup, relax);
+    PointResult r = record_point(sim, c.setup, relax);
     r.delta_n = grid[k];
     r.hn = hn;
     r.steps = sim.step_count() - step0;
     r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     write_point_file(normal_point_path(c.checkpoint_dir, k), r, sim.state(), provenance(c, "normal"));
     points[k] = r;
-    if (c.progress) c.progress(k, grid.size(), r, false);
+    if (c.progress) c.progress("normal", k, grid.size(), r, false);
     if (c.stop_after && ++computed == c.stop_after && k + 1 < grid.size()) return {};
   }
   return points;
@@ -146,7 +146,7 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
       const std::string path = tangential_point_path(c.checkpoint_dir, a, b);
       if (usable(path, c.config)) {
         points.push_back(read_point_file(path, false).result);
-        if (c.progress) c.progress(points.size() - 1, total, points.back(), true);
+        if (c.progress) c.progress("tangential", points.size() - 1, total, points.back(), true);
         continue;
       }
       if (!normal_state) normal_state = read_point_file(state_path, true).state;
@@ -173,7 +173,7 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
         }
         relax = softpack::relax(sim, c.settings.relaxation);
       });
-      PointResult r = measure(sim, c.setup, relax);
+      PointResult r = record_point(sim, c.setup, relax);
       r.delta_n = hn_grid[a];
       r.hn = hn_grid[a] * c.setup.Rs;
       r.alpha_deg = alphas[b];
@@ -183,7 +183,7 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
       sim.release_drivers();
       write_point_file(path, r, sim.state(), provenance(c, "tangential"));
       points.push_back(r);
-      if (c.progress) c.progress(points.size() - 1, total, r, false);
+      if (c.progress) c.progress("tangential", points.size() - 1, total, r, false);
       if (c.stop_after && ++computed == c.stop_after && points.size() < total) return {};
     }
   }

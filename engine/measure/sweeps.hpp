@@ -32,8 +32,9 @@ struct SweepContext {
   std::string config;          ///< configuration text recorded with (and checked against) each point
   std::string checkpoint_dir;  ///< point files of this stage
   std::string code_version;
-  /// Progress: index of the point, number of points, the point just finished (or reused).
-  std::function<void(std::size_t, std::size_t, const PointResult&, bool reused)> progress;
+  /// Progress: the stage of the point ("normal", "tangential"), its index, the number of points,
+  /// the point just finished (or reused).
+  std::function<void(const std::string& stage, std::size_t, std::size_t, const PointResult&, bool reused)> progress;
   std::size_t stop_after = 0;  ///< for tests: stop after computing this many new points (0: never)
 };
 

@@ -13,7 +13,7 @@ RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
   const double t0 = sim.time();
   RelaxationReport report;
   const auto record = [&] {
-    report.checks.push_back({sim.time() - t0, sim.step_count() - step0, sim.measure()});
+    report.checks.push_back({sim.time() - t0, sim.step_count() - step0, sim.residuals()});
     if (on_check) on_check(report.checks.back());
   };
   if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {

@@ -82,7 +82,7 @@ void Simulation::restore(const SimulationState& s) {
     install(lists.planes, s.plane_springs);
     install(lists.shells, s.shell_springs);
   }
-  watchdog_.start(world_, measure());
+  watchdog_.start(world_, residuals());
   since_check_ = 0;
 }
 

@@ -42,7 +42,7 @@ Simulation::Simulation(const SceneDef& scene)
       watchdog_(scene_.watchdog, watchdog_context(scene_, dt_, stable_)) {
   rebuild_neighbours();
   compute_forces(0.0);  // F(t0); springs start unstretched
-  watchdog_.start(world_, measure());
+  watchdog_.start(world_, residuals());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -66,7 +66,7 @@ void Simulation::step() {
 
 void Simulation::update_neighbours() {
   if (!neighbours_.need_rebuild(world_)) return;
-  if (!Watchdog::positions_finite(world_)) watchdog_.check(world_, measure());  // the grid must not see NaN or infinity
+  if (!Watchdog::positions_finite(world_)) watchdog_.check(world_, residuals());  // the grid must not see NaN or infinity
   rebuild_neighbours();
 }
 
@@ -75,7 +75,7 @@ void Simulation::rebuild_neighbours() {
   try {
     added = neighbours_.rebuild(world_);
   } catch (const std::invalid_argument&) {
-    watchdog_.check(world_, measure());  // spheres flung out of any sensible domain: report the blow-up
+    watchdog_.check(world_, residuals());  // spheres flung out of any sensible domain: report the blow-up
     throw;
   }
   if (forces_.active()) forces_.set_constants(world_, neighbours_.lists(), added);
@@ -104,7 +104,7 @@ void Simulation::run_steps(long n) {
 
 void Simulation::check_now() {
   since_check_ = 0;
-  watchdog_.check(world_, measure());
+  watchdog_.check(world_, residuals());
 }
 
 long Simulation::steps_for(double duration) const { return std::max(1L, std::lround(duration / dt_)); }

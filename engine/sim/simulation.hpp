@@ -59,7 +59,7 @@ class Simulation {
   /// True while a driver with a target (distance, angle, duration) has not reached it.
   bool drivers_moving() const { return drivers_.moving(); }
   /// Residuals of the current state (sim/residuals.hpp).
-  Measurement measure() const { return residuals(world_, neighbours_.lists(), forces_); }
+  Measurement residuals() const { return softpack::residuals(world_, neighbours_.lists(), forces_); }
 
   /// The state of the spheres, walls and springs (no drivers may be moving). sim/checkpoint.cpp.
   SimulationState state() const;

@@ -55,7 +55,7 @@ Impact collide(std::optional<double> e, bool friction) {
 
   Simulation sim(s);
   const auto energy = [&] {
-    const Measurement m = sim.measure();
+    const Measurement m = sim.residuals();
     return m.kinetic_energy + m.elastic_energy;
   };
   const double E0 = energy();

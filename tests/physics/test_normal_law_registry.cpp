@@ -99,7 +99,7 @@ TEST(NormalLawRegistry, ResidualsAndTheWatchdogUseTheSceneLaw) {
   const Simulation sim(s);
   const double kn = LinearTestNormal::stiffness(0.5e-3, hertz_D(testing::paper_grain(), testing::paper_grain()));
   const double h = 2e-3 - (b.x - a.x).norm();
-  const Measurement meas = sim.measure();
+  const Measurement meas = sim.residuals();
   EXPECT_EQ(meas.contacts, 1u);
   EXPECT_NEAR(meas.elastic_energy, 0.5 * kn * h * h, 1e-12 * 0.5 * kn * h * h);
   EXPECT_NEAR(meas.mean_contact_force, kn * h, 1e-12 * kn * h);

@@ -31,7 +31,7 @@ TEST(Relaxation, CompressedFrictionalPackingInAShellReachesForceBalance) {
   const SceneDef s = compressed_packing();
   ASSERT_EQ(s.particles.size(), 500u);
   Simulation sim(s);
-  const Measurement before = sim.measure();
+  const Measurement before = sim.residuals();
   ASSERT_GT(before.force_ratio(), 1.0);  // far from balance to begin with
   ConvergedRelaxationDef def;
   def.force_tolerance = 1e-3;
@@ -43,7 +43,7 @@ TEST(Relaxation, CompressedFrictionalPackingInAShellReachesForceBalance) {
   ASSERT_TRUE(rep.converged.has_value());
   EXPECT_TRUE(*rep.converged) << "force ratio " << rep.checks.back().residuals.force_ratio()
                               << " energy ratio " << rep.checks.back().residuals.energy_ratio();
-  const Measurement after = sim.measure();
+  const Measurement after = sim.residuals();
   EXPECT_LT(after.force_ratio(), def.force_tolerance);
   EXPECT_LT(after.energy_ratio(), def.energy_tolerance);
   EXPECT_GT(after.contacts, 500u);
@@ -55,7 +55,7 @@ TEST(Relaxation, CompressedFrictionalPackingInAShellReachesForceBalance) {
 
 TEST(Relaxation, PaperProtocolReportsEveryStop) {
   Simulation sim(compressed_packing());
-  const double initial_ratio = sim.measure().force_ratio();
+  const double initial_ratio = sim.residuals().force_ratio();
   PaperRelaxationDef def{6, 0.05, 0.05};
   int seen = 0;
   const RelaxationReport rep = relax(sim, def, [&](const RelaxationCheck&) { ++seen; });

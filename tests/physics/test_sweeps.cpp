@@ -143,7 +143,7 @@ TEST(Sweeps, ResumeAfterAnInterruptionGivesIdenticalResults) {
     EXPECT_TRUE(run_normal_sweep(c).empty());
     c.stop_after = 0;
     std::size_t reused = 0;
-    c.progress = [&](std::size_t, std::size_t, const PointResult&, bool r) { reused += r; };
+    c.progress = [&](const std::string&, std::size_t, std::size_t, const PointResult&, bool r) { reused += r; };
     EXPECT_TRUE(same_results(run_normal_sweep(c), straight)) << "stopped after " << stop << " points";
     EXPECT_EQ(reused, stop);
   }

@@ -27,7 +27,7 @@ std::string non_finite(const Simulation& sim) {
   for (const auto* loads : {&sim.plane_loads(), &sim.shell_loads()})
     for (const WallLoad& l : *loads)
       if (!l.force.allFinite() || !l.torque.allFinite()) out << "a wall load is not finite; ";
-  const Measurement m = sim.measure();
+  const Measurement m = sim.residuals();
   if (!std::isfinite(m.kinetic_energy) || !std::isfinite(m.elastic_energy) || !std::isfinite(m.max_unbalanced_force) ||
       !std::isfinite(m.mean_contact_force))
     out << "residuals not finite (kinetic " << m.kinetic_energy << ", elastic " << m.elastic_energy << ", max force "
@@ -38,7 +38,7 @@ std::string non_finite(const Simulation& sim) {
 }
 
 double mechanical_energy(const Simulation& sim) {
-  const Measurement m = sim.measure();
+  const Measurement m = sim.residuals();
   return m.kinetic_energy + m.elastic_energy;
 }
 

@@ -71,7 +71,7 @@ TEST(DegenerateGeometry, SphereExactlyOnItsShellBouncesCleanly) {
   ASSERT_EQ((p0.x - sh.centre).norm() + p0.r - sh.radius, 0.0) << "the scene must touch its shell exactly";
   Simulation sim(f.scene);
   EXPECT_EQ(sim.particles().F[0], Vec3::Zero());
-  EXPECT_EQ(sim.measure().contacts, 0u);
+  EXPECT_EQ(sim.residuals().contacts, 0u);
   EXPECT_EQ(sim.shell_loads()[0].force, Vec3::Zero());
   const double E0 = mechanical_energy(sim);
   const Vec3 v0 = p0.v;
@@ -82,14 +82,14 @@ TEST(DegenerateGeometry, SphereExactlyOnItsShellBouncesCleanly) {
     sim.step();
     ASSERT_EQ(non_finite(sim), "");
     const Vec3 outward = (sim.particles().x[0] - sim.shells()[0].centre).normalized();
-    if (sim.measure().contacts > 0) {
+    if (sim.residuals().contacts > 0) {
       ++in_contact;
       EXPECT_LT(sim.particles().F[0].dot(outward), 0.0) << "the shell must push inward, step " << k;
     }
     worst_drift = std::max(worst_drift, std::abs(mechanical_energy(sim) - E0) / E0);
   }
   EXPECT_GT(in_contact, 10) << "the contact must be resolved by several steps";
-  EXPECT_EQ(sim.measure().contacts, 0u) << "the sphere must have left the shell";
+  EXPECT_EQ(sim.residuals().contacts, 0u) << "the sphere must have left the shell";
   const double restitution = -sim.particles().v[0].dot(v0.normalized()) / v0.norm();
   const double drift = std::abs(mechanical_energy(sim) - E0) / E0;
   measured("steps in contact", static_cast<double>(in_contact));
@@ -125,7 +125,7 @@ TEST(DegenerateGeometry, SphereAtAWallWithZeroOverlapSettlesWithAZeroLengthSprin
   const double m = sim.particles().m[0];
   const Vec3 g = *f.scene.effects.gravity;
   EXPECT_EQ(sim.particles().F[0], m * g) << "at zero overlap only the weight acts";
-  EXPECT_EQ(sim.measure().contacts, 0u);
+  EXPECT_EQ(sim.residuals().contacts, 0u);
   ASSERT_TRUE(f.run.relaxation);
   const RelaxationReport rep = relax(sim, *f.run.relaxation, [&](const RelaxationCheck&) {
     ASSERT_EQ(non_finite(sim), "");
@@ -156,7 +156,7 @@ TEST(DegenerateGeometry, HeadOnFrictionalImpactKeepsAZeroLengthSpring) {
   for (long k = 0; k < steps; ++k) {
     sim.step();
     ASSERT_EQ(non_finite(sim), "");
-    in_contact += sim.measure().contacts > 0;
+    in_contact += sim.residuals().contacts > 0;
     EXPECT_TRUE(sim.state().pair_springs.empty()) << "step " << k;
     for (int i = 0; i < 2; ++i) {
       EXPECT_EQ(sim.particles().T[i], Vec3::Zero());
@@ -167,7 +167,7 @@ TEST(DegenerateGeometry, HeadOnFrictionalImpactKeepsAZeroLengthSpring) {
     EXPECT_GE(sim.particles().F[1].x(), 0.0) << "repulsive (sphere 1 is on the +x side), step " << k;
   }
   EXPECT_GT(in_contact, 10);
-  EXPECT_EQ(sim.measure().contacts, 0u);
+  EXPECT_EQ(sim.residuals().contacts, 0u);
   const double restitution = (sim.particles().v[1].x() - sim.particles().v[0].x()) / u;
   const double drift = std::abs(mechanical_energy(sim) - E0) / E0;
   measured("steps in contact", static_cast<double>(in_contact));

@@ -82,7 +82,7 @@ TEST(FrictionLimits, MuZeroGivesNoTangentialForceAtAll) {
   for (long k = 0; k < steps; ++k) {
     sim.step();
     ASSERT_EQ(non_finite(sim), "");
-    in_contact += sim.measure().contacts > 0;
+    in_contact += sim.residuals().contacts > 0;
     EXPECT_EQ(p.v[0].x(), v0.x()) << "step " << k;
     EXPECT_EQ(p.v[0].y(), v0.y());
     EXPECT_EQ(p.w[0], Vec3::Zero());
@@ -113,7 +113,7 @@ TEST(ContactHistory, ContactOpeningAndClosingEveryStepKeepsNoMemory) {
   const Particles& p = sim.particles();
   const double r = p.r[0];
   const double kn = stability::hertz_kn(f.scene.materials[0], r);
-  ASSERT_EQ(sim.measure().contacts, 0u) << "the sphere starts at zero overlap";
+  ASSERT_EQ(sim.residuals().contacts, 0u) << "the sphere starts at zero overlap";
   const long steps = sim.steps_for(*f.run.duration);
   ASSERT_GE(steps, 1000);
   Vec3 first_spring = Vec3::Zero();
@@ -134,7 +134,7 @@ TEST(ContactHistory, ContactOpeningAndClosingEveryStepKeepsNoMemory) {
     if (k % 2 == 0) {  // closed
       ++closed;
       ASSERT_GT(h, 0.0);
-      ASSERT_EQ(sim.measure().contacts, 1u);
+      ASSERT_EQ(sim.residuals().contacts, 1u);
       const double Fn_elastic = kn * h * std::sqrt(h);
       const double Fn = -load.force.dot(normal);  // on the sphere, along the normal
       const double Ft = (load.force + Fn * normal).norm();
@@ -151,7 +151,7 @@ TEST(ContactHistory, ContactOpeningAndClosingEveryStepKeepsNoMemory) {
       }
     } else {  // open
       EXPECT_EQ(h, 0.0) << "the plane is back at its start";
-      EXPECT_EQ(sim.measure().contacts, 0u);
+      EXPECT_EQ(sim.residuals().contacts, 0u);
       EXPECT_EQ(load.force, Vec3::Zero()) << "step " << k;
       EXPECT_EQ(load.torque, Vec3::Zero());
       EXPECT_TRUE(s.plane_springs[0].empty()) << "the spring is cleared when the contact opens";

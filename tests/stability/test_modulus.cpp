@@ -49,12 +49,12 @@ TEST(Modulus, ImpactFollowsHertzFrom5e5To5e10Pa) {
     for (long k = 0; k < steps; ++k) {
       sim.step();
       ASSERT_EQ(non_finite(sim), "");
-      if (sim.measure().contacts > 0) {
+      if (sim.residuals().contacts > 0) {
         ++in_contact;
         EXPECT_GT(p.F[1].dot((p.x[1] - p.x[0]).normalized()), 0.0) << "repulsive";
       }
     }
-    ASSERT_EQ(sim.measure().contacts, 0u) << "the impact must be over";
+    ASSERT_EQ(sim.residuals().contacts, 0u) << "the impact must be over";
     const double restitution = (p.v[1] - p.v[0]).dot(n) / u;
     const double drift = std::abs(mechanical_energy(sim) - E0) / E0;
     // Steps in contact count whole steps: the duration is known to one step.
@@ -94,9 +94,9 @@ TEST(Modulus, CompressedClusterRelaxesTheSameFrom5e5To5e10Pa) {
     def.max_time *= scale;
     Simulation sim(f.scene);
     ASSERT_EQ(non_finite(sim), "");
-    const double F_scale = sim.measure().mean_contact_force;
+    const double F_scale = sim.residuals().mean_contact_force;
     const RelaxationReport rep = relax(sim, def, [&](const RelaxationCheck&) { ASSERT_EQ(non_finite(sim), ""); });
-    const Measurement m = sim.measure();
+    const Measurement m = sim.residuals();
     measured(decade(E) + ": relaxation steps", static_cast<double>(rep.steps));
     measured(decade(E) + ": force ratio", m.force_ratio());
     ASSERT_TRUE(rep.converged && *rep.converged) << "force ratio " << m.force_ratio() << ", energy ratio " << m.energy_ratio();

@@ -60,13 +60,13 @@ Release release(double fraction, double safety) {
     const std::string bad = non_finite(sim);
     EXPECT_EQ(bad, "");
     if (!bad.empty()) return out;
-    if (sim.measure().contacts > 0) {
+    if (sim.residuals().contacts > 0) {
       ++out.in_contact;
       EXPECT_GT(p.F[1].dot((p.x[1] - p.x[0]).normalized()), 0.0) << "repulsive, step " << k;
     }
     out.worst = std::max(out.worst, std::abs(mechanical_energy(sim) - E0) / E0);
   }
-  EXPECT_EQ(sim.measure().contacts, 0u) << "the spheres must have separated";
+  EXPECT_EQ(sim.residuals().contacts, 0u) << "the spheres must have separated";
   const double m12 = reduced(p.m[0], p.m[1]);
   const double u = (p.v[1] - p.v[0]).dot(n);
   out.speed_error = u / std::sqrt(2.0 * E0 / m12) - 1.0;
@@ -135,7 +135,7 @@ Impact impact(const SceneFile& f) {
     }
     out.worst_drift = std::max(out.worst_drift, std::abs(mechanical_energy(sim) - E0) / E0);
   }
-  EXPECT_EQ(sim.measure().contacts, 0u) << "the impact must be over";
+  EXPECT_EQ(sim.residuals().contacts, 0u) << "the impact must be over";
   out.restitution = (p.v[1] - p.v[0]).dot(n) / u;
   out.drift = std::abs(mechanical_energy(sim) - E0) / E0;
   return out;

@@ -85,7 +85,7 @@ TEST_P(TinySphere, WedgedBetweenTwoLargeOnesRelaxesToATwoForceBalance) {
   ASSERT_FALSE(sim.drivers_moving()) << "the squeeze must be over";
   const RelaxationReport rep = relax(sim, *f.run.relaxation, [&](const RelaxationCheck&) { ASSERT_EQ(non_finite(sim), ""); });
   ASSERT_TRUE(rep.converged && *rep.converged) << "force ratio " << rep.checks.back().residuals.force_ratio();
-  EXPECT_EQ(sim.measure().contacts, 2u) << "the small sphere must stay wedged";
+  EXPECT_EQ(sim.residuals().contacts, 2u) << "the small sphere must stay wedged";
   ASSERT_GT((sim.particles().x[1] - sim.particles().x[0]).norm(), 2 * sim.particles().r[0])
       << "the large spheres must not touch each other";
   const double creep = (sim.particles().x[2] - x0).norm() / r;
@@ -100,7 +100,7 @@ TEST_P(TinySphere, WedgedBetweenTwoLargeOnesRelaxesToATwoForceBalance) {
     worst_ratio_error = std::max(worst_ratio_error, std::abs(c.Ft / c.Fn - c.tan_tilt));
   }
   measured("steps", static_cast<double>(sim.step_count()));
-  measured("final force ratio", sim.measure().force_ratio());
+  measured("final force ratio", sim.residuals().force_ratio());
   measured("displacement of the small sphere / r", creep);
   measured("|F_y| / |F| of the contact forces", worst_balance);
   measured("| |Ft|/Fn - tan(theta) |", worst_ratio_error);
@@ -132,14 +132,14 @@ TEST_P(TinySphere, ExpelledFromBetweenTwoLargeOnesLeavesFinitelyWithinTheWorkDon
     work -= 0.5 * (F0 + p.F[0]).dot(p.x[0] - x0) + 0.5 * (F1 + p.F[1]).dot(p.x[1] - x1);
     const double E = stability::mechanical_energy(sim);
     if (work > 0.0) largest_share = std::max(largest_share, E / work);
-    if (sim.measure().contacts > 0) {
+    if (sim.residuals().contacts > 0) {
       const SmallContact c = small_contact(sim, 0);
       EXPECT_GT(c.Fn, 0.0) << "repulsive, step " << k;
       largest_ratio = std::max(largest_ratio, c.Ft / c.Fn);
     }
   }
   const Vec3 v = sim.particles().v[2];
-  EXPECT_EQ(sim.measure().contacts, 0u) << "the small sphere must have left";
+  EXPECT_EQ(sim.residuals().contacts, 0u) << "the small sphere must have left";
   EXPECT_GT(v.y(), 0.0) << "expelled along +y";
   measured("driver work / (m v^2 / 2) of the small sphere", work / (0.5 * sim.particles().m[2] * v.squaredNorm()));
   measured("largest E / W", largest_share);
@@ -195,7 +195,7 @@ void load_and_relax_packing(double Pi) {
   for (long k = 0; k < 10 && sim.drivers_moving(); ++k) sim.step();
   ASSERT_FALSE(sim.drivers_moving()) << "the wall must have reached its depth";
   const RelaxationReport rep = relax(sim, *f.run.relaxation, [&](const RelaxationCheck&) { ASSERT_EQ(non_finite(sim), ""); });
-  const Measurement m = sim.measure();
+  const Measurement m = sim.residuals();
   const auto& def = std::get<ConvergedRelaxationDef>(*f.run.relaxation);
   measured("steps", static_cast<double>(sim.step_count()));
   measured("relaxation time [s]", rep.simulated_time);
