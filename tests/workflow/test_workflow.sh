@@ -4,7 +4,8 @@
 #      Figures 1-6 exist and are not empty; afterwards make -q says everything is up to date;
 #   2. an interrupted make, rerun, finishes with the same results and no leftovers;
 #   3. editing a comment or the description reruns nothing; editing a key only the tangential
-#      stage reads reruns tangential -> average -> fit -> tables/figures and nothing before;
+#      stage reads reruns tangential -> average -> fit -> tables/figures and nothing before, and
+#      make -n says so without writing anything;
 #      editing a normal key reruns normal and tangential but not the packings;
 #   4. make archive, then a fresh copy without the data: make tables figures reuses every result.
 #
@@ -77,6 +78,17 @@ mk -q DATA=data-j1 packings || fail "tangential.rate: the packings would rerun"
 mk -q DATA=data-j1 normal || fail "tangential.rate: the normal sweeps would rerun"
 mk -q DATA=data-j1 tangential && fail "tangential.rate: the tangential sweeps would not rerun"
 uptodate && fail "tangential.rate: the tables would not be remade"
+# make -n says exactly what would run and writes nothing: a dry run, then undoing the edit,
+# reruns nothing.
+stamps_before=$(stat -c '%n %Y %s' data-j1/quick/stamps/*.hash)
+mk -n DATA=data-j1 tables figures > "$work/dry.log" 2>&1 || { cat "$work/dry.log"; fail "make -n"; }
+grep -q 'softpack-tangential ' "$work/dry.log" || fail "make -n: no tangential sweep listed"
+grep -qE 'softpack-(pack|normal) ' "$work/dry.log" && fail "make -n lists packings or normal sweeps after editing tangential.rate"
+[[ $stamps_before == $(stat -c '%n %Y %s' data-j1/quick/stamps/*.hash) ]] || fail "make -n rewrote a stamp"
+cp "$work/quick.yaml.orig" "$profile"
+uptodate || fail "a dry run followed by undoing the edit: something would rerun"
+sed -i 's/^  rate: .*/  rate: 0.12/' "$profile"
+pass "make -n lists the tangential chain only and writes nothing"
 before=$(stat -c %Y data-j1/quick/normal/*.h5 data-j1/quick/packings/*.h5 | md5sum)
 mk DATA=data-j1 tables figures > "$work/change.log" 2>&1 || { cat "$work/change.log"; fail "make after editing tangential.rate"; }
 grep -q '^tangential: ' "$work/change.log" || fail "tangential.rate: no tangential sweep ran"
@@ -114,3 +126,13 @@ grep -E '^(pack|normal|tangential|average|fit): ' "$work/fresh.log" && fail "a f
 grep -q '^reused ' "$work/fresh.log" || fail "a fresh copy reused nothing from the archive"
 diff <(cd "$work/tree" && numbers data-j1) <(numbers data) > /dev/null || fail "the reused results differ from the archived run"
 pass "a fresh copy's make tables figures recomputes nothing ($(grep -c '^reused ' "$work/fresh.log") results reused)"
+
+# In that fresh copy the normal results came from the archive, which keeps no checkpoints: a
+# tangential key edited, the tangential stage computes the normal states it shears itself.
+sed -i 's/^  rate: .*/  rate: 0.12/' experiments/quick.yaml
+mk tables > "$work/fresh-rate.log" 2>&1 || { cat "$work/fresh-rate.log"; fail "make tables after editing tangential.rate in the fresh copy"; }
+grep -q '^tangential: ' "$work/fresh-rate.log" || fail "fresh copy, tangential.rate: no tangential sweep ran"
+grep -E '^(pack|normal): ' "$work/fresh-rate.log" && fail "fresh copy, tangential.rate: a packing or normal sweep ran"
+compgen -G 'data/quick/checkpoints/normal/soft-solid/seed-1/point-*.h5' > /dev/null ||
+  fail "fresh copy: the tangential stage did not compute the normal states"
+pass "with the normal results from the archive, the tangential stage computes the normal states it needs"
