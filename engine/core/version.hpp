@@ -4,9 +4,9 @@
 
 namespace softpack {
 
-/// "<release> (<git describe>)", e.g. "0.1.0 (3f2a1bc-dirty)".
+/// "<release> (<git describe>)", e.g. "0.2.0 (3f2a1bc-dirty)".
 std::string code_version();
-/// The release alone, e.g. "0.1.0" (CMakeLists.txt's project version).
+/// The release alone, e.g. "0.2.0" (CMakeLists.txt's project version).
 std::string release_version();
 
 }  // namespace softpack
