@@ -46,11 +46,10 @@ int main(int argc, char** argv) {
   app.add_flag("--parameters", parameters_only, "print the physical parameters (for LAMMPS) and exit");
   app.add_flag("--digest", digest, "also print a digest of the final state's bits (x, v, w, F, T, springs)");
   std::string isa = "best";
-  app.add_option("--isa", isa, "instruction set of the force loops: best, avx512, avx2, portable (all give the same bits)")
-      ->check(CLI::IsMember({"best", "avx512", "avx2", "portable"}));
+  app.add_option("--isa", isa, "instruction set of the force loops: best, avx512, portable (both give the same bits)")
+      ->check(CLI::IsMember({"best", "avx512", "portable"}));
   CLI11_PARSE(app, argc, argv);
 
-  if (isa == "avx2") cpu::limit_vector_isa(cpu::VectorIsa::avx2);
   if (isa == "portable") cpu::limit_vector_isa(cpu::VectorIsa::portable);
   const bench::BenchParameters p;
   const auto spheres = bench::confined_packing(n, p, packing_path);

@@ -13,9 +13,6 @@ VectorIsa detect() {
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
       __builtin_cpu_supports("avx512dq"))
     return VectorIsa::avx512;
-  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
-      __builtin_cpu_supports("bmi2"))
-    return VectorIsa::avx2;
   return VectorIsa::portable;
 }
 
@@ -35,7 +32,6 @@ void limit_vector_isa(VectorIsa isa) { limit.store(static_cast<int>(isa), std::m
 const char* name(VectorIsa isa) {
   switch (isa) {
     case VectorIsa::avx512: return "AVX-512";
-    case VectorIsa::avx2: return "AVX2";
     default: return "portable";
   }
 }

@@ -1,12 +1,11 @@
 // make_normal_law<Law>(): a normal law type (contact/hertz_normal.hpp shows the members one
 // needs) turned into the run-time record of forces/normal_law.hpp, with its force loops compiled
-// for every combination of effects (contact/effects.hpp) and three instruction sets:
+// for every combination of effects (contact/effects.hpp) and two instruction sets:
 //
 //   AVX-512 (x86-64-v4)   simd::Avx512 data movement, eight lanes in one register
-//   AVX2    (x86-64-v3)   portable data movement, eight lanes in two registers
 //   baseline              portable data movement, the release flags' x86-64-v2
 //
-// chosen at run time (core/cpu_features.hpp); all give the same bits. One step of a world is:
+// chosen at run time (core/cpu_features.hpp); both give the same bits. One step of a world is:
 // sphere pairs, then each plane, then each shell, each through forces/contact_loop.hpp.
 #pragma once
 #include <cmath>
@@ -46,12 +45,6 @@ template <class Law, Effects Fx>
 }
 
 template <class Law, Effects Fx>
-[[gnu::target("arch=x86-64-v3")]] void all_contacts_avx2(World& world, ContactLists& lists, double dt,
-                                                        std::vector<std::int32_t>& closed) {
-  all_contacts<Law, Fx>(simd::Portable{}, world, lists, dt, closed);
-}
-
-template <class Law, Effects Fx>
 void all_contacts_portable(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) {
   all_contacts<Law, Fx>(simd::Portable{}, world, lists, dt, closed);
 }
@@ -60,11 +53,8 @@ template <class Law, Effects Fx>
 class LoopsOf final : public ForceLoops {
  public:
   void run(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) const override {
-    switch (cpu::vector_isa()) {
-      case cpu::VectorIsa::avx512: return all_contacts_avx512<Law, Fx>(world, lists, dt, closed);
-      case cpu::VectorIsa::avx2: return all_contacts_avx2<Law, Fx>(world, lists, dt, closed);
-      default: return all_contacts_portable<Law, Fx>(world, lists, dt, closed);
-    }
+    if (cpu::vector_isa() == cpu::VectorIsa::avx512) return all_contacts_avx512<Law, Fx>(world, lists, dt, closed);
+    all_contacts_portable<Law, Fx>(world, lists, dt, closed);
   }
 };
 

@@ -280,18 +280,6 @@ void File::write_string(const std::string& dataset, const std::string& value) {
 }
 
 void File::set_attribute(const std::string& object_path, const std::string& name,
-                         double value) {
-  const QuietErrors quiet;
-  write_attribute(id_, path_, object_path, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
-}
-
-void File::set_attribute(const std::string& object_path, const std::string& name,
-                         std::int64_t value) {
-  const QuietErrors quiet;
-  write_attribute(id_, path_, object_path, name, H5T_STD_I64LE, H5T_NATIVE_INT64, &value);
-}
-
-void File::set_attribute(const std::string& object_path, const std::string& name,
                          const std::string& value) {
   if (value.find('\0') != std::string::npos)
     throw std::invalid_argument(fmt::format("{}: attribute '{}' of '{}': string holds a NUL",

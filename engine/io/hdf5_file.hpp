@@ -52,12 +52,10 @@ class File {
   /// A scalar variable-length UTF-8 string (h5py: ds.asstr()[()] is a str).
   void write_string(const std::string& dataset, const std::string& value);
 
-  /// Attributes of an existing group or dataset ("/" is the root); replaces an existing one.
-  void set_attribute(const std::string& object_path, const std::string& name, double value);
-  void set_attribute(const std::string& object_path, const std::string& name,
-                     std::int64_t value);
-  void set_attribute(const std::string& object_path, const std::string& name,
-                     const std::string& value);
+  /// A text attribute (a unit, a description) of an existing group or dataset ("/" is the
+  /// root); replaces an existing one. The engine writes attributes for people and other readers
+  /// (h5py, h5dump) and never reads them back.
+  void set_attribute(const std::string& object_path, const std::string& name, const std::string& value);
 
   // Reading. Without `dims` the dataset must be 1-D; with it any rank >= 1 is read row-major
   // and its shape returned. Floating-point data of any width reads as double; signed integers
@@ -73,12 +71,6 @@ class File {
 
   /// True when `path` names a group or dataset ("" and "/" name the root).
   bool exists(const std::string& path) const;
-  bool has_attribute(const std::string& object_path, const std::string& name) const;
-  std::string get_attribute_string(const std::string& object_path,
-                                   const std::string& name) const;
-  double get_attribute_double(const std::string& object_path, const std::string& name) const;
-  std::int64_t get_attribute_int64(const std::string& object_path,
-                                   const std::string& name) const;
 
  private:
   File(std::int64_t id, std::string path) : id_(id), path_(std::move(path)) {}

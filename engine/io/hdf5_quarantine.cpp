@@ -15,8 +15,7 @@
 //    There is no API that reads the heap object with a checked size (H5Dvlen_get_buf_size goes
 //    through the same H5T__conv_vlen and H5HG_read), so the layer decodes the element (length,
 //    collection address, index) and the collection itself, checked against the file.
-//    Attributes are not covered (H5Aread, no raw access to their elements): no reader of the
-//    engine reads attributes; File::get_attribute_string does, through the library.
+//    Attributes need no such reader: the engine writes them (units) and never reads them.
 //
 // 2. A file in which libhdf5 would decode metadata that has no checksum is first walked by the
 //    library in a child process (every object, its attributes and the data the readers would
@@ -37,8 +36,7 @@
 //    walking only files whose metadata lacks checksums, as softpack's own 1.8-format files do
 //    not, cut an open from 2.2-2.7 ms to 0.05-0.09 ms, at the price of checking object header
 //    signatures, external file lists and chunk indexes before the library decodes them: ~90 more
-//    lines for a cost no run notices, a few hundred opens per sweep.) Not covered: the global
-//    heap of attributes (see 1).
+//    lines for a cost no run notices, a few hundred opens per sweep.)
 //
 // When to delete: build with -DCMAKE_CXX_FLAGS=-DSOFTPACK_HDF5_TRUST_LIBRARY (both workarounds
 // off) and replay the regressions (ctest -L fuzz-regression, also in the sanitizer build). With

@@ -1,5 +1,5 @@
 // Reading HDF5 files that came from outside this process (io/hdf5_file.hpp): every failure is an
-// InputError naming the file and the dataset or attribute, with the reason of HDF5's error stack,
+// InputError naming the file and the dataset, with the reason of HDF5's error stack,
 // and every size read from the file is checked before it is used:
 //   - a dataset cannot hold more values than the file has bytes (times the deflate ratio when it
 //     is chunked), so a corrupt extent cannot make the reader allocate terabytes;
@@ -94,23 +94,19 @@ bool standard_layout(hid_t t) {
 
 namespace {
 
-bool is_attribute(hid_t obj) { return H5Iget_type(obj) == H5I_ATTR; }
-
 // A type or dataspace the library cannot decode is a corrupt file.
 Handle type_of(hid_t obj, const std::string& what) {
-  Handle t(is_attribute(obj) ? H5Aget_type(obj) : H5Dget_type(obj), H5Tclose);
+  Handle t(H5Dget_type(obj), H5Tclose);
   if (!t) throw InputError(fmt::format("{}: unreadable type ({}): corrupt file", what, hdf5_reason()));
   return t;
 }
 Handle space_of(hid_t obj, const std::string& what) {
-  Handle s(is_attribute(obj) ? H5Aget_space(obj) : H5Dget_space(obj), H5Sclose);
+  Handle s(H5Dget_space(obj), H5Sclose);
   if (!s) throw InputError(fmt::format("{}: unreadable dataspace ({}): corrupt file", what, hdf5_reason()));
   return s;
 }
 void read_raw(hid_t obj, hid_t mem_type, void* buf, const std::string& what) {
-  const herr_t status = is_attribute(obj) ? H5Aread(obj, mem_type, buf)
-                                          : H5Dread(obj, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf);
-  if (status < 0) throw InputError(fmt::format("{}: cannot read ({})", what, hdf5_reason()));
+  if (H5Dread(obj, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0) throw InputError(fmt::format("{}: cannot read ({})", what, hdf5_reason()));
 }
 
 // The size of the file that holds `obj`, in bytes.
@@ -190,17 +186,14 @@ std::size_t checked_count(hid_t obj, const std::vector<std::size_t>& shape, cons
   if (count == 0) return 0;
   const std::uint64_t value_bytes = std::max<std::size_t>(1, H5Tget_size(type_of(obj, what).get()));
   const std::uint64_t file_bytes = file_size_of(obj, what);
-  bool chunked = false;
-  if (!is_attribute(obj)) {
-    // Data in this file only: external raw files and virtual datasets name other files.
-    const Handle dcpl(H5Dget_create_plist(obj), H5Pclose);
-    const H5D_layout_t layout = dcpl ? H5Pget_layout(dcpl.get()) : H5D_LAYOUT_ERROR;
-    if (layout != H5D_COMPACT && layout != H5D_CONTIGUOUS && layout != H5D_CHUNKED)
-      throw InputError(fmt::format("{}: a dataset of another storage layout (virtual?) is not supported", what));
-    if (H5Pget_external_count(dcpl.get()) != 0)
-      throw InputError(fmt::format("{}: its data is stored in external files; not supported", what));
-    chunked = layout == H5D_CHUNKED;
-  }
+  // Data in this file only: external raw files and virtual datasets name other files.
+  const Handle dcpl(H5Dget_create_plist(obj), H5Pclose);
+  const H5D_layout_t layout = dcpl ? H5Pget_layout(dcpl.get()) : H5D_LAYOUT_ERROR;
+  if (layout != H5D_COMPACT && layout != H5D_CONTIGUOUS && layout != H5D_CHUNKED)
+    throw InputError(fmt::format("{}: a dataset of another storage layout (virtual?) is not supported", what));
+  if (H5Pget_external_count(dcpl.get()) != 0)
+    throw InputError(fmt::format("{}: its data is stored in external files; not supported", what));
+  const bool chunked = layout == H5D_CHUNKED;
   const std::uint64_t limit =
       chunked ? std::min(file_bytes, std::numeric_limits<std::uint64_t>::max() / kMaxExpansion) * kMaxExpansion
               : file_bytes;
@@ -267,7 +260,7 @@ std::string read_string_from(hid_t obj, const std::string& what) {
     throw InputError(fmt::format("{}: expected a scalar string, found {}", what, shape_text(shape)));
   const Handle file_type = type_of(obj, what);
   std::string s;
-  if (H5Tis_variable_str(file_type.get()) > 0 && !is_attribute(obj) && detail::kQuarantine) {
+  if (H5Tis_variable_str(file_type.get()) > 0 && detail::kQuarantine) {
     s = detail::read_vlen_string_dataset(obj, what);  // not H5Dread: see io/hdf5_quarantine.cpp
   } else if (H5Tis_variable_str(file_type.get()) > 0) {
     const Handle mem_type = detail::must(Handle(H5Tcopy(file_type.get()), H5Tclose), "H5Tcopy");
@@ -296,25 +289,12 @@ std::string read_string_from(hid_t obj, const std::string& what) {
 std::string dataset_what(const std::string& file, const std::string& name) {
   return fmt::format("{}: dataset '{}'", file, name);
 }
-std::string attribute_what(const std::string& file, const std::string& obj, const std::string& name) {
-  return fmt::format("{}: attribute '{}' of '{}'", file, name, obj);
-}
 
 Handle open_dataset(hid_t file, const std::string& file_path, const std::string& name) {
   if (!detail::exists_in(file, file_path, name)) throw InputError(fmt::format("{}: no dataset '{}'", file_path, name));
   Handle ds(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (!ds) throw InputError(fmt::format("{}: '{}' is not a dataset", file_path, name));
   return ds;
-}
-
-Handle open_attribute(hid_t file, const std::string& file_path, const std::string& obj, const std::string& name) {
-  if (!detail::exists_in(file, file_path, obj))
-    throw InputError(fmt::format("{}: no object '{}' (looking for its attribute '{}')", file_path, obj, name));
-  if (H5Aexists_by_name(file, obj.c_str(), name.c_str(), H5P_DEFAULT) <= 0)
-    throw InputError(fmt::format("{}: '{}' has no attribute '{}'", file_path, obj, name));
-  Handle a(H5Aopen_by_name(file, obj.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  if (!a) throw InputError(fmt::format("{}: cannot open ({})", attribute_what(file_path, obj, name), hdf5_reason()));
-  return a;
 }
 
 }  // namespace
@@ -351,30 +331,6 @@ std::string File::read_string(const std::string& dataset) const {
 bool File::exists(const std::string& path) const {
   const QuietErrors quiet;
   return detail::exists_in(id_, path_, path);
-}
-
-bool File::has_attribute(const std::string& object_path, const std::string& name) const {
-  const QuietErrors quiet;
-  return detail::exists_in(id_, path_, object_path) &&
-         H5Aexists_by_name(id_, object_path.c_str(), name.c_str(), H5P_DEFAULT) > 0;
-}
-
-std::string File::get_attribute_string(const std::string& object_path, const std::string& name) const {
-  const QuietErrors quiet;
-  return read_string_from(open_attribute(id_, path_, object_path, name).get(),
-                          attribute_what(path_, object_path, name));
-}
-
-double File::get_attribute_double(const std::string& object_path, const std::string& name) const {
-  const QuietErrors quiet;
-  return read_scalar<double>(open_attribute(id_, path_, object_path, name).get(), H5T_NATIVE_DOUBLE, Kind::real,
-                             attribute_what(path_, object_path, name));
-}
-
-std::int64_t File::get_attribute_int64(const std::string& object_path, const std::string& name) const {
-  const QuietErrors quiet;
-  return read_scalar<std::int64_t>(open_attribute(id_, path_, object_path, name).get(), H5T_NATIVE_INT64,
-                                   Kind::integer, attribute_what(path_, object_path, name));
 }
 
 }  // namespace softpack::h5

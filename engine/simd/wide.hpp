@@ -5,7 +5,7 @@
 // same source reads the same for both.
 //
 // Wide is a GCC/Clang vector of eight doubles: a loop compiled for AVX-512 holds it in one
-// register, for AVX2 in two, for SSE2 in four. Every operation is an IEEE operation of its own
+// register, for SSE2 in four. Every operation is an IEEE operation of its own
 // lane, so a lane gets the bits the same expression gives on one double (the project compiles
 // with -ffp-contract=off: no fused multiply-adds). Data movement that depends on the
 // instruction set (gathers, compressed stores) lives in simd/isa.hpp.

@@ -92,8 +92,7 @@ void write_sample(h5::File& f, double scale) {
   f.write_string("provenance", fmt::format("softpack test, scale {}", scale));
   f.set_attribute("/", "code_version", std::string("0.1.0 (test)"));
   f.set_attribute("particles/centres", "unit", std::string("m"));
-  f.set_attribute("stats", "seed", std::int64_t{7});
-  f.set_attribute("stats/phi", "tolerance", 1e-9);
+  f.set_attribute("stats", "seed", std::string("7"));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -120,10 +119,8 @@ TEST_F(H5RoundTrip, EveryType) {
     f.write_scalar("s/i", std::int64_t{-123456789012345});
     f.write_string("s/text", text);
     f.write_string("s/empty_text", "");
-    f.set_attribute("/", "who", std::string("softpack"));
-    f.set_attribute("s", "dt", 1e-7);
-    f.set_attribute("reals", "n", std::int64_t{7});
-    f.set_attribute("reals", "n", std::int64_t{8});  // replaced
+    f.set_attribute("reals", "unit", std::string("m"));
+    f.set_attribute("reals", "unit", std::string("N"));  // replaced: an attribute is set, not added twice
     f.close();
   }
   const h5::File f = h5::File::open(path("a.h5"));
@@ -138,12 +135,6 @@ TEST_F(H5RoundTrip, EveryType) {
   EXPECT_EQ(f.read_scalar_int64("/s/i"), -123456789012345);
   EXPECT_EQ(f.read_string("s/text"), text);
   EXPECT_EQ(f.read_string("s/empty_text"), "");
-  EXPECT_EQ(f.get_attribute_string("/", "who"), "softpack");
-  EXPECT_EQ(f.get_attribute_double("s", "dt"), 1e-7);
-  EXPECT_EQ(f.get_attribute_int64("reals", "n"), 8);
-  EXPECT_TRUE(f.has_attribute("reals", "n"));
-  EXPECT_FALSE(f.has_attribute("reals", "m"));
-  EXPECT_FALSE(f.has_attribute("nowhere", "n"));
   EXPECT_TRUE(f.exists("/"));
   EXPECT_TRUE(f.exists("s"));
   EXPECT_TRUE(f.exists("/s/text"));
@@ -175,7 +166,6 @@ TEST_F(H5RoundTrip, DimsAndGroups) {
   EXPECT_EQ(f.read_doubles("stats/radial_profile/r", &dims).size(), 3u);
   EXPECT_EQ(dims, std::vector<std::size_t>{3});
   EXPECT_EQ(f.read_int64s("particles/ids"), (std::vector<std::int64_t>{3, 1, 4, 1}));
-  EXPECT_EQ(f.get_attribute_int64("stats", "seed"), 7);
 }
 
 // A path of more than 1024 characters: no fixed-size buffer for names (the variable-length
@@ -192,7 +182,6 @@ TEST_F(H5RoundTrip, LongPath) {
   }
   const h5::File f = h5::File::open(p);
   EXPECT_EQ(f.read_string("provenance"), "softpack test, scale 1");
-  EXPECT_EQ(f.get_attribute_string("/", "code_version"), "0.1.0 (test)");
   EXPECT_EQ(input_error([&] { f.read_doubles("nope"); }), p + ": no dataset 'nope'");
 }
 
@@ -253,10 +242,6 @@ TEST_F(H5Errors, DatasetsThatAreMissingOrOfTheWrongKind) {
   expect([&] { f.read_scalar_double("stats/radial_profile/r"); },
          "expected a scalar, found shape (3)");
   expect([&] { f.read_string("stats/phi"); }, "expected a string, found 64-bit floating-point");
-  expect([&] { f.get_attribute_double("stats", "nope"); }, "'stats' has no attribute 'nope'");
-  expect([&] { f.get_attribute_string("nope", "x"); }, "no object 'nope'");
-  expect([&] { f.get_attribute_double("particles/centres", "unit"); },
-         "attribute 'unit' of 'particles/centres': expected floating-point numbers");
 }
 
 TEST_F(H5Errors, CannotCreate) {
@@ -358,7 +343,8 @@ TEST_F(H5Atomic, ReadableByH5py) {
       "      and f['stats/n_contacts'][()] == 42\n"
       "      and f['provenance'].asstr()[()] == 'softpack test, scale 1'\n"
       "      and f.attrs['code_version'] == '0.1.0 (test)'\n"
-      "      and f['particles/centres'].attrs['unit'] == 'm')\n"
+      "      and f['particles/centres'].attrs['unit'] == 'm'\n"
+      "      and f['stats'].attrs['seed'] == '7')\n"
       "sys.exit(0 if ok else 1)\n",
       p);
   spit(path("check.py"), script);
