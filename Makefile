@@ -67,8 +67,9 @@ scenes: | build-tools  ## run the example scenes of experiments/scenes/ (data/sc
 test: build  ## build and run the test suite (ctest)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# -g1: line tables for the reports' stacks; full debug info tripled the compile time of the force loops.
 test-sanitize:  ## the test suite under AddressSanitizer + UndefinedBehaviorSanitizer
-	cmake -S . -B $(BUILD_SANITIZE) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+	cmake -S . -B $(BUILD_SANITIZE) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
 	  -DSOFTPACK_SANITIZE=ON -DSOFTPACK_BENCH=OFF \
 	  $(if $(filter true,$(CI)),-DSOFTPACK_WERROR=ON)
 	cmake --build $(BUILD_SANITIZE) -j $(JOBS)

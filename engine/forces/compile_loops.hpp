@@ -39,7 +39,7 @@ template <class Law, Effects Fx, class Isa>
 }
 
 template <class Law, Effects Fx>
-[[gnu::target("arch=x86-64-v4"), gnu::flatten]] void all_contacts_avx512(World& world, ContactLists& lists, double dt,
+[[gnu::target("arch=x86-64-v4")]] void all_contacts_avx512(World& world, ContactLists& lists, double dt,
                                                           std::vector<std::int32_t>& closed) {
   all_contacts<Law, Fx>(simd::Avx512{}, world, lists, dt, closed);
 }
