@@ -95,7 +95,8 @@ include workflow/analysis.mk
 include workflow/archive.mk
 include workflow/paper.mk
 else ifneq ($(SOFTPACK_TOOLS_BUILT),)
-$(error $(CONFIG_TOOL) is missing after the build (see $(BUILD)/build.log))
+$(error $(CONFIG_TOOL) is missing: $(if $(findstring n,$(firstword -$(MAKEFLAGS))),make -n needs the tools: run make build first,\
+  the build did not make it (see $(BUILD)/build.log)))
 else
 .PHONY: $(PIPELINE_GOALS)
 $(PIPELINE_GOALS): | build-tools
