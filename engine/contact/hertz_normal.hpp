@@ -24,7 +24,6 @@ namespace softpack {
 
 struct HertzNormal {
   static constexpr const char* name = "hertz";
-  static constexpr const char* equation = "Fn = sqrt(R12) h^(3/2) / D (paper Eq. 3)";
 
   /// kn = sqrt(R12) / D, so that Fn = kn h^(3/2).
   static double stiffness(double R12, double D) { return std::sqrt(R12) / D; }

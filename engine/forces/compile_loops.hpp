@@ -64,7 +64,6 @@ template <class Law>
 NormalLaw make_normal_law() {
   NormalLaw n;
   n.name = Law::name;
-  n.equation = Law::equation;
   n.stiffness = [](double R12, double D) { return Law::stiffness(R12, D); };
   n.force = [](double kn, double h) { return Law::force(kn, h, std::sqrt(h)); };
   n.energy = [](double kn, double h) { return Law::energy(kn, h); };

@@ -5,7 +5,7 @@
 //   law      contact_force() of contact/contact_law.hpp
 //   add      forces and torques to the spheres (and the wall's load), in list order
 //
-// A kind of contact (forces/pair_contacts.hpp, plane_contacts.hpp, shell_contacts.hpp) supplies
+// A kind of contact (forces/pair_contacts.hpp; planes and shells: forces/wall_contacts.hpp) supplies
 // select(), gather() and add(); `Isa` is the data-movement back end of simd/isa.hpp. The sums
 // are made one contact after the other in list order, so the result bits do not depend on the
 // lane count or the instruction set.

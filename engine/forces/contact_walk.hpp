@@ -22,7 +22,6 @@ struct ClosedContact {
   double normal_energy(const NormalLaw& law) const { return law.energy(kn, h); }
   /// The spring's elastic energy, 1/2 kt |xi|^2 [J] (0 without friction).
   double spring_energy() const { return spring ? tsuji::energy(kt0 * std::sqrt(h), v3(*spring)) : 0.0; }
-
 };
 
 /// Calls f(const ClosedContact&) for every contact with h > 0.

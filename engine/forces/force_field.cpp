@@ -24,45 +24,36 @@ ForceField::ForceField(const SceneDef& scene) {
       Dt_[a * materials_ + b] = tsuji_Dt(scene.materials[a], scene.materials[b]);
       mu_[a * materials_ + b] = contact_mu(scene.materials[a], scene.materials[b]);
     }
-  for (const PlaneDef& p : scene.planes) plane_material_.push_back(p.material);
-  for (const ShellDef& s : scene.shells) {
-    shell_material_.push_back(s.material);
-    shell_contact_radius_.push_back(s.contact_radius);
-    shell_radius_.push_back(s.radius);
-  }
 }
 
 void ForceField::add_contact_forces(World& world, ContactLists& lists, double spring_dt) {
   if (loops_) loops_->run(world, lists, spring_dt, closed_);
 }
 
-ContactConstants<double> ForceField::pair_constants(const Particles& p, int i, int j) const {
-  const std::size_t mm = static_cast<std::size_t>(p.material[i]) * materials_ + p.material[j];
-  const double R12 = hertz::reduced_radius(p.r[i], p.r[j]);
+// The constants of a contact of materials `mm` with reduced radius R12, reduced mass m12 (a
+// sphere's mass against a wall, which has infinite mass) and the inverse mass of the
+// sliding-rolling mode, 1/mt = sum over the spheres of 1/m + r^2/I (1/m without rotation).
+ContactConstants<double> ForceField::constants(std::size_t mm, double R12, double m12, double inv_mt) const {
   ContactConstants<double> k{};
   k.kn = law_->stiffness(R12, D_[mm]);
   k.kt0 = tsuji::stiffness_factor(R12, Dt_[mm]);
   k.mu = mu_[mm];
-  const double m12 = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
   k.gamma0 = damping::gamma_factor(zeta_, m12, k.kn);
-  // Inertia of the sliding-rolling mode: 1/mt = 1/mi + ri^2/Ii + 1/mj + rj^2/Ij.
-  double inv_mt = p.inv_m[i] + p.inv_m[j];
-  if (p.rotates()) inv_mt += p.r[i] * p.r[i] * p.inv_I[i] + p.r[j] * p.r[j] * p.inv_I[j];
   k.gamma_t0 = tangential_ratio_ * damping::gamma_factor(zeta_, 1.0 / inv_mt, k.kt0);
   return k;
 }
 
+ContactConstants<double> ForceField::pair_constants(const Particles& p, int i, int j) const {
+  double inv_mt = p.inv_m[i] + p.inv_m[j];
+  if (p.rotates()) inv_mt += p.r[i] * p.r[i] * p.inv_I[i] + p.r[j] * p.r[j] * p.inv_I[j];
+  return constants(static_cast<std::size_t>(p.material[i]) * materials_ + p.material[j], hertz::reduced_radius(p.r[i], p.r[j]),
+                   p.m[i] * p.m[j] / (p.m[i] + p.m[j]), inv_mt);
+}
+
 ContactConstants<double> ForceField::wall_constants(const Particles& p, int i, int wall_material, double R12) const {
-  const std::size_t mm = static_cast<std::size_t>(p.material[i]) * materials_ + wall_material;
-  ContactConstants<double> k{};
-  k.kn = law_->stiffness(R12, D_[mm]);
-  k.kt0 = tsuji::stiffness_factor(R12, Dt_[mm]);
-  k.mu = mu_[mm];
-  k.gamma0 = damping::gamma_factor(zeta_, p.m[i], k.kn);  // a wall has infinite mass
   double inv_mt = p.inv_m[i];
   if (p.rotates()) inv_mt += p.r[i] * p.r[i] * p.inv_I[i];
-  k.gamma_t0 = tangential_ratio_ * damping::gamma_factor(zeta_, 1.0 / inv_mt, k.kt0);
-  return k;
+  return constants(static_cast<std::size_t>(p.material[i]) * materials_ + wall_material, R12, p.m[i], inv_mt);
 }
 
 void ForceField::set_constants(const World& world, ContactLists& lists, const NewContacts& added) const {
@@ -70,16 +61,16 @@ void ForceField::set_constants(const World& world, ContactLists& lists, const Ne
   for (std::size_t k : added.pairs) lists.pairs.k.set(k, pair_constants(p, lists.pairs.i[k], lists.pairs.j[k]));
   for (std::size_t w = 0; w < added.planes.size(); ++w) {
     WallList& l = lists.planes[w];
-    for (std::size_t k : added.planes[w]) l.k.set(k, wall_constants(p, l.i[k], plane_material_[w], p.r[l.i[k]]));
+    for (std::size_t k : added.planes[w]) l.k.set(k, wall_constants(p, l.i[k], world.planes[w].material, p.r[l.i[k]]));
   }
   for (std::size_t w = 0; w < added.shells.size(); ++w) {
     WallList& l = lists.shells[w];
     for (std::size_t k : added.shells[w]) {
       const int i = l.i[k];
-      const double R12 = shell_contact_radius_[w] == ShellContactRadius::concave
-                             ? hertz::reduced_radius_concave(p.r[i], shell_radius_[w])
-                             : p.r[i];
-      l.k.set(k, wall_constants(p, i, shell_material_[w], R12));
+      const SphericalShell& shell = world.shells[w];
+      const double R12 =
+          shell.contact_radius == ShellContactRadius::concave ? hertz::reduced_radius_concave(p.r[i], shell.radius) : p.r[i];
+      l.k.set(k, wall_constants(p, i, shell.material, R12));
     }
   }
 }

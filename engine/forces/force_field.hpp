@@ -26,8 +26,6 @@ class ForceField {
   bool active() const { return law_ != nullptr; }
   const NormalLaw& law() const { return *law_; }
   const Effects& effects() const { return fx_; }
-  /// Damping coefficient zeta(e) of the normal law (0 without damping).
-  double zeta() const { return zeta_; }
 
   /// Adds the force (and torque) of every touching contact to the spheres and the wall loads,
   /// advances the springs of touching contacts by `spring_dt` and clears those of open ones.
@@ -40,15 +38,14 @@ class ForceField {
   ContactConstants<double> wall_constants(const Particles& p, int i, int wall_material, double R12) const;
 
  private:
+  ContactConstants<double> constants(std::size_t mm, double R12, double m12, double inv_mt) const;
+
   const NormalLaw* law_ = nullptr;
   Effects fx_;
   std::unique_ptr<ForceLoops> loops_;
   double zeta_ = 0.0, tangential_ratio_ = 1.0;
   std::size_t materials_ = 0;
   std::vector<double> D_, Dt_, mu_;  ///< material pair constants, index a * materials + b
-  std::vector<int> plane_material_, shell_material_;
-  std::vector<ShellContactRadius> shell_contact_radius_;
-  std::vector<double> shell_radius_;
   std::vector<std::int32_t> closed_;  ///< scratch of the loops
 };
 

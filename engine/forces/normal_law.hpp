@@ -27,8 +27,7 @@ class ForceLoops {
 };
 
 struct NormalLaw {
-  std::string name;      ///< the value of effects.normal
-  std::string equation;  ///< for messages and provenance
+  std::string name;  ///< the value of effects.normal
   double (*stiffness)(double R12, double D) = nullptr;  ///< the per-contact constant kn
   double (*force)(double kn, double h) = nullptr;       ///< Fn [N]
   double (*energy)(double kn, double h) = nullptr;      ///< elastic energy [J]
@@ -39,7 +38,6 @@ struct NormalLaw {
 /// The registered law of that name. InputError "effects.normal: ..." with the registered names
 /// (and the closest one) otherwise.
 const NormalLaw& normal_law(const std::string& name);
-std::vector<std::string> normal_law_names();
 /// Registers a law; std::invalid_argument when the name is taken.
 void add_normal_law(NormalLaw law);
 

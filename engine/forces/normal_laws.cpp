@@ -43,14 +43,6 @@ const NormalLaw& normal_law(const std::string& name) {
                                close.empty() ? "" : fmt::format(" (did you mean '{}'?)", close), fmt::join(names, ", ")));
 }
 
-std::vector<std::string> normal_law_names() {
-  Registry& r = registry();
-  const std::lock_guard lock(r.mutex);
-  std::vector<std::string> names;
-  for (const NormalLaw& law : r.laws) names.push_back(law.name);
-  return names;
-}
-
 void add_normal_law(NormalLaw law) {
   Registry& r = registry();
   const std::lock_guard lock(r.mutex);

@@ -23,7 +23,7 @@ bool Neighbours::need_rebuild(const World& world) const {
   for (std::size_t k = 0; k < world.shells.size(); ++k)
     wall_disp = std::max(wall_disp, (world.shells[k].centre - shell_at_build_[k]).norm());
   const double disp = std::sqrt(moved_.first);
-  return rebuild_requested_ || disp + std::sqrt(moved_.second) >= skin_ || disp + wall_disp >= skin_;
+  return disp + std::sqrt(moved_.second) >= skin_ || disp + wall_disp >= skin_;
 }
 
 NewContacts Neighbours::rebuild(const World& world) {
@@ -69,7 +69,6 @@ NewContacts Neighbours::rebuild(const World& world) {
   shell_at_build_.clear();
   for (const auto& s : world.shells) shell_at_build_.push_back(s.centre);
   moved_ = {};
-  rebuild_requested_ = false;
   ++rebuilds_;
   return added;
 }

@@ -49,7 +49,7 @@ class Neighbours {
   LargestTwo& moved() { return moved_; }
   void set_moved(const LargestTwo& m) { moved_ = m; }
 
-  /// Whether the skin is used up (or a rebuild was requested).
+  /// Whether the skin is used up (after the first rebuild, which the simulation makes at once).
   bool need_rebuild(const World& world) const;
   /// Rebuilds the lists at the world's positions; surviving entries keep their constants and
   /// springs. std::invalid_argument from the grid when positions are unusable.
@@ -64,7 +64,6 @@ class Neighbours {
   ContactLists lists_;
   std::vector<Vec3> x_at_build_, plane_at_build_, shell_at_build_;
   LargestTwo moved_;
-  bool rebuild_requested_ = true;
   long rebuilds_ = 0;
   std::vector<std::pair<int, int>> found_;  ///< scratch: pairs found
   std::vector<std::size_t> first_;          ///< scratch: counting sort

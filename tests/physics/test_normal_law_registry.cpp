@@ -24,7 +24,6 @@ namespace {
 
 struct LinearTestNormal {
   static constexpr const char* name = "linear-test";
-  static constexpr const char* equation = "Fn = kn h, kn = R12 / D (a test law)";
   static double stiffness(double R12, double D) { return R12 / D; }  // [N/m]
   template <class T>
   static T force(const T& kn, const T& h, const T&) {

@@ -1,0 +1,71 @@
+// Results are versioned, not frozen: these digests are the bits of three runs, recorded with the
+// engine of release 0.1.0 (be4482f) and reproduced since. A change that alters them must bump
+// the release version and re-archive (README); then record the new digests here.
+//
+// About 300 grains inflated into contact, confined in a shell, a plane wall pressed into them,
+// gravity, 400 steps: pairs, shell and plane contacts that open, close and slide. Variants:
+//   0  friction, rotation, damping, synchronized spring history (the paper profile's effects)
+//   1  friction, rotation, no damping, standard history
+//   2  no friction, damping
+// The digest covers positions, velocities, spins, forces, torques, springs and wall loads, and is
+// the same on every processor (the AVX-512 and portable loops give the same bits, IsaPaths.*).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+
+#include "sim/simulation.hpp"
+#include "support/scenes.hpp"
+
+namespace softpack {
+namespace {
+
+std::uint64_t digest_of(const SimulationState& s, const std::vector<WallLoad>& planes, const std::vector<WallLoad>& shells) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the bytes
+  const auto add = [&h](const void* data, std::size_t bytes) {
+    for (std::size_t b = 0; b < bytes; ++b) h = (h ^ static_cast<const unsigned char*>(data)[b]) * 1099511628211ull;
+  };
+  for (const auto* a : {&s.x, &s.v, &s.w, &s.F, &s.T}) add(a->data(), a->size() * sizeof(Vec3));
+  for (const auto& sp : s.pair_springs) add(&sp.i, sizeof sp.i), add(&sp.j, sizeof sp.j), add(&sp.xi, sizeof sp.xi);
+  for (const auto* lists : {&s.plane_springs, &s.shell_springs})
+    for (const auto& l : *lists)
+      for (const auto& sp : l) add(&sp.i, sizeof sp.i), add(&sp.xi, sizeof sp.xi);
+  for (const auto* loads : {&planes, &shells})
+    for (const auto& l : *loads) add(&l.force, sizeof l.force), add(&l.torque, sizeof l.torque);
+  return h;
+}
+
+SceneDef scene(int variant) {
+  SceneDef s = testing::basic_scene();
+  testing::Random rng(101);
+  s.particles = testing::random_spheres_in_shell(rng, 300, 0.016, 8e-4, 3e-3, 3.5, 200, 0);
+  std::vector<ParticleDef> kept;  // inflated into contact; the ones beyond the wall dropped
+  for (auto p : s.particles) {
+    p.r *= 1.15, p.v = rng.in_box(0.02), p.material = 0;
+    if (p.x.x() + p.r < 0.0105 && p.x.norm() + p.r < 0.016) kept.push_back(p);
+  }
+  s.particles = kept;
+  s.shells.push_back(ShellDef{"shell", 0, Vec3::Zero(), 0.016, 0, ShellContactRadius::concave});
+  s.planes.push_back(PlaneDef{"wall", Vec3(0.0105, 0, 0), Vec3(-1, 0, 0), 0});
+  s.drivers = {MoveWallDef{"wall", Vec3(-0.1, 0, 0), 0.002, std::nullopt}};
+  s.effects.gravity = Vec3(0, 0, -9.81);
+  s.effects.friction = variant < 2;
+  s.effects.rotation = variant < 2;
+  if (variant != 1) s.effects.restitution = 0.5;
+  s.integration.history_update = variant == 1 ? HistoryUpdate::standard : HistoryUpdate::synchronized;
+  return s;
+}
+
+TEST(ResultBits, ThreeRunsKeepTheDigestsOfTheirRelease) {
+  const std::uint64_t recorded[] = {0x417f6f7259abc408ull, 0x7e08532cde4b04aeull, 0x600235d049d47709ull};
+  for (int variant = 0; variant < 3; ++variant) {
+    Simulation sim(scene(variant));
+    sim.run_steps(400);
+    ASSERT_GT(sim.residuals().contacts, 80u);
+    EXPECT_GT(sim.plane_loads()[0].force.norm(), 0.0) << "variant " << variant << ": the wall must touch the grains";
+    EXPECT_EQ(digest_of(sim.state(), sim.plane_loads(), sim.shell_loads()), recorded[variant])
+        << "variant " << variant << ": the result bits changed (bump the release and re-archive, then record the digest)";
+  }
+}
+
+}  // namespace
+}  // namespace softpack
