@@ -12,25 +12,8 @@
 #include "core/cpu_features.hpp"
 #include "core/material.hpp"
 #include "sim/simulation.hpp"
+#include "state/state_digest.hpp"
 #include "support/confined_packing.hpp"
-
-namespace {
-
-// FNV-1a over the bytes of the state: equal digests mean a change left every result bit alone.
-std::uint64_t state_digest(const softpack::SimulationState& s) {
-  std::uint64_t h = 1469598103934665603ull;
-  const auto add = [&h](const void* data, std::size_t bytes) {
-    for (std::size_t b = 0; b < bytes; ++b) h = (h ^ static_cast<const unsigned char*>(data)[b]) * 1099511628211ull;
-  };
-  for (const auto* a : {&s.x, &s.v, &s.w, &s.F, &s.T}) add(a->data(), a->size() * sizeof(softpack::Vec3));
-  for (const auto& sp : s.pair_springs) add(&sp.i, sizeof sp.i), add(&sp.j, sizeof sp.j), add(&sp.xi, sizeof sp.xi);
-  for (const auto* lists : {&s.plane_springs, &s.shell_springs})
-    for (const auto& l : *lists)
-      for (const auto& sp : l) add(&sp.i, sizeof sp.i), add(&sp.xi, sizeof sp.xi);
-  return h;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace softpack;

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     const ConfigNode root = ConfigNode::load_file(profile);
     // Every section the stages read, read as they read it: a profile a stage would refuse is refused here.
     const auto seed_list = parse_seeds(root);
-    (void)parse_packing(root);
+    const auto packing = parse_packing(root);
     const MeasurementSettings settings = parse_measurement(root);
     if (*seeds) fmt::print("{}\n", fmt::join(seed_list, " "));
     if (*scenes) {
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
     if (*text) fmt::print("{}", stage_text(root, stage));
     if (*stamp) fmt::print("{}\n", stage_stamp(root, stage, release));
     if (*gnuplot)
-      fmt::print("Rs={}; E={}; nu={}\n", parse_packing(root).parameters.Rs, settings.simulation.material.E,
+      fmt::print("Rs={}; E={}; nu={}\n", packing.parameters.Rs, settings.simulation.material.E,
                  settings.simulation.material.nu);
     return 0;
   } catch (...) {

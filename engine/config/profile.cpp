@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/fnv1a.hpp"
 
 namespace softpack {
 
@@ -46,9 +47,9 @@ std::string stage_text(const ConfigNode& root, const std::string& stage) {
 }
 
 std::string stage_stamp(const ConfigNode& root, const std::string& stage, const std::string& version) {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a, 64 bits
-  for (const unsigned char c : "softpack " + version + "\n" + stage_text(root, stage)) h = (h ^ c) * 1099511628211ull;
-  return fmt::format("{:016x}", h);
+  Fnv1a h;
+  h.add("softpack " + version + "\n" + stage_text(root, stage));
+  return fmt::format("{:016x}", h.value);
 }
 
 std::vector<std::uint64_t> parse_seeds(const ConfigNode& root) {

@@ -1,7 +1,6 @@
 #include "formats/packing_file.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <array>
 #include <cmath>
@@ -87,16 +86,11 @@ PackingFile read_packing_file(const std::string& path) {
   get(f, kProgram, v.program);
   if (v.program != kPack)
     throw InputError(fmt::format("{}: not a softpack packing file (/{} is '{}', not '{}')", path, kProgram, v.program, kPack));
-  std::vector<std::size_t> dims;
-  const std::vector<double> c = f.read_doubles(kCentres, &dims);
-  if (dims.size() != 2 || dims[1] != 3)
-    throw InputError(fmt::format("{}: /{} must be (N, 3), found ({})", path, kCentres, fmt::join(dims, ", ")));
-  out.radii = f.read_doubles(kRadii);
-  if (out.radii.size() != dims[0])
-    throw InputError(fmt::format("{}: /{} has {} rows but /{} {} values", path, kCentres, dims[0], kRadii, out.radii.size()));
+  get(f, kCentres, out.centres);  // shape (N, 3), finite
+  get(f, kRadii, out.radii);
+  same_length(f, kRadii, out.radii.size(), kCentres, out.centres.size());
   if (out.radii.empty()) throw InputError(fmt::format("{}: /{}: the packing holds no spheres", path, kRadii));
-  for (std::size_t i = 0; i < dims[0]; ++i) out.centres.emplace_back(c[3 * i], c[3 * i + 1], c[3 * i + 2]);
-  out.Rs = f.read_scalar_double(kShellRadius);
+  get(f, kShellRadius, out.Rs);
   PackingParameters& p = out.parameters;
   each_parameter(p, reader(f));
   try {
@@ -106,7 +100,7 @@ PackingFile read_packing_file(const std::string& path) {
   }
   if (out.Rs != p.Rs)
     throw InputError(fmt::format("{}: /{} = {} differs from /{} = {}", path, kShellRadius, out.Rs, kRs, p.Rs));
-  // The spheres: finite, of positive radius, inside the shell (the generator's guarantee; the
+  // The spheres: of finite positive radius, inside the shell (the generator's guarantee; the
   // sweeps would otherwise start from overlaps with the shell).
   const double reach = out.Rs * (1.0 + 1e-9);
   for (std::size_t i = 0; i < out.radii.size(); ++i) {
@@ -114,8 +108,6 @@ PackingFile read_packing_file(const std::string& path) {
     const Vec3& x = out.centres[i];
     if (!(std::isfinite(r) && r > 0.0))
       throw InputError(fmt::format("{}: /{}[{}] = {} is not allowed; allowed: a finite radius > 0", path, kRadii, i, r));
-    if (!x.allFinite())
-      throw InputError(fmt::format("{}: /{}[{}] = ({}, {}, {}) is not finite", path, kCentres, i, x.x(), x.y(), x.z()));
     if (!(x.norm() + r <= reach))
       throw InputError(fmt::format("{}: sphere {} (/{}[{}], /{}[{}]) reaches {} m from the centre, beyond the shell "
                                    "(/{} = {} m)",

@@ -14,24 +14,18 @@
 #include <cstdint>
 
 #include "sim/simulation.hpp"
+#include "state/state_digest.hpp"
 #include "support/scenes.hpp"
 
 namespace softpack {
 namespace {
 
 std::uint64_t digest_of(const SimulationState& s, const std::vector<WallLoad>& planes, const std::vector<WallLoad>& shells) {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the bytes
-  const auto add = [&h](const void* data, std::size_t bytes) {
-    for (std::size_t b = 0; b < bytes; ++b) h = (h ^ static_cast<const unsigned char*>(data)[b]) * 1099511628211ull;
-  };
-  for (const auto* a : {&s.x, &s.v, &s.w, &s.F, &s.T}) add(a->data(), a->size() * sizeof(Vec3));
-  for (const auto& sp : s.pair_springs) add(&sp.i, sizeof sp.i), add(&sp.j, sizeof sp.j), add(&sp.xi, sizeof sp.xi);
-  for (const auto* lists : {&s.plane_springs, &s.shell_springs})
-    for (const auto& l : *lists)
-      for (const auto& sp : l) add(&sp.i, sizeof sp.i), add(&sp.xi, sizeof sp.xi);
+  Fnv1a h;
+  add_bits(h, s);
   for (const auto* loads : {&planes, &shells})
-    for (const auto& l : *loads) add(&l.force, sizeof l.force), add(&l.torque, sizeof l.torque);
-  return h;
+    for (const auto& l : *loads) h.add(&l.force, sizeof l.force), h.add(&l.torque, sizeof l.torque);
+  return h.value;
 }
 
 SceneDef scene(int variant) {
