@@ -24,6 +24,32 @@ APT_PACKAGES := cmake g++ make git pkg-config gnuplot-nox \
 APT_TEX_PACKAGES := latexmk texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended poppler-utils
 SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 
+# Make splits words at spaces: a path holding one would be several targets.
+ifneq ($(words $(DATA)),1)
+$(error DATA='$(DATA)' holds a space (or is empty): make cannot use such a path; choose a data folder without spaces)
+endif
+ifneq ($(words $(BUILD) $(CURDIR)),2)
+$(error the build folder '$(BUILD)' or the source folder '$(CURDIR)' holds a space: make cannot use such a path)
+endif
+
+# The goals that write DATA (the pipeline's, the scenes, clean).
+PIPELINE_GOALS := all tables figures paper archive packings normal tangential sweeps averages fits figure1 figure2 \
+  study-packing study-relaxation
+MAKE_LETTERS := $(firstword -$(MAKEFLAGS))
+
+# One run per data folder: a goal that writes DATA runs make again under DATA's lock
+# (workflow/with_lock.sh; a second run waits for the first, or refuses with LOCK_WAIT=0).
+# make -n and make -q write nothing and take no lock.
+LOCKED_GOALS := $(if $(SOFTPACK_LOCK)$(findstring n,$(MAKE_LETTERS))$(findstring q,$(MAKE_LETTERS)),,$(filter \
+  $(PIPELINE_GOALS) scenes clean,$(MAKECMDGOALS)))
+ifneq ($(LOCKED_GOALS),)
+.PHONY: $(MAKECMDGOALS)
+$(firstword $(MAKECMDGOALS)):
+	@workflow/with_lock.sh $(DATA) $(MAKE) --no-print-directory SOFTPACK_LOCK=held $(MAKECMDGOALS)
+$(wordlist 2,$(words $(MAKECMDGOALS)),$(MAKECMDGOALS)): $(firstword $(MAKECMDGOALS))
+	@:
+else
+
 .PHONY: help setup all build build-tools test test-sanitize bench clean
 
 help:  ## list the targets
@@ -81,12 +107,18 @@ bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side b
 clean:  ## remove the builds and the profile's generated data and figures (keeps data/archive)
 	rm -rf $(BUILD) $(BUILD_SANITIZE) $(FUZZ_BUILD) data/scenes $(DATA)/$(PROFILE) $(DATA)/studies figures/generated $(PAPER_PDF)
 
+# make verify needs no build: every archive under data/archive (or ARCHIVES=dir...) against its
+# MANIFEST.sha256, and each manifest against the SHA-256 its dataset.bib cites.
+ARCHIVE_ROOT := data/archive
+ARCHIVES ?= $(patsubst %/MANIFEST.sha256,%,$(wildcard $(ARCHIVE_ROOT)/*/*/MANIFEST.sha256))
+.PHONY: verify
+verify:  ## check every archived file against MANIFEST.sha256 (ARCHIVES=dir... for some)
+	@workflow/archive_check.sh verify $(ARCHIVES)
+
 # The pipeline's rules come from the profile, which softpack-config reads for Make
 # (workflow/stamps.mk). Before it is built (a fresh clone), the pipeline's goals build the tools,
 # then run make again, which then reads the profile.
 CONFIG_TOOL := $(BUILD)/engine/softpack-config
-PIPELINE_GOALS := all tables figures paper archive packings normal tangential sweeps averages fits figure1 figure2 \
-  study-packing study-relaxation
 ifneq ($(wildcard $(CONFIG_TOOL)),)
 include workflow/stamps.mk
 include workflow/packing.mk
@@ -103,3 +135,5 @@ $(PIPELINE_GOALS): | build-tools
 	@$(MAKE) --no-print-directory SOFTPACK_TOOLS_BUILT=1 $@
 endif
 include workflow/fuzz.mk
+
+endif  # LOCKED_GOALS

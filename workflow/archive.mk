@@ -13,3 +13,4 @@ archive: $(ARCHIVE_MANIFEST)  ## archive the results with MANIFEST, provenance a
 
 $(ARCHIVE_MANIFEST): $(ARCHIVED_INPUTS) experiments/$(PROFILE).yaml workflow/archive.sh
 	@workflow/archive.sh $(DATA) $(PROFILE) $(VERSION) $(ARCHIVE_ROOT)
+

@@ -9,7 +9,6 @@ PACK := $(BUILD)/engine/softpack-pack
 .PHONY: packings study-packing figure1 figure2
 # The executables are brought up to date before any stage runs (an order-only prerequisite);
 # not under make -n or make -q, which must only say what would run.
-MAKE_LETTERS := $(firstword -$(MAKEFLAGS))
 TOOLS := $(if $(findstring n,$(MAKE_LETTERS))$(findstring q,$(MAKE_LETTERS)),,build-tools)
 
 packings: $(PACKINGS)  ## packings of the profile's seeds (DATA/PROFILE/packings/, with .vtp and .xyz)

@@ -40,14 +40,13 @@ TANGENTIAL_STAMP := $(call stamp,tangential,tangential)
 AVERAGE_STAMP := $(call stamp,average,average)
 
 # Results recorded in the archive are reused when their stage's stamp matches (FROM_SCRATCH=1
-# ignores the archive). from_archive FILES STAMP: copies the archived FILES (all of them), or fails.
-ARCHIVE_ROOT := data/archive
+# ignores the archive), after workflow/archive_check.sh has checked them, the stamp and the
+# manifest against MANIFEST.sha256 and dataset.bib. from_archive FILES STAMP: copies the archived
+# FILES (all of them), or fails when the archive does not hold them; a damaged archive ends the
+# recipe (exit 2) with the checker's message, never a silent recomputation.
 ARCHIVE := $(ARCHIVE_ROOT)/$(VERSION)/$(PROFILE)
-archived = $(patsubst $(DATA)/$(PROFILE)/%,$(ARCHIVE)/%,$(1))
-from_archive = [ -z "$(FROM_SCRATCH)" ] && cmp -s $(call archived,$(2)) $(2) && \
-  $(foreach f,$(1),[ -f $(call archived,$(f)) ] &&) \
-  $(foreach f,$(1),cp $(call archived,$(f)) $(f).tmp.archive && mv $(f).tmp.archive $(f) &&) \
-  echo "reused $(1) from $(ARCHIVE) (same configuration)"
+from_archive = $(if $(FROM_SCRATCH),false,{ workflow/archive_check.sh reuse $(ARCHIVE) $(2) $(1); \
+  rc=$$?; [ $$rc != 2 ] || exit 2; [ $$rc = 0 ]; })
 
 # clear_stale FILES [DIRS]: removes what a killed run may have left: temporaries of FILES
 # (FILE.tmp.<pid>) and of anything in DIRS. Only this recipe writes these names, so concurrent
