@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "core/error.hpp"
 
@@ -15,23 +14,21 @@ namespace softpack {
 
 void write_file_atomically(const std::string& path, const std::string& content) {
   const std::filesystem::path target(path);
-  if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
+  std::error_code ec;
+  if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path(), ec);
+  if (ec) throw InputError(fmt::format("{}: cannot create its folder: {}", path, ec.message()));
   const std::string tmp = fmt::format("{}.tmp.{}", path, ::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(fmt::format("{}: cannot write: {}", tmp, std::strerror(errno)));
-    out << content;
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw InputError(fmt::format("{}: write failed", tmp));
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
+  // A full disk, a quota or an I/O error: one message, and the temporary goes.
+  const auto failed = [&](const char* what, int error) {
     std::remove(tmp.c_str());
-    throw InputError(fmt::format("{}: cannot rename into place: {}", path, why));
-  }
+    throw InputError(fmt::format("{}: cannot {}: {}", path, what, std::strerror(error)));
+  };
+  std::FILE* out = std::fopen(tmp.c_str(), "wb");
+  if (out == nullptr) failed("create the file", errno);
+  const bool written = std::fwrite(content.data(), 1, content.size(), out) == content.size() && std::fflush(out) == 0;
+  const int write_error = errno;
+  if (std::fclose(out) != 0 || !written) failed("write the file", written ? errno : write_error);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) failed("rename it into place", errno);
 }
 
 }  // namespace softpack

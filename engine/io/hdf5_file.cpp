@@ -49,9 +49,39 @@ Handle must(Handle h, const char* what) {
   return h;
 }
 
+int os_errno() {
+  int found = 0;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned, const H5E_error2_t* e, void* out) -> herr_t {
+        int& n = *static_cast<int*>(out);
+        if (n == 0 && e->desc != nullptr) {
+          if (const char* at = std::strstr(e->desc, "errno = ")) n = std::atoi(at + 8);
+        }
+        return 0;
+      },
+      &found);
+  return found;
+}
+
 }  // namespace detail
 
 namespace {
+
+// A write that failed: when the operating system refused it (a full disk, a quota, no
+// permission, a folder that went away), one line for the user, InputError (exit 2); anything
+// else is a bug, std::runtime_error. Call it right after the failing HDF5 call.
+[[noreturn]] void write_failed(const std::string& file, const std::string& what) {
+  if (const int e = detail::os_errno(); e != 0)
+    throw InputError(fmt::format("{}: cannot {}: {}", file, what, std::strerror(e)));
+  throw std::runtime_error(fmt::format("{}: cannot {} ({})", file, what, hdf5_reason()));
+}
+
+// libhdf5 closes what is still open at exit (an atexit handler); after a failed write or a
+// corrupt file it cannot, and says "infinite loop closing library" or crashes (SIGSEGV in
+// H5F__close_cb on a full disk). Every file is closed by this layer (File, AtomicH5) before
+// the executables exit, so the handler is not installed: it must be said before any other call.
+[[maybe_unused]] const bool kNoAtexit = H5dont_atexit() >= 0;
 
 static_assert(std::is_same_v<hid_t, std::int64_t>, "File keeps its hid_t as std::int64_t");
 
@@ -64,8 +94,10 @@ Handle untimed(hid_t plist_class) {
 
 Handle file_access(bool for_writing) {
   Handle fapl = must(Handle(H5Pcreate(H5P_FILE_ACCESS), H5Pclose), "H5Pcreate");
-  // Pinned format: a newer library must not change the bytes we write. 1.8 is read everywhere.
-  if (for_writing) must(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_V18),
+  // Pinned format: a newer library must not change the bytes we write. The 1.10 format
+  // checksums all its metadata (superblock, object headers, chunk indexes, heaps of links and
+  // attributes); every reader since HDF5 1.10 (2016: h5py, h5dump, ParaView) reads it.
+  if (for_writing) must(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V110, H5F_LIBVER_V110),
                         "H5Pset_libver_bounds");
   // Closing the file closes anything still open in it, so the file is complete on close.
   must(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), "H5Pset_fclose_degree");
@@ -89,10 +121,39 @@ void make_parent_groups(hid_t file, const std::string& file_path, const std::str
     const Handle g(there ? H5Gopen2(file, prefix.c_str(), H5P_DEFAULT)
                          : H5Gcreate2(file, prefix.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT),
                    H5Gclose);
-    if (!g)
-      throw std::runtime_error(fmt::format("{}: cannot write '{}': '{}' {}", file_path, name,
-                                           prefix, there ? "is not a group" : hdf5_reason()));
+    if (!g && there)
+      throw std::runtime_error(fmt::format("{}: cannot write '{}': '{}' is not a group", file_path, name, prefix));
+    if (!g) write_failed(file_path, fmt::format("create group '{}'", prefix));
   }
+}
+
+// Storage that a reader verifies. Arrays are chunked with HDF5's Fletcher-32 filter, which every
+// read checks (H5Pset_edc_check is on by default, in h5py and h5dump too); one chunk per dataset
+// up to kChunkBytes, so the chunk index is the single address in the (checksummed) object header.
+// Scalars, strings and empty arrays are compact: their bytes are inside the object header, under
+// its checksum. A flipped bit anywhere in a file is then an error on read (tests/faults).
+constexpr hsize_t kChunkBytes = hsize_t{64} << 20;
+constexpr std::size_t kCompactBytes = 48 * 1024;  // the object header holds at most 64 KiB
+
+Handle checksummed_storage(const std::string& file_path, const std::string& name, hid_t type, hid_t space) {
+  Handle dcpl = untimed(H5P_DATASET_CREATE);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> chunk(static_cast<std::size_t>(std::max(rank, 0)));
+  if (rank > 0) H5Sget_simple_extent_dims(space, chunk.data(), nullptr);
+  const hssize_t count = H5Sget_simple_extent_npoints(space);
+  if (rank == 0 || count == 0) {
+    if (count * static_cast<hssize_t>(H5Tget_size(type)) > static_cast<hssize_t>(kCompactBytes))
+      throw std::invalid_argument(fmt::format("{}: dataset '{}': a scalar of more than {} bytes", file_path, name,
+                                              kCompactBytes));
+    must(H5Pset_layout(dcpl.get(), H5D_COMPACT), "H5Pset_layout");
+    return dcpl;
+  }
+  // Rows of the first dimension per chunk: all of them unless the chunk would pass kChunkBytes.
+  const hsize_t row_bytes = static_cast<hsize_t>(count) / chunk[0] * H5Tget_size(type);
+  chunk[0] = std::clamp<hsize_t>(kChunkBytes / std::max<hsize_t>(row_bytes, 1), 1, chunk[0]);
+  must(H5Pset_chunk(dcpl.get(), rank, chunk.data()), "H5Pset_chunk");
+  must(H5Pset_fletcher32(dcpl.get()), "H5Pset_fletcher32");
+  return dcpl;
 }
 
 void write_dataset(hid_t file, const std::string& file_path, const std::string& name,
@@ -100,18 +161,15 @@ void write_dataset(hid_t file, const std::string& file_path, const std::string& 
   if (exists_in(file, file_path, name))
     throw std::runtime_error(fmt::format("{}: dataset '{}' already exists", file_path, name));
   make_parent_groups(file, file_path, name);
-  const Handle dcpl = untimed(H5P_DATASET_CREATE);
+  const Handle dcpl = checksummed_storage(file_path, name, file_type, space);
   const Handle ds(H5Dcreate2(file, name.c_str(), file_type, space, H5P_DEFAULT, dcpl.get(),
                              H5P_DEFAULT),
                   H5Dclose);
-  if (!ds)
-    throw std::runtime_error(
-        fmt::format("{}: cannot create dataset '{}' ({})", file_path, name, hdf5_reason()));
+  if (!ds) write_failed(file_path, fmt::format("create dataset '{}'", name));
   // H5Dwrite refuses a null buffer even for zero elements; an empty dataset needs no write.
   if (H5Sget_select_npoints(space) == 0) return;
   if (H5Dwrite(ds.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-    throw std::runtime_error(
-        fmt::format("{}: cannot write dataset '{}' ({})", file_path, name, hdf5_reason()));
+    write_failed(file_path, fmt::format("write dataset '{}'", name));
 }
 
 Handle simple_space(const std::string& file_path, const std::string& name, std::size_t count,
@@ -129,10 +187,13 @@ Handle simple_space(const std::string& file_path, const std::string& name, std::
 
 Handle scalar_space() { return must(Handle(H5Screate(H5S_SCALAR), H5Sclose), "H5Screate"); }
 
-// Variable-length UTF-8: h5py reads it as str, h5dump prints it.
-Handle string_type() {
+// Fixed-length UTF-8 of exactly the text's bytes (at least one), so the text is stored in the
+// object header, under its checksum, not in the unchecksummed global heap of variable-length
+// strings. h5py: ds.asstr()[()] is a str; h5dump prints it.
+Handle string_type(std::size_t bytes) {
   Handle t = must(Handle(H5Tcopy(H5T_C_S1), H5Tclose), "H5Tcopy");
-  must(H5Tset_size(t.get(), H5T_VARIABLE), "H5Tset_size");
+  must(H5Tset_size(t.get(), std::max<std::size_t>(bytes, 1)), "H5Tset_size");
+  must(H5Tset_strpad(t.get(), H5T_STR_NULLPAD), "H5Tset_strpad");
   must(H5Tset_cset(t.get(), H5T_CSET_UTF8), "H5Tset_cset");
   return t;
 }
@@ -149,8 +210,7 @@ void write_attribute(hid_t file, const std::string& file_path, const std::string
                                    H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                  H5Aclose);
   if (!a || H5Awrite(a.get(), mem_type, data) < 0)
-    throw std::runtime_error(fmt::format("{}: cannot write attribute '{}' of '{}' ({})",
-                                         file_path, name, obj, hdf5_reason()));
+    write_failed(file_path, fmt::format("write attribute '{}' of '{}'", name, obj));
 }
 
 // The version of the superblock (0 to 3), found at offset 0, 512, 1024, ... (after a user
@@ -173,14 +233,18 @@ int superblock_version(const std::string& path) {
 
 // --- File --------------------------------------------------------------------------------------
 
-File File::create(const std::string& path) {
+File File::create(const std::string& path, const std::string& shown_as) {
   const QuietErrors quiet;
   const Handle fcpl = untimed(H5P_FILE_CREATE);  // the root group's time stamps
   const Handle fapl = file_access(true);
   const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
-  if (id < 0)
-    throw InputError(fmt::format("{}: cannot create HDF5 file ({})", path, hdf5_reason()));
-  return File(id, path);
+  if (id < 0) {
+    const std::string& name = shown_as.empty() ? path : shown_as;
+    if (const int e = detail::os_errno(); e != 0)
+      throw InputError(fmt::format("{}: cannot create the file: {}", name, std::strerror(e)));
+    throw InputError(fmt::format("{}: cannot create HDF5 file ({})", name, hdf5_reason()));
+  }
+  return File(id, shown_as.empty() ? path : shown_as);
 }
 
 File File::open(const std::string& path) {
@@ -237,8 +301,7 @@ File::~File() {
 void File::close() {
   if (id_ < 0) return;
   const QuietErrors quiet;
-  if (H5Fclose(std::exchange(id_, -1)) < 0)
-    throw std::runtime_error(fmt::format("{}: cannot close HDF5 file ({})", path_, hdf5_reason()));
+  if (H5Fclose(std::exchange(id_, -1)) < 0) write_failed(path_, "write the file (closing it)");
 }
 
 void File::write(const std::string& dataset, std::span<const double> values,
@@ -273,10 +336,13 @@ void File::write_string(const std::string& dataset, const std::string& value) {
   if (value.find('\0') != std::string::npos)
     throw std::invalid_argument(
         fmt::format("{}: dataset '{}': string holds a NUL character", path_, dataset));
+  if (value.size() > kCompactBytes)
+    throw InputError(fmt::format("{}: dataset '{}': a text of {} bytes; a result file holds at most {} bytes of "
+                                 "text per dataset (a configuration that long?)",
+                                 path_, dataset, value.size(), kCompactBytes));
   const QuietErrors quiet;
-  const Handle type = string_type();
-  const char* p = value.c_str();
-  write_dataset(id_, path_, dataset, type.get(), type.get(), scalar_space().get(), &p);
+  const Handle type = string_type(value.size());
+  write_dataset(id_, path_, dataset, type.get(), type.get(), scalar_space().get(), value.c_str());
 }
 
 void File::set_attribute(const std::string& object_path, const std::string& name,
@@ -285,9 +351,8 @@ void File::set_attribute(const std::string& object_path, const std::string& name
     throw std::invalid_argument(fmt::format("{}: attribute '{}' of '{}': string holds a NUL",
                                             path_, name, object_path));
   const QuietErrors quiet;
-  const Handle type = string_type();
-  const char* p = value.c_str();
-  write_attribute(id_, path_, object_path, name, type.get(), type.get(), &p);
+  const Handle type = string_type(value.size());
+  write_attribute(id_, path_, object_path, name, type.get(), type.get(), value.c_str());
 }
 
 
@@ -308,7 +373,7 @@ std::string temporary_for(const std::string& final_path) {
 }  // namespace
 
 AtomicH5::AtomicH5(const std::string& final_path)
-    : final_(final_path), tmp_(temporary_for(final_path)), file_(File::create(tmp_)) {}
+    : final_(final_path), tmp_(temporary_for(final_path)), file_(File::create(tmp_, final_path)) {}
 
 AtomicH5::~AtomicH5() {
   if (committed_) return;

@@ -8,8 +8,13 @@
 //
 // Determinism: object time stamps are off on the root group, every group and every dataset
 // (HDF5 stamps them by default, including the groups H5Pset_create_intermediate_group makes,
-// so this layer creates groups itself), and the on-disk format is pinned to the HDF5 1.8
+// so this layer creates groups itself), and the on-disk format is pinned to the HDF5 1.10
 // format (low and high bounds), so a newer library writes the same bytes.
+//
+// Integrity: every byte of a written file is under a checksum that the library verifies on
+// read: metadata by the 1.10 format's own checksums, arrays by the Fletcher-32 filter, scalars
+// and strings (fixed-length, compact) by the checksum of the object header that holds them. A
+// flipped bit is an InputError naming the file and the dataset, in h5py and h5dump an error too.
 //
 // Atomicity: File::create writes in place. Results go through AtomicH5, which writes
 // "<final>.tmp.<pid>" and renames on commit(), so an interrupted run leaves no file.
@@ -24,8 +29,10 @@ namespace softpack::h5 {
 /// An open HDF5 file (move-only). Not thread-safe: the serial HDF5 library is not.
 class File {
  public:
-  /// Creates (truncates) `path`. Throws InputError when it cannot be created.
-  static File create(const std::string& path);
+  /// Creates (truncates) `path`; messages name it `shown_as` when given (the final name of a
+  /// temporary). Throws InputError when it cannot be created, and a write or close that the
+  /// operating system refuses (a full disk, no permission) is an InputError with its reason.
+  static File create(const std::string& path, const std::string& shown_as = {});
   /// Opens `path` read-only. Throws InputError for a missing, unreadable, non-HDF5 or
   /// truncated file.
   static File open(const std::string& path);
@@ -49,7 +56,8 @@ class File {
              std::vector<std::size_t> dims = {});
   void write_scalar(const std::string& dataset, double value);
   void write_scalar(const std::string& dataset, std::int64_t value);
-  /// A scalar variable-length UTF-8 string (h5py: ds.asstr()[()] is a str).
+  /// A scalar fixed-length UTF-8 string of at most 48 KiB (h5py: ds.asstr()[()] is a str);
+  /// longer text is an InputError.
   void write_string(const std::string& dataset, const std::string& value);
 
   /// A text attribute (a unit, a description) of an existing group or dataset ("/" is the

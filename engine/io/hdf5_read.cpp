@@ -52,6 +52,9 @@ bool exists_in(hid_t file, const std::string& file_path, const std::string& path
   const auto is_group = [&](const std::string& at) {
     return static_cast<bool>(Handle(H5Gopen2(file, at.empty() ? "/" : at.c_str(), H5P_DEFAULT), H5Gclose));
   };
+  const auto is_dataset = [&](const std::string& at) {
+    return !at.empty() && static_cast<bool>(Handle(H5Dopen2(file, at.c_str(), H5P_DEFAULT), H5Dclose));
+  };
   std::string prefix;
   for (const std::string& part : components(file_path, path)) {
     const std::string parent = prefix;
@@ -60,7 +63,11 @@ bool exists_in(hid_t file, const std::string& file_path, const std::string& path
     if (there == 0) return false;
     if (there < 0) {
       const std::string reason = hdf5_reason();
-      if (!is_group(parent)) return false;  // under a dataset or a dangling link: absent
+      // Under a dataset or a dangling link: absent. Under a group that cannot answer, or an
+      // object that opens as neither (a header failing its checksum or version check): corrupt.
+      if (is_group(parent)) throw corrupt(prefix, reason);
+      if (is_dataset(parent)) return false;
+      if (!parent.empty() && H5Oexists_by_name(file, parent.c_str(), H5P_DEFAULT) == 0) return false;
       throw corrupt(prefix, reason);
     }
     // External and user-defined links would open other files named by this one: refused.
@@ -106,7 +113,8 @@ Handle space_of(hid_t obj, const std::string& what) {
   return s;
 }
 void read_raw(hid_t obj, hid_t mem_type, void* buf, const std::string& what) {
-  if (H5Dread(obj, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0) throw InputError(fmt::format("{}: cannot read ({})", what, hdf5_reason()));
+  if (H5Dread(obj, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0)
+    throw InputError(fmt::format("{}: cannot read ({}): corrupt file", what, hdf5_reason()));
 }
 
 // The size of the file that holds `obj`, in bytes.
@@ -293,7 +301,13 @@ std::string dataset_what(const std::string& file, const std::string& name) {
 Handle open_dataset(hid_t file, const std::string& file_path, const std::string& name) {
   if (!detail::exists_in(file, file_path, name)) throw InputError(fmt::format("{}: no dataset '{}'", file_path, name));
   Handle ds(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose);
-  if (!ds) throw InputError(fmt::format("{}: '{}' is not a dataset", file_path, name));
+  if (!ds) {
+    // A group is not a dataset; an object that opens as neither has a damaged header.
+    const std::string reason = hdf5_reason();
+    if (Handle(H5Gopen2(file, name.c_str(), H5P_DEFAULT), H5Gclose))
+      throw InputError(fmt::format("{}: '{}' is a group, not a dataset", file_path, name));
+    throw InputError(fmt::format("{}: cannot open '{}' ({}): corrupt file", file_path, name, reason));
+  }
   return ds;
 }
 

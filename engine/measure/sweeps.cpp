@@ -54,13 +54,17 @@ void at_point(const std::string& point, Fn&& fn) {
   }
 }
 
-// A point file is reused only when it holds the same configuration.
+// A point file is reused only when it holds the same configuration and reads whole, its state
+// included (every dataset is checksummed: a flipped bit is an InputError here, not a wrong
+// restart later).
 bool usable(const std::string& path, const std::string& config) {
   if (!std::filesystem::exists(path)) return false;
   try {
-    return read_point_file(path, false).provenance.config == config;
-  } catch (const InputError&) {
-    return false;  // unreadable (it cannot be half-written, but may be foreign): recompute
+    return read_point_file(path, true).provenance.config == config;
+  } catch (const InputError& e) {
+    // Unreadable (it cannot be half-written, but may be damaged or foreign): recomputed, said.
+    fmt::print(stderr, "warning: checkpoint not used, the point is computed again: {}\n", e.what());
+    return false;
   }
 }
 
