@@ -24,9 +24,13 @@ APT_PACKAGES := cmake g++ make git pkg-config gnuplot-nox \
 APT_TEX_PACKAGES := latexmk texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended poppler-utils
 SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 
-# Make splits words at spaces: a path holding one would be several targets.
+# Make splits words at spaces and reads ':' and '%' in targets as rule syntax: a path holding
+# one is refused, in one line, before anything runs.
 ifneq ($(words $(DATA)),1)
 $(error DATA='$(DATA)' holds a space (or is empty): make cannot use such a path; choose a data folder without spaces)
+endif
+ifneq ($(findstring :,$(DATA))$(findstring %,$(DATA)),)
+$(error DATA='$(DATA)' holds ':' or '%': make cannot use such a path in its rules; choose another data folder)
 endif
 ifneq ($(words $(BUILD) $(CURDIR)),2)
 $(error the build folder '$(BUILD)' or the source folder '$(CURDIR)' holds a space: make cannot use such a path)

@@ -51,8 +51,9 @@ int main(int argc, char** argv) {
     }
     out.code_version = code_version();
     out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    write_fit_file(out_path, out);
+    // The fit file last: it is the stage's result, so a failed write leaves none beside a missing .gp.
     if (!gnuplot_path.empty()) write_fit_gnuplot_file(gnuplot_path, out);
+    write_fit_file(out_path, out);
 
     if (!quiet) {
       const fit::PowerLawFit& n = out.normal;
