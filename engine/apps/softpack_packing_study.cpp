@@ -30,7 +30,6 @@ struct Row {
 
 void set(PackingParameters& p, const std::string& key, double v) {
   if (key == "beta") p.beta = v;
-  else if (key == "trials") p.trials = static_cast<long>(v);
   else if (key == "r_max_over_Rs") p.r_max = v * p.Rs;
   else if (key == "shell_is_neighbour") p.shell_is_neighbour = v != 0.0;
 }
@@ -61,9 +60,14 @@ int main(int argc, char** argv) {
       for (const ConfigNode& v : vary.at(key).items()) {
         Row row;
         row.parameter = key;
-        row.value = key == "shell_is_neighbour" ? (v.boolean() ? 1.0 : 0.0) : v.number();
         PackingParameters p = profile.parameters;
-        set(p, key, row.value);
+        if (key == "trials") {  // a count, read exactly: 1.5 or 1e300 are none
+          p.trials = v.integer();
+          row.value = static_cast<double>(p.trials);
+        } else {
+          row.value = key == "shell_is_neighbour" ? (v.boolean() ? 1.0 : 0.0) : v.number();
+          set(p, key, row.value);
+        }
         try {
           validate(p);
         } catch (const InputError& e) {

@@ -1,9 +1,19 @@
-// Scene files: every mistake gives one message naming the file, line, key and what is allowed.
+// Scene files and profiles: every mistake gives one message naming the file, line, key and what
+// is allowed; integers and seeds are read exactly.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <random>
 #include <string>
 
+#include "config/profile.hpp"
 #include "core/error.hpp"
+#include "core/integer_text.hpp"
+#include "core/random.hpp"
+#include "measure/settings.hpp"
+#include "packing/packing_profile.hpp"
 #include "scene/scene_yaml.hpp"
 
 namespace softpack {
@@ -140,6 +150,92 @@ TEST(SceneFile, MissingFileIsReported) {
 TEST(ClosestMatch, SuggestsOnlyCloseWords) {
   EXPECT_EQ(closest_match("frcition", {"normal", "friction"}), "friction");
   EXPECT_EQ(closest_match("zzzzzzzz", {"normal", "friction"}), "");
+}
+
+// --- Integers and seeds, read exactly ----------------------------------------------------------
+
+// Random draws of these tests: a fixed seed, printed, so that a failure reproduces.
+constexpr std::uint64_t kRangeTestSeed = 20240611;
+
+// The message of loading `text` as a profile with every section read ("" if it loads).
+std::string profile_error(const std::string& text) {
+  try {
+    const ConfigNode root = ConfigNode::load_string(text, "profile.yaml");
+    parse_seeds(root);
+    parse_packing(root);
+    parse_measurement(root);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string quick_profile() {
+  std::ifstream in(SOFTPACK_SOURCE_DIR "/experiments/quick.yaml");
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Integers, AreReadExactlyAsDecimalDigits) {
+  EXPECT_EQ(parse_integer("0").value, 0);
+  EXPECT_EQ(parse_integer("-42").value, -42);
+  EXPECT_EQ(parse_integer("9223372036854775807").value, INT64_MAX);
+  EXPECT_EQ(parse_integer("-9223372036854775808").value, INT64_MIN);
+  EXPECT_EQ(parse_integer("9223372036854775808").status, IntegerText::Status::out_of_range);
+  EXPECT_EQ(parse_integer("-9223372036854775809").status, IntegerText::Status::out_of_range);
+  EXPECT_EQ(parse_integer("99999999999999999999999").status, IntegerText::Status::out_of_range);
+  for (const char* bad : {"", "-", "+3", " 3", "3 ", "1.5", "2.0", "1e3", "0x10", "0o7", "007", "-0", "1_000", "3a"})
+    EXPECT_EQ(parse_integer(bad).status, IntegerText::Status::not_integer) << "'" << bad << "'";
+}
+
+TEST(SceneFile, IntegerKeysAreReadExactly) {
+  // Through a double, 6.0 and 6e0 were 6 and 2^63 was clamped; now only decimal digits are.
+  EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: 6.0")),
+                  "run.relaxation.stops: expected an integer, got '6.0' (decimal digits");
+  EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: 6e0")), "run.relaxation.stops: expected an integer, got '6e0'");
+  EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: +6")), "run.relaxation.stops: expected an integer, got '+6'");
+  EXPECT_CONTAINS(error_of(replace(kValid, "body: 0}\n  - {x: [0, 0, 0.0025]", "body: 00}\n  - {x: [0, 0, 0.0025]")),
+                  "particles[0].body: expected an integer, got '00'");
+  EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: 9223372036854775808")),
+                  "run.relaxation.stops: '9223372036854775808' is out of the range of integers");
+  EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: many")), "run.relaxation.stops: expected a number, got 'many'");
+}
+
+TEST(Profile, SeedsAtOrBeyond2To63AreRefusedNotClamped) {
+  SCOPED_TRACE("random seed of this test: " + std::to_string(kRangeTestSeed));
+  std::mt19937_64 rng(kRangeTestSeed);
+  const std::string text = quick_profile();
+  ASSERT_NE(text.find("seeds: [1, 2]"), std::string::npos);
+  std::vector<std::string> seeds{"9223372036854775808", "18446744073709551615", "18446744073709551616",
+                                 "99999999999999999999999999"};
+  for (int k = 0; k < 5; ++k)  // random seeds in [2^63, 2^64)
+    seeds.push_back(std::to_string(std::uniform_int_distribution<std::uint64_t>(std::uint64_t{1} << 63, UINT64_MAX)(rng)));
+  for (const std::string& seed : seeds) {
+    const std::string msg = profile_error(replace(text, "seeds: [1, 2]", "seeds: [1, " + seed + "]"));
+    EXPECT_CONTAINS(msg, "profile.yaml:6:12: seeds[1]: '" + seed + "' is not allowed; allowed: a seed, an integer 0 <= seed "
+                         "<= 9223372036854775807 (2^63 - 1)");
+  }
+  // The largest seed is read exactly (a double would make it 2^63).
+  const ConfigNode root = ConfigNode::load_string(replace(text, "seeds: [1, 2]", "seeds: [0, 9223372036854775807]"), "p.yaml");
+  EXPECT_EQ(parse_seeds(root), (std::vector<std::uint64_t>{0, 9223372036854775807ull}));
+}
+
+TEST(Profile, SeedsThatAreNotPlainDecimalIntegersAreRefused) {
+  const std::string text = quick_profile();
+  for (const char* seed : {"1.5", "1e3", "2.0", "+3", "-1", "007", "0x10", "'3 '", "three"}) {
+    const std::string msg = profile_error(replace(text, "seeds: [1, 2]", std::string("seeds: [1, ") + seed + "]"));
+    EXPECT_CONTAINS(msg, "seeds[1]: '");
+    EXPECT_CONTAINS(msg, "' is not allowed; allowed: a seed, an integer 0 <= seed <= 9223372036854775807");
+  }
+  std::string error;
+  EXPECT_FALSE(parse_seed("1\n2", error));
+  EXPECT_EQ(error.find('\n'), std::string::npos) << "one line: " << error;
+}
+
+TEST(Profile, RepeatedSeedsAreRefusedNamingKeyAndValue) {
+  const std::string text = quick_profile();
+  EXPECT_CONTAINS(profile_error(replace(text, "seeds: [1, 2]", "seeds: [1, 1]")),
+                  "profile.yaml:6:12: seeds[1]: seed 1 is listed twice (first as seeds[0])");
+  EXPECT_CONTAINS(profile_error(replace(text, "seeds: [1, 2]", "seeds: [5, 9, 7, 9]")), "seeds[3]: seed 9 is listed twice (first as seeds[1])");
 }
 
 }  // namespace
