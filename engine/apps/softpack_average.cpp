@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "analysis/average.hpp"
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -23,7 +24,7 @@ int main(int argc, char** argv) {
   app.add_option("--normal", p.normal_inputs, "normal results of every seed")->required();
   app.add_option("--tangential", p.tangential_inputs, "tangential results of every seed")->required();
   app.add_option("--out-dir", out_dir, "writes <scene>.h5, normal-<scene>.dat, tangential-<scene>.dat, kt-<scene>.dat")->required();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-average")) return *code;
   try {
     const auto start = std::chrono::steady_clock::now();
     if (p.scene != "soft-solid" && p.scene != "soft-soft")

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "config/profile.hpp"
 #include "packing/packing_profile.hpp"
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
   app.add_option("--config", study_path, "study file, e.g. experiments/packing-density.yaml")->required();
   app.add_option("--out", out_dir, "directory for packing-density.dat and packing-density.md")->required();
   app.add_flag("--quiet", quiet, "no progress lines");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-packing-study")) return *code;
   try {
     const auto start = std::chrono::steady_clock::now();
     const ConfigNode study = ConfigNode::load_file(study_path);

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
   app.add_option("--scene", scene_path, "scene file (YAML), see docs/scene-format.md")->required();
   app.add_option("--out", out_path, "write the JSON report here (atomically) instead of stdout");
   app.add_flag("--quiet", quiet, "no progress lines on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-run")) return *code;
 
   try {
     const auto wall_start = Clock::now();
