@@ -5,8 +5,9 @@
 # truncated HDF5 file, a foreign HDF5 file (not ours, or ours of another kind) and a packing of
 # another configuration each give one message naming the file (and the key or dataset), exit
 # code 2, and no output file or temporary left behind. So do seeds that are not integers of
-# 0..2^63-1 written in decimal digits, and every command line that CLI11 refuses (exit 2, not
-# CLI11's codes; --help exits 0). The cases test_softpack_*.sh already check are not repeated here.
+# 0..2^63-1 written in decimal digits, a seed given twice, and every command line that CLI11
+# refuses (exit 2, not CLI11's codes; --help exits 0). The cases test_softpack_*.sh already
+# check are not repeated here.
 set -euo pipefail
 bin=$(cd "$1" && pwd)
 root=$(cd "$2" && pwd)
@@ -197,6 +198,22 @@ expect_error "bad\.yaml:4:12: seeds\[1\]: '2\.5' is not allowed; allowed: a seed
 case_name repeated_seeds_in_a_profile_are_refused
 edit "$profile" 's/^seeds: \[1, 2\]/seeds: [1, 1]/'
 expect_error "bad\.yaml:4:12: seeds\[1\]: seed 1 is listed twice \(first as seeds\[0\]\)" none.txt "$bin/softpack-config" bad.yaml seeds
+
+case_name average_of_one_file_twice_or_of_one_seed_twice_is_refused
+# Each of these averaged one packing twice (standard error 0 for [1, 1]) and exited 0. t-bad.h5:
+# the tangential results of seed 1 (above).
+cp n1.h5 n1-copy.h5  # another file, the same seed
+cp t-bad.h5 t1-copy.h5
+avg() { "$bin/softpack-average" --scene soft-solid --profile fuzz-seed --normal $1 --tangential $2 --out-dir avg; }
+expect_error "^softpack-average: error: --normal: n1\.h5 and n1\.h5 are the same file; allowed: each seed's results once" avg \
+  avg "n1.h5 n1.h5" t-bad.h5
+expect_error "^softpack-average: error: --normal: n1\.h5 and \./n1\.h5 are the same file" avg avg "n1.h5 ./n1.h5" t-bad.h5
+expect_error "^softpack-average: error: --normal: n1\.h5 and n1-copy\.h5 are both results of seed 1; allowed: each seed's results once" \
+  avg avg "n1.h5 n1-copy.h5" t-bad.h5
+expect_error "^softpack-average: error: --tangential: t-bad\.h5 and t1-copy\.h5 are both results of seed 1" avg \
+  avg n1.h5 "t-bad.h5 t1-copy.h5"
+"$bin/softpack-average" --scene soft-solid --profile fuzz-seed --normal n1.h5 --tangential t-bad.h5 --out-dir avg ||
+  fail "the average of one seed's results was refused"
 
 # --- Command lines: CLI11's errors are bad input (exit 2, one line); --help exits 0 --------------
 case_name every_executable_maps_command_line_errors_to_exit_2
