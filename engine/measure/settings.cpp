@@ -7,6 +7,7 @@
 
 #include "config/profile.hpp"
 #include "core/error.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene_yaml.hpp"
 #include "scene/validate.hpp"
 
@@ -21,6 +22,11 @@ ContactScene parse_contact_scene(const std::string& name) {
 std::string scene_name(ContactScene s) { return s == ContactScene::soft_solid ? "soft-solid" : "soft-soft"; }
 
 namespace {
+
+// The loading speed and the rotation rate: the ranges of a driver's (scene/limits.hpp), named
+// by the profile's keys.
+constexpr limits::Range kSpeed{0.0, limits::kDriveSpeed.hi, true, false, "speed", "m/s"};
+constexpr limits::Range kRate{0.0, limits::kRate.hi, true, false, "rate", "rad/s"};
 
 // Strictly increasing values in [lo, hi).
 std::vector<double> increasing_list(const ConfigNode& n, double lo, double hi) {
@@ -76,7 +82,7 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   m.normal.delta_n = increasing_list(nn.at("delta_n"), 0.0, 1.0);
   if (m.normal.delta_n.front() != 0.0) nn.at("delta_n").fail("must start at 0 (the undeformed state)");
   m.normal.speed = nn.at("speed").number();
-  if (!(m.normal.speed > 0.0)) nn.at("speed").fail(fmt::format("{} m/s is not allowed; allowed: > 0", m.normal.speed));
+  if (const std::string why = limits::refusal(m.normal.speed, kSpeed); !why.empty()) nn.at("speed").fail(why);
   m.normal.incremental = nn.at("path").choice({"incremental", "direct"}) == "incremental";
 
   const ConfigNode tn = root.at("tangential");
@@ -96,7 +102,7 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   if (alpha.empty()) tn.at("alpha_deg").fail("at least one angle is required");
   m.tangential.alpha_deg = alpha;
   m.tangential.rate = tn.at("rate").number();
-  if (!(m.tangential.rate > 0.0)) tn.at("rate").fail(fmt::format("{} rad/s is not allowed; allowed: > 0", m.tangential.rate));
+  if (const std::string why = limits::refusal(m.tangential.rate, kRate); !why.empty()) tn.at("rate").fail(why);
   m.tangential.after = tn.at("after_rotation").choice({"release", "hold"}) == "release" ? AfterRotation::release : AfterRotation::hold;
   return m;
 }

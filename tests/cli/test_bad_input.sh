@@ -4,10 +4,10 @@
 # column), an unknown key (with the closest valid key), a value out of range, a missing file, a
 # truncated HDF5 file, a foreign HDF5 file (not ours, or ours of another kind) and a packing of
 # another configuration each give one message naming the file (and the key or dataset), exit
-# code 2, and no output file or temporary left behind. So do seeds that are not integers of
-# 0..2^63-1 written in decimal digits, a seed given twice, and every command line that CLI11
-# refuses (exit 2, not CLI11's codes; --help exits 0). The cases test_softpack_*.sh already
-# check are not repeated here.
+# code 2, and no output file or temporary left behind. So do values beyond the ranges of
+# engine/scene/limits.hpp (seeds, moduli, radii), a seed given twice, and every
+# command line that CLI11 refuses (exit 2, not CLI11's codes; --help exits 0). The cases
+# test_softpack_*.sh already check are not repeated here.
 set -euo pipefail
 bin=$(cd "$1" && pwd)
 root=$(cd "$2" && pwd)
@@ -149,9 +149,9 @@ expect_error "foreign\.h5: not a softpack average file \(no /normal/delta_n or /
 expect_error "p1\.h5: not a softpack average file \(it is a packing file \(softpack-pack\)\)" fit.json fit p1.h5
 expect_error "n1\.h5: not a softpack average file \(it is a normal sweep results file \(softpack-normal\)\)" fit.json fit n1.h5
 
-# --- Seeds -------------------------------------------------------------------------------------
-# Random draws below come from bash's RANDOM with a fixed seed, printed, so that a failure
-# reproduces.
+# --- Ranges (engine/scene/limits.hpp) -----------------------------------------------------------
+# Random draws below (seeds, magnitudes) come from bash's RANDOM with a fixed seed, printed, so
+# that a failure reproduces.
 range_seed=20240611
 RANDOM=$range_seed
 echo "random seed of the range cases: $range_seed"
@@ -166,6 +166,8 @@ big_seed() {
   [ "${s:0:1}" = 9 ] || s="$s$((RANDOM % 10))"
   echo "$s"
 }
+# big_magnitude LO HI: 1.0e<k> with k a random integer in [LO, HI].
+big_magnitude() { echo "1.0e$(($1 + RANDOM % ($2 - $1 + 1)))"; }
 
 case_name seed_of_2_63_or_more_on_the_command_line_is_refused
 for s in 9223372036854775808 18446744073709551615 18446744073709551616 "$(big_seed)" "$(big_seed)"; do
@@ -214,6 +216,24 @@ expect_error "^softpack-average: error: --tangential: t-bad\.h5 and t1-copy\.h5 
   avg n1.h5 "t-bad.h5 t1-copy.h5"
 "$bin/softpack-average" --scene soft-solid --profile fuzz-seed --normal n1.h5 --tangential t-bad.h5 --out-dir avg ||
   fail "the average of one seed's results was refused"
+
+case_name youngs_modulus_that_overflows_is_refused_before_the_sweep
+# E = 1e308 made the normal sweep spin (a time step of 1e-156 s, infinite residuals): the timeout
+# turns that into a failure instead of a hang.
+for E in 1.0e308 "$(big_magnitude 14 307)" "$(big_magnitude 14 307)"; do
+  edit "$profile" "s/E: 5.0e5/E: $E/"
+  expect_error "^softpack-normal: error: bad\.yaml:5:15: material\.E: [0-9.e]+ Pa is not allowed; allowed: 1 <= E <= 1e13 Pa" normal.h5 \
+    timeout 60 "$bin/softpack-normal" --config bad.yaml --scene soft-solid --seed 1 --packing p1.h5 --checkpoints ncp --out normal.h5 --quiet
+  expect_error "bad\.yaml:5:15: material\.E: [0-9.e]+ Pa is not allowed" none.txt "$bin/softpack-config" bad.yaml seeds
+done
+[ ! -e ncp ] || [ -z "$(ls -A ncp)" ] || fail "checkpoints were written for bad input: $(ls ncp)"
+
+case_name shell_radius_that_overflows_is_refused
+# Rs = 1e300 ended in "internal error: vector::reserve" (exit 1).
+for Rs in 1.0e300 "$(big_magnitude 4 307)"; do
+  edit "$profile" "s/Rs: 0.016/Rs: $Rs/"
+  expect_error "^softpack-pack: error: bad\.yaml:7:7: packing\.Rs: [0-9.e]+ m is not allowed; allowed: 1e-9 <= Rs <= 1000 m" pack.h5 pack bad.yaml
+done
 
 # --- Command lines: CLI11's errors are bad input (exit 2, one line); --help exits 0 --------------
 case_name every_executable_maps_command_line_errors_to_exit_2

@@ -30,9 +30,9 @@ expect_error "packing.polydispersity: 1 is not allowed; allowed: 1 < Pi <= 1e6" 
 edit 's/exponent: [0-9.]*/exponent: 1/'
 expect_error "packing.exponent: 1 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/beta: [0-9.]*/beta: 0/'
-expect_error "packing.beta: 0 is not allowed; allowed: beta > 0" "$out" pack "$tmp/bad.yaml" 1 "$out"
+expect_error "packing.beta: 0 is not allowed; allowed: 0 < beta <= 100" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/trials: [0-9]*/trials: 0/'
-expect_error "packing.trials: 0 is not allowed; allowed: I >= 1" "$out" pack "$tmp/bad.yaml" 1 "$out"
+expect_error "packing.trials: 0 is not allowed; allowed: 1 <= I <= 1e6" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/r_max_over_Rs: [0-9.]*/r_max_over_Rs: 1.2/'
 expect_error "packing.r_max_over_Rs: 1.2 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit '/beta:/d'

@@ -1,7 +1,8 @@
 // Scene files and profiles: every mistake gives one message naming the file, line, key and what
-// is allowed; integers and seeds are read exactly.
+// is allowed, including every value beyond the ranges of scene/limits.hpp.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
@@ -152,10 +153,15 @@ TEST(ClosestMatch, SuggestsOnlyCloseWords) {
   EXPECT_EQ(closest_match("zzzzzzzz", {"normal", "friction"}), "");
 }
 
-// --- Integers and seeds, read exactly ----------------------------------------------------------
+// --- Ranges (scene/limits.hpp) ------------------------------------------------------------------
 
-// Random draws of these tests: a fixed seed, printed, so that a failure reproduces.
+// Random draws of the range tests: a fixed seed, printed, so that a failure reproduces.
 constexpr std::uint64_t kRangeTestSeed = 20240611;
+
+// A value in [10^lo, 10^hi), drawn uniformly in its exponent.
+double random_magnitude(std::mt19937_64& rng, double lo, double hi) {
+  return std::pow(10.0, std::uniform_real_distribution<double>(lo, hi)(rng));
+}
 
 // The message of loading `text` as a profile with every section read ("" if it loads).
 std::string profile_error(const std::string& text) {
@@ -236,6 +242,85 @@ TEST(Profile, RepeatedSeedsAreRefusedNamingKeyAndValue) {
   EXPECT_CONTAINS(profile_error(replace(text, "seeds: [1, 2]", "seeds: [1, 1]")),
                   "profile.yaml:6:12: seeds[1]: seed 1 is listed twice (first as seeds[0])");
   EXPECT_CONTAINS(profile_error(replace(text, "seeds: [1, 2]", "seeds: [5, 9, 7, 9]")), "seeds[3]: seed 9 is listed twice (first as seeds[1])");
+}
+
+TEST(SceneFile, OverflowingMagnitudesAreRefusedWithKeyValueAndRange) {
+  SCOPED_TRACE("random seed of this test: " + std::to_string(kRangeTestSeed));
+  std::mt19937_64 rng(kRangeTestSeed);
+  // (text to replace, its key, the template of the new value (%), the allowed range, the random exponents)
+  struct Case {
+    std::string from, key, to, allowed;
+    double lo, hi;
+  };
+  const std::vector<Case> cases = {
+      {"E: 5.0e5", "materials.grain.E", "E: %", "allowed: 1 <= E <= 1e13 Pa", 13.01, 308.2},
+      {"density: 2500.0", "materials.grain.density", "density: %", "allowed: 0.001 <= density <= 1e9 kg/m^3", 9.01, 308.2},
+      {"mu: 0.3", "materials.grain.mu", "mu: %", "allowed: 0 <= mu <= 100", 2.01, 308.2},
+      {"r: 1.0e-3, material: grain, body: 0}\n  - {x: [0, 0, 0.0025]", "particles[0].r",
+       "r: %, material: grain, body: 0}\n  - {x: [0, 0, 0.0025]", "allowed: 1e-9 <= r <= 1000 m", 3.01, 308.2},
+      {"radius: 0.016", "shells[0].radius", "radius: %", "allowed: 1e-9 <= radius <= 1000 m", 3.01, 308.2},
+      {"velocity: [0, 0, 1.0e-3]", "drivers[0].velocity", "velocity: [0, 0, %]", "allowed: 0 < |velocity| <= 10000 m/s", 4.01, 154},
+      {"skin: 0.2", "neighbor.skin", "skin: %", "allowed: 0 < skin <= 100", 2.01, 308.2},
+      {"level_ratio: 2.0", "neighbor.level_ratio", "level_ratio: %", "allowed: 1.1 <= level_ratio <= 1000", 3.01, 308.2},
+      {"tangential_ratio: 1.0", "effects.damping.tangential_ratio", "tangential_ratio: %", "allowed: 0 <= tangential_ratio <= 100",
+       2.01, 308.2},
+  };
+  for (const Case& c : cases)
+    for (int k = 0; k < 4; ++k) {
+      std::string value = k == 0 ? "1.0e308" : fmt::format("{:.6g}", random_magnitude(rng, c.lo, c.hi));
+      std::string to = c.to;
+      to.replace(to.find('%'), 1, value);
+      const std::string msg = error_of(replace(kValid, c.from, to));
+      EXPECT_CONTAINS(msg, "scene.yaml:");
+      EXPECT_CONTAINS(msg, c.key + ": ");
+      EXPECT_CONTAINS(msg, " is not allowed; " + c.allowed);
+    }
+  // The tiny ends, where the products underflow or the time step vanishes.
+  EXPECT_CONTAINS(error_of(replace(kValid, "E: 5.0e5", "E: 1.0e-300")), "materials.grain.E: 1e-300 Pa is not allowed; allowed: 1 <= E <= 1e13 Pa");
+  EXPECT_CONTAINS(error_of(replace(kValid, "density: 2500.0", "density: 1.0e-300")), "materials.grain.density: 1e-300 kg/m^3 is not allowed");
+  EXPECT_CONTAINS(error_of(replace(kValid, "level_ratio: 2.0", "level_ratio: 1.0000001")),
+                  "neighbor.level_ratio: 1.0000001 is not allowed; allowed: 1.1 <= level_ratio <= 1000");
+  EXPECT_CONTAINS(error_of(replace(kValid, "centre: [0, 0, 0.001]", "centre: [0, 0, 1.0e300]")),
+                  "shells[0].centre: 1e300 m (its z coordinate) is not allowed; allowed: -1e6 <= coordinate <= 1e6 m");
+  EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: 2000000000")),
+                  "run.relaxation.stops: 2e9 is not allowed; allowed: 0 <= stops <= 1e6");
+}
+
+TEST(SceneFile, SpheresBeyondTheContactGridAreRefused) {
+  // Two spheres 10 km apart: 4.5e6 cells of 2.2 mm, beyond the grid's 21-bit coordinates. The
+  // scene used to load and then fail inside the grid ("internal error").
+  const std::string text = replace(replace(kValid, "  - {x: [0, 0, 0.0025], r: 1.0e-3, material: grain, body: 0}\n", "  - {x: [1.0e4, 0, 0], r: 1.0e-3, material: grain}\n"),
+                                   "shells:\n  - {name: shell, body: 0, centre: [0, 0, 0.001], radius: 0.016, material: grain, contact_radius: concave}\n", "");
+  EXPECT_CONTAINS(error_of(text), "scene.yaml:9:3: particles: the spheres span 10000.002 m along x, 4545455 cells");
+  EXPECT_CONTAINS(error_of(text), "allowed: fewer than 2097151 cells (2^21 - 1)");
+}
+
+TEST(Profile, OverflowingValuesAreRefusedWithKeyValueAndRange) {
+  SCOPED_TRACE("random seed of this test: " + std::to_string(kRangeTestSeed));
+  std::mt19937_64 rng(kRangeTestSeed);
+  const std::string text = quick_profile();
+  for (int k = 0; k < 4; ++k) {
+    const std::string big = k == 0 ? "1.0e300" : fmt::format("{:.6g}", random_magnitude(rng, 3.01, 308.2));
+    // Rs: 1e300 ended in "internal error: vector::reserve" (the sphere count was NaN).
+    EXPECT_CONTAINS(profile_error(replace(text, "Rs: 0.016", "Rs: " + big)), ":11:7: packing.Rs: ");
+    EXPECT_CONTAINS(profile_error(replace(text, "Rs: 0.016", "Rs: " + big)), " m is not allowed; allowed: 1e-9 <= Rs <= 1000 m");
+    // E: 1e308 made the normal sweep spin at a time step of 1e-156 s.
+    const std::string E = k == 0 ? "1.0e308" : fmt::format("{:.6g}", random_magnitude(rng, 13.01, 308.2));
+    EXPECT_CONTAINS(profile_error(replace(text, "E: 5.0e5", "E: " + E)), ":8:15: material.E: ");
+    EXPECT_CONTAINS(profile_error(replace(text, "E: 5.0e5", "E: " + E)), " Pa is not allowed; allowed: 1 <= E <= 1e13 Pa");
+  }
+  EXPECT_CONTAINS(profile_error(replace(text, "trials: 3000", "trials: 1000000000000")),
+                  "packing.trials: 1e12 is not allowed; allowed: 1 <= I <= 1e6");
+  EXPECT_CONTAINS(profile_error(replace(text, "beta: 2.0", "beta: 1.0e300")), "packing.beta: 1e300 is not allowed; allowed: 0 < beta <= 100");
+  EXPECT_CONTAINS(profile_error(replace(text, "speed: 0.02", "speed: 1.0e300")),
+                  "normal.speed: 1e300 m/s is not allowed; allowed: 0 < speed <= 10000 m/s");
+  EXPECT_CONTAINS(profile_error(replace(text, "rate: 0.1", "rate: 1.0e300")),
+                  "tangential.rate: 1e300 rad/s is not allowed; allowed: 0 < rate <= 1e6 rad/s");
+  // Relations: the smallest grain (r_max / Pi) of 1.6e-12 m, and a shell of 1.5e6 insertion cells.
+  EXPECT_CONTAINS(profile_error(replace(replace(text, "Rs: 0.016", "Rs: 1.6e-8"), "polydispersity: 3", "polydispersity: 3000")),
+                  "packing.polydispersity: 3000 is not allowed with Rs = 1.6e-8 m and r_max_over_Rs = 0.3: the smallest radius");
+  EXPECT_CONTAINS(profile_error(replace(text, "polydispersity: 3", "polydispersity: 1000000")),
+                  "packing.polydispersity: 1e6 is not allowed with r_max_over_Rs = 0.3: the shell would span");
 }
 
 }  // namespace
