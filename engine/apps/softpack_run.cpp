@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -18,6 +19,7 @@
 #include "io/atomic_file.hpp"
 #include "relax/relaxation.hpp"
 #include "scene/scene_yaml.hpp"
+#include "scene/validate.hpp"
 #include "sim/simulation.hpp"
 
 namespace {
@@ -78,7 +80,21 @@ int main(int argc, char** argv) {
     const SceneFile file = load_scene_file(scene_path);
     if (!file.run.duration && !file.run.relaxation)
       throw InputError(scene_path + ": run: nothing to do; give run.duration and/or run.relaxation");
-    Simulation sim(file.scene);
+    // The rules that need the time step (the steps of each duration), placed in the file.
+    const auto located = [&](const auto& check) {
+      try {
+        check();
+      } catch (const InputError& e) {
+        throw file.root.locate(e);
+      }
+    };
+    std::optional<Simulation> built;
+    located([&] { built.emplace(file.scene); });
+    Simulation& sim = *built;
+    located([&] {
+      if (file.run.duration) validate_steps(*file.run.duration, sim.dt(), "run.duration");
+      if (file.run.relaxation) validate_steps(*file.run.relaxation, sim.dt(), "run.relaxation");
+    });
     Progress progress(quiet);
 
     if (file.run.duration) {

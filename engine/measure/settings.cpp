@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "config/profile.hpp"
 #include "core/error.hpp"
@@ -105,6 +106,31 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   if (const std::string why = limits::refusal(m.tangential.rate, kRate); !why.empty()) tn.at("rate").fail(why);
   m.tangential.after = tn.at("after_rotation").choice({"release", "hold"}) == "release" ? AfterRotation::release : AfterRotation::hold;
   return m;
+}
+
+void validate_sweep_steps(const MeasurementSettings& m, double Rs, double dt) {
+  validate_steps(m.relaxation, dt, "relaxation");
+  // The longest approach of a normal point: from the previous point (incremental) or from 0.
+  const std::vector<double>& grid = m.normal.delta_n;
+  double way = 0.0;
+  for (std::size_t k = 0; k < grid.size(); ++k) way = std::max(way, grid[k] - (m.normal.incremental && k > 0 ? grid[k - 1] : 0.0));
+  validate_steps(way * Rs / m.normal.speed, dt, "normal.speed",
+                 fmt::format("{} m/s, the approach of {} m (delta_n {} of Rs = {} m) in {} s,", limits::number_text(m.normal.speed),
+                             limits::approx_text(way * Rs), limits::approx_text(way), limits::number_text(Rs),
+                             limits::approx_text(way * Rs / m.normal.speed)));
+  // The largest rotation of a tangential point, and its turn per time step.
+  double angle = 0.0;
+  for (const double a : m.tangential.alpha_deg) angle = std::max(angle, std::abs(a) * std::numbers::pi / 180.0);
+  const double rate = m.tangential.rate;
+  if (!(rate * dt <= limits::kMaxRotationPerStep))
+    throw InputError(fmt::format("tangential.rate: {} rad/s turns the soft-particle by {} rad in a time step of dt = {} s; "
+                                 "allowed: at most {} rad per step (rate <= {} rad/s)",
+                                 limits::number_text(rate), limits::approx_text(rate * dt), limits::approx_text(dt),
+                                 limits::number_text(limits::kMaxRotationPerStep),
+                                 limits::approx_text(limits::kMaxRotationPerStep / dt)));
+  validate_steps(angle / rate, dt, "tangential.rate",
+                 fmt::format("{} rad/s, the rotation of {} rad in {} s,", limits::number_text(rate), limits::approx_text(angle),
+                             limits::approx_text(angle / rate)));
 }
 
 }  // namespace softpack

@@ -282,7 +282,7 @@ void validate_effects(const EffectsDef& e, const std::vector<Material>& material
 void validate_integration(const IntegrationDef& in, const std::string& key) {
   if (in.dt && in.safety) fail(key, "give 'dt' or 'safety', not both");
   if (!in.dt && !in.safety) fail(key, "one of 'dt' or 'safety' is required");
-  // dt <= the stable limit: integrate/time_step.cpp.
+  // dt <= the stable limit: integrate/time_step.cpp; the steps it makes of a duration: validate_steps().
   if (in.dt && !(*in.dt > 0.0 && std::isfinite(*in.dt))) fail(key + ".dt", fmt::format("{} s is not allowed; allowed: dt > 0", *in.dt));
   if (in.safety) check(key + ".safety", *in.safety, limits::kSafety);
 }
@@ -325,6 +325,61 @@ void validate(const RelaxationDef& def, const std::string& key) {
 }
 
 void validate_drivers(const SceneDef& scene, const std::vector<DriverDef>& drivers) { check_drivers(scene, drivers); }
+
+void validate_steps(double seconds, double dt, const std::string& key, const std::string& what) {
+  const double steps = seconds / dt;
+  if (steps <= limits::kMaxSteps) return;
+  fail(key, fmt::format("{} is {} time steps of dt = {} s; allowed: at most {} steps ({} s of simulated time)",
+                        what.empty() ? number_text(seconds) + " s" : what, limits::approx_text(steps),
+                        limits::approx_text(dt), number_text(limits::kMaxSteps), limits::approx_text(limits::kMaxSteps * dt)));
+}
+
+void validate_steps(const RelaxationDef& def, double dt, const std::string& key) {
+  if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
+    const auto steps = [&](double t) { return std::max(1.0, std::round(t / dt)); };  // Simulation::steps_for
+    const double total = p->stops * steps(p->wait) + steps(p->final_wait);
+    if (total <= limits::kMaxSteps) return;
+    const bool waits = p->stops > 0 && p->stops * p->wait >= p->final_wait;
+    fail(key + (waits ? ".wait" : ".final_wait"),
+         fmt::format("the protocol ({} stops after {} s each, then {} s) is {} time steps of dt = {} s; allowed: at most {} "
+                     "steps",
+                     p->stops, number_text(p->wait), number_text(p->final_wait), limits::approx_text(total),
+                     limits::approx_text(dt), number_text(limits::kMaxSteps)));
+  }
+  const auto& c = std::get<ConvergedRelaxationDef>(def);
+  validate_steps(c.max_time, dt, key + ".max_time");
+}
+
+void validate_steps(const DriverDef& driver, double dt, const std::string& key) {
+  std::visit(
+      [&](const auto& d) {
+        using D = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<D, MoveWallDef> || std::is_same_v<D, TranslateGroupDef>) {
+          const double speed = d.velocity.norm();
+          if (!(speed > 0.0)) return;  // validate_drivers() refuses it
+          if (d.distance)
+            validate_steps(*d.distance / speed, dt, key + ".distance",
+                           fmt::format("{} m at {} m/s", number_text(*d.distance), number_text(speed)));
+          else
+            validate_steps(*d.duration, dt, key + ".duration");
+        } else if constexpr (std::is_same_v<D, RotateGroupDef>) {
+          const double rate = std::abs(d.rate);
+          if (!(rate > 0.0)) return;  // validate_drivers() refuses it
+          if (!(rate * dt <= limits::kMaxRotationPerStep))
+            fail(key + ".rate", fmt::format("{} rad/s turns the group by {} rad in a time step of dt = {} s; allowed: at most "
+                                            "{} rad per step (|rate| <= {} rad/s)",
+                                            number_text(d.rate), limits::approx_text(rate * dt), limits::approx_text(dt),
+                                            number_text(limits::kMaxRotationPerStep),
+                                            limits::approx_text(limits::kMaxRotationPerStep / dt)));
+          if (d.angle)
+            validate_steps(*d.angle / rate, dt, key + ".angle",
+                           fmt::format("{} rad at {} rad/s", number_text(*d.angle), number_text(rate)));
+          else
+            validate_steps(*d.duration, dt, key + ".duration");
+        }
+      },
+      driver);
+}
 
 int SceneDef::material_index(const std::string& name) const {
   for (std::size_t k = 0; k < materials.size(); ++k)

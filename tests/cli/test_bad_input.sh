@@ -5,7 +5,7 @@
 # truncated HDF5 file, a foreign HDF5 file (not ours, or ours of another kind) and a packing of
 # another configuration each give one message naming the file (and the key or dataset), exit
 # code 2, and no output file or temporary left behind. So do values beyond the ranges of
-# engine/scene/limits.hpp (seeds, moduli, radii), a seed given twice, and every
+# engine/scene/limits.hpp (seeds, moduli, radii, step counts), a seed given twice, and every
 # command line that CLI11 refuses (exit 2, not CLI11's codes; --help exits 0). The cases
 # test_softpack_*.sh already check are not repeated here.
 set -euo pipefail
@@ -234,6 +234,20 @@ for Rs in 1.0e300 "$(big_magnitude 4 307)"; do
   edit "$profile" "s/Rs: 0.016/Rs: $Rs/"
   expect_error "^softpack-pack: error: bad\.yaml:7:7: packing\.Rs: [0-9.e]+ m is not allowed; allowed: 1e-9 <= Rs <= 1000 m" pack.h5 pack bad.yaml
 done
+
+case_name durations_of_more_than_1e12_steps_are_refused
+# run.duration = 1e30 s (1.3e34 steps) used to run one step and exit 0: the step count overflowed.
+for d in 1.0e30 "$(big_magnitude 9 300)"; do
+  edit "$scene" "s/^  relaxation: .*/  duration: $d/"
+  expect_error "^softpack-run: error: bad\.yaml:18:13: run\.duration: [0-9.e]+ s is [0-9.e]+ time steps of dt = 7\.74e-5 s; allowed: at most 1e12 steps" \
+    run.json run bad.yaml
+done
+edit "$scene" 's/wait: 0.05, final_wait/wait: 1.0e20, final_wait/'
+expect_error "bad\.yaml:18:49: run\.relaxation\.wait: the protocol \(6 stops after 1e20 s each, then 0\.05 s\) is [0-9.e]+ time steps" run.json run bad.yaml
+edit "$profile" 's/speed: 0.02/speed: 1.0e-200/'
+expect_error "^softpack-normal: error: bad\.yaml:[0-9]+:[0-9]+: normal\.speed: 1e-200 m/s, the approach of [0-9.e-]+ m .* time steps of dt = [0-9.e-]+ s; allowed: at most 1e12 steps" \
+  normal.h5 timeout 60 "$bin/softpack-normal" --config bad.yaml --scene soft-solid --seed 1 --packing p1.h5 --checkpoints ncp --out normal.h5 --quiet
+[ ! -e ncp ] || [ -z "$(ls -A ncp)" ] || fail "checkpoints were written for bad input: $(ls ncp)"
 
 # --- Command lines: CLI11's errors are bad input (exit 2, one line); --help exits 0 --------------
 case_name every_executable_maps_command_line_errors_to_exit_2

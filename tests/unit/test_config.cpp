@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -16,6 +17,8 @@
 #include "measure/settings.hpp"
 #include "packing/packing_profile.hpp"
 #include "scene/scene_yaml.hpp"
+#include "scene/validate.hpp"
+#include "sim/simulation.hpp"
 
 namespace softpack {
 namespace {
@@ -295,6 +298,54 @@ TEST(SceneFile, SpheresBeyondTheContactGridAreRefused) {
   EXPECT_CONTAINS(error_of(text), "allowed: fewer than 2097151 cells (2^21 - 1)");
 }
 
+TEST(SceneFile, DurationsOfMoreThan1e12StepsAreRefused) {
+  SCOPED_TRACE("random seed of this test: " + std::to_string(kRangeTestSeed));
+  std::mt19937_64 rng(kRangeTestSeed);
+  const SceneFile f = parse_scene(ConfigNode::load_string(kValid, "scene.yaml"));
+  const Simulation sim(f.scene);
+  const double dt = sim.dt();
+  for (int k = 0; k < 5; ++k) {
+    const double duration = dt * random_magnitude(rng, 12.01, 300);  // up to 1e300 steps: lround's range is 2^63
+    try {
+      validate_steps(duration, dt, "run.duration");
+      ADD_FAILURE() << duration << " s accepted";
+    } catch (const InputError& e) {
+      EXPECT_CONTAINS(std::string(e.what()), "run.duration: ");
+      EXPECT_CONTAINS(std::string(e.what()), " time steps of dt = ");
+      EXPECT_CONTAINS(std::string(e.what()), "; allowed: at most 1e12 steps");
+    }
+    EXPECT_THROW(sim.steps_for(duration), InputError) << "the backstop of run_for";
+  }
+  EXPECT_NO_THROW(validate_steps(1e11 * dt, dt, "run.duration"));
+  // The relaxation and the drivers, named by their keys.
+  try {
+    validate_steps(RelaxationDef{PaperRelaxationDef{6, 1e12 * dt, 0.3}}, dt, "run.relaxation");
+    ADD_FAILURE() << "a wait of 6e12 steps accepted";
+  } catch (const InputError& e) {
+    EXPECT_CONTAINS(std::string(e.what()), "run.relaxation.wait: the protocol (6 stops after");
+  }
+  SceneDef s = f.scene;
+  std::get<MoveWallDef>(s.drivers[0]).velocity = Vec3(0, 0, 1e-100);
+  try {
+    const Simulation slow(s);
+    ADD_FAILURE() << "a driver of 1e95 s accepted";
+  } catch (const InputError& e) {
+    EXPECT_CONTAINS(std::string(e.what()), "drivers[0].distance: 1e-5 m at 1e-100 m/s is");
+  }
+}
+
+TEST(SceneFile, ScenesWithOneOverflowingValueInTheLoadedFileAreLocated) {
+  // The rules that need the time step are placed in the file by their key too.
+  const SceneFile f = parse_scene(ConfigNode::load_string(replace(kValid, "wait: 0.3", "wait: 1.0e30"), "scene.yaml"));
+  const Simulation sim(f.scene);
+  try {
+    validate_steps(*f.run.relaxation, sim.dt(), "run.relaxation");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_CONTAINS(std::string(f.root.locate(e).what()), "scene.yaml:20:49: run.relaxation.wait: the protocol");
+  }
+}
+
 TEST(Profile, OverflowingValuesAreRefusedWithKeyValueAndRange) {
   SCOPED_TRACE("random seed of this test: " + std::to_string(kRangeTestSeed));
   std::mt19937_64 rng(kRangeTestSeed);
@@ -321,6 +372,69 @@ TEST(Profile, OverflowingValuesAreRefusedWithKeyValueAndRange) {
                   "packing.polydispersity: 3000 is not allowed with Rs = 1.6e-8 m and r_max_over_Rs = 0.3: the smallest radius");
   EXPECT_CONTAINS(profile_error(replace(text, "polydispersity: 3", "polydispersity: 1000000")),
                   "packing.polydispersity: 1e6 is not allowed with r_max_over_Rs = 0.3: the shell would span");
+}
+
+TEST(Profile, SweepPointsOfMoreThan1e12StepsAreRefused) {
+  const std::string text = quick_profile();
+  const double Rs = 0.016, dt = 1e-5;
+  const auto sweep_error = [&](const std::string& from, const std::string& to) {
+    try {
+      validate_sweep_steps(parse_measurement(ConfigNode::load_string(replace(text, from, to), "profile.yaml")), Rs, dt);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(sweep_error("speed: 0.02", "speed: 0.02"), "");
+  EXPECT_CONTAINS(sweep_error("speed: 0.02", "speed: 1.0e-300"), "normal.speed: 1e-300 m/s, the approach of");
+  EXPECT_CONTAINS(sweep_error("speed: 0.02", "speed: 1.0e-300"), "; allowed: at most 1e12 steps");
+  EXPECT_CONTAINS(sweep_error("rate: 0.1", "rate: 1.0e-300"), "tangential.rate: 1e-300 rad/s, the rotation of");
+  EXPECT_CONTAINS(sweep_error("rate: 0.1", "rate: 1.0e5"), "tangential.rate: 1e5 rad/s turns the soft-particle by 1 rad in a time step");
+  EXPECT_CONTAINS(sweep_error("final_wait: 0.2", "final_wait: 1.0e300"), "relaxation.final_wait: the protocol (3 stops after 0.2 s each");
+}
+
+TEST(Experiments, EveryFileStillLoads) {
+  // The ranges refuse no file of the project: every scene and every profile.
+  namespace fs = std::filesystem;
+  const fs::path root = SOFTPACK_SOURCE_DIR;
+  int scenes = 0;
+  for (const char* dir : {"experiments/scenes", "experiments/stability"})
+    for (const auto& f : fs::directory_iterator(root / dir)) {
+      const std::string path = f.path().string();
+      SCOPED_TRACE(path);
+      if (path.ends_with("coincident-centres.yaml")) {  // refused on purpose (tests/stability/README.md)
+        EXPECT_THROW(load_scene_file(path), InputError);
+        continue;
+      }
+      const ConfigNode r = ConfigNode::load_file(path);
+      if (r.has("packing")) {  // a packing section for a stability test (packing-pi.yaml)
+        EXPECT_NO_THROW(parse_seeds(r));
+        EXPECT_NO_THROW(parse_packing(r));
+        continue;
+      }
+      const SceneFile s = parse_scene(r);
+      const Simulation sim(s.scene);
+      if (s.run.duration) {
+        EXPECT_NO_THROW(validate_steps(*s.run.duration, sim.dt(), "run.duration"));
+      }
+      if (s.run.relaxation) {
+        EXPECT_NO_THROW(validate_steps(*s.run.relaxation, sim.dt(), "run.relaxation"));
+      }
+      ++scenes;
+    }
+  EXPECT_GE(scenes, 17);
+  for (const char* profile : {"experiments/paper.yaml", "experiments/quick.yaml", "tests/data/sweep-profile.yaml",
+                              "fuzz/seed-profile.yaml", "data/archive/0.2.0/paper/profile.yaml", "bench/profiles/packing-100k.yaml"}) {
+    SCOPED_TRACE(profile);
+    const ConfigNode r = ConfigNode::load_file((root / profile).string());
+    EXPECT_NO_THROW(parse_seeds(r));
+    EXPECT_NO_THROW(parse_packing(r));
+    if (r.has("normal")) {  // the benchmark's profile has a packing only
+      EXPECT_NO_THROW(parse_measurement(r));
+    }
+  }
+  const ConfigNode study = ConfigNode::load_file((root / "experiments/packing-density.yaml").string());
+  EXPECT_NO_THROW(parse_seeds(study));
 }
 
 }  // namespace
