@@ -3,10 +3,25 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "core/error.hpp"
 
 namespace softpack {
+
+void check_distinct_seeds(const std::vector<SeedFile>& files, const std::string& option) {
+  for (std::size_t j = 1; j < files.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i) {
+      const SeedFile &a = files[i], &b = files[j];
+      std::error_code ec;
+      if (a.path == b.path || std::filesystem::equivalent(a.path, b.path, ec))
+        throw InputError(fmt::format("{}: {} and {} are the same file; allowed: each seed's results once", option, a.path,
+                                     b.path));
+      if (a.seed == b.seed)
+        throw InputError(fmt::format("{}: {} and {} are both results of seed {}; allowed: each seed's results once", option,
+                                     a.path, b.path, a.seed));
+    }
+}
 
 MeanError mean_error(const std::vector<double>& v) {
   MeanError m;

@@ -4,6 +4,7 @@
 // parallel force against ht over the alpha grid, one per seed, then averaged. On the results
 // in memory (formats/sweep_file.hpp reads them); the average file: formats/average_file.hpp.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,16 @@ struct SweepColumns {
   std::string path;  ///< the file they come from (for messages)
   std::vector<double> delta_n, alpha_deg, ht, Fn, Ft_parallel, Ft_perpendicular;
 };
+
+/// One file of an average and the seed it records.
+struct SeedFile {
+  std::string path;
+  std::uint64_t seed = 0;
+};
+/// InputError unless every file is another file, of another seed: the same packing counted twice
+/// would enter the mean twice and shrink its standard error (to 0 for [1, 1]). The message names
+/// `option` and both files ("--normal: a.h5 and b.h5 are the same file").
+void check_distinct_seeds(const std::vector<SeedFile>& files, const std::string& option);
 
 /// Mean and standard error of the mean (0 for a single value).
 struct MeanError {

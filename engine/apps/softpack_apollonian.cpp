@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -61,11 +62,7 @@ int main(int argc, char** argv) {
   app.add_option("--min-radius", min_radius,
                  fmt::format("skip circles smaller than this (outer radius = 1); >= {:g}", kSmallestMinRadius));
   app.add_option("--out", out_path, "data file to write (atomically)")->required();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is not an error; every bad command line is
-  }
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-apollonian")) return *code;
 
   try {
     const auto start = Clock::now();

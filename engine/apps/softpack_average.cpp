@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "analysis/average.hpp"
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -23,14 +24,24 @@ int main(int argc, char** argv) {
   app.add_option("--normal", p.normal_inputs, "normal results of every seed")->required();
   app.add_option("--tangential", p.tangential_inputs, "tangential results of every seed")->required();
   app.add_option("--out-dir", out_dir, "writes <scene>.h5, normal-<scene>.dat, tangential-<scene>.dat, kt-<scene>.dat")->required();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-average")) return *code;
   try {
     const auto start = std::chrono::steady_clock::now();
     if (p.scene != "soft-solid" && p.scene != "soft-soft")
       throw InputError(fmt::format("--scene: '{}' is not allowed; allowed: soft-solid, soft-soft", p.scene));
-    std::vector<SweepColumns> normal, tangential;  // the columns of each seed the averages read
-    for (const auto& path : p.normal_inputs) normal.push_back(read_sweep_results_file(path, "normal", p.scene));
-    for (const auto& path : p.tangential_inputs) tangential.push_back(read_sweep_results_file(path, "tangential", p.scene));
+    // The columns of each seed the averages read; each seed once.
+    const auto read = [&](const std::vector<std::string>& paths, const std::string& stage) {
+      std::vector<SweepColumns> columns;
+      std::vector<SeedFile> files;
+      for (const auto& path : paths) {
+        SweepResults r = read_sweep_results_file(path, stage, p.scene);
+        files.push_back({path, r.seed});
+        columns.push_back(std::move(r));
+      }
+      check_distinct_seeds(files, "--" + stage);
+      return columns;
+    };
+    const std::vector<SweepColumns> normal = read(p.normal_inputs, "normal"), tangential = read(p.tangential_inputs, "tangential");
     const NormalAverage n = average_normal(normal);
     const TangentialAverage t = average_tangential(tangential);
     p.code_version = code_version();

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "config/profile.hpp"
 #include "core/version.hpp"
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
         ->required()
         ->check(CLI::IsMember(profile_stages()));
   stamp->add_option("--release", release, "the release the stamp includes (default: this build's, " + release_version() + ")");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-config")) return *code;
   try {
     const ConfigNode root = ConfigNode::load_file(profile);
     // Every section the stages read, read as they read it: a profile a stage would refuse is refused here.

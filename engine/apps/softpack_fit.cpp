@@ -9,6 +9,7 @@
 #include <chrono>
 
 #include "analysis/power_fit.hpp"
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
   app.add_option("--gnuplot", gnuplot_path,
                  "also write the coefficients as gnuplot variables (a_solid=...; kt_a_solid=...; NaN when missing) for figures/*.gp");
   app.add_flag("--quiet", quiet, "no summary line on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-fit")) return *code;
 
   try {
     const auto start = Clock::now();

@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "packing/packing_profile.hpp"
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "config/profile.hpp"
 #include "core/error.hpp"
@@ -25,12 +26,14 @@ int main(int argc, char** argv) {
   long long seed = -1;
   bool quiet = false;
   app.add_option("--config", config_path, "profile file, e.g. experiments/paper.yaml (its `packing` section)")->required();
-  app.add_option("--seed", seed, "seed of the random numbers (>= 0); the same seed gives the same packing")->required();
+  app.add_option("--seed", seed, "seed of the random numbers, 0 <= seed <= 2^63 - 1; the same seed gives the same packing")
+      ->required()
+      ->check(seed_check());
   app.add_option("--out", out_path, "packing file to write (HDF5), e.g. data/paper/packings/seed-1.h5")->required();
   app.add_option("--vtp", vtp_path, "also write the spheres for ParaView (VTK PolyData)");
   app.add_option("--xyz", xyz_path, "also write the spheres for OVITO (extended XYZ)");
   app.add_flag("--quiet", quiet, "no progress lines on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-pack")) return *code;
 
   try {
     const auto start = Clock::now();

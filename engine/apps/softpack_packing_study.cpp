@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "config/profile.hpp"
 #include "packing/packing_profile.hpp"
@@ -30,7 +31,6 @@ struct Row {
 
 void set(PackingParameters& p, const std::string& key, double v) {
   if (key == "beta") p.beta = v;
-  else if (key == "trials") p.trials = static_cast<long>(v);
   else if (key == "r_max_over_Rs") p.r_max = v * p.Rs;
   else if (key == "shell_is_neighbour") p.shell_is_neighbour = v != 0.0;
 }
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   app.add_option("--config", study_path, "study file, e.g. experiments/packing-density.yaml")->required();
   app.add_option("--out", out_dir, "directory for packing-density.dat and packing-density.md")->required();
   app.add_flag("--quiet", quiet, "no progress lines");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-packing-study")) return *code;
   try {
     const auto start = std::chrono::steady_clock::now();
     const ConfigNode study = ConfigNode::load_file(study_path);
@@ -61,9 +61,14 @@ int main(int argc, char** argv) {
       for (const ConfigNode& v : vary.at(key).items()) {
         Row row;
         row.parameter = key;
-        row.value = key == "shell_is_neighbour" ? (v.boolean() ? 1.0 : 0.0) : v.number();
         PackingParameters p = profile.parameters;
-        set(p, key, row.value);
+        if (key == "trials") {  // a count, read exactly: 1.5 or 1e300 are none
+          p.trials = v.integer();
+          row.value = static_cast<double>(p.trials);
+        } else {
+          row.value = key == "shell_is_neighbour" ? (v.boolean() ? 1.0 : 0.0) : v.number();
+          set(p, key, row.value);
+        }
         try {
           validate(p);
         } catch (const InputError& e) {

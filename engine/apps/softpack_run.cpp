@@ -8,15 +8,18 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
 #include "relax/relaxation.hpp"
 #include "scene/scene_yaml.hpp"
+#include "scene/validate.hpp"
 #include "sim/simulation.hpp"
 
 namespace {
@@ -70,14 +73,28 @@ int main(int argc, char** argv) {
   app.add_option("--scene", scene_path, "scene file (YAML), see docs/scene-format.md")->required();
   app.add_option("--out", out_path, "write the JSON report here (atomically) instead of stdout");
   app.add_flag("--quiet", quiet, "no progress lines on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-run")) return *code;
 
   try {
     const auto wall_start = Clock::now();
     const SceneFile file = load_scene_file(scene_path);
     if (!file.run.duration && !file.run.relaxation)
       throw InputError(scene_path + ": run: nothing to do; give run.duration and/or run.relaxation");
-    Simulation sim(file.scene);
+    // The rules that need the time step (the steps of each duration), placed in the file.
+    const auto located = [&](const auto& check) {
+      try {
+        check();
+      } catch (const InputError& e) {
+        throw file.root.locate(e);
+      }
+    };
+    std::optional<Simulation> built;
+    located([&] { built.emplace(file.scene); });
+    Simulation& sim = *built;
+    located([&] {
+      if (file.run.duration) validate_steps(*file.run.duration, sim.dt(), "run.duration");
+      if (file.run.relaxation) validate_steps(*file.run.relaxation, sim.dt(), "run.relaxation");
+    });
     Progress progress(quiet);
 
     if (file.run.duration) {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -20,7 +21,7 @@ int main(int argc, char** argv) {
   app.add_option("--packing", packing_path, "packing file (HDF5) written by softpack-pack")->required();
   app.add_option("--out", out_path, "data file: columns x y r [m] of the cut circles")->required();
   app.add_option("--offset", offset, "height of the cutting plane above the shell centre [m]");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-section")) return *code;
   try {
     const PackingFile pk = read_packing_file(packing_path);
     if (!(std::abs(offset) < pk.Rs))

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "analysis/fit_table.hpp"
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
   app.add_option("--gnuplot", gnuplot_path,
                  "also write the published coefficients as gnuplot variables (paper_a_solid=...; paper_kt_a_soft=...) for "
                  "figures/*.gp");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-table")) return *code;
 
   try {
     const auto start = Clock::now();

@@ -1,7 +1,7 @@
 // The command line of softpack-normal and softpack-tangential: the same options but one each
 // (--hertz-check for the normal stage, --normal-checkpoints for the tangential one), then
 // run_stage (measure/stage.hpp) with a progress line per point (with the time left), a summary
-// line, and the exit codes of apps/exit_codes.hpp.
+// line, and the exit codes of apps/exit_codes.hpp (apps/command_line.hpp for the command line's).
 #pragma once
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 
+#include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "measure/stage.hpp"
 
@@ -22,7 +23,9 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
   CLI::App app{"softpack-" + stage + ": the " + stage + " contact-law sweep of one scene and one seed"};
   app.add_option("--config", o.config_path, "profile file, e.g. experiments/paper.yaml")->required();
   app.add_option("--scene", o.scene, "soft-solid or soft-soft")->required();
-  app.add_option("--seed", o.seed, "seed of this measurement (recorded in the results)")->required();
+  app.add_option("--seed", o.seed, "seed of this measurement (recorded in the results), 0 <= seed <= 2^63 - 1")
+      ->required()
+      ->check(seed_check());
   app.add_option("--packing", o.packing, "packing file of the first soft-particle");
   app.add_option("--second-packing", o.second_packing, "soft-soft: packing file of the second soft-particle (another seed)");
   app.add_option("--checkpoints", o.checkpoints, "directory of this stage's point files (resume from them)")->required();
@@ -34,9 +37,9 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
   app.add_option("--out", o.out, "results file (HDF5)")->required();
   app.add_flag("--quiet", quiet, "no progress lines");
   app.add_option("--stop-after", o.stop_after, "stop after this many new points (tests of the resume)")->group("");
-  CLI11_PARSE(app, argc, argv);
-
   const std::string program = "softpack-" + stage;
+  if (const auto code = parse_command_line(app, argc, argv, program)) return *code;
+
   // On a terminal each progress line replaces the previous one; in a log they follow each other.
   const bool tty = ::isatty(STDERR_FILENO) != 0;
   bool line_open = false;  // a progress line waits for its newline (terminal)

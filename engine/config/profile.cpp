@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include <map>
-#include <set>
 
 #include "core/error.hpp"
 #include "core/fnv1a.hpp"
+#include "core/random.hpp"
 
 namespace softpack {
 
@@ -54,12 +54,19 @@ std::string stage_stamp(const ConfigNode& root, const std::string& stage, const 
 
 std::vector<std::uint64_t> parse_seeds(const ConfigNode& root) {
   std::vector<std::uint64_t> seeds;
-  std::set<long> seen;
-  for (const ConfigNode& s : root.at("seeds").items()) {
-    const long v = s.integer();
-    if (v < 0) s.fail(fmt::format("{} is not allowed; allowed: a seed >= 0", v));
-    if (!seen.insert(v).second) s.fail(fmt::format("seed {} is listed twice", v));
-    seeds.push_back(static_cast<std::uint64_t>(v));
+  std::map<std::uint64_t, std::size_t> seen;  // seed -> its first index
+  const std::vector<ConfigNode> items = root.at("seeds").items();
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const ConfigNode& s = items[k];
+    if (!s.yaml().IsScalar()) s.fail("expected a seed, an integer like 3");
+    std::string error;
+    const auto v = parse_seed(s.yaml().Scalar(), error);
+    if (!v) s.fail(error);
+    const auto [first, fresh] = seen.emplace(*v, k);
+    if (!fresh)
+      s.fail(fmt::format("seed {} is listed twice (first as seeds[{}]); the seeds must be distinct, each is one packing", *v,
+                         first->second));
+    seeds.push_back(*v);
   }
   if (seeds.empty()) root.at("seeds").fail("at least one seed is required");
   return seeds;

@@ -33,7 +33,7 @@ std::string stage_text(const ConfigNode& root, const std::string& stage);
 /// and the stage's text. It changes when a section the stage reads changes, and only then.
 std::string stage_stamp(const ConfigNode& root, const std::string& stage, const std::string& version);
 
-/// The seeds of the profile (`seeds` list): non-negative, distinct.
+/// The seeds of the profile (`seeds` list): seeds as parse_seed() (core/random.hpp) reads them, distinct.
 std::vector<std::uint64_t> parse_seeds(const ConfigNode& root);
 
 }  // namespace softpack

@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 
 #include "config/yaml_text.hpp"
 #include "core/error.hpp"
+#include "core/integer_text.hpp"
 
 namespace softpack {
 
@@ -94,9 +96,14 @@ double ConfigNode::number() const {
 }
 
 long ConfigNode::integer() const {
-  const double v = number();
-  if (v != std::floor(v) || std::abs(v) > 1e15) fail(fmt::format("expected an integer, got '{}'", node_.Scalar()));
-  return static_cast<long>(v);
+  if (!node_.IsScalar()) fail("expected an integer");
+  const std::string& text = node_.Scalar();
+  const IntegerText v = parse_integer(text);
+  if (v.status == IntegerText::Status::ok) return v.value;
+  if (v.status == IntegerText::Status::out_of_range)
+    fail(fmt::format("'{}' is out of the range of integers (at most {} in magnitude)", text, std::numeric_limits<long>::max()));
+  number();  // text that is no number at all: "expected a number, got '...'"
+  fail(fmt::format("expected an integer, got '{}' (decimal digits, like 3: no point, exponent, '+' or leading zero)", text));
 }
 
 bool ConfigNode::boolean() const {

@@ -44,6 +44,8 @@ class ConfigNode {
 
   // Scalars.
   double number() const;
+  /// Read exactly (core/integer_text.hpp): decimal digits with an optional '-', no point,
+  /// exponent, '+' or leading zero; within the range of long. The key's range is its reader's.
   long integer() const;
   bool boolean() const;
   std::string string() const;  ///< one line of text: no control characters

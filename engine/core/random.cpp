@@ -1,5 +1,9 @@
 #include "core/random.hpp"
 
+#include <fmt/format.h>
+
+#include "core/integer_text.hpp"
+
 namespace softpack {
 namespace {
 
@@ -13,6 +17,27 @@ std::uint64_t splitmix64(std::uint64_t& state) {
 std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
 
 }  // namespace
+
+namespace {
+
+// The text as it may appear in a one-line message: control characters shown as '?'.
+std::string printable_text(std::string_view text) {
+  std::string out(text);
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = '?';
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::uint64_t> parse_seed(std::string_view text, std::string& error) {
+  const IntegerText v = parse_integer(text);
+  if (v.status == IntegerText::Status::ok && v.value >= 0) return static_cast<std::uint64_t>(v.value);
+  error = fmt::format("'{}' is not allowed; allowed: a seed, an integer 0 <= seed <= {} (2^63 - 1) in decimal digits "
+                      "(no sign, point, exponent or leading zero)",
+                      printable_text(text), kMaxSeed);
+  return std::nullopt;
+}
 
 Random::Random(std::uint64_t seed) {
   for (auto& s : s_) s = splitmix64(seed);

@@ -3,10 +3,25 @@
 // generator's raw bits here.
 #pragma once
 #include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
 
 #include "core/types.hpp"
 
 namespace softpack {
+
+/// The seeds of the project: the integers 0 <= seed <= kMaxSeed = 2^63 - 1. Random takes any
+/// 64-bit value, but every file stores its seed as a signed 64-bit integer (HDF5 int64,
+/// formats/h5_fields.hpp), and a seed names files (seed-<seed>.h5, workflow/packing.mk): a seed
+/// beyond the range would be recorded as another one than the file's name says.
+inline constexpr std::uint64_t kMaxSeed = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+
+/// The seed that `text` writes: decimal digits only, read exactly (core/integer_text.hpp; no
+/// sign, point, exponent, space or leading zero), within 0..kMaxSeed. Otherwise std::nullopt,
+/// and `error` says why ("'1.5' is not allowed; allowed: ...").
+std::optional<std::uint64_t> parse_seed(std::string_view text, std::string& error);
 
 /// xoshiro256** (Blackman & Vigna), seeded through SplitMix64.
 class Random {

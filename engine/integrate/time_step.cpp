@@ -31,7 +31,7 @@ double choose_time_step(const SceneDef& scene) {
     const double dt = *scene.integration.dt;
     if (dt > lim.t_rayleigh)
       throw InputError(fmt::format(
-          "integration.dt = {:.6g} s exceeds the stable limit {:.6g} s (the Rayleigh time of the "
+          "integration.dt: {:.6g} s exceeds the stable limit {:.6g} s (the Rayleigh time of the "
           "smallest, softest sphere: particles[{}], r = {:.6g} m, material '{}'); use dt <= "
           "{:.6g} s or integration.safety < 1",
           dt, lim.t_rayleigh, lim.particle, p.r, scene.materials[p.material].name, lim.t_rayleigh));

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "config/profile.hpp"
 #include "core/error.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene_yaml.hpp"
 #include "scene/validate.hpp"
 
@@ -21,6 +23,11 @@ ContactScene parse_contact_scene(const std::string& name) {
 std::string scene_name(ContactScene s) { return s == ContactScene::soft_solid ? "soft-solid" : "soft-soft"; }
 
 namespace {
+
+// The loading speed and the rotation rate: the ranges of a driver's (scene/limits.hpp), named
+// by the profile's keys.
+constexpr limits::Range kSpeed{0.0, limits::kDriveSpeed.hi, true, false, "speed", "m/s"};
+constexpr limits::Range kRate{0.0, limits::kRate.hi, true, false, "rate", "rad/s"};
 
 // Strictly increasing values in [lo, hi).
 std::vector<double> increasing_list(const ConfigNode& n, double lo, double hi) {
@@ -76,7 +83,7 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   m.normal.delta_n = increasing_list(nn.at("delta_n"), 0.0, 1.0);
   if (m.normal.delta_n.front() != 0.0) nn.at("delta_n").fail("must start at 0 (the undeformed state)");
   m.normal.speed = nn.at("speed").number();
-  if (!(m.normal.speed > 0.0)) nn.at("speed").fail(fmt::format("{} m/s is not allowed; allowed: > 0", m.normal.speed));
+  if (const std::string why = limits::refusal(m.normal.speed, kSpeed); !why.empty()) nn.at("speed").fail(why);
   m.normal.incremental = nn.at("path").choice({"incremental", "direct"}) == "incremental";
 
   const ConfigNode tn = root.at("tangential");
@@ -96,9 +103,34 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   if (alpha.empty()) tn.at("alpha_deg").fail("at least one angle is required");
   m.tangential.alpha_deg = alpha;
   m.tangential.rate = tn.at("rate").number();
-  if (!(m.tangential.rate > 0.0)) tn.at("rate").fail(fmt::format("{} rad/s is not allowed; allowed: > 0", m.tangential.rate));
+  if (const std::string why = limits::refusal(m.tangential.rate, kRate); !why.empty()) tn.at("rate").fail(why);
   m.tangential.after = tn.at("after_rotation").choice({"release", "hold"}) == "release" ? AfterRotation::release : AfterRotation::hold;
   return m;
+}
+
+void validate_sweep_steps(const MeasurementSettings& m, double Rs, double dt) {
+  validate_steps(m.relaxation, dt, "relaxation");
+  // The longest approach of a normal point: from the previous point (incremental) or from 0.
+  const std::vector<double>& grid = m.normal.delta_n;
+  double way = 0.0;
+  for (std::size_t k = 0; k < grid.size(); ++k) way = std::max(way, grid[k] - (m.normal.incremental && k > 0 ? grid[k - 1] : 0.0));
+  validate_steps(way * Rs / m.normal.speed, dt, "normal.speed",
+                 fmt::format("{} m/s, the approach of {} m (delta_n {} of Rs = {} m) in {} s,", limits::number_text(m.normal.speed),
+                             limits::approx_text(way * Rs), limits::approx_text(way), limits::number_text(Rs),
+                             limits::approx_text(way * Rs / m.normal.speed)));
+  // The largest rotation of a tangential point, and its turn per time step.
+  double angle = 0.0;
+  for (const double a : m.tangential.alpha_deg) angle = std::max(angle, std::abs(a) * std::numbers::pi / 180.0);
+  const double rate = m.tangential.rate;
+  if (!(rate * dt <= limits::kMaxRotationPerStep))
+    throw InputError(fmt::format("tangential.rate: {} rad/s turns the soft-particle by {} rad in a time step of dt = {} s; "
+                                 "allowed: at most {} rad per step (rate <= {} rad/s)",
+                                 limits::number_text(rate), limits::approx_text(rate * dt), limits::approx_text(dt),
+                                 limits::number_text(limits::kMaxRotationPerStep),
+                                 limits::approx_text(limits::kMaxRotationPerStep / dt)));
+  validate_steps(angle / rate, dt, "tangential.rate",
+                 fmt::format("{} rad/s, the rotation of {} rad in {} s,", limits::number_text(rate), limits::approx_text(angle),
+                             limits::approx_text(angle / rate)));
 }
 
 }  // namespace softpack

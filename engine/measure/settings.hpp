@@ -62,4 +62,11 @@ struct MeasurementSettings {
 /// Reads and validates the sections; InputError names file, key and allowed values.
 MeasurementSettings parse_measurement(const ConfigNode& root);
 
+/// The rules of the sweeps that need the time step dt of the measurement scene (soft-particles
+/// of shell radius Rs), checked before the first point (measure/stage.cpp): the relaxation, the
+/// longest approach of a normal point (normal.speed) and the largest rotation of a tangential
+/// one (tangential.rate) each take at most limits::kMaxSteps steps, and the rotation turns at
+/// most limits::kMaxRotationPerStep per step (scene/limits.hpp). InputError names the key.
+void validate_sweep_steps(const MeasurementSettings& m, double Rs, double dt);
+
 }  // namespace softpack

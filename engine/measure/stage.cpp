@@ -10,7 +10,9 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "formats/sweep_file.hpp"
+#include "integrate/time_step.hpp"
 #include "measure/sweeps.hpp"
+#include "scene/validate.hpp"
 
 namespace softpack {
 namespace {
@@ -83,6 +85,14 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
     }
   }
   c.setup.scene.watchdog = settings.watchdog;  // when to stop a run gone wrong; changes no result
+  // The rules that need the time step, before the first point: the scene's own (validate()), then
+  // the steps of the relaxation, of each approach and of each rotation, named by the profile's keys.
+  validate(c.setup.scene);
+  try {
+    validate_sweep_steps(settings, c.setup.Rs, choose_time_step(c.setup.scene));
+  } catch (const InputError& e) {
+    throw root.locate(e);
+  }
   // What every point depends on: the sections read, the scene and the packings used.
   const auto config = [&](const std::string& stage) {
     return "# stage: " + stage + ", scene: " + o.scene + (o.hertz_check ? " (Hertz check)" : "") + "\n# packings: " + packings +

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "scene/limits.hpp"
 
 namespace softpack {
 
@@ -69,6 +70,7 @@ class HierarchicalGrid {
   using Key = std::uint64_t;
   static constexpr int kBits = 21;
   static constexpr std::int64_t kMaxCoordinate = (std::int64_t{1} << kBits) - 1;
+  static_assert(static_cast<double>(kMaxCoordinate) == limits::kGridCells, "validate() refuses scenes that do not fit the grid");
 
   /// A sphere as stored in its level's bucket array.
   struct Entry {

@@ -12,20 +12,39 @@
 #include "core/random.hpp"
 #include "packing/insertion_grid.hpp"
 #include "packing/power_law.hpp"
+#include "scene/limits.hpp"
 
 namespace softpack {
 
 void validate(const PackingParameters& p) {
-  const auto bad = [](const char* key, double v, const char* allowed) {
-    throw InputError(fmt::format("packing.{}: {} is not allowed; allowed: {}", key, v, allowed));
+  using limits::approx_text;
+  const auto check = [](const char* key, double v, const limits::Range& range) {
+    if (const std::string why = limits::refusal(v, range); !why.empty())
+      throw InputError(fmt::format("packing.{}: {}", key, why));
   };
-  if (!(p.Rs > 0.0 && std::isfinite(p.Rs))) bad("Rs", p.Rs, "Rs > 0 [m]");
-  if (!(p.r_max > 0.0 && p.r_max < p.Rs)) bad("r_max_over_Rs", p.r_max / p.Rs, "0 < r_max / Rs < 1");
-  if (!(p.polydispersity > 1.0 && p.polydispersity <= 1e6)) bad("polydispersity", p.polydispersity, "1 < Pi <= 1e6");
-  if (!(p.exponent > 1.0 && p.exponent <= 20.0)) bad("exponent", p.exponent, "1 < b <= 20");
-  if (!(p.beta > 0.0 && std::isfinite(p.beta))) bad("beta", p.beta, "beta > 0");
-  if (p.trials < 1) bad("trials", static_cast<double>(p.trials), "I >= 1");
-  if (!(p.level_ratio > 1.0 && p.level_ratio <= 1e3)) bad("level_ratio", p.level_ratio, "1 < level_ratio <= 1000");
+  check("Rs", p.Rs, limits::kPackingRs);
+  check("r_max_over_Rs", p.r_max / p.Rs, limits::kRmaxOverRs);
+  check("polydispersity", p.polydispersity, limits::kPolydispersity);
+  check("exponent", p.exponent, limits::kExponent);
+  check("beta", p.beta, limits::kBeta);
+  check("trials", static_cast<double>(p.trials), limits::kTrials);
+  check("level_ratio", p.level_ratio, limits::kLevelRatio);
+  // Rules between values: the grains become the spheres of the sweeps' scenes (radii of at least
+  // limits::kMinLength), and the insertion grid numbers its cells of 2 r_min with 21 bits.
+  const double r_min = p.r_max / p.polydispersity;
+  if (!(r_min >= limits::kMinLength))
+    throw InputError(fmt::format("packing.polydispersity: {} is not allowed with Rs = {} m and r_max_over_Rs = {}: the "
+                                 "smallest radius r_max / Pi would be {} m; allowed: r_max / Pi >= {} m (Pi <= {})",
+                                 limits::number_text(p.polydispersity), limits::number_text(p.Rs),
+                                 approx_text(p.r_max / p.Rs), approx_text(r_min), limits::number_text(limits::kMinLength),
+                                 approx_text(p.r_max / limits::kMinLength)));
+  if (!(p.Rs / (2.0 * r_min) < limits::kInsertionCells))
+    throw InputError(fmt::format("packing.polydispersity: {} is not allowed with r_max_over_Rs = {}: the shell would span "
+                                 "Rs / (2 r_min) = {} cells of the insertion grid's finest level; allowed: fewer than {} "
+                                 "(2^20), Pi < {}",
+                                 limits::number_text(p.polydispersity), approx_text(p.r_max / p.Rs),
+                                 approx_text(p.Rs / (2.0 * r_min)), limits::number_text(limits::kInsertionCells),
+                                 approx_text(2.0 * limits::kInsertionCells * p.r_max / p.Rs)));
 }
 
 namespace {
@@ -35,7 +54,7 @@ std::vector<double> sample_list(const PackingParameters& p, Random& rng) {
   const power_law::Law law{p.r_max / p.polydispersity, p.r_max, p.exponent};
   const double target = p.beta * p.Rs * p.Rs * p.Rs;
   const double expected = target / power_law::mean_cube(law);
-  if (expected > 5e7)
+  if (!(expected <= 5e7))  // NaN too
     throw InputError(fmt::format("packing: these parameters ask for about {:.3g} spheres (beta Rs^3 / <r^3>); "
                                  "the generator stops at 5e7 — reduce packing.beta or raise packing.r_max",
                                  expected));

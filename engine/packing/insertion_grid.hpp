@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "scene/limits.hpp"
 
 namespace softpack {
 
@@ -50,6 +51,7 @@ class InsertionGrid {
     std::vector<int> members;  ///< the spheres stored on the level, in no particular order
   };
   static constexpr std::int64_t kOffset = std::int64_t{1} << 20;  // cell coordinates may be negative
+  static_assert(static_cast<double>(kOffset) == limits::kInsertionCells, "validate(PackingParameters) keeps the shell within");
 
   static Key pack(std::int64_t cx, std::int64_t cy, std::int64_t cz) {
     return (static_cast<Key>(cx + kOffset) << 42) | (static_cast<Key>(cy + kOffset) << 21) |

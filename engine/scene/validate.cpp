@@ -10,15 +10,62 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "scene/limits.hpp"
 
 namespace softpack {
 namespace {
+
+using limits::number_text;
 
 [[noreturn]] void fail(const std::string& key, const std::string& what) {
   throw InputError(key + ": " + what);
 }
 
 bool finite(const Vec3& v) { return v.allFinite(); }
+
+// A range of scene/limits.hpp: "<key>: <v> <unit> is not allowed; allowed: <range>".
+void check(const std::string& key, double v, const limits::Range& range) {
+  if (const std::string why = limits::refusal(v, range); !why.empty()) fail(key, why);
+}
+
+// A point: finite, each coordinate within limits::kCoordinate.
+void check_point(const std::string& key, const Vec3& x) {
+  if (!finite(x)) fail(key, "must be finite");
+  for (int k = 0; k < 3; ++k)
+    if (!limits::kCoordinate.contains(x[k]))
+      fail(key, fmt::format("{} m (its {} coordinate) is not allowed; allowed: {}", number_text(x[k]), "xyz"[k],
+                            limits::text(limits::kCoordinate)));
+}
+
+// A direction (normalised by the engine): finite, with a length that is neither 0 nor infinite
+// once squared.
+bool direction(const Vec3& v) {
+  const double n = v.norm();
+  return n > 0.0 && std::isfinite(n);
+}
+
+// The contact grid numbers its cells with 21 bits along each axis (neighbor/hierarchical_grid.hpp):
+// the spheres, as the grid sees them (centres +- radii), must span fewer than limits::kGridCells
+// cells of its finest level, 2 r_min + skin r_min.
+void check_grid_span(const SceneDef& s) {
+  double r_min = s.particles[0].r;
+  Vec3 lo = s.particles[0].x, hi = lo;
+  for (const ParticleDef& p : s.particles) {
+    r_min = std::min(r_min, p.r);
+    lo = lo.cwiseMin(p.x - Vec3::Constant(p.r));
+    hi = hi.cwiseMax(p.x + Vec3::Constant(p.r));
+  }
+  const double cell = 2.0 * r_min + s.neighbor.skin * r_min;
+  const Vec3 extent = hi - lo;
+  int axis = 0;
+  extent.maxCoeff(&axis);
+  if (extent[axis] * (1.0 / cell) >= limits::kGridCells)
+    fail("particles", fmt::format("the spheres span {} m along {}, {} cells of the contact grid's finest level "
+                                  "(2 r_min + skin r_min = {} m); allowed: fewer than {} cells (2^21 - 1), a span below "
+                                  "{} m for these radii",
+                                  number_text(extent[axis]), "xyz"[axis], number_text(std::floor(extent[axis] / cell)),
+                                  number_text(cell), number_text(limits::kGridCells), limits::approx_text(limits::kGridCells * cell)));
+}
 
 // Two spheres with the same centre have no contact normal (d / |d| is 0/0): refused here, by
 // sorting the centres (O(N log N)), instead of turning into NaN forces at the first step.
@@ -119,13 +166,15 @@ void check_drivers(const SceneDef& s, const std::vector<DriverDef>& drivers) {
               fail(key + ".wall", fmt::format("wall '{}' is already moved by an earlier driver", d.wall));
             if (!finite(d.velocity) || d.velocity.norm() == 0.0)
               fail(key + ".velocity", "must be a finite, non-zero vector");
+            check(key + ".velocity", d.velocity.stableNorm(), limits::kDriveSpeed);
             check_stop(d.distance, "distance", d.duration, "duration", key);
           } else if constexpr (std::is_same_v<D, RotateGroupDef>) {
             check_group(s, d.group, key + ".group");
             claim(d.group, key + ".group");
-            if (!finite(d.axis) || d.axis.norm() == 0.0) fail(key + ".axis", "must be a finite, non-zero vector");
-            if (!finite(d.centre)) fail(key + ".centre", "must be finite");
+            if (!direction(d.axis)) fail(key + ".axis", "must be a finite, non-zero vector");
+            check_point(key + ".centre", d.centre);
             if (!(std::isfinite(d.rate) && d.rate != 0.0)) fail(key + ".rate", "must be finite and non-zero");
+            check(key + ".rate", std::abs(d.rate), limits::kRate);
             check_stop(d.angle, "angle", d.duration, "duration", key);
             if (d.with_shell) {
               const ShellDef* shell = nullptr;
@@ -140,6 +189,7 @@ void check_drivers(const SceneDef& s, const std::vector<DriverDef>& drivers) {
             claim(d.group, key + ".group");
             if (!finite(d.velocity) || d.velocity.norm() == 0.0)
               fail(key + ".velocity", "must be a finite, non-zero vector");
+            check(key + ".velocity", d.velocity.stableNorm(), limits::kDriveSpeed);
             check_stop(d.distance, "distance", d.duration, "duration", key);
           } else {
             check_group(s, d.group, key + ".group");
@@ -158,8 +208,11 @@ void validate(const SceneDef& s) {
   for (std::size_t i = 0; i < s.particles.size(); ++i) {
     const auto& p = s.particles[i];
     const std::string key = fmt::format("particles[{}]", i);
-    if (!(p.r > 0.0 && std::isfinite(p.r))) fail(key + ".r", fmt::format("{} m is not allowed; allowed: r > 0", p.r));
+    check(key + ".r", p.r, limits::kRadius);
     if (!finite(p.x) || !finite(p.v) || !finite(p.w)) fail(key, "position and velocities must be finite");
+    check_point(key + ".x", p.x);
+    check(key + ".v", p.v.stableNorm(), limits::kSpeed);
+    check(key + ".w", p.w.stableNorm() * p.r, limits::kSurfaceSpeed);
     if (p.body < kNoBody) fail(key + ".body", fmt::format("{} is not allowed; allowed: a body id >= 0, or none", p.body));
     check_material_ref(s, p.material, key + ".material");
   }
@@ -173,18 +226,18 @@ void validate(const SceneDef& s) {
     const auto& pl = s.planes[k];
     const std::string key = fmt::format("planes[{}]", k);
     if (pl.name.empty() || !wall_names.insert(pl.name).second) fail(key + ".name", fmt::format("'{}' is empty or not unique", pl.name));
-    if (!finite(pl.point)) fail(key + ".point", "must be finite");
-    if (!finite(pl.normal) || pl.normal.norm() == 0.0) fail(key + ".normal", "must be a finite, non-zero vector");
+    check_point(key + ".point", pl.point);
+    if (!direction(pl.normal)) fail(key + ".normal", "must be a finite, non-zero vector");
     check_material_ref(s, pl.material, key + ".material");
   }
   for (std::size_t k = 0; k < s.shells.size(); ++k) {
     const auto& sh = s.shells[k];
     const std::string key = fmt::format("shells[{}]", k);
     if (sh.name.empty() || !wall_names.insert(sh.name).second) fail(key + ".name", fmt::format("'{}' is empty or not unique", sh.name));
-    if (!(sh.radius > 0.0 && std::isfinite(sh.radius))) fail(key + ".radius", "allowed: radius > 0");
+    check(key + ".radius", sh.radius, limits::kShellRadius);
     if (sh.body < 0) fail(key + ".body", "a shell confines the spheres of one body: give a body id >= 0");
     if (!shell_bodies.insert(sh.body).second) fail(key + ".body", fmt::format("body {} already has a shell", sh.body));
-    if (!finite(sh.centre)) fail(key + ".centre", "must be finite");
+    check_point(key + ".centre", sh.centre);
     check_material_ref(s, sh.material, key + ".material");
     for (std::size_t i = 0; i < s.particles.size(); ++i) {
       const auto& p = s.particles[i];
@@ -197,17 +250,17 @@ void validate(const SceneDef& s) {
 
   validate_integration(s.integration);
   validate_neighbor(s.neighbor);
+  if (!s.effects.normal.empty()) check_grid_span(s);  // the grid is built for the contact law only
   check_drivers(s, s.drivers);
 
   validate_watchdog(s.watchdog);
 }
 
 void validate_material(const Material& m, const std::string& key) {
-  if (!(m.E > 0.0 && std::isfinite(m.E))) fail(key + ".E", fmt::format("{} Pa is not allowed; allowed: E > 0", m.E));
-  if (!(m.nu > -1.0 && m.nu < 0.5)) fail(key + ".nu", fmt::format("{} is not allowed; allowed: -1 < nu < 0.5", m.nu));
-  if (!(m.mu >= 0.0 && std::isfinite(m.mu))) fail(key + ".mu", fmt::format("{} is not allowed; allowed: mu >= 0", m.mu));
-  if (!(m.density > 0.0 && std::isfinite(m.density)))
-    fail(key + ".density", fmt::format("{} kg/m^3 is not allowed; allowed: density > 0", m.density));
+  check(key + ".E", m.E, limits::kModulus);
+  check(key + ".nu", m.nu, limits::kPoisson);
+  check(key + ".mu", m.mu, limits::kFriction);
+  check(key + ".density", m.density, limits::kDensity);
 }
 
 void validate_effects(const EffectsDef& e, const std::vector<Material>& materials, const std::string& key) {
@@ -220,26 +273,23 @@ void validate_effects(const EffectsDef& e, const std::vector<Material>& material
     for (const auto& m : materials) any_mu = any_mu || m.mu > 0.0;
     if (!any_mu) fail(key + ".friction", "friction declared but every material has mu = 0");
   }
-  if (e.damping() && !(*e.restitution > 0.0 && *e.restitution <= 1.0))
-    fail(key + ".damping.restitution", fmt::format("{} is not allowed; allowed: 0 < e <= 1", *e.restitution));
-  if (!(e.tangential_damping_ratio >= 0.0 && std::isfinite(e.tangential_damping_ratio)))
-    fail(key + ".damping.tangential_ratio", fmt::format("{} is not allowed; allowed: >= 0", e.tangential_damping_ratio));
+  if (e.damping()) check(key + ".damping.restitution", *e.restitution, limits::kRestitution);
+  check(key + ".damping.tangential_ratio", e.tangential_damping_ratio, limits::kTangentialRatio);
   if (e.gravity && !finite(*e.gravity)) fail(key + ".gravity", "must be finite");
+  if (e.gravity) check(key + ".gravity", e.gravity->stableNorm(), limits::kGravity);
 }
 
 void validate_integration(const IntegrationDef& in, const std::string& key) {
   if (in.dt && in.safety) fail(key, "give 'dt' or 'safety', not both");
   if (!in.dt && !in.safety) fail(key, "one of 'dt' or 'safety' is required");
+  // dt <= the stable limit: integrate/time_step.cpp; the steps it makes of a duration: validate_steps().
   if (in.dt && !(*in.dt > 0.0 && std::isfinite(*in.dt))) fail(key + ".dt", fmt::format("{} s is not allowed; allowed: dt > 0", *in.dt));
-  if (in.safety && !(*in.safety > 0.0 && *in.safety <= 1.0))
-    fail(key + ".safety", fmt::format("{} is not allowed; allowed: 0 < safety <= 1", *in.safety));
+  if (in.safety) check(key + ".safety", *in.safety, limits::kSafety);
 }
 
 void validate_neighbor(const NeighborDef& nb, const std::string& key) {
-  if (!(nb.skin > 0.0 && std::isfinite(nb.skin)))
-    fail(key + ".skin", fmt::format("{} is not allowed; allowed: skin > 0 (a fraction of the smallest radius)", nb.skin));
-  if (!(nb.level_ratio > 1.0 && std::isfinite(nb.level_ratio)))
-    fail(key + ".level_ratio", fmt::format("{} is not allowed; allowed: level_ratio > 1", nb.level_ratio));
+  check(key + ".skin", nb.skin, limits::kSkin);  // a fraction of the smallest radius
+  check(key + ".level_ratio", nb.level_ratio, limits::kLevelRatio);
 }
 
 void validate_watchdog(const WatchdogDef& wd, const std::string& key) {
@@ -248,8 +298,7 @@ void validate_watchdog(const WatchdogDef& wd, const std::string& key) {
          fmt::format("{} is not allowed; allowed: > 0 (overlap / smaller radius)", wd.max_overlap_fraction));
   if (!(wd.energy_growth > 1.0))
     fail(key + ".energy_growth", fmt::format("{} is not allowed; allowed: > 1", wd.energy_growth));
-  if (wd.check_interval < 1)
-    fail(key + ".check_interval", fmt::format("{} is not allowed; allowed: an integer >= 1 (steps)", wd.check_interval));
+  check(key + ".check_interval", static_cast<double>(wd.check_interval), limits::kCheckInterval);
 }
 
 void validate(const RelaxationDef& def, const std::string& key) {
@@ -257,7 +306,7 @@ void validate(const RelaxationDef& def, const std::string& key) {
     if (!(v > 0.0 && std::isfinite(v))) fail(key + "." + name, fmt::format("{} is not allowed; allowed: > 0", v));
   };
   if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
-    if (p->stops < 0) fail(key + ".stops", fmt::format("{} is not allowed; allowed: >= 0", p->stops));
+    check(key + ".stops", p->stops, limits::kStops);
     if (p->stops > 0) positive(p->wait, "wait");
     positive(p->final_wait, "final_wait");
   } else {
@@ -266,10 +315,71 @@ void validate(const RelaxationDef& def, const std::string& key) {
     positive(c.energy_tolerance, "energy_tolerance");
     positive(c.check_interval, "check_interval");
     positive(c.max_time, "max_time");
+    if (!(c.max_time / c.check_interval <= limits::kMaxChecks))
+      fail(key + ".check_interval",
+           fmt::format("{} s is not allowed; max_time / check_interval = {} checks; allowed: at most {} checks (check_interval >= "
+                       "{} s), each a row of the relaxation's table",
+                       number_text(c.check_interval), number_text(std::ceil(c.max_time / c.check_interval)),
+                       number_text(limits::kMaxChecks), limits::approx_text(c.max_time / limits::kMaxChecks)));
   }
 }
 
 void validate_drivers(const SceneDef& scene, const std::vector<DriverDef>& drivers) { check_drivers(scene, drivers); }
+
+void validate_steps(double seconds, double dt, const std::string& key, const std::string& what) {
+  const double steps = seconds / dt;
+  if (steps <= limits::kMaxSteps) return;
+  fail(key, fmt::format("{} is {} time steps of dt = {} s; allowed: at most {} steps ({} s of simulated time)",
+                        what.empty() ? number_text(seconds) + " s" : what, limits::approx_text(steps),
+                        limits::approx_text(dt), number_text(limits::kMaxSteps), limits::approx_text(limits::kMaxSteps * dt)));
+}
+
+void validate_steps(const RelaxationDef& def, double dt, const std::string& key) {
+  if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
+    const auto steps = [&](double t) { return std::max(1.0, std::round(t / dt)); };  // Simulation::steps_for
+    const double total = p->stops * steps(p->wait) + steps(p->final_wait);
+    if (total <= limits::kMaxSteps) return;
+    const bool waits = p->stops > 0 && p->stops * p->wait >= p->final_wait;
+    fail(key + (waits ? ".wait" : ".final_wait"),
+         fmt::format("the protocol ({} stops after {} s each, then {} s) is {} time steps of dt = {} s; allowed: at most {} "
+                     "steps",
+                     p->stops, number_text(p->wait), number_text(p->final_wait), limits::approx_text(total),
+                     limits::approx_text(dt), number_text(limits::kMaxSteps)));
+  }
+  const auto& c = std::get<ConvergedRelaxationDef>(def);
+  validate_steps(c.max_time, dt, key + ".max_time");
+}
+
+void validate_steps(const DriverDef& driver, double dt, const std::string& key) {
+  std::visit(
+      [&](const auto& d) {
+        using D = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<D, MoveWallDef> || std::is_same_v<D, TranslateGroupDef>) {
+          const double speed = d.velocity.norm();
+          if (!(speed > 0.0)) return;  // validate_drivers() refuses it
+          if (d.distance)
+            validate_steps(*d.distance / speed, dt, key + ".distance",
+                           fmt::format("{} m at {} m/s", number_text(*d.distance), number_text(speed)));
+          else
+            validate_steps(*d.duration, dt, key + ".duration");
+        } else if constexpr (std::is_same_v<D, RotateGroupDef>) {
+          const double rate = std::abs(d.rate);
+          if (!(rate > 0.0)) return;  // validate_drivers() refuses it
+          if (!(rate * dt <= limits::kMaxRotationPerStep))
+            fail(key + ".rate", fmt::format("{} rad/s turns the group by {} rad in a time step of dt = {} s; allowed: at most "
+                                            "{} rad per step (|rate| <= {} rad/s)",
+                                            number_text(d.rate), limits::approx_text(rate * dt), limits::approx_text(dt),
+                                            number_text(limits::kMaxRotationPerStep),
+                                            limits::approx_text(limits::kMaxRotationPerStep / dt)));
+          if (d.angle)
+            validate_steps(*d.angle / rate, dt, key + ".angle",
+                           fmt::format("{} rad at {} rad/s", number_text(*d.angle), number_text(rate)));
+          else
+            validate_steps(*d.duration, dt, key + ".duration");
+        }
+      },
+      driver);
+}
 
 int SceneDef::material_index(const std::string& name) const {
   for (std::size_t k = 0; k < materials.size(); ++k)

@@ -3,6 +3,7 @@
 // and keys, then locate these messages in the file by their key path (ConfigNode::locate).
 // Each failure throws InputError with the key path ("drivers[1].group.body: ...").
 #pragma once
+#include <string>
 #include <vector>
 
 #include "scene/relaxation_def.hpp"
@@ -24,5 +25,16 @@ void validate(const RelaxationDef& def, const std::string& key = "relaxation");
 
 /// The checks of validate() for `drivers` run in `scene` (Drivers::add: a driver started during a run).
 void validate_drivers(const SceneDef& scene, const std::vector<DriverDef>& drivers);
+
+// The rules that need the time step dt, checked where it is known (sim/simulation.cpp, the
+// executables, measure/stage.cpp): a duration may ask for at most limits::kMaxSteps steps, a
+// driven rotation may turn at most limits::kMaxRotationPerStep per step. InputError names `key`.
+/// `seconds` of simulated time (run.duration; `what` describes it in the message, default
+/// "<seconds> s").
+void validate_steps(double seconds, double dt, const std::string& key, const std::string& what = "");
+/// A relaxation: its waits (paper: stops x wait + final_wait) or its max_time (converged).
+void validate_steps(const RelaxationDef& def, double dt, const std::string& key = "relaxation");
+/// A driver: its way to its target (distance / speed, angle / rate, or duration) and its rotation per step.
+void validate_steps(const DriverDef& driver, double dt, const std::string& key);
 
 }  // namespace softpack

@@ -40,6 +40,7 @@ Simulation::Simulation(const SceneDef& scene)
       neighbours_(scene_.neighbor, world_, forces_.active(), scene_.effects.friction, shell_members(world_)),
       drivers_(scene_, world_),
       watchdog_(scene_.watchdog, watchdog_context(scene_, dt_, stable_)) {
+  for (std::size_t k = 0; k < scene_.drivers.size(); ++k) validate_steps(scene_.drivers[k], dt_, fmt::format("drivers[{}]", k));
   rebuild_neighbours();
   compute_forces(0.0);  // F(t0); springs start unstretched
   watchdog_.start(world_, residuals());
@@ -107,7 +108,15 @@ void Simulation::check_now() {
   watchdog_.check(world_, residuals());
 }
 
-long Simulation::steps_for(double duration) const { return std::max(1L, std::lround(duration / dt_)); }
+long Simulation::steps_for(double duration) const {
+  validate_steps(duration, dt_, "duration");  // lround is undefined beyond the range of long
+  return std::max(1L, std::lround(duration / dt_));
+}
+
+void Simulation::add_driver(const DriverDef& driver) {
+  validate_steps(driver, dt_, "driver");
+  drivers_.add(driver, world_);
+}
 
 void Simulation::run_for(double duration) { run_steps(steps_for(duration)); }
 

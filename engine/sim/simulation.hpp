@@ -47,13 +47,15 @@ class Simulation {
   void step();
   /// n steps, then a watchdog check: a state a caller sees after run_steps() has been checked.
   void run_steps(long n);
-  /// Number of steps that make up `duration` (rounded, at least 1).
+  /// Number of steps that make up `duration` (rounded, at least 1); InputError beyond
+  /// limits::kMaxSteps (scene/limits.hpp; callers that know the duration's key check it first
+  /// with validate_steps()).
   long steps_for(double duration) const;
   void run_for(double duration);
   /// Sets every free sphere's translational and angular velocity to zero.
   void zero_velocities();
-  /// Starts a driver now (validated like the scene's drivers).
-  void add_driver(const DriverDef& driver) { drivers_.add(driver, world_); }
+  /// Starts a driver now (validated like the scene's drivers, its steps with validate_steps()).
+  void add_driver(const DriverDef& driver);
   /// Stops every driver now: walls stand still, driven spheres stop and become free.
   void release_drivers() { drivers_.release(world_); }
   /// True while a driver with a target (distance, angle, duration) has not reached it.

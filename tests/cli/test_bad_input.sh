@@ -4,8 +4,10 @@
 # column), an unknown key (with the closest valid key), a value out of range, a missing file, a
 # truncated HDF5 file, a foreign HDF5 file (not ours, or ours of another kind) and a packing of
 # another configuration each give one message naming the file (and the key or dataset), exit
-# code 2, and no output file or temporary left behind. The cases test_softpack_*.sh already
-# check are not repeated here.
+# code 2, and no output file or temporary left behind. So do values beyond the ranges of
+# engine/scene/limits.hpp (seeds, moduli, radii, step counts), a seed given twice, and every
+# command line that CLI11 refuses (exit 2, not CLI11's codes; --help exits 0). The cases
+# test_softpack_*.sh already check are not repeated here.
 set -euo pipefail
 bin=$(cd "$1" && pwd)
 root=$(cd "$2" && pwd)
@@ -42,7 +44,7 @@ expect_error() {
   [ -z "${VERBOSE:-}" ] || cat err >&2
   [ "$code" -eq 2 ] || fail "exit code $code (expected 2) for: $*: $(cat err)"
   [ "$(wc -l < err)" -eq 1 ] || fail "expected one line on stderr for: $*, got: $(cat err)"
-  grep -qE "^softpack-[a-z]+: error: " err || fail "not an error line: $(cat err)"
+  grep -qE "^softpack-[a-z-]+: error: " err || fail "not an error line: $(cat err)"
   grep -qE -- "$pattern" err || fail "expected /$pattern/, got: $(cat err)"
   [ ! -e "$output" ] || fail "$output was written for bad input: $*"
   [ -z "$(find . -name '*.tmp.*')" ] || fail "a temporary was left behind: $(find . -name '*.tmp.*')"
@@ -146,4 +148,121 @@ expect_error "^softpack-fit: error: truncated\.h5: truncated or corrupt HDF5 fil
 expect_error "foreign\.h5: not a softpack average file \(no /normal/delta_n or /provenance/scene\)" fit.json fit foreign.h5
 expect_error "p1\.h5: not a softpack average file \(it is a packing file \(softpack-pack\)\)" fit.json fit p1.h5
 expect_error "n1\.h5: not a softpack average file \(it is a normal sweep results file \(softpack-normal\)\)" fit.json fit n1.h5
+
+# --- Ranges (engine/scene/limits.hpp) -----------------------------------------------------------
+# Random draws below (seeds, magnitudes) come from bash's RANDOM with a fixed seed, printed, so
+# that a failure reproduces.
+range_seed=20240611
+RANDOM=$range_seed
+echo "random seed of the range cases: $range_seed"
+case_name() { echo "case: $1"; }
+re() { printf '%s' "$1" | sed 's/[][\.*^$+?(){}|/]/\\&/g'; }  # TEXT as an extended regex
+# big_seed: a random integer of [9.3e18, 2e19), beyond 2^63 - 1 = 9223372036854775807, as
+# decimal text: 19 digits from 93..., or 20 from 1... (across 2^64 = 18446744073709551616).
+big_seed() {
+  local s k
+  if ((RANDOM % 2)); then s="9$((3 + RANDOM % 7))"; else s="1$((RANDOM % 10))"; fi
+  for k in $(seq 1 17); do s="$s$((RANDOM % 10))"; done
+  [ "${s:0:1}" = 9 ] || s="$s$((RANDOM % 10))"
+  echo "$s"
+}
+# big_magnitude LO HI: 1.0e<k> with k a random integer in [LO, HI].
+big_magnitude() { echo "1.0e$(($1 + RANDOM % ($2 - $1 + 1)))"; }
+
+case_name seed_of_2_63_or_more_on_the_command_line_is_refused
+for s in 9223372036854775808 18446744073709551615 18446744073709551616 "$(big_seed)" "$(big_seed)"; do
+  expect_error "^softpack-pack: error: --seed: '$s' is not allowed; allowed: a seed, an integer 0 <= seed <= 9223372036854775807" \
+    pack.h5 "$bin/softpack-pack" --config "$profile" --seed "$s" --out pack.h5 --quiet
+  expect_error "^softpack-normal: error: --seed: '$s' is not allowed; allowed: a seed" normal.h5 \
+    "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed "$s" --packing p1.h5 --checkpoints ncp --out normal.h5
+  expect_error "^softpack-tangential: error: --seed: '$s' is not allowed; allowed: a seed" tangential.h5 \
+    "$bin/softpack-tangential" --config "$profile" --scene soft-solid --seed "$s" --packing p1.h5 --checkpoints tcp \
+    --normal-checkpoints n1 --out tangential.h5
+done
+
+case_name seed_that_is_not_plain_decimal_digits_is_refused_with_exit_2
+for s in 1.5 1e3 2.0 +3 " 3" "3 " 007 0x10 -1 abc ""; do
+  expect_error "^softpack-pack: error: --seed: '$(re "$s")' is not allowed; allowed: a seed" pack.h5 \
+    "$bin/softpack-pack" --config "$profile" --seed "$s" --out pack.h5 --quiet
+done
+"$bin/softpack-pack" --config "$profile" --seed 9223372036854775807 --out max.h5 --quiet
+[ "$(h5dump -d /provenance/seed max.h5 | grep -o '(0): [0-9]*')" = "(0): 9223372036854775807" ] || fail "the largest seed was not recorded exactly"
+
+case_name seed_of_2_63_or_more_in_a_profile_is_refused
+for s in 9223372036854775808 "$(big_seed)"; do
+  edit "$profile" "s/^seeds: \[1, 2\]/seeds: [1, $s]/"
+  expect_error "^softpack-config: error: bad\.yaml:4:12: seeds\[1\]: '$s' is not allowed; allowed: a seed, an integer 0 <= seed <= 9223372036854775807" \
+    none.txt "$bin/softpack-config" bad.yaml seeds
+done
+edit "$profile" 's/^seeds: \[1, 2\]/seeds: [1, 2.5]/'
+expect_error "bad\.yaml:4:12: seeds\[1\]: '2\.5' is not allowed; allowed: a seed" none.txt "$bin/softpack-config" bad.yaml seeds
+
+case_name repeated_seeds_in_a_profile_are_refused
+edit "$profile" 's/^seeds: \[1, 2\]/seeds: [1, 1]/'
+expect_error "bad\.yaml:4:12: seeds\[1\]: seed 1 is listed twice \(first as seeds\[0\]\)" none.txt "$bin/softpack-config" bad.yaml seeds
+
+case_name average_of_one_file_twice_or_of_one_seed_twice_is_refused
+# Each of these averaged one packing twice (standard error 0 for [1, 1]) and exited 0. t-bad.h5:
+# the tangential results of seed 1 (above).
+cp n1.h5 n1-copy.h5  # another file, the same seed
+cp t-bad.h5 t1-copy.h5
+avg() { "$bin/softpack-average" --scene soft-solid --profile fuzz-seed --normal $1 --tangential $2 --out-dir avg; }
+expect_error "^softpack-average: error: --normal: n1\.h5 and n1\.h5 are the same file; allowed: each seed's results once" avg \
+  avg "n1.h5 n1.h5" t-bad.h5
+expect_error "^softpack-average: error: --normal: n1\.h5 and \./n1\.h5 are the same file" avg avg "n1.h5 ./n1.h5" t-bad.h5
+expect_error "^softpack-average: error: --normal: n1\.h5 and n1-copy\.h5 are both results of seed 1; allowed: each seed's results once" \
+  avg avg "n1.h5 n1-copy.h5" t-bad.h5
+expect_error "^softpack-average: error: --tangential: t-bad\.h5 and t1-copy\.h5 are both results of seed 1" avg \
+  avg n1.h5 "t-bad.h5 t1-copy.h5"
+"$bin/softpack-average" --scene soft-solid --profile fuzz-seed --normal n1.h5 --tangential t-bad.h5 --out-dir avg ||
+  fail "the average of one seed's results was refused"
+
+case_name youngs_modulus_that_overflows_is_refused_before_the_sweep
+# E = 1e308 made the normal sweep spin (a time step of 1e-156 s, infinite residuals): the timeout
+# turns that into a failure instead of a hang.
+for E in 1.0e308 "$(big_magnitude 14 307)" "$(big_magnitude 14 307)"; do
+  edit "$profile" "s/E: 5.0e5/E: $E/"
+  expect_error "^softpack-normal: error: bad\.yaml:5:15: material\.E: [0-9.e]+ Pa is not allowed; allowed: 1 <= E <= 1e13 Pa" normal.h5 \
+    timeout 60 "$bin/softpack-normal" --config bad.yaml --scene soft-solid --seed 1 --packing p1.h5 --checkpoints ncp --out normal.h5 --quiet
+  expect_error "bad\.yaml:5:15: material\.E: [0-9.e]+ Pa is not allowed" none.txt "$bin/softpack-config" bad.yaml seeds
+done
+[ ! -e ncp ] || [ -z "$(ls -A ncp)" ] || fail "checkpoints were written for bad input: $(ls ncp)"
+
+case_name shell_radius_that_overflows_is_refused
+# Rs = 1e300 ended in "internal error: vector::reserve" (exit 1).
+for Rs in 1.0e300 "$(big_magnitude 4 307)"; do
+  edit "$profile" "s/Rs: 0.016/Rs: $Rs/"
+  expect_error "^softpack-pack: error: bad\.yaml:7:7: packing\.Rs: [0-9.e]+ m is not allowed; allowed: 1e-9 <= Rs <= 1000 m" pack.h5 pack bad.yaml
+done
+
+case_name durations_of_more_than_1e12_steps_are_refused
+# run.duration = 1e30 s (1.3e34 steps) used to run one step and exit 0: the step count overflowed.
+for d in 1.0e30 "$(big_magnitude 9 300)"; do
+  edit "$scene" "s/^  relaxation: .*/  duration: $d/"
+  expect_error "^softpack-run: error: bad\.yaml:18:13: run\.duration: [0-9.e]+ s is [0-9.e]+ time steps of dt = 7\.74e-5 s; allowed: at most 1e12 steps" \
+    run.json run bad.yaml
+done
+edit "$scene" 's/wait: 0.05, final_wait/wait: 1.0e20, final_wait/'
+expect_error "bad\.yaml:18:49: run\.relaxation\.wait: the protocol \(6 stops after 1e20 s each, then 0\.05 s\) is [0-9.e]+ time steps" run.json run bad.yaml
+edit "$profile" 's/speed: 0.02/speed: 1.0e-200/'
+expect_error "^softpack-normal: error: bad\.yaml:[0-9]+:[0-9]+: normal\.speed: 1e-200 m/s, the approach of [0-9.e-]+ m .* time steps of dt = [0-9.e-]+ s; allowed: at most 1e12 steps" \
+  normal.h5 timeout 60 "$bin/softpack-normal" --config bad.yaml --scene soft-solid --seed 1 --packing p1.h5 --checkpoints ncp --out normal.h5 --quiet
+[ ! -e ncp ] || [ -z "$(ls -A ncp)" ] || fail "checkpoints were written for bad input: $(ls ncp)"
+
+# --- Command lines: CLI11's errors are bad input (exit 2, one line); --help exits 0 --------------
+case_name every_executable_maps_command_line_errors_to_exit_2
+for exe in softpack-run softpack-pack softpack-normal softpack-tangential softpack-average softpack-fit softpack-table \
+           softpack-config softpack-section softpack-apollonian softpack-packing-study; do
+  "$bin/$exe" --help > help.txt || fail "$exe --help: exit code $?"
+  grep -q "^Usage: " help.txt || fail "$exe --help printed no usage"
+  expect_error "^$exe: error: .+; see $exe --help$" none.txt "$bin/$exe" --no-such-option
+  expect_error "^$exe: error: .* is required; see $exe --help$" none.txt "$bin/$exe"
+done
+# A value that does not convert (CLI11's exit code 104), or that a check refuses (105).
+expect_error "^softpack-section: error: .*--offset.*abc" none.txt "$bin/softpack-section" --packing p1.h5 --out s.dat --offset abc
+expect_error "^softpack-apollonian: error: .*--depth.*1\.5" ap.dat "$bin/softpack-apollonian" --depth 1.5 --out ap.dat
+expect_error "^softpack-normal: error: Could not convert: .*= x; see softpack-normal --help" normal.h5 \
+  "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 1 --packing p1.h5 --checkpoints ncp --out normal.h5 --stop-after x
+expect_error "^softpack-config: error: .*spreading" none.txt "$bin/softpack-config" "$profile" stamp spreading
+[ ! -e s.dat ] || fail "s.dat was written for bad input"
 echo "ok"

@@ -30,9 +30,9 @@ expect_error "packing.polydispersity: 1 is not allowed; allowed: 1 < Pi <= 1e6" 
 edit 's/exponent: [0-9.]*/exponent: 1/'
 expect_error "packing.exponent: 1 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/beta: [0-9.]*/beta: 0/'
-expect_error "packing.beta: 0 is not allowed; allowed: beta > 0" "$out" pack "$tmp/bad.yaml" 1 "$out"
+expect_error "packing.beta: 0 is not allowed; allowed: 0 < beta <= 100" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/trials: [0-9]*/trials: 0/'
-expect_error "packing.trials: 0 is not allowed; allowed: I >= 1" "$out" pack "$tmp/bad.yaml" 1 "$out"
+expect_error "packing.trials: 0 is not allowed; allowed: 1 <= I <= 1e6" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit 's/r_max_over_Rs: [0-9.]*/r_max_over_Rs: 1.2/'
 expect_error "packing.r_max_over_Rs: 1.2 is not allowed" "$out" pack "$tmp/bad.yaml" 1 "$out"
 edit '/beta:/d'
@@ -40,7 +40,7 @@ expect_error "packing: missing required key 'beta'" "$out" pack "$tmp/bad.yaml" 
 printf 'packing: {Rs: [0.016\n' > "$tmp/bad.yaml"
 expect_error "malformed YAML" "$out" pack "$tmp/bad.yaml" 1 "$out"
 expect_error "cannot open the file" "$out" pack "$tmp/none.yaml" 1 "$out"
-expect_error "--seed: -3 is not allowed" "$out" pack "$root/experiments/quick.yaml" -3 "$out"
+expect_error "--seed: '-3' is not allowed" "$out" pack "$root/experiments/quick.yaml" -3 "$out"
 echo "not hdf5" > "$tmp/garbage.h5"
 expect_error "not an HDF5 file" "$tmp/s.dat" "$bin/softpack-section" --packing "$tmp/garbage.h5" --out "$tmp/s.dat"
 expect_error "--depth" "$tmp/ap.dat" "$bin/softpack-apollonian" --depth -1 --out "$tmp/ap.dat"

@@ -200,7 +200,7 @@ TEST(Watchdog, ThresholdsComeFromTheSceneFile) {
   };
   expect_contains(error("watchdog: {max_overlap_fraction: 0}\n"), "watchdog.max_overlap_fraction: 0 is not allowed; allowed: > 0");
   expect_contains(error("watchdog: {energy_growth: 1}\n"), "watchdog.energy_growth: 1 is not allowed; allowed: > 1");
-  expect_contains(error("watchdog: {check_interval: 0}\n"), "watchdog.check_interval: 0 is not allowed; allowed: an integer >= 1");
+  expect_contains(error("watchdog: {check_interval: 0}\n"), "watchdog.check_interval: 0 steps is not allowed; allowed: 1 <= check_interval <= 1e12 steps");
   expect_contains(error("watchdog: {check_interval: 2.5}\n"), "watchdog.check_interval: expected an integer");
   expect_contains(error("watchdog: {energy_grwoth: 5}\n"), "watchdog.energy_grwoth: unknown key; did you mean 'energy_growth'?");
   expect_contains(error("watchdog: 5\n"), "watchdog: expected a map of keys");
@@ -212,7 +212,7 @@ TEST(Watchdog, ThresholdsComeFromTheSceneFile) {
     Simulation sim(s);
     ADD_FAILURE() << "check_interval 0 accepted";
   } catch (const InputError& e) {
-    expect_contains(e.what(), "watchdog.check_interval: 0 is not allowed");
+    expect_contains(e.what(), "watchdog.check_interval: 0 steps is not allowed");
   }
 }
 

@@ -234,8 +234,8 @@ TEST(PackingProfile, BadValuesNameTheKeyAndTheRange) {
       // The ranges are PackingParameters' validate()'s, placed at the key (line and column).
       {{"polydispersity: 10", "polydispersity: 1"}, ":6:19: packing.polydispersity: 1 is not allowed; allowed: 1 < Pi <= 1e6"},
       {{"exponent: 3.5", "exponent: 0.5"}, ":7:13: packing.exponent: 0.5 is not allowed; allowed: 1 < b <= 20"},
-      {{"beta: 1.0", "beta: 0"}, ":8:9: packing.beta: 0 is not allowed; allowed: beta > 0"},
-      {{"trials: 100", "trials: 0"}, ":9:11: packing.trials: 0 is not allowed; allowed: I >= 1"},
+      {{"beta: 1.0", "beta: 0"}, ":8:9: packing.beta: 0 is not allowed; allowed: 0 < beta <= 100"},
+      {{"trials: 100", "trials: 0"}, ":9:11: packing.trials: 0 is not allowed; allowed: 1 <= I <= 1e6"},
       {{"r_max_over_Rs: 0.2", "r_max_over_Rs: 1.0"}, ":5:18: packing.r_max_over_Rs: 1 is not allowed; allowed: 0 < r_max / Rs < 1"},
       {{"  beta: 1.0\n", ""}, "packing: missing required key 'beta'"},
       {{"trials: 100", "trials: many"}, "packing.trials: expected a number, got 'many'"},
