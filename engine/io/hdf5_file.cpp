@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>  // fmt::join
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -362,56 +361,6 @@ void File::set_attribute(const std::string& object_path, const std::string& name
   const QuietErrors quiet;
   const Handle type = string_type(value.size());
   write_attribute(id_, path_, object_path, name, type.get(), type.get(), value.c_str());
-}
-
-
-// --- AtomicH5 ----------------------------------------------------------------------------------
-
-namespace {
-std::string temporary_for(const std::string& final_path) {
-  const std::filesystem::path target(final_path);
-  if (target.has_parent_path()) {
-    std::error_code ec;
-    std::filesystem::create_directories(target.parent_path(), ec);
-    if (ec)
-      throw InputError(fmt::format("{}: cannot create its directory: {}", final_path,
-                                   ec.message()));
-  }
-  return fmt::format("{}.tmp.{}", final_path, ::getpid());
-}
-
-// H5Fcreate can fail after it has made the file (a full disk: the superblock does not fit).
-File create_or_remove(const std::string& tmp, const std::string& final_path) {
-  try {
-    return File::create(tmp, final_path);
-  } catch (...) {
-    std::remove(tmp.c_str());
-    throw;
-  }
-}
-}  // namespace
-
-AtomicH5::AtomicH5(const std::string& final_path)
-    : final_(final_path), tmp_(temporary_for(final_path)), file_(create_or_remove(tmp_, final_path)) {}
-
-AtomicH5::~AtomicH5() {
-  if (committed_) return;
-  try {
-    file_.close();
-  } catch (...) {  // the temporary goes anyway
-  }
-  std::remove(tmp_.c_str());
-}
-
-void AtomicH5::commit() {
-  if (committed_) throw std::logic_error(fmt::format("{}: committed twice", final_));
-  file_.close();  // on failure the destructor removes the temporary
-  if (std::rename(tmp_.c_str(), final_.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(tmp_.c_str());
-    throw InputError(fmt::format("{}: cannot rename into place: {}", final_, why));
-  }
-  committed_ = true;
 }
 
 }  // namespace softpack::h5
