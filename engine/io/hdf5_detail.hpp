@@ -56,6 +56,9 @@ Handle must(Handle h, const char* what);
 /// "/a/b/c" and "a/b/c" -> {"a", "b", "c"}; "" and "/" -> {}. Empty components are refused
 /// (std::invalid_argument: a bug of the caller, not of the file).
 std::vector<std::string> components(const std::string& file, const std::string& path);
+/// True when HDF5's reason says metadata failed its checksum, version or signature check: the
+/// object is damaged, and is not probed again (libhdf5 1.10.8 leaks the header of each try).
+bool damaged_metadata(const std::string& reason);
 /// True when `path` names an object of `file`; InputError for a corrupt file or a link to another.
 bool exists_in(hid_t file, const std::string& file_path, const std::string& path);
 /// Integers of 1, 2, 4 or 8 bytes using all their bits; IEEE binary32 or binary64; any other class.

@@ -43,6 +43,11 @@ std::vector<std::string> components(const std::string& file, const std::string& 
   return parts;
 }
 
+bool damaged_metadata(const std::string& reason) {
+  return reason.find("checksum") != std::string::npos || reason.find("version") != std::string::npos ||
+         reason.find("signature") != std::string::npos;
+}
+
 bool exists_in(hid_t file, const std::string& file_path, const std::string& path) {
   // HDF5 answers "no" and "cannot tell" alike with a negative value when a component is not a
   // group; a failure under a group is a corrupt file, not an absent path.
@@ -65,7 +70,7 @@ bool exists_in(hid_t file, const std::string& file_path, const std::string& path
       const std::string reason = hdf5_reason();
       // Under a dataset or a dangling link: absent. Under a group that cannot answer, or an
       // object that opens as neither (a header failing its checksum or version check): corrupt.
-      if (is_group(parent)) throw corrupt(prefix, reason);
+      if (detail::damaged_metadata(reason) || is_group(parent)) throw corrupt(prefix, reason);
       if (is_dataset(parent)) return false;
       if (!parent.empty() && H5Oexists_by_name(file, parent.c_str(), H5P_DEFAULT) == 0) return false;
       throw corrupt(prefix, reason);
@@ -302,9 +307,10 @@ Handle open_dataset(hid_t file, const std::string& file_path, const std::string&
   if (!detail::exists_in(file, file_path, name)) throw InputError(fmt::format("{}: no dataset '{}'", file_path, name));
   Handle ds(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (!ds) {
-    // A group is not a dataset; an object that opens as neither has a damaged header.
+    // A group is not a dataset; an object that opens as neither has a damaged header (which is
+    // not opened again: libhdf5 1.10.8 leaks the header each time it fails its checks).
     const std::string reason = hdf5_reason();
-    if (Handle(H5Gopen2(file, name.c_str(), H5P_DEFAULT), H5Gclose))
+    if (!detail::damaged_metadata(reason) && Handle(H5Gopen2(file, name.c_str(), H5P_DEFAULT), H5Gclose))
       throw InputError(fmt::format("{}: '{}' is a group, not a dataset", file_path, name));
     throw InputError(fmt::format("{}: cannot open '{}' ({}): corrupt file", file_path, name, reason));
   }
