@@ -1,9 +1,11 @@
 #include "analysis/average.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include "core/error.hpp"
 
@@ -21,6 +23,19 @@ void check_distinct_seeds(const std::vector<SeedFile>& files, const std::string&
         throw InputError(fmt::format("{}: {} and {} are both results of seed {}; allowed: each seed's results once", option,
                                      a.path, b.path, a.seed));
     }
+}
+
+void check_same_seeds(const std::vector<SeedFile>& normal, const std::vector<SeedFile>& tangential) {
+  const auto seeds = [](const std::vector<SeedFile>& files) {
+    std::set<std::uint64_t> s;
+    for (const SeedFile& f : files) s.insert(f.seed);
+    return s;
+  };
+  const std::set<std::uint64_t> n = seeds(normal), t = seeds(tangential);
+  if (n != t)
+    throw InputError(fmt::format("--tangential: results of seeds {}, --normal: of seeds {}; allowed: the same seeds for both "
+                                 "(one scene's laws over the same soft-particles)",
+                                 fmt::join(t, ", "), fmt::join(n, ", ")));
 }
 
 MeanError mean_error(const std::vector<double>& v) {

@@ -25,6 +25,9 @@ struct SeedFile {
 /// would enter the mean twice and shrink its standard error (to 0 for [1, 1]). The message names
 /// `option` and both files ("--normal: a.h5 and b.h5 are the same file").
 void check_distinct_seeds(const std::vector<SeedFile>& files, const std::string& option);
+/// InputError unless the normal and the tangential results are of the same seeds: the two
+/// laws of one table would otherwise describe different soft-particles.
+void check_same_seeds(const std::vector<SeedFile>& normal, const std::vector<SeedFile>& tangential);
 
 /// Mean and standard error of the mean (0 for a single value).
 struct MeanError {

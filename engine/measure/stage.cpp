@@ -71,6 +71,11 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
   } else {
     if (o.packing.empty()) throw InputError("--packing: required (the packing file of this seed)");
     const PackingFile first = checked_packing(o.packing, packing_section, o.config_path);
+    // The seed the results are filed and averaged under is the packing's own.
+    if (first.provenance.seed != static_cast<std::uint64_t>(o.seed))
+      throw InputError(fmt::format("--seed: {} does not match --packing {}, which softpack-pack made with seed {}; "
+                                   "give the packing of seed {}, or --seed {}",
+                                   o.seed, o.packing, first.provenance.seed, o.seed, first.provenance.seed));
     packings = fmt::format("{} (seed {})", o.packing, first.provenance.seed);
     if (kind == ContactScene::soft_soft) {
       if (o.second_packing.empty()) throw InputError("--second-packing: required for soft-soft (a packing of another seed)");

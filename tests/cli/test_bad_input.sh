@@ -217,6 +217,16 @@ expect_error "^softpack-average: error: --tangential: t-bad\.h5 and t1-copy\.h5 
 "$bin/softpack-average" --scene soft-solid --profile fuzz-seed --normal n1.h5 --tangential t-bad.h5 --out-dir avg ||
   fail "the average of one seed's results was refused"
 
+case_name results_of_another_seed_than_the_packing_or_the_other_law_are_refused
+# Both exited 0: a sweep filed under --seed 2 measured the packing of seed 1; an average mixed
+# the normal results of seeds 1 and 2 with the tangential results of seed 1.
+expect_error "^softpack-normal: error: --seed: 2 does not match --packing p1\.h5, which softpack-pack made with seed 1" n-seed.h5 \
+  "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 2 --packing p1.h5 --checkpoints ncp-seed --out n-seed.h5 --quiet
+"$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 2 --packing p2.h5 --checkpoints n2 --out n2.h5 --quiet
+rm -rf avg
+expect_error "^softpack-average: error: --tangential: results of seeds 1, --normal: of seeds 1, 2; allowed: the same seeds for both" avg \
+  avg "n1.h5 n2.h5" t-bad.h5
+
 case_name youngs_modulus_that_overflows_is_refused_before_the_sweep
 # E = 1e308 made the normal sweep spin (a time step of 1e-156 s, infinite residuals): the timeout
 # turns that into a failure instead of a hang.
