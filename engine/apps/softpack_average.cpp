@@ -29,11 +29,9 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     if (p.scene != "soft-solid" && p.scene != "soft-soft")
       throw InputError(fmt::format("--scene: '{}' is not allowed; allowed: soft-solid, soft-soft", p.scene));
-    // The columns of each seed the averages read; each seed once.
-    std::vector<SeedFile> files;
-    const auto read = [&](const std::vector<std::string>& paths, const std::string& stage) {
+    // The columns of each seed the averages read (each seed once), and the seed of each file.
+    const auto read = [&](const std::vector<std::string>& paths, const std::string& stage, std::vector<SeedFile>& files) {
       std::vector<SweepColumns> columns;
-      files.clear();
       for (const auto& path : paths) {
         SweepResults r = read_sweep_results_file(path, stage, p.scene);
         files.push_back({path, r.seed});
@@ -42,10 +40,10 @@ int main(int argc, char** argv) {
       check_distinct_seeds(files, "--" + stage);
       return columns;
     };
-    const std::vector<SweepColumns> normal = read(p.normal_inputs, "normal");
-    const std::vector<SeedFile> normal_files = files;
-    const std::vector<SweepColumns> tangential = read(p.tangential_inputs, "tangential");
-    check_same_seeds(normal_files, files);
+    std::vector<SeedFile> normal_files, tangential_files;
+    const std::vector<SweepColumns> normal = read(p.normal_inputs, "normal", normal_files);
+    const std::vector<SweepColumns> tangential = read(p.tangential_inputs, "tangential", tangential_files);
+    check_same_seeds(normal_files, tangential_files);
     const NormalAverage n = average_normal(normal);
     const TangentialAverage t = average_tangential(tangential);
     p.code_version = code_version();

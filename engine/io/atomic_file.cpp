@@ -12,12 +12,16 @@
 
 namespace softpack {
 
-void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::filesystem::path target(path);
+std::string temporary_path_for(const std::string& final_path) {
+  const std::filesystem::path target(final_path);
   std::error_code ec;
   if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path(), ec);
-  if (ec) throw InputError(fmt::format("{}: cannot create its folder: {}", path, ec.message()));
-  const std::string tmp = fmt::format("{}.tmp.{}", path, ::getpid());
+  if (ec) throw InputError(fmt::format("{}: cannot create its folder: {}", final_path, ec.message()));
+  return fmt::format("{}.tmp.{}", final_path, ::getpid());
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  const std::string tmp = temporary_path_for(path);
   // A full disk, a quota or an I/O error: one message, and the temporary goes.
   const auto failed = [&](const char* what, int error) {
     std::remove(tmp.c_str());

@@ -5,6 +5,11 @@
 
 namespace softpack {
 
+/// The temporary a writer fills next to `final_path` and renames into place ("<final>.tmp.<pid>":
+/// only the writing process uses it, and make's recipes clear what a killed one left), its
+/// folder created. InputError names `final_path` when the folder cannot be made.
+std::string temporary_path_for(const std::string& final_path);
+
 /// Writes `content` to `path` via `path.tmp.<pid>` and rename(2). Throws InputError on failure.
 void write_file_atomically(const std::string& path, const std::string& content);
 

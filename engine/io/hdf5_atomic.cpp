@@ -1,31 +1,19 @@
 // AtomicH5 (io/hdf5_file.hpp): an HDF5 output written under a temporary name and renamed into
 // place on commit, so that an interrupted or failed run (a kill, a full disk) leaves no file.
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace softpack::h5 {
 
 namespace {
-std::string temporary_for(const std::string& final_path) {
-  const std::filesystem::path target(final_path);
-  if (target.has_parent_path()) {
-    std::error_code ec;
-    std::filesystem::create_directories(target.parent_path(), ec);
-    if (ec)
-      throw InputError(fmt::format("{}: cannot create its directory: {}", final_path,
-                                   ec.message()));
-  }
-  return fmt::format("{}.tmp.{}", final_path, ::getpid());
-}
 
 // H5Fcreate can fail after it has made the file (a full disk: the superblock does not fit).
 File create_or_remove(const std::string& tmp, const std::string& final_path) {
@@ -39,7 +27,7 @@ File create_or_remove(const std::string& tmp, const std::string& final_path) {
 }  // namespace
 
 AtomicH5::AtomicH5(const std::string& final_path)
-    : final_(final_path), tmp_(temporary_for(final_path)), file_(create_or_remove(tmp_, final_path)) {}
+    : final_(final_path), tmp_(temporary_path_for(final_path)), file_(create_or_remove(tmp_, final_path)) {}
 
 AtomicH5::~AtomicH5() {
   if (committed_) return;

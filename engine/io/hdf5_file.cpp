@@ -48,6 +48,12 @@ Handle must(Handle h, const char* what) {
   return h;
 }
 
+}  // namespace detail
+
+namespace {
+
+// The errno of the operating system's refusal that HDF5's error stack reports ("errno = 28"), 0
+// when it names none.
 int os_errno() {
   int found = 0;
   H5Ewalk2(
@@ -63,15 +69,11 @@ int os_errno() {
   return found;
 }
 
-}  // namespace detail
-
-namespace {
-
 // A write that failed: when the operating system refused it (a full disk, a quota, no
 // permission, a folder that went away), one line for the user, InputError (exit 2); anything
 // else is a bug, std::runtime_error. Call it right after the failing HDF5 call.
 [[noreturn]] void write_failed(const std::string& file, const std::string& what) {
-  if (const int e = detail::os_errno(); e != 0)
+  if (const int e = os_errno(); e != 0)
     throw InputError(fmt::format("{}: cannot {}: {}", file, what, std::strerror(e)));
   throw std::runtime_error(fmt::format("{}: cannot {} ({})", file, what, hdf5_reason()));
 }
@@ -143,16 +145,13 @@ void make_parent_groups(hid_t file, const std::string& file_path, const std::str
 constexpr hsize_t kChunkBytes = hsize_t{64} << 20;
 constexpr std::size_t kCompactBytes = 48 * 1024;  // the object header holds at most 64 KiB
 
-Handle checksummed_storage(const std::string& file_path, const std::string& name, hid_t type, hid_t space) {
+Handle checksummed_storage(hid_t type, hid_t space) {
   Handle dcpl = untimed(H5P_DATASET_CREATE);
   const int rank = H5Sget_simple_extent_ndims(space);
   std::vector<hsize_t> chunk(static_cast<std::size_t>(std::max(rank, 0)));
   if (rank > 0) H5Sget_simple_extent_dims(space, chunk.data(), nullptr);
   const hssize_t count = H5Sget_simple_extent_npoints(space);
-  if (rank == 0 || count == 0) {
-    if (count * static_cast<hssize_t>(H5Tget_size(type)) > static_cast<hssize_t>(kCompactBytes))
-      throw std::invalid_argument(fmt::format("{}: dataset '{}': a scalar of more than {} bytes", file_path, name,
-                                              kCompactBytes));
+  if (rank == 0 || count == 0) {  // a number, or a string of at most kCompactBytes (write_string)
     must(H5Pset_layout(dcpl.get(), H5D_COMPACT), "H5Pset_layout");
     return dcpl;
   }
@@ -169,7 +168,7 @@ void write_dataset(hid_t file, const std::string& file_path, const std::string& 
   if (exists_in(file, file_path, name))
     throw std::runtime_error(fmt::format("{}: dataset '{}' already exists", file_path, name));
   make_parent_groups(file, file_path, name);
-  const Handle dcpl = checksummed_storage(file_path, name, file_type, space);
+  const Handle dcpl = checksummed_storage(file_type, space);
   const Handle ds(H5Dcreate2(file, name.c_str(), file_type, space, H5P_DEFAULT, dcpl.get(),
                              H5P_DEFAULT),
                   H5Dclose);
@@ -248,7 +247,7 @@ File File::create(const std::string& path, const std::string& shown_as) {
   const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
   if (id < 0) {
     const std::string& name = shown_as.empty() ? path : shown_as;
-    if (const int e = detail::os_errno(); e != 0)
+    if (const int e = os_errno(); e != 0)
       throw InputError(fmt::format("{}: cannot create the file: {}", name, std::strerror(e)));
     throw InputError(fmt::format("{}: cannot create HDF5 file ({})", name, hdf5_reason()));
   }

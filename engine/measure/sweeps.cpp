@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 
 #include "core/error.hpp"
 
@@ -56,15 +57,17 @@ void at_point(const std::string& point, Fn&& fn) {
 
 // A point file is reused only when it holds the same configuration and reads whole, its state
 // included (every dataset is checksummed: a flipped bit is an InputError here, not a wrong
-// restart later).
-bool usable(const std::string& path, const std::string& config) {
-  if (!std::filesystem::exists(path)) return false;
+// restart later). Returns what it read, so that nothing is read twice.
+std::optional<PointFile> reusable(const std::string& path, const std::string& config) {
+  if (!std::filesystem::exists(path)) return std::nullopt;
   try {
-    return read_point_file(path, true).provenance.config == config;
+    PointFile f = read_point_file(path, true);
+    if (f.provenance.config != config) return std::nullopt;
+    return f;
   } catch (const InputError& e) {
     // Unreadable (it cannot be half-written, but may be damaged or foreign): recomputed, said.
     fmt::print(stderr, "warning: checkpoint not used, the point is computed again: {}\n", e.what());
-    return false;
+    return std::nullopt;
   }
 }
 
@@ -86,9 +89,13 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
   const auto& grid = c.settings.normal.delta_n;
   std::vector<PointResult> points(grid.size());
   std::size_t done = 0;  // points 0..done-1 are reusable
-  while (done < grid.size() && usable(normal_point_path(c.checkpoint_dir, done), c.config)) {
-    points[done] = read_point_file(normal_point_path(c.checkpoint_dir, done), false).result;
+  SimulationState undeformed, last;  // the states of points 0 and done-1, when done > 0
+  while (done < grid.size()) {
+    std::optional<PointFile> f = reusable(normal_point_path(c.checkpoint_dir, done), c.config);
+    if (!f) break;
+    points[done] = f->result;
     if (c.progress) c.progress("normal", done, grid.size(), points[done], true);
+    (done == 0 ? undeformed : last) = std::move(f->state);
     ++done;
   }
   if (done == grid.size()) return points;
@@ -98,12 +105,10 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
   if (done > 0) {
     // Continue from the last finished state (incremental) or the undeformed one (direct).
     const std::size_t from = c.settings.normal.incremental ? done - 1 : 0;
-    sim.restore(read_point_file(normal_point_path(c.checkpoint_dir, from), true).state);
+    sim.restore(from == 0 ? undeformed : last);
     hn_now = grid[from] * c.setup.Rs;
   }
-  const SimulationState undeformed_if_direct =
-      (!c.settings.normal.incremental && done > 0) ? read_point_file(normal_point_path(c.checkpoint_dir, 0), true).state
-                                                   : SimulationState{};
+  const SimulationState undeformed_if_direct = (!c.settings.normal.incremental && done > 0) ? undeformed : SimulationState{};
   std::size_t computed = 0;
   for (std::size_t k = done; k < grid.size(); ++k) {
     const auto start = Clock::now();
@@ -148,8 +153,8 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
     std::optional<SimulationState> normal_state;  // read when a point has to be computed
     for (std::size_t b = 0; b < alphas.size(); ++b) {
       const std::string path = tangential_point_path(c.checkpoint_dir, a, b);
-      if (usable(path, c.config)) {
-        points.push_back(read_point_file(path, false).result);
+      if (const std::optional<PointFile> f = reusable(path, c.config)) {
+        points.push_back(f->result);
         if (c.progress) c.progress("tangential", points.size() - 1, total, points.back(), true);
         continue;
       }
