@@ -68,3 +68,14 @@ $(FIGURES_OUT)/fig5_tangential_soft_soft.%: figures/fig45_tangential.gp $(FIGURE
 	@$(call gnuplot_run,$<,$@,scene='soft-soft')
 $(FIGURES_OUT)/fig6_kt.%: figures/fig6_kt.gp $(FIGURE_INPUTS)
 	@$(call gnuplot_run,$<,$@,)
+
+# Where the time went: what every output of the profile records (wall-clock and CPU time per stage,
+# per sweep point and per phase of it), summed by softpack-timing (analysis/stage_timing.hpp).
+# Files not made yet are listed as missing; nothing is run.
+.PHONY: timing
+timing: | $(TOOLS)  ## wall-clock and CPU time of the profile's last run, per stage and phase (also DATA/PROFILE/timing.json)
+	@mkdir -p $(DATA)/$(PROFILE) && $(BUILD)/engine/softpack-timing --title "Time of the $(PROFILE) profile ($(DATA)/$(PROFILE))" \
+	  --packings $(PACKINGS) --normal $(foreach scene,$(SCENES),$(call NORMAL_RESULTS,$(scene))) \
+	  --tangential $(foreach scene,$(SCENES),$(call TANGENTIAL_RESULTS,$(scene))) \
+	  --averages $(foreach scene,$(SCENES),$(AVERAGE_DIR)/$(scene).h5) --fits $(filter %.json,$(FITS)) \
+	  --json $(DATA)/$(PROFILE)/timing.json

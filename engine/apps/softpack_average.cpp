@@ -4,11 +4,11 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include <chrono>
 
 #include "analysis/average.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
+#include "core/stopwatch.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "formats/average_file.hpp"
@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   app.add_option("--out-dir", out_dir, "writes <scene>.h5, normal-<scene>.dat, tangential-<scene>.dat, kt-<scene>.dat")->required();
   if (const auto code = parse_command_line(app, argc, argv, "softpack-average")) return *code;
   try {
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     if (p.scene != "soft-solid" && p.scene != "soft-soft")
       throw InputError(fmt::format("--scene: '{}' is not allowed; allowed: soft-solid, soft-soft", p.scene));
     // The columns of each seed the averages read (each seed once), and the seed of each file.
@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
     const NormalAverage n = average_normal(normal);
     const TangentialAverage t = average_tangential(tangential);
     p.code_version = code_version();
-    p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    p.seconds = watch.elapsed().wall;
+    p.cpu_seconds = process_cpu_seconds();
     write_average_files(out_dir, n, t, p);
     return 0;
   } catch (...) {

@@ -6,11 +6,11 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include <chrono>
 
 #include "analysis/power_fit.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
+#include "core/stopwatch.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "formats/average_file.hpp"
@@ -18,7 +18,6 @@
 
 int main(int argc, char** argv) {
   using namespace softpack;
-  using Clock = std::chrono::steady_clock;
   CLI::App app{"softpack-fit: fit Eq. 7 to the normal force and Eq. 8 to the tangential spring constant of one scene"};
   std::string average_path, out_path, gnuplot_path;
   bool quiet = false;
@@ -31,7 +30,7 @@ int main(int argc, char** argv) {
   if (const auto code = parse_command_line(app, argc, argv, "softpack-fit")) return *code;
 
   try {
-    const auto start = Clock::now();
+    const Stopwatch watch;
     const AverageFile in = read_average_file(average_path);
     FitFile out;
     out.scene = in.scene;
@@ -51,7 +50,8 @@ int main(int argc, char** argv) {
       }
     }
     out.code_version = code_version();
-    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    out.seconds = watch.elapsed().wall;
+    out.cpu_seconds = process_cpu_seconds();
     // The fit file last: it is the stage's result, so a failed write leaves none beside a missing .gp.
     if (!gnuplot_path.empty()) write_fit_gnuplot_file(gnuplot_path, out);
     write_fit_file(out_path, out);

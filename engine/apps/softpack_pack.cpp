@@ -5,13 +5,13 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 
 #include "packing/packing_profile.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "config/profile.hpp"
+#include "core/stopwatch.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "formats/packing_file.hpp"
@@ -20,7 +20,6 @@
 
 int main(int argc, char** argv) {
   using namespace softpack;
-  using Clock = std::chrono::steady_clock;
   CLI::App app{"softpack-pack: generate the soft-particle packing of one seed (paper §3)"};
   std::string config_path, out_path, vtp_path, xyz_path;
   long long seed = -1;
@@ -36,7 +35,7 @@ int main(int argc, char** argv) {
   if (const auto code = parse_command_line(app, argc, argv, "softpack-pack")) return *code;
 
   try {
-    const auto start = Clock::now();
+    const Stopwatch watch;
     if (seed < 0) throw InputError(fmt::format("--seed: {} is not allowed; allowed: a seed >= 0", seed));
     const ConfigNode root = ConfigNode::load_file(config_path);
     PackingProfile profile;
@@ -50,7 +49,7 @@ int main(int argc, char** argv) {
     double last = -1.0;  // redraw at most 10 times a second on a terminal, once a second in a log
     const auto progress = [&](const std::string& phase, std::size_t done, std::size_t total) {
       if (quiet) return;
-      const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+      const double elapsed = watch.elapsed().wall;
       if (elapsed - last < (tty ? 0.1 : 1.0) && done != total) return;
       last = elapsed;
       fmt::print(stderr, "{}softpack-pack seed {}: {} {}/{} ({:.0f}%), {:.1f} s{}", tty ? "\r\033[K" : "", seed, phase, done,
@@ -67,7 +66,8 @@ int main(int argc, char** argv) {
     prov.config_file = config_path;
     prov.config = section_text(root, "packing");
     prov.seed = static_cast<std::uint64_t>(seed);
-    prov.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    prov.seconds = watch.elapsed().wall;
+    prov.cpu_seconds = process_cpu_seconds();
     // The packing file last: it is what make (and the sweeps) take as the stage's result, so a
     // write that fails (a full disk) leaves no packing file beside missing pictures.
     const std::string line = fmt::format("softpack-pack {} seed {} from {}", prov.code_version, seed, config_path);

@@ -106,6 +106,7 @@ void write_average_files(const std::string& dir, const NormalAverage& n, const T
   for (const auto& in : p.tangential_inputs) inputs += in + "\n";
   put(f, "provenance/inputs", inputs);
   put(f, "provenance/seconds", p.seconds);
+  put(f, "provenance/cpu_seconds", p.cpu_seconds);
   out.commit();
 }
 
@@ -124,6 +125,12 @@ AverageFile read_average_file(const std::string& path) {
   read_columns(in, {{kNormalDeltaN, &a.delta_n}, {kNormalFn + kMean, &a.Fn}, {kNormalFn + kStderr, &a.Fn_stderr}});
   a.has_kt = in.exists(kKt);
   if (a.has_kt) read_columns(in, {{kKtDeltaN, &a.kt_delta_n}, {kKtMean, &a.kt}, {kKtStderr, &a.kt_stderr}});
+  if (in.exists("provenance/seconds") && in.exists("provenance/cpu_seconds")) {
+    Elapsed e;
+    get(in, "provenance/seconds", e.wall);
+    get(in, "provenance/cpu_seconds", e.cpu);
+    a.time = e;
+  }
   return a;
 }
 

@@ -7,15 +7,17 @@
 //               /tangential/{delta_n, alpha_deg, ht, the same pairs for Ft_parallel,
 //                            Ft_perpendicular and Fn}        one row per (delta_n, alpha)
 //               /kt/{delta_n, mean, stderr}                  spring constant [N/m] per delta_n
-//               /provenance/{scene, profile, code_version, inputs, seconds}
+//               /provenance/{scene, profile, code_version, inputs, seconds, cpu_seconds}
 //   normal-<scene>.dat, tangential-<scene>.dat (one block per delta_n, gnuplot's index) and
 //   kt-<scene>.dat: the same numbers as columns, under a header that names them.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "analysis/average.hpp"
+#include "core/stopwatch.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace softpack {
@@ -23,7 +25,8 @@ namespace softpack {
 struct AverageProvenance {
   std::string scene, profile, code_version;
   std::vector<std::string> normal_inputs, tangential_inputs;  ///< the results files averaged
-  double seconds = 0.0;
+  double seconds = 0.0;      ///< wall-clock time [s]
+  double cpu_seconds = 0.0;  ///< CPU time of the process [s]
 };
 
 /// Writes the four files into `dir`, each atomically.
@@ -39,6 +42,7 @@ struct AverageFile {
   std::vector<double> delta_n, Fn, Fn_stderr;  ///< /normal
   bool has_kt = false;                         ///< the /kt group is there
   std::vector<double> kt_delta_n, kt, kt_stderr;
+  std::optional<Elapsed> time;  ///< of softpack-average (provenance/seconds, cpu_seconds), when the file says
 };
 /// Reads and checks an average file; InputError names the file and the dataset (an unknown
 /// scene, columns of different lengths, values that are not finite).

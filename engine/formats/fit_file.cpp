@@ -101,7 +101,8 @@ std::string fit_file_text(const FitFile& f) {
                                                {"profile", f.input.profile},
                                                {"code_version", f.input.code_version},
                                                {"seeds", f.input.seeds}}})},
-                      {"seconds", f.seconds}};
+                      {"seconds", f.seconds},
+                      {"cpu_seconds", f.cpu_seconds}};
   return out.dump(2) + "\n";
 }
 
@@ -143,6 +144,9 @@ FitEstimates read_fit_file(const std::string& path) {
   const auto prov = j.find(kProvenance);
   if (prov != j.end() && prov->is_object() && prov->contains(kCodeVersion) && prov->at(kCodeVersion).is_string())
     out.code_version = prov->at(kCodeVersion).get<std::string>();
+  if (prov != j.end() && prov->is_object() && prov->contains("seconds") && prov->contains("cpu_seconds") &&
+      prov->at("seconds").is_number() && prov->at("cpu_seconds").is_number())
+    out.time = Elapsed{prov->at("seconds").get<double>(), prov->at("cpu_seconds").get<double>()};
   return out;
 }
 

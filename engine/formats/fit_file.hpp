@@ -8,7 +8,7 @@
 //    "tangential_reason": "…" (only when "tangential" is null),
 //    "errors": "…", "models": {…},
 //    "provenance": {"program", "code_version", "inputs": [{"path", "scene", "profile",
-//                   "code_version", "seeds"}], "seconds"}}
+//                   "code_version", "seeds"}], "seconds", "cpu_seconds"}}
 //
 // Undefined errors (NaN, e.g. δ's when c >= 0) are written as null. Beside it, on request, the
 // coefficients as gnuplot variables for figures/*.gp (a_solid=...; kt_a_solid=...; NaN when
@@ -21,6 +21,7 @@
 
 #include "analysis/fit_table.hpp"
 #include "analysis/power_fit.hpp"
+#include "core/stopwatch.hpp"
 
 namespace softpack {
 
@@ -34,7 +35,8 @@ struct FitFile {
     std::int64_t seeds = 0;
   } input;
   std::string code_version;
-  double seconds = 0.0;
+  double seconds = 0.0;      ///< wall-clock time [s]
+  double cpu_seconds = 0.0;  ///< CPU time of the process [s]
 };
 
 /// The JSON text of the file (what write_fit_file writes).
@@ -51,6 +53,7 @@ struct FitEstimates {
   std::map<std::string, table::Estimate> normal;                     ///< a, b, c, delta
   std::optional<std::map<std::string, table::Estimate>> tangential;  ///< a, b, c; none when null
   std::string code_version = "?";                                    ///< of softpack-fit ("?": not said)
+  std::optional<Elapsed> time;  ///< of softpack-fit (provenance seconds, cpu_seconds), when the file says
 };
 /// InputError naming the file and the key: not JSON, no scene, a missing or non-numeric
 /// coefficient, an error that is neither a number nor null.

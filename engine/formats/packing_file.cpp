@@ -41,6 +41,7 @@ void each_provenance(V& v, F&& f) {
   f("provenance/config", v.config);
   f("provenance/seed", v.seed);
   f("provenance/seconds", v.seconds);
+  f("provenance/cpu_seconds", v.cpu_seconds);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 //                       depletion_length, min_shell_gap, exponent, exponent_error,
 //                       exponent_r_min, exponent_r_max, radial_profile/{r_inner,r_outer,solid_fraction}
 //   /provenance/...     program, code_version, config_file, config (the YAML slice read),
-//                       seed, seconds
+//                       seed, seconds, cpu_seconds (wall-clock and CPU time of the generation)
 #pragma once
 #include <cstdint>
 #include <string>
@@ -30,7 +30,8 @@ struct PackingProvenance {
   std::string config_file;
   std::string config;  ///< the configuration slice the packing depends on
   std::uint64_t seed = 0;
-  double seconds = 0.0;
+  double seconds = 0.0;      ///< wall-clock time [s]
+  double cpu_seconds = 0.0;  ///< CPU time of the process [s]
 };
 
 /// Writes the file atomically (no file is left behind on failure).

@@ -3,10 +3,19 @@
 #pragma once
 #include <vector>
 
+#include "core/stopwatch.hpp"
 #include "core/types.hpp"
 #include "relax/relaxation.hpp"
 
 namespace softpack {
+
+/// Where the time of a point went (wall and CPU): moving the body or turning the soft-particle
+/// (loading), the relaxation, writing its point file (output, measured by the writer up to its
+/// timing datasets).
+struct PointTiming {
+  Elapsed loading, relaxation, output;
+  Elapsed total() const { return loading + relaxation + output; }
+};
 
 struct PointResult {
   double delta_n = 0.0, hn = 0.0;    ///< normal deformation, hn = delta_n Rs [m]
@@ -19,7 +28,9 @@ struct PointResult {
   double relax_time = 0.0;            ///< simulated [s]
   std::vector<RelaxationCheck> checks;
   long steps = 0;                     ///< all steps of the point (loading, rotation, relaxation)
-  double seconds = 0.0;               ///< wall-clock time of the point
+  double seconds = 0.0;               ///< wall-clock time of the point's loading and relaxation
+  PointTiming timing;
+  bool reused = false;  ///< not stored: this run took the point from its checkpoint (timing is the computing run's)
 };
 
 }  // namespace softpack

@@ -46,6 +46,19 @@ void each_result_field(R& r, F&& f) {
   f("result/relax_steps", r.relax_steps);
   f("result/relax_time", r.relax_time);
   f("result/steps", r.steps);
+}
+
+// /result/timing, written last (the output phase is the writing of the file up to them):
+// f(dataset, member) for the wall-clock and CPU time of each phase, then the point's seconds.
+template <class R, class F>
+void each_timing_field(R& r, F&& f) {
+  const auto phase = [&](const char* name, auto& e) {
+    f(fmt::format("result/timing/{}/wall", name), e.wall);
+    f(fmt::format("result/timing/{}/cpu", name), e.cpu);
+  };
+  phase("loading", r.timing.loading);
+  phase("relaxation", r.timing.relaxation);
+  phase("output", r.timing.output);
   f("result/seconds", r.seconds);
 }
 
@@ -153,6 +166,15 @@ std::vector<std::vector<SimulationState::WallSpring>> read_wall_springs(const h5
 constexpr const char *kDeltaN = "delta_n", *kFn = "Fn", *kCheckPoint = "relaxation/checks/point";
 constexpr std::array kResultsLayout{kDeltaN, kFn, kStage};  // what makes a file a results file
 
+// The phases of a point's time (PointTiming), as columns timing/<phase>/{wall, cpu} [s].
+constexpr std::array<const char*, 3> kPhases{"loading", "relaxation", "output"};
+constexpr std::array<const char*, 3> kPhaseWall{"timing/loading/wall", "timing/relaxation/wall", "timing/output/wall"};
+constexpr std::array<const char*, 3> kPhaseCpu{"timing/loading/cpu", "timing/relaxation/cpu", "timing/output/cpu"};
+constexpr std::array<const char*, 3> kPhaseDescription{
+    "moving the second body (normal) or turning the first soft-particle (tangential), with the restore of its start state",
+    "the relaxation protocol", "writing the point file"};
+Elapsed PointTiming::*const kPhaseMember[] = {&PointTiming::loading, &PointTiming::relaxation, &PointTiming::output};
+
 struct Column {
   const char* name;
   const char* unit = "";              ///< attribute "unit"
@@ -184,7 +206,14 @@ void each_column(S& s, F&& f) {
   f({.name = "relaxation/checks/time", .per_check = true}, s.check_time);
   f({.name = "relaxation/checks/force_ratio", .per_check = true, .finite = false}, s.check_force_ratio);
   f({.name = "relaxation/checks/energy_ratio", .per_check = true, .finite = false}, s.check_energy_ratio);
-  f({.name = "seconds", .description = "wall-clock time of each point"}, s.seconds);
+  f({.name = "seconds", .description = "wall-clock time of each point's loading and relaxation"}, s.seconds);
+  for (std::size_t k = 0; k < kPhases.size(); ++k) {
+    f({.name = kPhaseWall[k], .unit = "s", .description = kPhaseDescription[k]}, s.phase_wall[k]);
+    f({.name = kPhaseCpu[k], .unit = "s", .description = kPhaseDescription[k]}, s.phase_cpu[k]);
+  }
+  f({.name = "timing/reused",
+     .description = "1: this run took the point from its checkpoint, its timing is that of the run that computed it"},
+    s.reused);
 }
 
 // f(dataset, member) for each provenance field of `s`.
@@ -194,6 +223,7 @@ void each_provenance(S& s, F&& f) {
   f("provenance/packings", s.packings);
   f("provenance/seed", s.seed);
   f("provenance/seconds", s.total_seconds);
+  f("provenance/cpu_seconds", s.total_cpu_seconds);
 }
 
 SweepResults columns(const std::vector<PointResult>& points) {
@@ -205,6 +235,11 @@ SweepResults columns(const std::vector<PointResult>& points) {
     s.force.push_back(r.force), s.force_first.push_back(r.force_first), s.force_between.push_back(r.force_between);
     s.contacts.push_back(r.contacts), s.steps.push_back(r.steps), s.relax_steps.push_back(r.relax_steps);
     s.relax_time.push_back(r.relax_time), s.seconds.push_back(r.seconds);
+    for (std::size_t p = 0; p < kPhases.size(); ++p) {
+      s.phase_wall[p].push_back((r.timing.*kPhaseMember[p]).wall);
+      s.phase_cpu[p].push_back((r.timing.*kPhaseMember[p]).cpu);
+    }
+    s.reused.push_back(r.reused ? 1 : 0);
     s.final_force_ratio.push_back(r.checks.empty() ? 0.0 : r.checks.back().residuals.force_ratio());
     s.final_energy_ratio.push_back(r.checks.empty() ? 0.0 : r.checks.back().residuals.energy_ratio());
     for (const auto& c : r.checks) {
@@ -219,7 +254,8 @@ SweepResults columns(const std::vector<PointResult>& points) {
 
 }  // namespace
 
-void write_point_file(const std::string& path, const PointResult& r, const SimulationState& s, const PointProvenance& prov) {
+void write_point_file(const std::string& path, PointResult& r, const SimulationState& s, const PointProvenance& prov) {
+  Stopwatch watch;
   h5::AtomicH5 out(path);
   h5::File& f = out.file();
   each_result_field(r, writer(f));
@@ -234,6 +270,8 @@ void write_point_file(const std::string& path, const PointResult& r, const Simul
   write_wall_springs(f, kPlaneSprings, s.plane_springs);
   write_wall_springs(f, kShellSprings, s.shell_springs);
   each_provenance_field(prov, writer(f));
+  r.timing.output = watch.elapsed();
+  each_timing_field(r, writer(f));
   out.commit();
 }
 
@@ -245,6 +283,7 @@ PointFile read_point_file(const std::string& path, bool with_state) {
   if (p.provenance.stage != "normal" && p.provenance.stage != "tangential")
     throw InputError(fmt::format("{}: /{}: '{}' is not allowed; allowed: normal, tangential", path, kStage, p.provenance.stage));
   each_result_field(p.result, reader(f));
+  each_timing_field(p.result, reader(f));
   p.result.checks = read_checks(f);
   if (with_state) {
     SimulationState& s = p.state;
@@ -269,17 +308,18 @@ std::string describe_point_file(const h5::File& f) {
 }
 
 void write_sweep_results_file(const std::string& path, const std::vector<PointResult>& points, const PointProvenance& prov,
-                              const std::string& packings, std::uint64_t seed, double seconds) {
+                              const std::string& packings, std::uint64_t seed, const Elapsed& stage_time) {
   SweepResults s = columns(points);
   s.provenance = prov;
   s.packings = packings;
   s.seed = seed;
-  s.total_seconds = seconds;
+  s.total_seconds = stage_time.wall;
+  s.total_cpu_seconds = stage_time.cpu;
   h5::AtomicH5 out(path);
   h5::File& f = out.file();
   each_column(s, [&](const Column& c, const auto& column) { put(f, c.name, column); });
-  // The attributes in the order of the first files: the units N, then m, then descriptions.
-  for (const std::string unit : {"N", "m"})
+  // The attributes: the units N, then m, then s, then the descriptions.
+  for (const std::string unit : {"N", "m", "s"})
     each_column(s, [&](const Column& c, const auto&) {
       if (c.unit == unit) f.set_attribute(c.name, "unit", unit);
     });

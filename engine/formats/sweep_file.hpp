@@ -3,9 +3,10 @@
 // The point file: one measured point with the simulation state it ended in; the checkpoint
 // that lets an interrupted sweep resume, and the normal states the tangential stage shears.
 //   /result/...      PointResult: delta_n, hn, alpha_deg, ht, force, force_first, force_between
-//                    (3), contacts, relax_steps, relax_time, steps, seconds, and per relaxation
+//                    (3), contacts, relax_steps, relax_time, steps, and per relaxation
 //                    check checks/{time, force_ratio, energy_ratio, kinetic_energy,
-//                    elastic_energy, max_unbalanced_force, mean_contact_force, contacts}
+//                    elastic_energy, max_unbalanced_force, mean_contact_force, contacts};
+//                    last, timing/{loading, relaxation, output}/{wall, cpu} and seconds
 //   /state/...       SimulationState: time, steps, x, v, w, F, T, plane_points, shell_centres
 //                    (N, 3), pair_springs/{i, j, xi}, plane_springs/<w>/{i, xi},
 //                    shell_springs/<w>/{i, xi}
@@ -19,9 +20,13 @@
 //   /force, /force_first, /force_between (N, 3)   [N], as in PointResult
 //   /contacts, /steps, /relaxation/{steps, time, final_force_ratio, final_energy_ratio}
 //   /relaxation/checks/{point, time, force_ratio, energy_ratio}   one value per relaxation check
-//   /seconds                                      wall-clock time of each point
-//   /provenance/...  stage, scene, config, code_version, packings, seed, seconds (of the stage)
+//   /seconds                                      wall-clock time of each point's loading and relaxation
+//   /timing/{loading, relaxation, output}/{wall, cpu} [s]   where each point's time went (PointTiming)
+//   /timing/reused                                1: the point was taken from its checkpoint
+//   /provenance/...  stage, scene, config, code_version, packings, seed, seconds and cpu_seconds
+//                    (wall-clock and CPU time of the stage's process)
 #pragma once
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -42,8 +47,9 @@ struct PointProvenance {
 
 // --- The point file ---------------------------------------------------------------------------
 
-/// Writes a point file atomically.
-void write_point_file(const std::string& path, const PointResult& r, const SimulationState& state,
+/// Writes a point file atomically; r.timing.output is set to the time this took (up to the
+/// timing datasets, which are written last).
+void write_point_file(const std::string& path, PointResult& r, const SimulationState& state,
                       const PointProvenance& prov);
 
 /// Reads a point file, with the simulation state when `with_state`. InputError, naming the file
@@ -72,16 +78,19 @@ struct SweepResults : SweepColumns {
   std::vector<std::int64_t> check_point;                      ///< per relaxation check: its point
   std::vector<double> check_time, check_force_ratio, check_energy_ratio;
   std::vector<double> seconds;
+  std::array<std::vector<double>, 3> phase_wall, phase_cpu;  ///< [s] per point: loading, relaxation, output
+  std::vector<std::int64_t> reused;                          ///< per point: 1 = taken from its checkpoint
   PointProvenance provenance;
   std::string packings;
   std::uint64_t seed = 0;
-  double total_seconds = 0.0;  ///< of the whole stage
+  double total_seconds = 0.0;      ///< wall-clock time of the whole stage
+  double total_cpu_seconds = 0.0;  ///< CPU time of the stage's process
 };
 
 /// Writes the results of a whole sweep atomically: arrays over the points, the relaxation
 /// checks flattened.
 void write_sweep_results_file(const std::string& path, const std::vector<PointResult>& points, const PointProvenance& prov,
-                              const std::string& packings, std::uint64_t seed, double seconds);
+                              const std::string& packings, std::uint64_t seed, const Elapsed& stage_time);
 
 /// Reads a sweep results file. With `stage` or `scene` given, the file must have been made by
 /// that stage (normal, tangential) for that scene. InputError names the file and the dataset:

@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "config/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "core/version.hpp"
 #include "formats/sweep_file.hpp"
 #include "integrate/time_step.hpp"
@@ -16,8 +16,6 @@
 
 namespace softpack {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // The first line where two section texts differ, as "'<packing line>' in the packing, '<profile
 // line>' in the profile" ("(none)" past the end of one).
@@ -48,7 +46,7 @@ PackingFile checked_packing(const std::string& path, const std::string& packing_
 }
 
 StageSummary run(const StageOptions& o, const StageProgress& progress) {
-  const auto start = Clock::now();
+  const Stopwatch watch;
   if (o.seed < 0) throw InputError(fmt::format("--seed: {} is not allowed; allowed: a seed >= 0", o.seed));
   const ConfigNode root = ConfigNode::load_file(o.config_path);
   MeasurementSettings settings;
@@ -118,10 +116,11 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
   const std::vector<PointResult> points =
       o.stage == "normal" ? run_normal_sweep(c) : run_tangential_sweep(c, o.normal_checkpoints);
   if (points.empty()) return StageSummary{0, 0.0, true};  // stopped on purpose (tests)
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  // The stage's wall-clock time since it began, and its process's CPU time (with its start-up).
+  const Elapsed stage_time{watch.elapsed().wall, process_cpu_seconds()};
   write_sweep_results_file(o.out, points, PointProvenance{o.stage, o.scene, c.config, c.code_version}, packings,
-                           static_cast<std::uint64_t>(o.seed), seconds);
-  return StageSummary{points.size(), seconds, false};
+                           static_cast<std::uint64_t>(o.seed), stage_time);
+  return StageSummary{points.size(), stage_time.wall, false};
 }
 
 }  // namespace

@@ -3,18 +3,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 
 namespace softpack {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 PointResult record_point(const Simulation& sim, const ContactSetup& setup, const RelaxationReport& relax) {
   PointResult r;
@@ -94,6 +92,7 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
     std::optional<PointFile> f = reusable(normal_point_path(c.checkpoint_dir, done), c.config);
     if (!f) break;
     points[done] = f->result;
+    points[done].reused = true;
     if (c.progress) c.progress("normal", done, grid.size(), points[done], true);
     (done == 0 ? undeformed : last) = std::move(f->state);
     ++done;
@@ -111,7 +110,7 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
   const SimulationState undeformed_if_direct = (!c.settings.normal.incremental && done > 0) ? undeformed : SimulationState{};
   std::size_t computed = 0;
   for (std::size_t k = done; k < grid.size(); ++k) {
-    const auto start = Clock::now();
+    Stopwatch watch;
     const long step0 = sim.step_count();
     const double hn = grid[k] * c.setup.Rs;
     if (!c.settings.normal.incremental && k > 0) {
@@ -119,16 +118,20 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
       hn_now = 0.0;
     }
     RelaxationReport relax;
+    PointTiming timing;
     at_point(fmt::format("normal point {}/{} (delta_n = {})", k + 1, grid.size(), grid[k]), [&] {
       approach(sim, c.setup, hn - hn_now, c.settings.normal.speed);
+      timing.loading = watch.lap();  // with the restore of the undeformed state (direct path)
       relax = softpack::relax(sim, c.settings.relaxation);
+      timing.relaxation = watch.lap();
     });
     hn_now = hn;
     PointResult r = record_point(sim, c.setup, relax);
     r.delta_n = grid[k];
     r.hn = hn;
     r.steps = sim.step_count() - step0;
-    r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    r.timing = timing;
+    r.seconds = timing.loading.wall + timing.relaxation.wall;
     write_point_file(normal_point_path(c.checkpoint_dir, k), r, sim.state(), provenance(c, "normal"));
     points[k] = r;
     if (c.progress) c.progress("normal", k, grid.size(), r, false);
@@ -155,16 +158,18 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
       const std::string path = tangential_point_path(c.checkpoint_dir, a, b);
       if (const std::optional<PointFile> f = reusable(path, c.config)) {
         points.push_back(f->result);
+        points.back().reused = true;
         if (c.progress) c.progress("tangential", points.size() - 1, total, points.back(), true);
         continue;
       }
+      Stopwatch watch;  // loading: reading and restoring the normal state, then the rotation
       if (!normal_state) normal_state = read_point_file(state_path, true).state;
-      const auto start = Clock::now();
       Simulation sim(c.setup.scene);
       sim.restore(*normal_state);
       const long step0 = sim.step_count();
       const double alpha = alphas[b] * std::numbers::pi / 180.0;
       RelaxationReport relax;
+      PointTiming timing;
       const std::string point =
           fmt::format("tangential point {}/{} (delta_n = {}, alpha = {} deg)", points.size() + 1, total, hn_grid[a], alphas[b]);
       at_point(point, [&] {
@@ -180,7 +185,9 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
           sim.add_driver(rot);
           while (sim.drivers_moving()) sim.step();
         }
+        timing.loading = watch.lap();
         relax = softpack::relax(sim, c.settings.relaxation);
+        timing.relaxation = watch.lap();
       });
       PointResult r = record_point(sim, c.setup, relax);
       r.delta_n = hn_grid[a];
@@ -188,7 +195,8 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
       r.alpha_deg = alphas[b];
       r.ht = std::numbers::pi * c.setup.Rs * alphas[b] / 180.0;
       r.steps = sim.step_count() - step0;
-      r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      r.timing = timing;
+      r.seconds = timing.loading.wall + timing.relaxation.wall;
       sim.release_drivers();
       write_point_file(path, r, sim.state(), provenance(c, "tangential"));
       points.push_back(r);

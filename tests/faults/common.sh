@@ -44,8 +44,8 @@ make_samples() {
 # of the HDF5 files, the text of the others without its comments).
 same_results() {
   case $1 in
-    *.h5) h5diff -q --exclude-path /seconds --exclude-path /provenance/seconds --exclude-path /result/seconds "$1" "$2" ;;
-    *.json) diff -q <(grep -v -e '"seconds"' "$1") <(grep -v -e '"seconds"' "$2") > /dev/null ;;
+    *.h5) h5diff -q --exclude-path /seconds --exclude-path /timing --exclude-path /provenance/seconds --exclude-path /provenance/cpu_seconds --exclude-path /result/seconds --exclude-path /result/timing "$1" "$2" ;;
+    *.json) diff -q <(grep -v -e '"seconds"' -e '"cpu_seconds"' "$1") <(grep -v -e '"seconds"' -e '"cpu_seconds"' "$2") > /dev/null ;;
     *) diff -q <(grep -v '^#' "$1") <(grep -v '^#' "$2") > /dev/null ;;
   esac
 }

@@ -144,8 +144,22 @@ TEST(Sweeps, ResumeAfterAnInterruptionGivesIdenticalResults) {
     c.stop_after = 0;
     std::size_t reused = 0;
     c.progress = [&](const std::string&, std::size_t, std::size_t, const PointResult&, bool r) { reused += r; };
-    EXPECT_TRUE(same_results(run_normal_sweep(c), straight)) << "stopped after " << stop << " points";
+    const auto resumed = run_normal_sweep(c);
+    EXPECT_TRUE(same_results(resumed, straight)) << "stopped after " << stop << " points";
     EXPECT_EQ(reused, stop);
+    // The timing of every point is kept through the resume: a reused point says so and carries
+    // the time its computing run recorded in its point file.
+    for (std::size_t k = 0; k < resumed.size(); ++k) {
+      const PointResult& r = resumed[k];
+      EXPECT_EQ(r.reused, k < stop) << k;
+      EXPECT_EQ(r.seconds, r.timing.loading.wall + r.timing.relaxation.wall) << k;
+      EXPECT_GE(r.timing.loading.cpu, 0.0);
+      EXPECT_GE(r.timing.relaxation.cpu, 0.0);
+      EXPECT_GT(r.timing.output.wall, 0.0);  // the writer measured its own work
+      const PointFile f = read_point_file(normal_point_path(dir, k), false);
+      EXPECT_EQ(f.result.timing.relaxation.cpu, r.timing.relaxation.cpu) << k;
+      EXPECT_EQ(f.result.timing.output.wall, r.timing.output.wall) << k;
+    }
   }
   SweepContext t = context(setup, tmp / "t");
   t.stop_after = 2;

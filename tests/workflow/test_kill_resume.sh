@@ -5,7 +5,7 @@
 #     partial or temporary file;
 #   - make -j1, make -j2 and a second -j1 run give the same results.
 # "The same": every HDF5 dataset identical (h5diff, exact) except the wall-clock timings
-# (/seconds, /provenance, which record time spent and code version), and the text outputs
+# (/seconds, /timing, /provenance, which record time spent and code version), and the text outputs
 # (.dat, .gp, .md) identical except their provenance comments.
 #
 #   test_kill_resume.sh BUILD_DIR SOURCE_DIR [ROUNDS=5]   (RANDOM_SEED=n to replay a run)
@@ -33,8 +33,8 @@ same_results() {
     rel=${f#"$a"/}
     [[ -f $b/$rel ]] || { echo "missing in $b: $rel"; return 1; }
     case $f in
-      *.h5) h5diff -q --exclude-path /seconds --exclude-path /provenance "$f" "$b/$rel" > /dev/null 2>&1 ||
-              { echo "differs: $rel"; h5diff --exclude-path /seconds --exclude-path /provenance "$f" "$b/$rel" | head -5; return 1; } ;;
+      *.h5) h5diff -q --exclude-path /seconds --exclude-path /timing --exclude-path /provenance "$f" "$b/$rel" > /dev/null 2>&1 ||
+              { echo "differs: $rel"; h5diff --exclude-path /seconds --exclude-path /timing --exclude-path /provenance "$f" "$b/$rel" | head -5; return 1; } ;;
       *.dat|*.gp|*.md) diff -q <(grep -v -e '^#' -e '^<!--' "$f") <(grep -v -e '^#' -e '^<!--' "$b/$rel") > /dev/null ||
               { echo "differs: $rel"; return 1; } ;;
       *) continue ;;
