@@ -38,7 +38,7 @@ endif
 
 # The goals that write DATA (the pipeline's, the scenes, clean).
 PIPELINE_GOALS := all tables figures paper archive packings normal tangential sweeps averages fits figure1 figure2 \
-  study-packing study-relaxation
+  study-packing study-relaxation accuracy accuracy-report
 MAKE_LETTERS := $(firstword -$(MAKEFLAGS))
 
 # One run per data folder: a goal that writes DATA runs make again under DATA's lock
@@ -130,6 +130,7 @@ include workflow/sweeps.mk
 include workflow/analysis.mk
 include workflow/archive.mk
 include workflow/paper.mk
+include workflow/accuracy.mk
 else ifneq ($(SOFTPACK_TOOLS_BUILT),)
 $(error $(CONFIG_TOOL) is missing: $(if $(findstring n,$(firstword -$(MAKEFLAGS))),make -n needs the tools: run make build first,\
   the build did not make it (see $(BUILD)/build.log)))

@@ -17,7 +17,7 @@ $(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | $(TOOLS)
 	@mkdir -p $(@D) && $(call clear_stale,$@ $(@:.h5=.vtp) $(@:.h5=.xyz))
 	@$(call from_archive,$@ $(@:.h5=.vtp) $(@:.h5=.xyz),$(PACK_STAMP)) || { \
 	  echo "pack: $(PROFILE) seed $* -> $@ (log $(@:.h5=.log))"; \
-	  $(RUN) $(PACK) --config experiments/$(PROFILE).yaml --seed $* --out $@ --vtp $(@:.h5=.vtp) --xyz $(@:.h5=.xyz) \
+	  $(RUN) $(PACK) --config $(PROFILE_FILE) --seed $* --out $@ --vtp $(@:.h5=.vtp) --xyz $(@:.h5=.xyz) \
 	    --quiet 2> $(@:.h5=.log) \
 	  || { echo "pack: FAILED for $(PROFILE) seed $*; see $(@:.h5=.log)"; cat $(@:.h5=.log); exit 1; }; }
 

@@ -11,7 +11,9 @@
 
 VERSION := $(shell awk '/^project/ { print $$3; exit }' CMakeLists.txt)
 STAMPS := $(DATA)/$(PROFILE)/stamps
-PROFILE_FILE := experiments/$(PROFILE).yaml
+# A profile is experiments/PROFILE.yaml unless PROFILE_FILE names another file (the accuracy
+# study's generated profiles, workflow/accuracy.mk).
+PROFILE_FILE ?= experiments/$(PROFILE).yaml
 
 # config ARGS [PROFILE]: what softpack-config says of the profile (ARGS: seeds, scenes, stamp STAGE);
 # a profile it refuses stops make with its message.

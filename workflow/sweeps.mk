@@ -14,7 +14,7 @@ next_seed = $(or $(word 2,$(wordlist $(call seed_index,$(1)),999,$(SEEDS))),$(fi
 .PHONY: normal tangential sweeps
 
 # sweep_args SCENE SEED: the arguments both stages share.
-sweep_args = --config experiments/$(PROFILE).yaml --scene $(1) --seed $(2) --packing $(PACKING_DIR)/seed-$(2).h5 \
+sweep_args = --config $(PROFILE_FILE) --scene $(1) --seed $(2) --packing $(PACKING_DIR)/seed-$(2).h5 \
   $(if $(filter soft-soft,$(1)),--second-packing $(PACKING_DIR)/seed-$(call next_seed,$(2)).h5)
 
 define sweep_rules

@@ -173,6 +173,7 @@ constexpr std::array<const char*, 3> kPhaseCpu{"timing/loading/cpu", "timing/rel
 constexpr std::array<const char*, 3> kPhaseDescription{
     "moving the second body (normal) or turning the first soft-particle (tangential), with the restore of its start state",
     "the relaxation protocol", "writing the point file"};
+constexpr const char *kReused = "timing/reused", *kCpuSeconds = "provenance/cpu_seconds";
 Elapsed PointTiming::*const kPhaseMember[] = {&PointTiming::loading, &PointTiming::relaxation, &PointTiming::output};
 
 struct Column {
@@ -181,6 +182,7 @@ struct Column {
   const char* description = nullptr;  ///< attribute "description"
   bool per_check = false;             ///< one value per relaxation check (else per point)
   bool finite = true;                 ///< numbers: the reader refuses NaN and infinities
+  bool since_0_4 = false;             ///< absent from the files of releases before 0.4.0 (read as empty)
 };
 
 // f(column, member) for each column of `s`, in the file's order.
@@ -208,11 +210,12 @@ void each_column(S& s, F&& f) {
   f({.name = "relaxation/checks/energy_ratio", .per_check = true, .finite = false}, s.check_energy_ratio);
   f({.name = "seconds", .description = "wall-clock time of each point's loading and relaxation"}, s.seconds);
   for (std::size_t k = 0; k < kPhases.size(); ++k) {
-    f({.name = kPhaseWall[k], .unit = "s", .description = kPhaseDescription[k]}, s.phase_wall[k]);
-    f({.name = kPhaseCpu[k], .unit = "s", .description = kPhaseDescription[k]}, s.phase_cpu[k]);
+    f({.name = kPhaseWall[k], .unit = "s", .description = kPhaseDescription[k], .since_0_4 = true}, s.phase_wall[k]);
+    f({.name = kPhaseCpu[k], .unit = "s", .description = kPhaseDescription[k], .since_0_4 = true}, s.phase_cpu[k]);
   }
-  f({.name = "timing/reused",
-     .description = "1: this run took the point from its checkpoint, its timing is that of the run that computed it"},
+  f({.name = kReused,
+     .description = "1: this run took the point from its checkpoint, its timing is that of the run that computed it",
+     .since_0_4 = true},
     s.reused);
 }
 
@@ -223,7 +226,6 @@ void each_provenance(S& s, F&& f) {
   f("provenance/packings", s.packings);
   f("provenance/seed", s.seed);
   f("provenance/seconds", s.total_seconds);
-  f("provenance/cpu_seconds", s.total_cpu_seconds);
 }
 
 SweepResults columns(const std::vector<PointResult>& points) {
@@ -327,6 +329,7 @@ void write_sweep_results_file(const std::string& path, const std::vector<PointRe
     if (c.description) f.set_attribute(c.name, "description", std::string(c.description));
   });
   each_provenance(s, writer(f));
+  put(f, kCpuSeconds, s.total_cpu_seconds);
   out.commit();
 }
 
@@ -336,6 +339,9 @@ SweepResults read_sweep_results_file(const std::string& path, const std::string&
   SweepResults s;
   s.path = path;
   each_provenance(s, reader(f));
+  // The timings (release 0.4.0 on): all of them or none.
+  s.has_timing = f.exists(kReused);
+  if (s.has_timing) get(f, kCpuSeconds, s.total_cpu_seconds);
   if (!stage.empty() && s.provenance.stage != stage)
     throw InputError(
         fmt::format("{}: /{}: these are {} results, {} ones are expected here", path, kStage, s.provenance.stage, stage));
@@ -343,6 +349,7 @@ SweepResults read_sweep_results_file(const std::string& path, const std::string&
     throw InputError(
         fmt::format("{}: /{}: these are results of the {} scene, not of {}", path, kScene, s.provenance.scene, scene));
   each_column(s, [&](const Column& c, auto& column) {
+    if (c.since_0_4 && !s.has_timing) return;
     get(f, c.name, column);
     if (c.per_check) same_length(f, c.name, column.size(), kCheckPoint, s.check_point.size());
     else same_length(f, c.name, column.size(), kDeltaN, s.delta_n.size());

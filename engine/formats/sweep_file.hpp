@@ -80,6 +80,7 @@ struct SweepResults : SweepColumns {
   std::vector<double> seconds;
   std::array<std::vector<double>, 3> phase_wall, phase_cpu;  ///< [s] per point: loading, relaxation, output
   std::vector<std::int64_t> reused;                          ///< per point: 1 = taken from its checkpoint
+  bool has_timing = false;  ///< the file has the timings (release 0.4.0 on; else the four above are empty)
   PointProvenance provenance;
   std::string packings;
   std::uint64_t seed = 0;
@@ -93,7 +94,8 @@ void write_sweep_results_file(const std::string& path, const std::vector<PointRe
                               const std::string& packings, std::uint64_t seed, const Elapsed& stage_time);
 
 /// Reads a sweep results file. With `stage` or `scene` given, the file must have been made by
-/// that stage (normal, tangential) for that scene. InputError names the file and the dataset:
+/// that stage (normal, tangential) for that scene. Files of releases before 0.4.0, which have no
+/// timings, are read with has_timing false. InputError names the file and the dataset:
 /// not a results file, another stage or scene, no points, columns of different lengths, values
 /// that are not finite (but the ratios).
 SweepResults read_sweep_results_file(const std::string& path, const std::string& stage = "", const std::string& scene = "");

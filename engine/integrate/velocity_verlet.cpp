@@ -35,4 +35,19 @@ void drift(Particles& p, double dt, Neighbours& neighbours) {
   neighbours.set_moved(moved);
 }
 
+void quench(Particles& p) {
+  const std::size_t n = p.size();
+  const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
+  Vec3* const v = p.v.data();
+  const Vec3* const F = p.F.data();
+  for (std::size_t i = 0; i < n; ++i)
+    if ((!driven || !driven[i]) && F[i].dot(v[i]) < 0.0) v[i].setZero();
+  if (p.rotates()) {
+    Vec3* const w = p.w.data();
+    const Vec3* const T = p.T.data();
+    for (std::size_t i = 0; i < n; ++i)
+      if ((!driven || !driven[i]) && T[i].dot(w[i]) < 0.0) w[i].setZero();
+  }
+}
+
 }  // namespace softpack

@@ -3,6 +3,10 @@
 //
 //   half_kick   v += F/m dt/2,  w += T/I dt/2
 //   drift       x += v dt
+//
+// and the optional phase of a quenched relaxation (relax/, scene/relaxation_def.hpp):
+//
+//   quench      v = 0 where F·v < 0,  w = 0 where T·w < 0
 #pragma once
 #include "neighbor/neighbours.hpp"
 #include "state/particles.hpp"
@@ -14,5 +18,8 @@ void half_kick(Particles& p, double dt);
 /// Also starts the step's record of displacements since the last neighbour build
 /// (neighbours.moved(); the drivers add their spheres' to it).
 void drift(Particles& p, double dt, Neighbours& neighbours);
+
+/// Per-grain velocity quench of the free spheres (after the second half kick).
+void quench(Particles& p);
 
 }  // namespace softpack

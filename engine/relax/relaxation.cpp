@@ -9,6 +9,13 @@ namespace softpack {
 RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
                        const std::function<void(const RelaxationCheck&)>& on_check) {
   validate(def);
+  // The quench is on for this relaxation only, whatever ends it (an exception of the watchdog).
+  struct Quench {
+    Simulation& sim;
+    bool was;
+    ~Quench() { sim.set_quench(was); }
+  } quench{sim, sim.quenching()};
+  sim.set_quench(std::visit([](const auto& d) { return d.quench; }, def));
   const long step0 = sim.step_count();
   const double t0 = sim.time();
   RelaxationReport report;

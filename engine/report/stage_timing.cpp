@@ -35,6 +35,7 @@ void add_sweeps(ProfileTiming& t, const std::string& stage, const std::vector<st
       continue;
     }
     const SweepResults r = read_sweep_results_file(path, stage);
+    if (!r.has_timing) throw InputError(fmt::format("{}: /timing: none (a results file of a release before 0.4.0)", path));
     StageTiming& s = row(t, stage, r.provenance.scene);
     ++s.files;
     for (std::size_t k = 0; k < r.delta_n.size(); ++k) {

@@ -8,6 +8,12 @@
 //   energy below `energy_tolerance`, or give up after `max_time` (reported, not hidden).
 //   With `zero_velocities_at_checks` the velocities are zeroed after each unconverged check,
 //   as in the paper protocol, which removes the slow rattlers the paper describes.
+//
+// Either protocol may `quench` (default false): during the relaxation, after every step, a free
+// sphere whose power F·v is negative (it moves against its net force, past the bottom of its
+// well) has its velocity set to zero, and its spin when T·ω < 0 — the per-grain velocity quench
+// of quenched molecular dynamics. It takes out kinetic energy where the damping is weak (few,
+// barely overlapped contacts) without touching the grains that are still being accelerated.
 #pragma once
 #include <variant>
 
@@ -17,6 +23,7 @@ struct PaperRelaxationDef {
   int stops = 0;            ///< the paper uses 6
   double wait = 0.0;        ///< [s], the paper uses 0.3
   double final_wait = 0.0;  ///< [s], "at least" 0.3 in the paper
+  bool quench = false;      ///< per-grain velocity quench (above)
 };
 
 struct ConvergedRelaxationDef {
@@ -25,6 +32,7 @@ struct ConvergedRelaxationDef {
   double check_interval = 0.0;  ///< [s]
   double max_time = 0.0;        ///< [s]
   bool zero_velocities_at_checks = false;
+  bool quench = false;  ///< per-grain velocity quench (above)
 };
 
 using RelaxationDef = std::variant<PaperRelaxationDef, ConvergedRelaxationDef>;

@@ -140,17 +140,20 @@ ShellContactRadius parse_contact_radius(const ConfigNode& n) {
 RelaxationDef parse_relaxation(const ConfigNode& n) {
   const std::string protocol = n.at("protocol").choice({"paper", "converged"});
   if (protocol == "paper") {
-    n.allow_only({"protocol", "stops", "wait", "final_wait"});
-    return PaperRelaxationDef{int_of(n.at("stops")), n.at("wait").number(), n.at("final_wait").number()};
+    n.allow_only({"protocol", "stops", "wait", "final_wait", "quench"});
+    PaperRelaxationDef p{int_of(n.at("stops")), n.at("wait").number(), n.at("final_wait").number()};
+    if (auto q = n.find("quench")) p.quench = q->boolean();
+    return p;
   }
   n.allow_only({"protocol", "force_tolerance", "energy_tolerance", "check_interval", "max_time",
-                "zero_velocities_at_checks"});
+                "zero_velocities_at_checks", "quench"});
   ConvergedRelaxationDef c;
   c.force_tolerance = n.at("force_tolerance").number();
   c.energy_tolerance = n.at("energy_tolerance").number();
   c.check_interval = n.at("check_interval").number();
   c.max_time = n.at("max_time").number();
   c.zero_velocities_at_checks = n.at("zero_velocities_at_checks").boolean();
+  if (auto q = n.find("quench")) c.quench = q->boolean();
   return c;
 }
 

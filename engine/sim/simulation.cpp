@@ -56,6 +56,7 @@ void Simulation::step() {
   update_neighbours();
   compute_forces(dt_);
   half_kick(world_.p, dt_);
+  if (quench_) quench(world_.p);
   if (!drivers_.empty()) {
     watchdog_.add_driver_work(drivers_.work(world_, dt_));
     drivers_.finish(world_);

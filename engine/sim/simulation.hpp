@@ -15,6 +15,7 @@
 //   update_neighbours   rebuild the Verlet lists when the skin is used up neighbor/neighbours
 //   compute_forces      gravity, then the contact law of every contact   forces/force_field
 //   half_kick
+//   quench              only while set_quench(true): v = 0 where F·v < 0 (relaxation)
 //   finish_drivers      the drivers' work (watchdog budget); drivers that arrived stop
 //
 // The watchdog checks the state every scene.watchdog.check_interval steps; it only reads it.
@@ -54,6 +55,9 @@ class Simulation {
   void run_for(double duration);
   /// Sets every free sphere's translational and angular velocity to zero.
   void zero_velocities();
+  /// Turns the per-grain velocity quench of every step on or off (scene/relaxation_def.hpp).
+  void set_quench(bool on) { quench_ = on; }
+  bool quenching() const { return quench_; }
   /// Starts a driver now (validated like the scene's drivers, its steps with validate_steps()).
   void add_driver(const DriverDef& driver);
   /// Stops every driver now: walls stand still, driven spheres stop and become free.
@@ -107,6 +111,7 @@ class Simulation {
   Drivers drivers_;
   Watchdog watchdog_;
   long since_check_ = 0;  ///< steps since the last watchdog check
+  bool quench_ = false;
 };
 
 }  // namespace softpack

@@ -3,55 +3,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <numbers>
-#include <unistd.h>
 
-#include "config/profile.hpp"
-#include "packing/packing_profile.hpp"
-#include "measure/sweeps.hpp"
-#include "packing/generator.hpp"
+#include "support/sweep_fixture.hpp"
 
 namespace softpack {
 namespace {
 
-namespace fs = std::filesystem;
-
-const ConfigNode& profile() {
-  static const ConfigNode root = ConfigNode::load_file(SOFTPACK_SOURCE_DIR "/tests/data/sweep-profile.yaml");
-  return root;
-}
-
-PackingFile packing(std::uint64_t seed) {
-  const PackingProfile prof = parse_packing(profile());
-  const Packing p = generate_packing(prof.parameters, seed);
-  PackingFile f;
-  f.centres = p.centres;
-  f.radii = p.radii;
-  f.Rs = prof.parameters.Rs;
-  f.parameters = prof.parameters;
-  f.provenance.seed = seed;
-  return f;
-}
-
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("softpack-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string operator/(const std::string& sub) const { return (path / sub).string(); }
-};
-
-SweepContext context(const ContactSetup& setup, const std::string& dir) {
-  SweepContext c;
-  c.setup = setup;
-  c.settings = parse_measurement(profile());
-  c.config = "test";
-  c.checkpoint_dir = dir;
-  c.code_version = "test";
-  return c;
-}
+using testing::TempDir;
+const ConfigNode& profile() { return testing::sweep_profile(); }
+PackingFile packing(std::uint64_t seed) { return testing::sweep_packing(seed); }
+SweepContext context(const ContactSetup& setup, const std::string& dir) { return testing::sweep_context(setup, dir); }
 
 // With the soft-particle replaced by one solid sphere of radius Rs, the whole chain (loading,
 // relaxation, force measurement) must give Hertz's law for a sphere on a wall, Eq. 3:

@@ -1,0 +1,266 @@
+#include "report/accuracy_report.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "analysis/average.hpp"
+#include "analysis/power_fit.hpp"
+#include "core/error.hpp"
+#include "formats/sweep_file.hpp"
+#include "io/atomic_file.hpp"
+#include "report/stage_timing.hpp"
+
+namespace softpack {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+const std::vector<std::string> kScenes{"soft-solid", "soft-soft"};
+
+using Seeds = std::vector<std::uint64_t>;
+
+// The seeds of each scene a measurement uses: soft-soft's seed k stands for the pair (k, next).
+struct SeedSets {
+  Seeds solid, soft;
+};
+
+// The seed after `s` in `list` (cyclic): the second packing of soft-soft (workflow/sweeps.mk).
+std::uint64_t partner(const Seeds& list, std::uint64_t s) {
+  const auto it = std::find(list.begin(), list.end(), s);
+  return std::next(it) == list.end() ? list.front() : *std::next(it);
+}
+
+
+// The folder of the runs a setting's results are in, and the seed list its soft-soft pairs follow.
+const StudySetting& source(const AccuracyStudy& st, const StudySetting& s) { return s.runs() ? s : st.setting(s.of); }
+
+std::string sweep_path(const std::string& dir, const std::string& setting, const std::string& stage, const std::string& scene,
+                       std::uint64_t seed) {
+  return fmt::format("{}/{}/{}/{}-seed-{}.h5", dir, setting, stage, scene, seed);
+}
+
+std::vector<std::string> names(const AccuracyStudy& st) {
+  std::vector<std::string> n;
+  for (const auto& scene : kScenes) {
+    for (const char* k : {"a", "b", "c", "delta"}) n.push_back(fmt::format("{} normal {}", scene, k));
+    for (const char* k : {"a", "b", "c"}) n.push_back(fmt::format("{} tangential {}", scene, k));
+    for (double d : st.Fn_delta_n) n.push_back(fmt::format("{} Fn({})", scene, d));
+    for (double d : st.kt_delta_n) n.push_back(fmt::format("{} kt({})", scene, d));
+  }
+  return n;
+}
+
+// The quantities of one scene from its seeds' results files, appended to `out`.
+void measure_scene(const AccuracyStudy& st, const std::string& dir, const std::string& folder, const std::string& scene,
+                   const Seeds& seeds, std::vector<Quantity>& out) {
+  std::vector<SweepColumns> normal, tangential;
+  for (std::uint64_t s : seeds) {
+    normal.push_back(read_sweep_results_file(sweep_path(dir, folder, "normal", scene, s), "normal", scene));
+    tangential.push_back(read_sweep_results_file(sweep_path(dir, folder, "tangential", scene, s), "tangential", scene));
+  }
+  const NormalAverage n = average_normal(normal);
+  const TangentialAverage t = average_tangential(tangential);
+  std::vector<double> mean, error;
+  for (const auto& m : n.Fn) mean.push_back(m.mean), error.push_back(m.error);
+  const auto push = [&](const std::string& what, double v, std::string note = "") {
+    out.push_back({fmt::format("{} {}", scene, what), v, std::move(note)});
+  };
+  fit::PowerLawFit fn, kt;
+  std::string fn_note, kt_note;
+  try {
+    fn = fit::fit_normal_law(n.delta_n, mean, error);
+  } catch (const InputError& e) {
+    fn_note = e.what();
+  }
+  for (auto [k, v] : {std::pair{"a", fn.a}, {"b", fn.b}, {"c", fn.c}, {"delta", fn.delta}})
+    push(fmt::format("normal {}", k), fn_note.empty() ? v : kNaN, fn_note);
+  std::vector<double> kt_mean, kt_error;
+  for (const auto& m : t.kt) kt_mean.push_back(m.mean), kt_error.push_back(m.error);
+  if (!fn_note.empty()) kt_note = "no normal fit";
+  else try {
+      kt = fit::fit_tangential_law(t.kt_delta_n, kt_mean, kt_error, fn.delta);
+    } catch (const InputError& e) {
+      kt_note = e.what();
+    }
+  for (auto [k, v] : {std::pair{"a", kt.a}, {"b", kt.b}, {"c", kt.c}})
+    push(fmt::format("tangential {}", k), kt_note.empty() ? v : kNaN, kt_note);
+  const auto at = [](const std::vector<double>& x, const std::vector<MeanError>& y, double d) {
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (std::abs(x[k] - d) < 1e-9) return y[k].mean;
+    return kNaN;
+  };
+  for (double d : st.Fn_delta_n) push(fmt::format("Fn({})", d), at(n.delta_n, n.Fn, d));
+  for (double d : st.kt_delta_n) push(fmt::format("kt({})", d), at(t.kt_delta_n, t.kt, d));
+}
+
+std::vector<Quantity> measure(const AccuracyStudy& st, const std::string& dir, const std::string& folder, const SeedSets& s) {
+  std::vector<Quantity> q;
+  measure_scene(st, dir, folder, "soft-solid", s.solid, q);
+  measure_scene(st, dir, folder, "soft-soft", s.soft, q);
+  return q;
+}
+
+// The files of a running setting's measurement on `seeds`, for its cost and completeness.
+TimingInputs files_of(const std::string& dir, const StudySetting& run, const Seeds& seeds) {
+  TimingInputs in;
+  for (std::uint64_t s : seeds) {
+    in.packings.push_back(fmt::format("{}/{}/packings/seed-{}.h5", dir, run.name, s));
+    for (const auto& scene : kScenes) {
+      in.normal.push_back(sweep_path(dir, run.name, "normal", scene, s));
+      in.tangential.push_back(sweep_path(dir, run.name, "tangential", scene, s));
+    }
+  }
+  return in;
+}
+
+std::string knob_text(const AccuracyStudy& st, const StudySetting& s) {
+  if (!s.runs()) return fmt::format("{} on {} of its seeds", s.of, s.seeds.size());
+  if (s.set.empty()) return s.name == "reference" ? "the reference" : fmt::format("(the base, {})", st.base);
+  std::string t;
+  for (const auto& [key, value] : s.set) {
+    YAML::Emitter e;
+    e << YAML::Flow << value;
+    t += (t.empty() ? "" : ", ") + key + " = " + e.c_str();
+  }
+  return t;
+}
+
+}  // namespace
+
+std::vector<Quantity> measure_setting(const AccuracyStudy& study, const std::string& dir, const StudySetting& setting,
+                                      const std::vector<std::uint64_t>& seeds) {
+  return measure(study, dir, source(study, setting).name, SeedSets{seeds, seeds});
+}
+
+AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) {
+  AccuracyReport r;
+  r.quantities = names(st);
+  const StudySetting& ref = st.reference;
+  const TimingInputs ref_files = files_of(dir, ref, ref.seeds);
+  const ProfileTiming ref_time = collect_timing(ref_files);
+  if (!ref_time.complete())
+    throw InputError(fmt::format("{}/reference: the reference is not complete (make accuracy runs it first); missing: {}", dir,
+                                 ref_time.stages.empty() ? "everything" : "some of its files"));
+  r.reference_cpu = ref_time.total().cpu;
+  // The reference on all its seeds, and its leave-one-seed-out jackknife standard errors.
+  const std::vector<Quantity> all = measure(st, dir, ref.name, {ref.seeds, ref.seeds});
+  const std::size_t nq = all.size(), ns = ref.seeds.size();
+  std::vector<std::vector<double>> leave(nq);
+  for (std::size_t i = 0; i < ns; ++i) {
+    Seeds rest = ref.seeds;
+    rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
+    const std::vector<Quantity> q = measure(st, dir, ref.name, {rest, rest});
+    for (std::size_t k = 0; k < nq; ++k) leave[k].push_back(q[k].value);
+  }
+  for (std::size_t k = 0; k < nq; ++k) {
+    r.reference_value.push_back(all[k].value);
+    double m = 0.0;
+    for (double v : leave[k]) m += v;
+    m /= static_cast<double>(ns);
+    double s2 = 0.0;
+    for (double v : leave[k]) s2 += (v - m) * (v - m);
+    r.reference_sigma.push_back(std::sqrt(s2 * static_cast<double>(ns - 1) / static_cast<double>(ns)));
+  }
+  const auto row_of = [&](const StudySetting& s) {
+    SettingRow row;
+    row.name = s.name;
+    row.knob = knob_text(st, s);
+    row.runs = s.runs();
+    row.seeds = s.seeds.size();
+    const StudySetting& src = source(st, s);
+    const ProfileTiming time = collect_timing(files_of(dir, src, s.seeds));
+    row.cpu_seconds = time.total().cpu;
+    row.complete = time.complete();
+    if (!row.complete) return row;
+    std::vector<Quantity> mine, theirs;
+    if (s.runs()) {  // paired: the same soft-particles, soft-soft on the pairs both lists make
+      SeedSets same{s.seeds, {}};
+      for (std::uint64_t seed : s.seeds)
+        if (partner(s.seeds, seed) == partner(ref.seeds, seed)) same.soft.push_back(seed);
+      mine = measure(st, dir, s.name, same);
+      theirs = s.name == ref.name ? mine : measure(st, dir, ref.name, same);
+    } else {  // fewer seeds: against the reference on all of its seeds
+      mine = measure(st, dir, src.name, {s.seeds, s.seeds});
+      theirs = all;
+    }
+    double sum = 0.0;
+    std::size_t counted = 0;
+    for (std::size_t k = 0; k < nq; ++k) {
+      const double z = (mine[k].value - theirs[k].value) / r.reference_sigma[k];
+      row.z.push_back(z);
+      if (!std::isfinite(z)) continue;
+      sum += z * z, ++counted;
+      if (std::abs(z) >= row.max_z) row.max_z = std::abs(z), row.worst = r.quantities[k];
+    }
+    row.rms_z = counted ? std::sqrt(sum / static_cast<double>(counted)) : kNaN;
+    return row;
+  };
+  for (const auto& s : st.settings) r.rows.push_back(row_of(s));
+  for (auto& a : r.rows) {
+    if (!a.complete) continue;
+    a.pareto = std::none_of(r.rows.begin(), r.rows.end(), [&](const SettingRow& b) {
+      return b.complete && &b != &a && b.cpu_seconds <= a.cpu_seconds && b.max_z <= a.max_z &&
+             (b.cpu_seconds < a.cpu_seconds || b.max_z < a.max_z);
+    });
+  }
+  return r;
+}
+
+void write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, const std::string& title) {
+  std::filesystem::create_directories(out_dir);
+  double paper_cpu = kNaN;
+  for (const auto& row : r.rows)
+    if (row.name == "paper" && row.complete) paper_cpu = row.cpu_seconds;
+  std::string md = fmt::format("# {}\n\nReference: {:.0f} CPU-s. Error: (setting − reference) / σ, σ the reference's "
+                               "seed-to-seed (jackknife) standard error; paired on the same seeds for the settings that run.\n\n",
+                               title, r.reference_cpu);
+  md += "| setting | changes | seeds | CPU [s] | CPU / paper | max abs(z) | worst quantity | rms z | Pareto |\n";
+  md += "|---|---|---|---|---|---|---|---|---|\n";
+  std::string dat = "# index setting cpu_seconds cpu_over_paper max_z rms_z pareto runs\n";
+  std::size_t index = 0;
+  for (const auto& row : r.rows) {
+    if (!row.complete) {
+      md += fmt::format("| {} | {} | {} | not run yet | | | | | |\n", row.name, row.knob, row.seeds);
+      continue;
+    }
+    md += fmt::format("| {} | {} | {} | {:.0f} | {:.3f} | {:.2f} | {} | {:.2f} | {} |\n", row.name, row.knob, row.seeds,
+                      row.cpu_seconds, row.cpu_seconds / paper_cpu, row.max_z, row.worst, row.rms_z, row.pareto ? "yes" : "");
+    dat += fmt::format("{} \"{}\" {:.6g} {:.6g} {:.6g} {:.6g} {} {}\n", index++, row.name, row.cpu_seconds,
+                       row.cpu_seconds / paper_cpu, row.max_z, row.rms_z, row.pareto ? 1 : 0, row.runs ? 1 : 0);
+  }
+  md += "\n## Error of every quantity (z)\n\n| quantity | reference | σ |";
+  for (const auto& row : r.rows)
+    if (row.complete) md += " " + row.name + " |";
+  md += "\n|---|---|---|";
+  for (const auto& row : r.rows)
+    if (row.complete) md += "---|";
+  md += "\n";
+  for (std::size_t k = 0; k < r.quantities.size(); ++k) {
+    md += fmt::format("| {} | {:.4g} | {:.2g} |", r.quantities[k], r.reference_value[k], r.reference_sigma[k]);
+    for (const auto& row : r.rows)
+      if (row.complete) md += fmt::format(" {:+.2f} |", row.z[k]);
+    md += "\n";
+  }
+  write_file_atomically(out_dir + "/table.md", md);
+  write_file_atomically(out_dir + "/pareto.dat", dat);
+  nlohmann::json j;
+  j["quantities"] = r.quantities;
+  j["reference"] = {{"value", r.reference_value}, {"sigma", r.reference_sigma}, {"cpu_seconds", r.reference_cpu}};
+  for (const auto& row : r.rows)
+    j["settings"].push_back({{"name", row.name},
+                             {"changes", row.knob},
+                             {"seeds", row.seeds},
+                             {"complete", row.complete},
+                             {"cpu_seconds", row.cpu_seconds},
+                             {"z", row.z},
+                             {"max_z", row.max_z},
+                             {"rms_z", row.rms_z},
+                             {"pareto", row.pareto}});
+  write_file_atomically(out_dir + "/report.json", j.dump(2) + "\n");
+}
+
+}  // namespace softpack

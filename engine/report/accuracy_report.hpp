@@ -1,0 +1,64 @@
+// The fidelity study's comparison (docs/accuracy.md): for each setting of the study
+// (report/accuracy_study.hpp) the quantities a user takes from a measurement — a, b, c, δ of
+// Eq. 7 and a, b, c of Eq. 8 for both scenes, Fn at the study's Δn and kt at its Δn — from its
+// sweep results (averaged over its seeds and fitted here, as softpack-average and softpack-fit
+// do), their error against the reference in units of the reference's seed-to-seed standard
+// error, and the CPU time the setting's outputs record (report/stage_timing.hpp).
+//
+// Error of a setting that runs: paired, against the reference on the same seeds — the same
+// soft-particles, so the difference is the knob's alone; soft-soft pairs the packing of a seed
+// with the next of its list, so only the pairs both lists make are compared. A setting `of`
+// another with fewer seeds is compared with the reference on all its seeds (the error of
+// fewer seeds is their sampling error). The unit σ of each quantity is the reference's
+// leave-one-seed-out (jackknife) standard error over all its seeds: for a mean it is the usual
+// standard error of the mean, for a fitted coefficient the same idea carried through the fit.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "report/accuracy_study.hpp"
+
+namespace softpack {
+
+/// One measured quantity: "soft-solid normal a", "soft-soft Fn(0.5)", ... NaN where it could
+/// not be measured (a fit that failed: `note` says why).
+struct Quantity {
+  std::string name;
+  double value = 0.0;
+  std::string note;
+};
+
+/// What a setting measured on some of its seeds (averaged and fitted), in a fixed order.
+std::vector<Quantity> measure_setting(const AccuracyStudy& study, const std::string& dir, const StudySetting& setting,
+                                      const std::vector<std::uint64_t>& seeds);
+
+struct SettingRow {
+  std::string name;
+  std::string knob;           ///< the keys it changes ("(the paper's protocol)" for none)
+  bool runs = true;
+  std::size_t seeds = 0;
+  double cpu_seconds = 0.0;   ///< of its measurement: packings and sweeps of its seeds
+  bool complete = false;      ///< every file is there
+  std::vector<double> z;      ///< error / σ per quantity (NaN: not measured)
+  double max_z = 0.0, rms_z = 0.0;
+  std::string worst;          ///< the quantity of max_z
+  bool pareto = false;        ///< no other setting is both cheaper and more accurate
+};
+
+struct AccuracyReport {
+  std::vector<std::string> quantities;
+  std::vector<double> reference_value, reference_sigma;  ///< over all the reference's seeds
+  double reference_cpu = 0.0;
+  std::vector<SettingRow> rows;
+};
+
+/// Reads the sweep results under `dir` (<dir>/<setting>/{normal,tangential,packings}/...).
+/// Settings whose files are missing are reported as incomplete, not refused.
+AccuracyReport accuracy_report(const AccuracyStudy& study, const std::string& dir);
+
+/// table.md (the summary and the error of every quantity), pareto.dat (for gnuplot), report.json.
+void write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, const std::string& title);
+
+}  // namespace softpack

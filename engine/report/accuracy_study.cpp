@@ -1,0 +1,182 @@
+#include "report/accuracy_study.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+#include "config/profile.hpp"
+#include "config/yaml_node.hpp"
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "measure/settings.hpp"
+#include "packing/packing_profile.hpp"
+
+namespace softpack {
+namespace {
+
+// The smallest seed a study may use: seeds 1-7 are the paper's seven simulations, run only to
+// report; every calibration and comparison runs on held-out seeds.
+constexpr std::uint64_t kFirstHeldOutSeed = 101;
+
+std::vector<std::uint64_t> read_seeds(const ConfigNode& n) {
+  std::vector<std::uint64_t> seeds;
+  for (const ConfigNode& s : n.items()) {
+    std::string error;
+    const auto v = s.yaml().IsScalar() ? parse_seed(s.yaml().Scalar(), error) : std::nullopt;
+    if (!v) s.fail(error.empty() ? "expected a seed, an integer like 201" : error);
+    if (*v < kFirstHeldOutSeed)
+      s.fail(fmt::format("seed {} is not allowed; allowed: held-out seeds >= {} (1-7 are the paper's, run only to report)", *v,
+                         kFirstHeldOutSeed));
+    if (std::find(seeds.begin(), seeds.end(), *v) != seeds.end()) s.fail(fmt::format("seed {} is listed twice", *v));
+    seeds.push_back(*v);
+  }
+  if (seeds.empty()) n.fail("at least one seed is required");
+  return seeds;
+}
+
+std::vector<double> read_numbers(const ConfigNode& n) {
+  std::vector<double> v;
+  for (const ConfigNode& x : n.items()) v.push_back(x.number());
+  if (v.empty()) n.fail("at least one value is required");
+  return v;
+}
+
+StudySetting read_setting(const std::string& name, const ConfigNode& n, const std::vector<std::uint64_t>& study_seeds) {
+  n.allow_only({"set", "of", "seeds"});
+  StudySetting s;
+  s.name = name;
+  if (auto set = n.find("set"))
+    for (const std::string& key : set->keys()) s.set.emplace_back(key, YAML::Clone(set->at(key).yaml()));
+  if (auto of = n.find("of")) {
+    s.of = of->string();
+    if (!s.set.empty()) n.at("set").fail("a setting `of` another one takes its results: it cannot also `set` keys");
+  }
+  s.seeds = n.has("seeds") ? read_seeds(n.at("seeds")) : study_seeds;
+  return s;
+}
+
+// Replaces the value at the dotted `key` of `root`; the parent map must exist in the base (a
+// misspelt section is refused, a new key of an existing section is allowed).
+void replace(YAML::Node root, const std::string& key, const YAML::Node& value, const std::string& where) {
+  YAML::Node node = root;
+  std::size_t start = 0;
+  std::string path;
+  for (;;) {
+    const std::size_t dot = key.find('.', start);
+    const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (part.empty()) throw InputError(fmt::format("{}: '{}': an empty part in the dotted key", where, key));
+    if (dot == std::string::npos) {
+      node[part] = YAML::Clone(value);
+      return;
+    }
+    path += (path.empty() ? "" : ".") + part;
+    if (!node.IsMap() || !node[part] || !node[part].IsMap())
+      throw InputError(fmt::format("{}: '{}': the base profile has no section '{}' to change", where, key, path));
+    node.reset(node[part]);  // rebinds (operator= would overwrite the parent's value)
+    start = dot + 1;
+  }
+}
+
+}  // namespace
+
+const StudySetting& AccuracyStudy::setting(const std::string& name) const {
+  if (name == reference.name) return reference;
+  for (const auto& s : settings)
+    if (s.name == name) return s;
+  throw InputError(fmt::format("{}: no setting '{}'", path, name));
+}
+
+AccuracyStudy read_accuracy_study(const std::string& path) {
+  const ConfigNode root = ConfigNode::load_file(path);
+  root.allow_only({"study", "base", "seeds", "compare", "reference", "settings"});
+  AccuracyStudy st;
+  st.path = path;
+  root.at("study").string();
+  st.base = root.at("base").string();
+  st.seeds = read_seeds(root.at("seeds"));
+  const ConfigNode cmp = root.at("compare");
+  cmp.allow_only({"Fn_delta_n", "kt_delta_n"});
+  st.Fn_delta_n = read_numbers(cmp.at("Fn_delta_n"));
+  st.kt_delta_n = read_numbers(cmp.at("kt_delta_n"));
+  st.reference = read_setting("reference", root.at("reference"), st.seeds);
+  if (!st.reference.of.empty()) root.at("reference").at("of").fail("the reference runs: it cannot be `of` another setting");
+  for (std::uint64_t s : st.seeds)
+    if (std::find(st.reference.seeds.begin(), st.reference.seeds.end(), s) == st.reference.seeds.end())
+      root.at("reference").at("seeds").fail(fmt::format("the reference must hold every seed of the study; {} is missing", s));
+  const ConfigNode settings = root.at("settings");
+  std::set<std::string> names{"reference"};
+  for (const std::string& name : settings.keys()) {
+    const ConfigNode n = settings.at(name);
+    if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789.-") != std::string::npos)
+      n.fail("a setting's name is its profile's and folder's: lowercase letters, digits, '.', '-'");
+    if (!names.insert(name).second) n.fail(fmt::format("'{}' is a name already used", name));
+    st.settings.push_back(read_setting(name, n, st.seeds));
+  }
+  // A setting that runs: seeds of the reference (compared on the same soft-particles). `of`: a
+  // setting that runs, and a subset of its seeds.
+  for (const auto& s : st.settings) {
+    if (s.runs()) {
+      for (std::uint64_t seed : s.seeds)
+        if (std::find(st.reference.seeds.begin(), st.reference.seeds.end(), seed) == st.reference.seeds.end())
+          settings.at(s.name).at("seeds").fail(fmt::format("seed {} is not a seed of the reference, so nothing to compare it with", seed));
+      continue;
+    }
+    const ConfigNode n = settings.at(s.name);
+    const auto source = std::find_if(st.settings.begin(), st.settings.end(), [&](const StudySetting& o) { return o.name == s.of; });
+    const StudySetting* from = s.of == "reference" ? &st.reference : source != st.settings.end() ? &*source : nullptr;
+    if (!from || !from->runs()) n.at("of").fail(fmt::format("'{}' is not a setting that runs", s.of));
+    for (std::uint64_t seed : s.seeds)
+      if (std::find(from->seeds.begin(), from->seeds.end(), seed) == from->seeds.end())
+        n.at("seeds").fail(fmt::format("seed {} is not one of the seeds of '{}'", seed, s.of));
+  }
+  // Every profile must be one the stages accept: generated, then read as they read it.
+  for (const StudySetting* s : [&] {
+         std::vector<const StudySetting*> all{&st.reference};
+         for (const auto& x : st.settings) all.push_back(&x);
+         return all;
+       }()) {
+    if (!s->runs()) continue;
+    const std::string name = fmt::format("{} (setting {})", path, s->name);
+    try {
+      const ConfigNode p = ConfigNode::load_string(setting_profile_text(st, *s), name);
+      parse_seeds(p);
+      parse_packing(p);
+      parse_measurement(p);
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      throw InputError(msg.rfind(name, 0) == 0 ? msg : name + ": " + msg);
+    }
+  }
+  return st;
+}
+
+std::string setting_profile_text(const AccuracyStudy& study, const StudySetting& setting) {
+  YAML::Node base;
+  try {
+    base = YAML::LoadFile(study.base);
+  } catch (const YAML::Exception& e) {
+    throw InputError(fmt::format("{}: base: {}: {}", study.path, study.base, e.what()));
+  }
+  const ConfigNode checked = ConfigNode::load_file(study.base);  // the project's own checks of the base
+  (void)checked;
+  for (const auto& [key, value] : setting.set)
+    replace(base, key, value, fmt::format("{}: settings.{}.set", study.path, setting.name));
+  base["profile"] = setting.name;
+  base["description"] = fmt::format("Accuracy study {}, setting '{}' (generated; do not edit)", study.path, setting.name);
+  YAML::Node seeds(YAML::NodeType::Sequence);
+  for (std::uint64_t s : setting.seeds) seeds.push_back(s);
+  seeds.SetStyle(YAML::EmitterStyle::Flow);
+  base["seeds"] = seeds;
+  YAML::Emitter out;
+  out << base;
+  return fmt::format("# Generated by softpack-accuracy from {} (setting '{}'): {} with", study.path, setting.name, study.base) +
+         (setting.set.empty() ? std::string(" nothing changed") : [&] {
+           std::string keys;
+           for (const auto& [key, value] : setting.set) keys += " " + key;
+           return keys;
+         }()) +
+         " replaced.\n" + out.c_str() + "\n";
+}
+
+}  // namespace softpack

@@ -1,0 +1,43 @@
+// The fidelity study's file (experiments/accuracy-cost.yaml, docs/accuracy.md): a base profile,
+// the study's seeds, the reference settings and the settings to compare, each a set of keys of
+// the base replaced. Every setting becomes a profile of its own, run by the profile DAG
+// (workflow/accuracy.mk); a setting `of` another one with fewer `seeds` is that one's results on
+// those seeds (no run).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+namespace softpack {
+
+struct StudySetting {
+  std::string name;
+  std::vector<std::pair<std::string, YAML::Node>> set;  ///< dotted key of the profile, new value
+  std::string of;                                       ///< "" or the setting whose results it takes
+  std::vector<std::uint64_t> seeds;                     ///< its seeds (the study's unless said)
+  bool runs() const { return of.empty(); }
+};
+
+struct AccuracyStudy {
+  std::string path, base;
+  std::vector<std::uint64_t> seeds;
+  std::vector<double> Fn_delta_n, kt_delta_n;  ///< where Fn and kt are compared
+  StudySetting reference;                      ///< name "reference", its own seeds
+  std::vector<StudySetting> settings;
+  const StudySetting& setting(const std::string& name) const;  ///< reference or a setting; InputError
+};
+
+/// Reads and checks the study file: known keys, seeds >= 101 (held out from the paper's 1-7),
+/// settings' seeds a subset of their source's, `of` naming a running setting, and every
+/// setting's profile valid (it is generated and read as the stages read it). InputError names
+/// the file, line and key.
+AccuracyStudy read_accuracy_study(const std::string& path);
+
+/// The profile of a running setting (or the reference): the base with the keys of `set`
+/// replaced, its `profile` name and `seeds`; a header says where it comes from.
+std::string setting_profile_text(const AccuracyStudy& study, const StudySetting& setting);
+
+}  // namespace softpack

@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# The fidelity study's machinery (make accuracy, softpack-accuracy) on a tiny study of the quick
+# profile, in a copy of the source tree (the build is reused):
+#   1. a bad study file is refused with its key and exit code 2: a seed of the paper's seven,
+#      an unknown key, a setting `of` one that does not run, a key of a section the base lacks;
+#   2. make accuracy runs the reference and every setting, writes the table, the Pareto data and
+#      the figure; the reference compared with itself has zero error, every setting a row;
+#   3. a second make accuracy recomputes nothing; changing one setting reruns that one only.
+#
+#   test_accuracy.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$(cd "$1" && pwd) source=$(cd "$2" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+pass() { echo "ok: $*"; }
+mkdir -p "$work/tree"
+(cd "$source" && git ls-files -z --cached --others --exclude-standard | xargs -0 -I{} sh -c 'test -e "{}" && echo "{}"' |
+   tar -cf - -T -) | tar -xf - -C "$work/tree"
+cd "$work/tree"
+export MAKEFLAGS=
+acc="$build/engine/softpack-accuracy"
+
+study() {  # study FILE [EXTRA-SETTING-LINES]: a study of the quick profile on seeds 101-102
+  cat > "$1" <<YAML
+study: test
+base: experiments/quick.yaml
+seeds: [101, 102]
+compare: {Fn_delta_n: [0.5, 0.7], kt_delta_n: [0.6, 0.7]}
+reference:
+  seeds: [101, 102, 103]
+  set:
+    relaxation: {protocol: converged, force_tolerance: 1.0e-3, energy_tolerance: 1.0e-7, check_interval: 0.05,
+                 max_time: 5.0, zero_velocities_at_checks: true}
+settings:
+  base: {}
+  stops-1: {set: {relaxation.stops: 1}}
+  base-1-seed: {of: base, seeds: [101]}
+${2:-}
+YAML
+}
+
+# --- 1. bad study files ------------------------------------------------------------------------
+refused() {  # refused MESSAGE: the study file $work/bad.yaml is refused with MESSAGE, exit 2
+  set +e
+  "$acc" profiles --study "$work/bad.yaml" --out-dir "$work/p" > /dev/null 2> "$work/err"
+  local code=$?
+  set -e
+  [ $code -eq 2 ] || fail "exit code $code (expected 2) for a study with $1: $(cat "$work/err")"
+  grep -qF -- "$1" "$work/err" || fail "expected '$1', got: $(cat "$work/err")"
+}
+study "$work/bad.yaml"; sed -i 's/^seeds: \[101, 102\]/seeds: [1, 102]/' "$work/bad.yaml"
+refused "seed 1 is not allowed; allowed: held-out seeds >= 101"
+study "$work/bad.yaml" "  typo: {sett: {relaxation.stops: 1}}"
+refused "settings.typo.sett: unknown key"
+study "$work/bad.yaml" "  sub: {of: base-1-seed, seeds: [101]}"
+refused "'base-1-seed' is not a setting that runs"
+study "$work/bad.yaml" "  bad: {set: {relaxaton.stops: 1}}"
+refused "'relaxaton.stops': the base profile has no section 'relaxaton' to change"
+study "$work/bad.yaml" "  bad: {set: {relaxation.stops: -1}}"
+refused "setting bad"
+pass "bad study files are refused with the key"
+
+# --- 2. the study runs -------------------------------------------------------------------------
+study "$work/study.yaml"
+mk() { make --no-print-directory BUILD="$build" DATA=data ACCURACY_STUDY="$work/study.yaml" "$@"; }
+mk -j2 accuracy > "$work/a1.log" 2>&1 || { cat "$work/a1.log"; fail "make accuracy"; }
+report=data/accuracy/report
+for f in table.md pareto.dat report.json accuracy-cost.pdf accuracy-cost.png; do
+  [[ -s $report/$f ]] || fail "$report/$f is missing or empty"
+done
+[ "$(grep -vc '^#' $report/pareto.dat)" -eq 3 ] || fail "pareto.dat: $(cat $report/pareto.dat)"
+grep -q '^| base | (the base, experiments/quick.yaml) | 2 |' $report/table.md || fail "no row for base: $(cat $report/table.md)"
+grep -q '^| base-1-seed | base on 1 of its seeds | 1 |' $report/table.md || fail "no row for base-1-seed"
+/usr/bin/python3 - "$report/report.json" <<'PY' || fail "report.json"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert len(r["quantities"]) == 2 * (4 + 3 + 2 + 2), r["quantities"]
+assert all(s > 0 for s in r["reference"]["sigma"] if s is not None), r["reference"]["sigma"]
+cpu = {s["name"]: s["cpu_seconds"] for s in r["settings"]}
+assert 0 < cpu["base-1-seed"] < cpu["base"], cpu  # one seed of the two costs less
+assert r["reference"]["cpu_seconds"] > 0
+PY
+pass "make accuracy: the reference, 2 settings run and 1 subset compared; table, data, figure"
+
+# --- 3. nothing twice; a changed setting reruns alone --------------------------------------------
+mk -j2 accuracy > "$work/a2.log" 2>&1 || { cat "$work/a2.log"; fail "make accuracy again"; }
+! grep -qE '^(packing|normal|tangential):' "$work/a2.log" || { cat "$work/a2.log"; fail "a second make accuracy recomputed something"; }
+sed -i 's/stops-1: {set: {relaxation.stops: 1}}/stops-1: {set: {relaxation.stops: 2}}/' "$work/study.yaml"
+mk -j2 accuracy > "$work/a3.log" 2>&1 || { cat "$work/a3.log"; fail "make accuracy after a change"; }
+grep -qE '^normal: stops-1 ' "$work/a3.log" || { cat "$work/a3.log"; fail "the changed setting was not rerun"; }
+! grep -qE '^(normal|tangential|packing): (reference|base) ' "$work/a3.log" || { cat "$work/a3.log"; fail "an unchanged setting was rerun"; }
+pass "a second make accuracy recomputes nothing; a changed setting reruns alone"

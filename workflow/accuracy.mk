@@ -1,0 +1,35 @@
+# The fidelity study (issue 13, docs/accuracy.md): `make accuracy` writes the profile of the
+# reference and of every setting of experiments/accuracy-cost.yaml (softpack-accuracy profiles),
+# runs each one's packings and sweeps with the profile DAG itself (a make of its own, PROFILE_FILE
+# the generated profile, DATA the study's folder: each point is checkpointed and every stage is
+# stamped, so a stopped study loses at most the points in progress and a changed setting reruns
+# only what it touches), then compares them (softpack-accuracy report) and draws the figure.
+# ACCURACY_SETTINGS=name... runs only those (the reference always: everything is compared to it).
+
+ACCURACY_STUDY ?= experiments/accuracy-cost.yaml
+ACCURACY_DIR := $(DATA)/accuracy
+ACCURACY_REPORT := $(ACCURACY_DIR)/report
+ACCURACY_TOOL := $(BUILD)/engine/softpack-accuracy
+
+.PHONY: accuracy accuracy-report
+accuracy: | $(TOOLS)  ## the fidelity study: every knob's error against its CPU time (DATA/accuracy/report/)
+	@mkdir -p $(ACCURACY_DIR)/profiles
+	@settings=$$($(ACCURACY_TOOL) profiles --study $(ACCURACY_STUDY) --out-dir $(ACCURACY_DIR)/profiles) || exit 2; \
+	chosen="$(ACCURACY_SETTINGS)"; n=0; total=$$(echo $$settings | wc -w); \
+	for s in $$settings; do n=$$((n + 1)); \
+	  if [ -n "$$chosen" ] && [ $$s != reference ] && ! echo " $$chosen " | grep -q " $$s "; then continue; fi; \
+	  echo "accuracy: setting $$n/$$total: $$s ($(ACCURACY_DIR)/$$s)"; \
+	  $(MAKE) --no-print-directory PROFILE=$$s PROFILE_FILE=$(ACCURACY_DIR)/profiles/$$s.yaml DATA=$(ACCURACY_DIR) \
+	    FROM_SCRATCH=1 tangential || exit 1; \
+	done
+	@$(MAKE) --no-print-directory accuracy-report
+
+# The comparison and the figure from what has been run so far (settings not run are listed as such).
+accuracy-report: | $(TOOLS)  ## compare the settings run so far with the reference, draw the figure
+	@mkdir -p $(ACCURACY_REPORT)
+	@$(ACCURACY_TOOL) report --study $(ACCURACY_STUDY) --data $(ACCURACY_DIR) --out-dir $(ACCURACY_REPORT) \
+	  --title "Accuracy against cost ($(ACCURACY_STUDY), release $(VERSION))"
+	@for ext in pdf png; do gnuplot -e "data='$(ACCURACY_REPORT)/pareto.dat'; out='$(ACCURACY_REPORT)/accuracy-cost.tmp.$$ext'" \
+	  figures/accuracy_cost.gp && mv $(ACCURACY_REPORT)/accuracy-cost.tmp.$$ext $(ACCURACY_REPORT)/accuracy-cost.$$ext \
+	  || { echo "accuracy: FAILED to draw the figure"; exit 1; }; done
+	@echo "accuracy: $(ACCURACY_REPORT)/table.md, $(ACCURACY_REPORT)/accuracy-cost.pdf"
