@@ -1,6 +1,6 @@
 // The fidelity study's file (experiments/accuracy-cost.yaml, docs/accuracy.md): a base profile,
 // the study's seeds, the reference settings and the settings to compare, each a set of keys of
-// the base replaced. Every setting becomes a profile of its own, run by the profile DAG
+// the base replaced (after the study's `common` keys). Every setting becomes a profile of its own, run by the profile DAG
 // (workflow/accuracy.mk); a setting `of` another one with fewer `seeds` is that one's results on
 // those seeds (no run).
 #pragma once
@@ -24,6 +24,7 @@ struct StudySetting {
 struct AccuracyStudy {
   std::string path, base;
   std::vector<std::uint64_t> seeds;
+  std::vector<std::pair<std::string, YAML::Node>> common;  ///< replaced in every setting first
   std::vector<double> Fn_delta_n, kt_delta_n;  ///< where Fn and kt are compared
   StudySetting reference;                      ///< name "reference", its own seeds
   std::vector<StudySetting> settings;
