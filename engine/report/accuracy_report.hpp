@@ -44,6 +44,7 @@ struct SettingRow {
   std::vector<double> z;      ///< error / σ per quantity (NaN: not measured)
   double max_z = 0.0, rms_z = 0.0;
   std::string worst;          ///< the quantity of max_z
+  double residual = 0.0;      ///< median final force ratio over its loaded normal points
   bool pareto = false;        ///< no other setting is both cheaper and more accurate
 };
 
