@@ -122,7 +122,7 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
     at_point(fmt::format("normal point {}/{} (delta_n = {})", k + 1, grid.size(), grid[k]), [&] {
       approach(sim, c.setup, hn - hn_now, c.settings.normal.speed);
       timing.loading = watch.lap();  // with the restore of the undeformed state (direct path)
-      relax = softpack::relax(sim, c.settings.relaxation);
+      relax = softpack::relax(sim, c.settings.relaxation, {}, [&] { return sim.wall_load(c.setup.second_wall).force; });
       timing.relaxation = watch.lap();
     });
     hn_now = hn;
@@ -186,7 +186,7 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
           while (sim.drivers_moving()) sim.step();
         }
         timing.loading = watch.lap();
-        relax = softpack::relax(sim, c.settings.relaxation);
+        relax = softpack::relax(sim, c.settings.relaxation, {}, [&] { return sim.wall_load(c.setup.second_wall).force; });
         timing.relaxation = watch.lap();
       });
       PointResult r = record_point(sim, c.setup, relax);

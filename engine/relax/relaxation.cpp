@@ -2,12 +2,15 @@
 
 #include "scene/validate.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "core/error.hpp"
 
 namespace softpack {
 
 RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
-                       const std::function<void(const RelaxationCheck&)>& on_check) {
+                       const std::function<void(const RelaxationCheck&)>& on_check, const std::function<Vec3()>& measured) {
   validate(def);
   // The quench is on for this relaxation only, whatever ends it (an exception of the watchdog).
   struct Quench {
@@ -24,10 +27,16 @@ RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
     if (on_check) on_check(report.checks.back());
   };
   if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
+    if (p->settles() && !measured)
+      throw InputError("relaxation.settle: needs a measured force (the force on the second body of a sweep); a scene has none");
+    Vec3 before = Vec3::Zero();  // the measured force at the previous stop (settle)
     for (int k = 0; k < p->stops; ++k) {
       sim.run_for(p->wait);
+      const Vec3 now = p->settles() ? measured() : Vec3::Zero();
       sim.zero_velocities();
       record();
+      if (p->settles() && k > 0 && (now - before).norm() <= std::max(p->settle_relative * now.norm(), p->settle_absolute)) break;
+      before = now;
     }
     sim.run_for(p->final_wait);
     record();

@@ -26,8 +26,11 @@ struct RelaxationReport {
   std::vector<RelaxationCheck> checks;
 };
 
-/// Runs the protocol; `on_check` (optional) sees each check as it happens, for progress.
+/// Runs the protocol; `on_check` (optional) sees each check as it happens, for progress;
+/// `measured` (optional) gives the measured force, which a paper protocol with `settle` needs
+/// (InputError without it).
 RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
-                       const std::function<void(const RelaxationCheck&)>& on_check = {});
+                       const std::function<void(const RelaxationCheck&)>& on_check = {},
+                       const std::function<Vec3()>& measured = {});
 
 }  // namespace softpack

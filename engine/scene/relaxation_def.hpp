@@ -3,6 +3,10 @@
 //
 // * paper (§4 of the paper): `stops` times, run for `wait` seconds then set every free
 //   sphere's translational and angular velocity to zero; then run `final_wait` more seconds.
+//   With `settle` the stops end early, once the measured force (the force on the second body of
+//   a sweep) has changed from one stop to the next by less than `relative` of its size or by
+//   less than `absolute` newtons: the paper's protocol with as many stops as the measurement needs,
+//   at most `stops`.
 // * converged: run in chunks of `check_interval` seconds until the largest unbalanced force
 //   over the mean contact force is below `force_tolerance` and the kinetic over the elastic
 //   energy below `energy_tolerance`, or give up after `max_time` (reported, not hidden).
@@ -24,6 +28,8 @@ struct PaperRelaxationDef {
   double wait = 0.0;        ///< [s], the paper uses 0.3
   double final_wait = 0.0;  ///< [s], "at least" 0.3 in the paper
   bool quench = false;      ///< per-grain velocity quench (above)
+  double settle_relative = 0.0, settle_absolute = 0.0;  ///< `settle` (both 0: every stop)
+  bool settles() const { return settle_relative > 0.0 || settle_absolute > 0.0; }
 };
 
 struct ConvergedRelaxationDef {

@@ -140,9 +140,14 @@ ShellContactRadius parse_contact_radius(const ConfigNode& n) {
 RelaxationDef parse_relaxation(const ConfigNode& n) {
   const std::string protocol = n.at("protocol").choice({"paper", "converged"});
   if (protocol == "paper") {
-    n.allow_only({"protocol", "stops", "wait", "final_wait", "quench"});
+    n.allow_only({"protocol", "stops", "wait", "final_wait", "quench", "settle"});
     PaperRelaxationDef p{int_of(n.at("stops")), n.at("wait").number(), n.at("final_wait").number()};
     if (auto q = n.find("quench")) p.quench = q->boolean();
+    if (auto settle = n.find("settle")) {
+      settle->allow_only({"relative", "absolute"});
+      p.settle_relative = settle->at("relative").number();
+      p.settle_absolute = settle->at("absolute").number();
+    }
     return p;
   }
   n.allow_only({"protocol", "force_tolerance", "energy_tolerance", "check_interval", "max_time",

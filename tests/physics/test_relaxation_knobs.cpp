@@ -137,6 +137,29 @@ TEST(Relaxation, ConvergedAndPaperProtocolsReachTheSameForces) {
   expect_same_rest(paper, conv, 1e-4, 1e-3);
 }
 
+// The paper's protocol with `settle` ends its stops once the force on the wall changes by less
+// than 1e-3 of itself from one stop to the next: on the four-grain soft-particle it ends early
+// where the force is steady after a few stops, and at the same rest as the converged protocol
+// (within 1e-3 of the largest force: ten times its criterion). Without a measured force (a
+// scene, not a sweep) it is refused.
+TEST(Settle, EndsTheStopsOnceTheMeasuredForceIsSteady) {
+  TempDir tmp("settle");
+  PaperRelaxationDef settle{12, 0.1, 0.1};
+  settle.settle_relative = 1e-3;
+  const auto settled = jammed_sweep(tmp / "settled", [&](MeasurementSettings& s) { s.relaxation = settle; });
+  const auto conv = jammed_sweep(tmp / "conv", [](MeasurementSettings& s) { s.relaxation = converged(1e-6); });
+  expect_same_rest(settled, conv, 1e-3, 1e-3);
+  std::size_t checks = 0;
+  for (const PointResult& p : settled) {
+    EXPECT_LE(p.checks.size(), 13u) << "delta_n " << p.delta_n;  // at most the 12 stops and the final wait
+    EXPECT_GE(p.checks.size(), 3u) << "delta_n " << p.delta_n;   // two stops to compare, then the final wait
+    checks += p.checks.size();
+  }
+  EXPECT_LT(checks, 13 * settled.size()) << "no point ended its stops early";
+  Simulation sim(soft_solid_setup(jammed_packing(), testing::sweep_context({}, "").settings.simulation).scene);
+  EXPECT_THROW(relax(sim, settle), InputError);
+}
+
 // The per-grain quench stops a sphere that moves against its net force and leaves one that is
 // being accelerated.
 TEST(Quench, StopsOnlySpheresMovingAgainstTheirForce) {
