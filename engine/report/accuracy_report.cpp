@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <tuple>
 
 #include "analysis/average.hpp"
 #include "analysis/power_fit.hpp"
@@ -66,8 +67,8 @@ void measure_scene(const AccuracyStudy& st, const std::string& dir, const std::s
   const TangentialAverage t = average_tangential(tangential);
   std::vector<double> mean, error;
   for (const auto& m : n.Fn) mean.push_back(m.mean), error.push_back(m.error);
-  const auto push = [&](const std::string& what, double v, std::string note = "") {
-    out.push_back({fmt::format("{} {}", scene, what), v, std::move(note)});
+  const auto push = [&](const std::string& what, double v, double error, std::string note = "") {
+    out.push_back({fmt::format("{} {}", scene, what), v, error, std::move(note)});
   };
   fit::PowerLawFit fn, kt;
   std::string fn_note, kt_note;
@@ -76,8 +77,17 @@ void measure_scene(const AccuracyStudy& st, const std::string& dir, const std::s
   } catch (const InputError& e) {
     fn_note = e.what();
   }
-  for (auto [k, v] : {std::pair{"a", fn.a}, {"b", fn.b}, {"c", fn.c}, {"delta", fn.delta}})
-    push(fmt::format("normal {}", k), fn_note.empty() ? v : kNaN, fn_note);
+  // δ is known only to within the grid step below the first loaded point (the fit starts there,
+  // and pins δ just under it): its error is at least that step / √12 (a uniform distribution).
+  double delta_error = fn.delta_error;
+  for (std::size_t k = 1; fn_note.empty() && k < n.delta_n.size(); ++k)
+    if (n.delta_n[k] >= fn.delta) {
+      delta_error = std::max(delta_error, (n.delta_n[k] - n.delta_n[k - 1]) / std::sqrt(12.0));
+      break;
+    }
+  for (auto [k, v, e] : {std::tuple{"a", fn.a, fn.a_error}, {"b", fn.b, fn.b_error}, {"c", fn.c, fn.c_error},
+                         {"delta", fn.delta, delta_error}})
+    push(fmt::format("normal {}", k), fn_note.empty() ? v : kNaN, fn_note.empty() ? e : kNaN, fn_note);
   std::vector<double> kt_mean, kt_error;
   for (const auto& m : t.kt) kt_mean.push_back(m.mean), kt_error.push_back(m.error);
   if (!fn_note.empty()) kt_note = "no normal fit";
@@ -86,15 +96,21 @@ void measure_scene(const AccuracyStudy& st, const std::string& dir, const std::s
     } catch (const InputError& e) {
       kt_note = e.what();
     }
-  for (auto [k, v] : {std::pair{"a", kt.a}, {"b", kt.b}, {"c", kt.c}})
-    push(fmt::format("tangential {}", k), kt_note.empty() ? v : kNaN, kt_note);
+  for (auto [k, v, e] : {std::tuple{"a", kt.a, kt.a_error}, {"b", kt.b, kt.b_error}, {"c", kt.c, kt.c_error}})
+    push(fmt::format("tangential {}", k), kt_note.empty() ? v : kNaN, kt_note.empty() ? e : kNaN, kt_note);
   const auto at = [](const std::vector<double>& x, const std::vector<MeanError>& y, double d) {
     for (std::size_t k = 0; k < x.size(); ++k)
-      if (std::abs(x[k] - d) < 1e-9) return y[k].mean;
-    return kNaN;
+      if (std::abs(x[k] - d) < 1e-9) return y[k];
+    return MeanError{kNaN, kNaN};
   };
-  for (double d : st.Fn_delta_n) push(fmt::format("Fn({})", d), at(n.delta_n, n.Fn, d));
-  for (double d : st.kt_delta_n) push(fmt::format("kt({})", d), at(t.kt_delta_n, t.kt, d));
+  for (double d : st.Fn_delta_n) {
+    const MeanError m = at(n.delta_n, n.Fn, d);
+    push(fmt::format("Fn({})", d), m.mean, m.error);
+  }
+  for (double d : st.kt_delta_n) {
+    const MeanError m = at(t.kt_delta_n, t.kt, d);
+    push(fmt::format("kt({})", d), m.mean, m.error);
+  }
 }
 
 std::vector<Quantity> measure(const AccuracyStudy& st, const std::string& dir, const std::string& folder, const SeedSets& s) {
@@ -180,7 +196,13 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
     m /= static_cast<double>(ns);
     double s2 = 0.0;
     for (double v : leave[k]) s2 += (v - m) * (v - m);
-    r.reference_sigma.push_back(std::sqrt(s2 * static_cast<double>(ns - 1) / static_cast<double>(ns)));
+    // The jackknife, floored by the reference's own standard error: where every leave-one-out fit
+    // pins δ at the same grid point the jackknife collapses (to 1e-7), the fit's error does not.
+    const double jack = std::sqrt(s2 * static_cast<double>(ns - 1) / static_cast<double>(ns));
+    r.reference_sigma.push_back(std::isfinite(all[k].error) ? std::max(jack, all[k].error) : jack);
+    // Established: the reference measures it, and distinguishes it from zero (2 σ); else it is
+    // left out of the errors (a force at a Δn below the onset is zero within round-off).
+    r.established.push_back(std::isfinite(all[k].value) && std::abs(all[k].value) >= 2.0 * r.reference_sigma.back());
   }
   const auto row_of = [&](const StudySetting& s) {
     SettingRow row;
@@ -210,7 +232,7 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
     for (std::size_t k = 0; k < nq; ++k) {
       const double z = (mine[k].value - theirs[k].value) / r.reference_sigma[k];
       row.z.push_back(z);
-      if (!std::isfinite(z)) continue;
+      if (!r.established[k] || !std::isfinite(z)) continue;
       sum += z * z, ++counted;
       if (std::abs(z) >= row.max_z) row.max_z = std::abs(z), row.worst = r.quantities[k];
     }
@@ -253,7 +275,10 @@ void write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, 
     dat += fmt::format("{} \"{}\" {:.6g} {:.6g} {:.6g} {:.6g} {} {}\n", index++, row.name, row.cpu_seconds,
                        row.cpu_seconds / paper_cpu, row.max_z, row.rms_z, row.pareto ? 1 : 0, row.runs ? 1 : 0);
   }
-  md += "\n## Error of every quantity (z)\n\n| quantity | reference | σ |";
+  md += "\n## Error of every quantity (z)\n\n"
+        "σ: the reference's jackknife standard error over its seeds, at least its own standard error (of the mean, or of "
+        "the fit). –: not established by the reference (not measured, or within 2 σ of zero), left out of max abs(z) and "
+        "rms z.\n\n| quantity | reference | σ |";
   for (const auto& row : r.rows)
     if (row.complete) md += " " + row.name + " |";
   md += "\n|---|---|---|";
@@ -263,14 +288,17 @@ void write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, 
   for (std::size_t k = 0; k < r.quantities.size(); ++k) {
     md += fmt::format("| {} | {:.4g} | {:.2g} |", r.quantities[k], r.reference_value[k], r.reference_sigma[k]);
     for (const auto& row : r.rows)
-      if (row.complete) md += fmt::format(" {:+.2f} |", row.z[k]);
+      if (row.complete) md += r.established[k] ? fmt::format(" {:+.2f} |", row.z[k]) : std::string(" – |");
     md += "\n";
   }
   write_file_atomically(out_dir + "/table.md", md);
   write_file_atomically(out_dir + "/pareto.dat", dat);
   nlohmann::json j;
   j["quantities"] = r.quantities;
-  j["reference"] = {{"value", r.reference_value}, {"sigma", r.reference_sigma}, {"cpu_seconds", r.reference_cpu}};
+  j["reference"] = {{"value", r.reference_value},
+                    {"sigma", r.reference_sigma},
+                    {"established", r.established},
+                    {"cpu_seconds", r.reference_cpu}};
   for (const auto& row : r.rows)
     j["settings"].push_back({{"name", row.name},
                              {"changes", row.knob},

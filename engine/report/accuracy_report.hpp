@@ -10,8 +10,10 @@
 // with the next of its list, so only the pairs both lists make are compared. A setting `of`
 // another with fewer seeds is compared with the reference on all its seeds (the error of
 // fewer seeds is their sampling error). The unit σ of each quantity is the reference's
-// leave-one-seed-out (jackknife) standard error over all its seeds: for a mean it is the usual
-// standard error of the mean, for a fitted coefficient the same idea carried through the fit.
+// leave-one-seed-out (jackknife) standard error over all its seeds (for a mean it is the usual
+// standard error of the mean, for a fitted coefficient the same idea carried through the fit),
+// at least the reference's own standard error. Quantities the reference does not establish (not
+// measured, or within 2 σ of zero) are left out of a setting's largest and rms error.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -27,6 +29,7 @@ namespace softpack {
 struct Quantity {
   std::string name;
   double value = 0.0;
+  double error = 0.0;  ///< its own standard error: of the mean over the seeds, or of the fit
   std::string note;
 };
 
@@ -51,6 +54,7 @@ struct SettingRow {
 struct AccuracyReport {
   std::vector<std::string> quantities;
   std::vector<double> reference_value, reference_sigma;  ///< over all the reference's seeds
+  std::vector<bool> established;  ///< the reference measures it and tells it from zero (2 σ)
   double reference_cpu = 0.0;
   std::vector<SettingRow> rows;
 };
