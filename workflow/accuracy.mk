@@ -5,6 +5,9 @@
 # stamped, so a stopped study loses at most the points in progress and a changed setting reruns
 # only what it touches), then compares them (softpack-accuracy report) and draws the figure.
 # ACCURACY_SETTINGS=name... runs only those (the reference always: everything is compared to it).
+# A setting whose run fails (the watchdog stops a time step too long to be stable) is reported
+# as failed, with the first error of its logs (DATA/accuracy/<setting>/failed.txt); the study
+# goes on. The reference must not fail.
 
 ACCURACY_STUDY ?= experiments/accuracy-cost.yaml
 ACCURACY_DIR := $(DATA)/accuracy
@@ -18,9 +21,14 @@ accuracy: | $(TOOLS)  ## the fidelity study: every knob's error against its CPU 
 	chosen="$(ACCURACY_SETTINGS)"; n=0; total=$$(echo $$settings | wc -w); \
 	for s in $$settings; do n=$$((n + 1)); \
 	  if [ -n "$$chosen" ] && [ $$s != reference ] && ! echo " $$chosen " | grep -q " $$s "; then continue; fi; \
-	  echo "accuracy: setting $$n/$$total: $$s ($(ACCURACY_DIR)/$$s)"; \
-	  $(MAKE) --no-print-directory PROFILE=$$s PROFILE_FILE=$(ACCURACY_DIR)/profiles/$$s.yaml DATA=$(ACCURACY_DIR) \
-	    FROM_SCRATCH=1 tangential || exit 1; \
+	  echo "accuracy: setting $$n/$$total: $$s ($(ACCURACY_DIR)/$$s)"; mkdir -p $(ACCURACY_DIR)/$$s; \
+	  if $(MAKE) --no-print-directory PROFILE=$$s PROFILE_FILE=$(ACCURACY_DIR)/profiles/$$s.yaml DATA=$(ACCURACY_DIR) \
+	    FROM_SCRATCH=1 tangential > $(ACCURACY_DIR)/$$s/make.log 2>&1; then rm -f $(ACCURACY_DIR)/$$s/failed.txt; \
+	  else [ $$s != reference ] || { tail -20 $(ACCURACY_DIR)/$$s/make.log; exit 1; }; \
+	    grep -h -m1 -e 'numerical error' -e 'error:' $(ACCURACY_DIR)/$$s/*/*.log $(ACCURACY_DIR)/$$s/make.log 2>/dev/null | head -1 \
+	      > $(ACCURACY_DIR)/$$s/failed.txt; \
+	    echo "accuracy: setting $$s FAILED, reported as such: $$(cat $(ACCURACY_DIR)/$$s/failed.txt)"; fi; \
+	  grep -E '^(pack|normal|tangential):' $(ACCURACY_DIR)/$$s/make.log || true; \
 	done
 	@$(MAKE) --no-print-directory accuracy-report
 

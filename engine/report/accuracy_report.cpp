@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <tuple>
 
@@ -211,6 +212,13 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
     row.runs = s.runs();
     row.seeds = s.seeds.size();
     const StudySetting& src = source(st, s);
+    const std::string failed = fmt::format("{}/{}/failed.txt", dir, src.name);
+    if (std::filesystem::exists(failed)) {
+      std::ifstream in(failed);
+      std::getline(in, row.failed);
+      if (row.failed.empty()) row.failed = "its run failed (no message)";
+      return row;
+    }
     const ProfileTiming time = collect_timing(files_of(dir, src, s.seeds));
     row.cpu_seconds = time.total().cpu;
     row.complete = time.complete();
@@ -266,7 +274,8 @@ void write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, 
   std::size_t index = 0;
   for (const auto& row : r.rows) {
     if (!row.complete) {
-      md += fmt::format("| {} | {} | {} | not run yet | | | | | | |\n", row.name, row.knob, row.seeds);
+      md += fmt::format("| {} | {} | {} | {} | | | | | | |\n", row.name, row.knob, row.seeds,
+                        row.failed.empty() ? "not run yet" : "failed: " + row.failed);
       continue;
     }
     md += fmt::format("| {} | {} | {} | {:.0f} | {:.3f} | {:.2f} | {} | {:.2f} | {:.1e} | {} |\n", row.name, row.knob, row.seeds,
@@ -304,6 +313,7 @@ void write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, 
                              {"changes", row.knob},
                              {"seeds", row.seeds},
                              {"complete", row.complete},
+                             {"failed", row.failed},
                              {"cpu_seconds", row.cpu_seconds},
                              {"z", row.z},
                              {"max_z", row.max_z},

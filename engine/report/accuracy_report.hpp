@@ -44,6 +44,7 @@ struct SettingRow {
   std::size_t seeds = 0;
   double cpu_seconds = 0.0;   ///< of its measurement: packings and sweeps of its seeds
   bool complete = false;      ///< every file is there
+  std::string failed;         ///< the first error of its run, when it failed (DATA/accuracy/<setting>/failed.txt)
   std::vector<double> z;      ///< error / σ per quantity (NaN: not measured)
   double max_z = 0.0, rms_z = 0.0;
   std::string worst;          ///< the quantity of max_z
