@@ -9,25 +9,12 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "io/atomic_file.hpp"
 #include "report/accuracy_report.hpp"
 #include "report/accuracy_study.hpp"
-
-namespace {
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return in ? s.str() : std::string();
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace softpack;
@@ -52,14 +39,12 @@ int main(int argc, char** argv) {
         if (s.runs()) run.push_back(&s);
       for (const StudySetting* s : run) {
         const std::string path = out_dir + "/" + s->name + ".yaml", text = setting_profile_text(study, *s);
-        if (read_text(path) != text) write_file_atomically(path, text);
+        if (read_text_file(path) != text) write_file_atomically(path, text);
         fmt::print("{}\n", s->name);
       }
       return 0;
     }
-    const AccuracyReport r = accuracy_report(study, data_dir);
-    write_accuracy_report(r, out_dir, title);
-    fmt::print("{}", read_text(out_dir + "/table.md"));
+    fmt::print("{}", write_accuracy_report(accuracy_report(study, data_dir), out_dir, title));
     return 0;
   } catch (...) {
     return exit_on_error("softpack-accuracy");

@@ -6,11 +6,9 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
@@ -38,13 +36,6 @@ json residuals(const Measurement& m) {
           {"force_ratio", m.force_ratio()},
           {"energy_ratio", m.energy_ratio()},
           {"contacts", m.contacts}};
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 /// Progress on stderr: redrawn in place on a terminal, one line per update otherwise.
@@ -142,7 +133,7 @@ int main(int argc, char** argv) {
         {"walls", walls},
         {"relaxation", relaxation},
         {"final", residuals(sim.residuals())},
-        {"provenance", {{"code_version", code_version()}, {"config", read_text(scene_path)}, {"seconds", seconds}}},
+        {"provenance", {{"code_version", code_version()}, {"config", read_text_file(scene_path)}, {"seconds", seconds}}},
     };
     if (out_path.empty()) std::cout << report.dump(2) << "\n";
     else write_file_atomically(out_path, report.dump(2) + "\n");

@@ -14,11 +14,13 @@ int main(int argc, char** argv) {
   CLI::App app{"softpack-timing: the wall-clock and CPU time of a profile's outputs, per stage and phase"};
   TimingInputs in;
   std::string title = "Time of the run", json_path;
-  app.add_option("--packings", in.packings, "packing files (softpack-pack)");
-  app.add_option("--normal", in.normal, "normal sweep results files");
-  app.add_option("--tangential", in.tangential, "tangential sweep results files");
-  app.add_option("--averages", in.averages, "average files (HDF5, softpack-average)");
-  app.add_option("--fits", in.fits, "fit files (JSON, softpack-fit)");
+  CLI::Option_group* files = app.add_option_group("files", "the outputs to time (at least one)");
+  files->add_option("--packings", in.packings, "packing files (softpack-pack)");
+  files->add_option("--normal", in.normal, "normal sweep results files");
+  files->add_option("--tangential", in.tangential, "tangential sweep results files");
+  files->add_option("--averages", in.averages, "average files (HDF5, softpack-average)");
+  files->add_option("--fits", in.fits, "fit files (JSON, softpack-fit)");
+  files->require_option(1, 0);
   app.add_option("--title", title, "first line of the table");
   app.add_option("--json", json_path, "also write the numbers as JSON to this file");
   if (const auto code = parse_command_line(app, argc, argv, "softpack-timing")) return *code;

@@ -48,7 +48,7 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
   std::string last_stage = stage;
   const auto progress = [&](const std::string& of, std::size_t k, std::size_t n, const PointResult& r, bool reused) {
     if (of != last_stage) computed_seconds = 0.0, computed = 0, last_stage = of;  // the time left of each sweep
-    if (!reused) computed_seconds += r.seconds, ++computed;
+    if (!reused) computed_seconds += r.seconds(), ++computed;
     if (quiet || (reused && of != stage)) return;  // normal states the tangential stage reuses: not worth a line
     const double eta = computed ? computed_seconds / static_cast<double>(computed) * static_cast<double>(n - k - 1) : 0.0;
     const double ratio = r.checks.empty() ? 0.0 : r.checks.back().residuals.force_ratio();
@@ -56,7 +56,7 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
                                             : fmt::format("delta_n {:.4f} alpha {:+.3f} deg", r.delta_n, r.alpha_deg);
     fmt::print(stderr, "{}{} {} seed {}: point {}/{} {}: Fn {:.4e} N, Ft {:+.3e} N, force ratio {:.1e}{}{}", tty ? "\r\033[K" : "",
                program, o.scene, o.seed, k + 1, n, what, r.force.x(), r.force.y(), ratio,
-               reused ? " (checkpoint)" : fmt::format(", {:.1f} s, ETA {:.0f} s", r.seconds, eta), tty ? "" : "\n");
+               reused ? " (checkpoint)" : fmt::format(", {:.1f} s, ETA {:.0f} s", r.seconds(), eta), tty ? "" : "\n");
     line_open = tty;
   };
   try {

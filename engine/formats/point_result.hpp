@@ -28,8 +28,9 @@ struct PointResult {
   double relax_time = 0.0;            ///< simulated [s]
   std::vector<RelaxationCheck> checks;
   long steps = 0;                     ///< all steps of the point (loading, rotation, relaxation)
-  double seconds = 0.0;               ///< wall-clock time of the point's loading and relaxation
   PointTiming timing;
+  /// Wall-clock time of the point's loading and relaxation [s].
+  double seconds() const { return timing.loading.wall + timing.relaxation.wall; }
   bool reused = false;  ///< not stored: this run took the point from its checkpoint (timing is the computing run's)
 };
 

@@ -49,7 +49,7 @@ void each_result_field(R& r, F&& f) {
 }
 
 // /result/timing, written last (the output phase is the writing of the file up to them):
-// f(dataset, member) for the wall-clock and CPU time of each phase, then the point's seconds.
+// f(dataset, member) for the wall-clock and CPU time of each phase.
 template <class R, class F>
 void each_timing_field(R& r, F&& f) {
   const auto phase = [&](const char* name, auto& e) {
@@ -59,7 +59,6 @@ void each_timing_field(R& r, F&& f) {
   phase("loading", r.timing.loading);
   phase("relaxation", r.timing.relaxation);
   phase("output", r.timing.output);
-  f("result/seconds", r.seconds);
 }
 
 // /result/checks: one value per relaxation check. force_ratio and energy_ratio are written for
@@ -236,7 +235,7 @@ SweepResults columns(const std::vector<PointResult>& points) {
     s.Fn.push_back(r.force.x()), s.Ft_parallel.push_back(r.force.y()), s.Ft_perpendicular.push_back(r.force.z());
     s.force.push_back(r.force), s.force_first.push_back(r.force_first), s.force_between.push_back(r.force_between);
     s.contacts.push_back(r.contacts), s.steps.push_back(r.steps), s.relax_steps.push_back(r.relax_steps);
-    s.relax_time.push_back(r.relax_time), s.seconds.push_back(r.seconds);
+    s.relax_time.push_back(r.relax_time), s.seconds.push_back(r.seconds());
     for (std::size_t p = 0; p < kPhases.size(); ++p) {
       s.phase_wall[p].push_back((r.timing.*kPhaseMember[p]).wall);
       s.phase_cpu[p].push_back((r.timing.*kPhaseMember[p]).cpu);

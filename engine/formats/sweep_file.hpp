@@ -6,7 +6,7 @@
 //                    (3), contacts, relax_steps, relax_time, steps, and per relaxation
 //                    check checks/{time, force_ratio, energy_ratio, kinetic_energy,
 //                    elastic_energy, max_unbalanced_force, mean_contact_force, contacts};
-//                    last, timing/{loading, relaxation, output}/{wall, cpu} and seconds
+//                    last, timing/{loading, relaxation, output}/{wall, cpu}
 //   /state/...       SimulationState: time, steps, x, v, w, F, T, plane_points, shell_centres
 //                    (N, 3), pair_springs/{i, j, xi}, plane_springs/<w>/{i, xi},
 //                    shell_springs/<w>/{i, xi}

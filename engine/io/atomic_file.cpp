@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "core/error.hpp"
 
@@ -33,6 +35,13 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   const int write_error = errno;
   if (std::fclose(out) != 0 || !written) failed("write the file", written ? errno : write_error);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) failed("rename it into place", errno);
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return in ? s.str() : std::string();
 }
 
 }  // namespace softpack

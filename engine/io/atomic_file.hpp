@@ -13,4 +13,7 @@ std::string temporary_path_for(const std::string& final_path);
 /// Writes `content` to `path` via `path.tmp.<pid>` and rename(2). Throws InputError on failure.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+/// The whole text of a file, "" when it does not exist or cannot be read.
+std::string read_text_file(const std::string& path);
+
 }  // namespace softpack

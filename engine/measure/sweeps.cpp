@@ -14,9 +14,12 @@
 namespace softpack {
 namespace {
 
+// The measured force: the load on the second body's wall or shell, what holds it in place.
+Vec3 measured_force(const Simulation& sim, const ContactSetup& setup) { return sim.wall_load(setup.second_wall).force; }
+
 PointResult record_point(const Simulation& sim, const ContactSetup& setup, const RelaxationReport& relax) {
   PointResult r;
-  r.force = sim.wall_load(setup.second_wall).force;
+  r.force = measured_force(sim, setup);
   if (!setup.first_shell.empty()) r.force_first = sim.wall_load(setup.first_shell).force;
   r.force_between = setup.second_body >= 0 ? sim.force_between(setup.first_body, setup.second_body) : r.force;
   r.contacts = static_cast<long>(sim.residuals().contacts);
@@ -122,7 +125,7 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
     at_point(fmt::format("normal point {}/{} (delta_n = {})", k + 1, grid.size(), grid[k]), [&] {
       approach(sim, c.setup, hn - hn_now, c.settings.normal.speed);
       timing.loading = watch.lap();  // with the restore of the undeformed state (direct path)
-      relax = softpack::relax(sim, c.settings.relaxation, {}, [&] { return sim.wall_load(c.setup.second_wall).force; });
+      relax = softpack::relax(sim, c.settings.relaxation, {}, [&] { return measured_force(sim, c.setup); });
       timing.relaxation = watch.lap();
     });
     hn_now = hn;
@@ -131,7 +134,6 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
     r.hn = hn;
     r.steps = sim.step_count() - step0;
     r.timing = timing;
-    r.seconds = timing.loading.wall + timing.relaxation.wall;
     write_point_file(normal_point_path(c.checkpoint_dir, k), r, sim.state(), provenance(c, "normal"));
     points[k] = r;
     if (c.progress) c.progress("normal", k, grid.size(), r, false);
@@ -186,7 +188,7 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
           while (sim.drivers_moving()) sim.step();
         }
         timing.loading = watch.lap();
-        relax = softpack::relax(sim, c.settings.relaxation, {}, [&] { return sim.wall_load(c.setup.second_wall).force; });
+        relax = softpack::relax(sim, c.settings.relaxation, {}, [&] { return measured_force(sim, c.setup); });
         timing.relaxation = watch.lap();
       });
       PointResult r = record_point(sim, c.setup, relax);
@@ -196,7 +198,6 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
       r.ht = std::numbers::pi * c.setup.Rs * alphas[b] / 180.0;
       r.steps = sim.step_count() - step0;
       r.timing = timing;
-      r.seconds = timing.loading.wall + timing.relaxation.wall;
       sim.release_drivers();
       write_point_file(path, r, sim.state(), provenance(c, "tangential"));
       points.push_back(r);

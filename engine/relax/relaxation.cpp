@@ -27,15 +27,15 @@ RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
     if (on_check) on_check(report.checks.back());
   };
   if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
-    if (p->settles() && !measured)
+    if (p->settle && !measured)
       throw InputError("relaxation.settle: needs a measured force (the force on the second body of a sweep); a scene has none");
     Vec3 before = Vec3::Zero();  // the measured force at the previous stop (settle)
     for (int k = 0; k < p->stops; ++k) {
       sim.run_for(p->wait);
-      const Vec3 now = p->settles() ? measured() : Vec3::Zero();
+      const Vec3 now = p->settle ? measured() : Vec3::Zero();
       sim.zero_velocities();
       record();
-      if (p->settles() && k > 0 && (now - before).norm() <= std::max(p->settle_relative * now.norm(), p->settle_absolute)) break;
+      if (p->settle && k > 0 && (now - before).norm() <= std::max(p->settle->relative * now.norm(), p->settle->absolute)) break;
       before = now;
     }
     sim.run_for(p->final_wait);

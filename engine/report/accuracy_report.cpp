@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <tuple>
 
 #include "analysis/average.hpp"
@@ -30,20 +31,40 @@ struct SeedSets {
   Seeds solid, soft;
 };
 
-// The seed after `s` in `list` (cyclic): the second packing of soft-soft (workflow/sweeps.mk).
-std::uint64_t partner(const Seeds& list, std::uint64_t s) {
-  const auto it = std::find(list.begin(), list.end(), s);
-  return std::next(it) == list.end() ? list.front() : *std::next(it);
-}
-
-
-// The folder of the runs a setting's results are in, and the seed list its soft-soft pairs follow.
+// The setting whose runs hold a setting's results (itself, or the one it is `of`).
 const StudySetting& source(const AccuracyStudy& st, const StudySetting& s) { return s.runs() ? s : st.setting(s.of); }
 
 std::string sweep_path(const std::string& dir, const std::string& setting, const std::string& stage, const std::string& scene,
                        std::uint64_t seed) {
   return fmt::format("{}/{}/{}/{}-seed-{}.h5", dir, setting, stage, scene, seed);
 }
+
+// The sweep results of the study's runs under `dir`, each file read once (the jackknife and the
+// paired comparisons come back to the reference's files many times).
+class Runs {
+ public:
+  explicit Runs(std::string dir) : dir_(std::move(dir)) {}
+  const std::string& dir() const { return dir_; }
+  const SweepResults& results(const std::string& folder, const std::string& stage, const std::string& scene, std::uint64_t seed) {
+    const std::string path = sweep_path(dir_, folder, stage, scene, seed);
+    auto it = cache_.find(path);
+    if (it == cache_.end()) it = cache_.emplace(path, read_sweep_results_file(path, stage, scene)).first;
+    return it->second;
+  }
+  /// The seed of the second packing of soft-soft's seed `seed` in `folder`, as its normal results
+  /// record it ("<path> (seed k), <path> (seed m)"): the pairing is the workflow's, read, not redone.
+  std::uint64_t partner(const std::string& folder, std::uint64_t seed) {
+    const SweepResults& r = results(folder, "normal", "soft-soft", seed);
+    const std::size_t at = r.packings.rfind("(seed ");
+    if (at == std::string::npos || at == r.packings.find("(seed "))
+      throw InputError(fmt::format("{}: /provenance/packings: '{}' names no second packing", r.path, r.packings));
+    return std::stoull(r.packings.substr(at + 6));
+  }
+
+ private:
+  std::string dir_;
+  std::map<std::string, SweepResults> cache_;
+};
 
 std::vector<std::string> names(const AccuracyStudy& st) {
   std::vector<std::string> n;
@@ -57,12 +78,12 @@ std::vector<std::string> names(const AccuracyStudy& st) {
 }
 
 // The quantities of one scene from its seeds' results files, appended to `out`.
-void measure_scene(const AccuracyStudy& st, const std::string& dir, const std::string& folder, const std::string& scene,
+void measure_scene(const AccuracyStudy& st, Runs& runs, const std::string& folder, const std::string& scene,
                    const Seeds& seeds, std::vector<Quantity>& out) {
   std::vector<SweepColumns> normal, tangential;
   for (std::uint64_t s : seeds) {
-    normal.push_back(read_sweep_results_file(sweep_path(dir, folder, "normal", scene, s), "normal", scene));
-    tangential.push_back(read_sweep_results_file(sweep_path(dir, folder, "tangential", scene, s), "tangential", scene));
+    normal.push_back(runs.results(folder, "normal", scene, s));
+    tangential.push_back(runs.results(folder, "tangential", scene, s));
   }
   const NormalAverage n = average_normal(normal);
   const TangentialAverage t = average_tangential(tangential);
@@ -114,10 +135,10 @@ void measure_scene(const AccuracyStudy& st, const std::string& dir, const std::s
   }
 }
 
-std::vector<Quantity> measure(const AccuracyStudy& st, const std::string& dir, const std::string& folder, const SeedSets& s) {
+std::vector<Quantity> measure(const AccuracyStudy& st, Runs& runs, const std::string& folder, const SeedSets& s) {
   std::vector<Quantity> q;
-  measure_scene(st, dir, folder, "soft-solid", s.solid, q);
-  measure_scene(st, dir, folder, "soft-soft", s.soft, q);
+  measure_scene(st, runs, folder, "soft-solid", s.solid, q);
+  measure_scene(st, runs, folder, "soft-soft", s.soft, q);
   return q;
 }
 
@@ -137,11 +158,11 @@ TimingInputs files_of(const std::string& dir, const StudySetting& run, const See
 // The median over the loaded normal points (Fn at least 1% of the sweep's largest) of the largest
 // unbalanced force over the mean contact force after the relaxation: how far from rest the
 // setting measures.
-double median_residual(const std::string& dir, const std::string& folder, const Seeds& seeds) {
+double median_residual(Runs& runs, const std::string& folder, const Seeds& seeds) {
   std::vector<double> ratios;
   for (const auto& scene : kScenes)
     for (std::uint64_t s : seeds) {
-      const SweepResults r = read_sweep_results_file(sweep_path(dir, folder, "normal", scene, s), "normal", scene);
+      const SweepResults& r = runs.results(folder, "normal", scene, s);
       const double top = *std::max_element(r.Fn.begin(), r.Fn.end());
       for (std::size_t k = 0; k < r.Fn.size(); ++k)
         if (top > 0 && r.Fn[k] >= 0.01 * top) ratios.push_back(r.final_force_ratio[k]);
@@ -165,12 +186,8 @@ std::string knob_text(const AccuracyStudy& st, const StudySetting& s) {
 
 }  // namespace
 
-std::vector<Quantity> measure_setting(const AccuracyStudy& study, const std::string& dir, const StudySetting& setting,
-                                      const std::vector<std::uint64_t>& seeds) {
-  return measure(study, dir, source(study, setting).name, SeedSets{seeds, seeds});
-}
-
 AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) {
+  Runs runs(dir);
   AccuracyReport r;
   r.quantities = names(st);
   const StudySetting& ref = st.reference;
@@ -181,13 +198,13 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
                                  ref_time.stages.empty() ? "everything" : "some of its files"));
   r.reference_cpu = ref_time.total().cpu;
   // The reference on all its seeds, and its leave-one-seed-out jackknife standard errors.
-  const std::vector<Quantity> all = measure(st, dir, ref.name, {ref.seeds, ref.seeds});
+  const std::vector<Quantity> all = measure(st, runs, ref.name, {ref.seeds, ref.seeds});
   const std::size_t nq = all.size(), ns = ref.seeds.size();
   std::vector<std::vector<double>> leave(nq);
   for (std::size_t i = 0; i < ns; ++i) {
     Seeds rest = ref.seeds;
     rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
-    const std::vector<Quantity> q = measure(st, dir, ref.name, {rest, rest});
+    const std::vector<Quantity> q = measure(st, runs, ref.name, {rest, rest});
     for (std::size_t k = 0; k < nq; ++k) leave[k].push_back(q[k].value);
   }
   for (std::size_t k = 0; k < nq; ++k) {
@@ -223,16 +240,16 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
     row.cpu_seconds = time.total().cpu;
     row.complete = time.complete();
     if (!row.complete) return row;
-    row.residual = median_residual(dir, src.name, s.seeds);
+    row.residual = median_residual(runs, src.name, s.seeds);
     std::vector<Quantity> mine, theirs;
-    if (s.runs()) {  // paired: the same soft-particles, soft-soft on the pairs both lists make
+    if (s.runs()) {  // paired: the same soft-particles, soft-soft on the pairs both runs made
       SeedSets same{s.seeds, {}};
       for (std::uint64_t seed : s.seeds)
-        if (partner(s.seeds, seed) == partner(ref.seeds, seed)) same.soft.push_back(seed);
-      mine = measure(st, dir, s.name, same);
-      theirs = s.name == ref.name ? mine : measure(st, dir, ref.name, same);
+        if (runs.partner(s.name, seed) == runs.partner(ref.name, seed)) same.soft.push_back(seed);
+      mine = measure(st, runs, s.name, same);
+      theirs = measure(st, runs, ref.name, same);
     } else {  // fewer seeds: against the reference on all of its seeds
-      mine = measure(st, dir, src.name, {s.seeds, s.seeds});
+      mine = measure(st, runs, src.name, {s.seeds, s.seeds});
       theirs = all;
     }
     double sum = 0.0;
@@ -258,7 +275,7 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
   return r;
 }
 
-void write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, const std::string& title) {
+std::string write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, const std::string& title) {
   std::filesystem::create_directories(out_dir);
   double paper_cpu = kNaN;
   for (const auto& row : r.rows)
@@ -321,6 +338,7 @@ void write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, 
                              {"median_final_force_ratio", row.residual},
                              {"pareto", row.pareto}});
   write_file_atomically(out_dir + "/report.json", j.dump(2) + "\n");
+  return md;
 }
 
 }  // namespace softpack

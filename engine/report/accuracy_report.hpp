@@ -6,8 +6,9 @@
 // error, and the CPU time the setting's outputs record (report/stage_timing.hpp).
 //
 // Error of a setting that runs: paired, against the reference on the same seeds — the same
-// soft-particles, so the difference is the knob's alone; soft-soft pairs the packing of a seed
-// with the next of its list, so only the pairs both lists make are compared. A setting `of`
+// soft-particles, so the difference is the knob's alone; soft-soft pairs two packings (the
+// workflow's rule, read from each results file's provenance), and only the pairs both runs made
+// are compared. A setting `of`
 // another with fewer seeds is compared with the reference on all its seeds (the error of
 // fewer seeds is their sampling error). The unit σ of each quantity is the reference's
 // leave-one-seed-out (jackknife) standard error over all its seeds (for a mean it is the usual
@@ -32,10 +33,6 @@ struct Quantity {
   double error = 0.0;  ///< its own standard error: of the mean over the seeds, or of the fit
   std::string note;
 };
-
-/// What a setting measured on some of its seeds (averaged and fitted), in a fixed order.
-std::vector<Quantity> measure_setting(const AccuracyStudy& study, const std::string& dir, const StudySetting& setting,
-                                      const std::vector<std::uint64_t>& seeds);
 
 struct SettingRow {
   std::string name;
@@ -64,7 +61,8 @@ struct AccuracyReport {
 /// Settings whose files are missing are reported as incomplete, not refused.
 AccuracyReport accuracy_report(const AccuracyStudy& study, const std::string& dir);
 
-/// table.md (the summary and the error of every quantity), pareto.dat (for gnuplot), report.json.
-void write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, const std::string& title);
+/// table.md (the summary and the error of every quantity), pareto.dat (for gnuplot), report.json;
+/// returns the text of table.md.
+std::string write_accuracy_report(const AccuracyReport& r, const std::string& out_dir, const std::string& title);
 
 }  // namespace softpack

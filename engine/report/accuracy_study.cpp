@@ -8,7 +8,6 @@
 #include "config/profile.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
-#include "core/random.hpp"
 #include "measure/settings.hpp"
 #include "packing/packing_profile.hpp"
 
@@ -19,19 +18,14 @@ namespace {
 // report; every calibration and comparison runs on held-out seeds.
 constexpr std::uint64_t kFirstHeldOutSeed = 101;
 
+// The `seeds` of `n`, read as a profile's are (config/profile.hpp), and all of them held out.
 std::vector<std::uint64_t> read_seeds(const ConfigNode& n) {
-  std::vector<std::uint64_t> seeds;
-  for (const ConfigNode& s : n.items()) {
-    std::string error;
-    const auto v = s.yaml().IsScalar() ? parse_seed(s.yaml().Scalar(), error) : std::nullopt;
-    if (!v) s.fail(error.empty() ? "expected a seed, an integer like 201" : error);
-    if (*v < kFirstHeldOutSeed)
-      s.fail(fmt::format("seed {} is not allowed; allowed: held-out seeds >= {} (1-7 are the paper's, run only to report)", *v,
-                         kFirstHeldOutSeed));
-    if (std::find(seeds.begin(), seeds.end(), *v) != seeds.end()) s.fail(fmt::format("seed {} is listed twice", *v));
-    seeds.push_back(*v);
-  }
-  if (seeds.empty()) n.fail("at least one seed is required");
+  const std::vector<std::uint64_t> seeds = parse_seeds(n);
+  const std::vector<ConfigNode> items = n.at("seeds").items();
+  for (std::size_t k = 0; k < seeds.size(); ++k)
+    if (seeds[k] < kFirstHeldOutSeed)
+      items[k].fail(fmt::format("seed {} is not allowed; allowed: held-out seeds >= {} (1-7 are the paper's, run only to report)",
+                                seeds[k], kFirstHeldOutSeed));
   return seeds;
 }
 
@@ -52,7 +46,7 @@ StudySetting read_setting(const std::string& name, const ConfigNode& n, const st
     s.of = of->string();
     if (!s.set.empty()) n.at("set").fail("a setting `of` another one takes its results: it cannot also `set` keys");
   }
-  s.seeds = n.has("seeds") ? read_seeds(n.at("seeds")) : study_seeds;
+  s.seeds = n.has("seeds") ? read_seeds(n) : study_seeds;
   return s;
 }
 
@@ -94,7 +88,12 @@ AccuracyStudy read_accuracy_study(const std::string& path) {
   st.path = path;
   root.at("study").string();
   st.base = root.at("base").string();
-  st.seeds = read_seeds(root.at("seeds"));
+  try {
+    st.base_yaml = YAML::Clone(ConfigNode::load_file(st.base).yaml());  // with the project's checks of a YAML file
+  } catch (const InputError& e) {
+    root.at("base").fail(e.what());
+  }
+  st.seeds = read_seeds(root);
   const ConfigNode cmp = root.at("compare");
   cmp.allow_only({"Fn_delta_n", "kt_delta_n"});
   st.Fn_delta_n = read_numbers(cmp.at("Fn_delta_n"));
@@ -154,14 +153,7 @@ AccuracyStudy read_accuracy_study(const std::string& path) {
 }
 
 std::string setting_profile_text(const AccuracyStudy& study, const StudySetting& setting) {
-  YAML::Node base;
-  try {
-    base = YAML::LoadFile(study.base);
-  } catch (const YAML::Exception& e) {
-    throw InputError(fmt::format("{}: base: {}: {}", study.path, study.base, e.what()));
-  }
-  const ConfigNode checked = ConfigNode::load_file(study.base);  // the project's own checks of the base
-  (void)checked;
+  YAML::Node base = YAML::Clone(study.base_yaml);
   for (const auto& [key, value] : study.common) replace(base, key, value, fmt::format("{}: common", study.path));
   for (const auto& [key, value] : setting.set)
     replace(base, key, value, fmt::format("{}: settings.{}.set", study.path, setting.name));

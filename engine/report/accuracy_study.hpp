@@ -23,6 +23,7 @@ struct StudySetting {
 
 struct AccuracyStudy {
   std::string path, base;
+  YAML::Node base_yaml;  ///< the base profile as read (ConfigNode's checks)
   std::vector<std::uint64_t> seeds;
   std::vector<std::pair<std::string, YAML::Node>> common;  ///< replaced in every setting first
   std::vector<double> Fn_delta_n, kt_delta_n;  ///< where Fn and kt are compared

@@ -19,6 +19,7 @@
 // of quenched molecular dynamics. It takes out kinetic energy where the damping is weak (few,
 // barely overlapped contacts) without touching the grains that are still being accelerated.
 #pragma once
+#include <optional>
 #include <variant>
 
 namespace softpack {
@@ -28,8 +29,11 @@ struct PaperRelaxationDef {
   double wait = 0.0;        ///< [s], the paper uses 0.3
   double final_wait = 0.0;  ///< [s], "at least" 0.3 in the paper
   bool quench = false;      ///< per-grain velocity quench (above)
-  double settle_relative = 0.0, settle_absolute = 0.0;  ///< `settle` (both 0: every stop)
-  bool settles() const { return settle_relative > 0.0 || settle_absolute > 0.0; }
+  struct Settle {
+    double relative = 0.0;  ///< of the measured force's size
+    double absolute = 0.0;  ///< [N]
+  };
+  std::optional<Settle> settle = std::nullopt;  ///< none: every stop (the paper)
 };
 
 struct ConvergedRelaxationDef {

@@ -141,12 +141,14 @@ RelaxationDef parse_relaxation(const ConfigNode& n) {
   const std::string protocol = n.at("protocol").choice({"paper", "converged"});
   if (protocol == "paper") {
     n.allow_only({"protocol", "stops", "wait", "final_wait", "quench", "settle"});
-    PaperRelaxationDef p{int_of(n.at("stops")), n.at("wait").number(), n.at("final_wait").number()};
+    PaperRelaxationDef p;
+    p.stops = int_of(n.at("stops"));
+    p.wait = n.at("wait").number();
+    p.final_wait = n.at("final_wait").number();
     if (auto q = n.find("quench")) p.quench = q->boolean();
     if (auto settle = n.find("settle")) {
       settle->allow_only({"relative", "absolute"});
-      p.settle_relative = settle->at("relative").number();
-      p.settle_absolute = settle->at("absolute").number();
+      p.settle = PaperRelaxationDef::Settle{settle->at("relative").number(), settle->at("absolute").number()};
     }
     return p;
   }

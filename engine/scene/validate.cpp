@@ -307,8 +307,12 @@ void validate(const RelaxationDef& def, const std::string& key) {
   };
   if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
     check(key + ".stops", p->stops, limits::kStops);
-    for (const auto& [v, name] : {std::pair{p->settle_relative, "settle.relative"}, {p->settle_absolute, "settle.absolute"}})
-      if (!(v >= 0.0 && std::isfinite(v))) fail(key + "." + name, fmt::format("{} is not allowed; allowed: >= 0", v));
+    if (const auto& st = p->settle) {
+      for (const auto& [v, name] : {std::pair{st->relative, "settle.relative"}, {st->absolute, "settle.absolute"}})
+        if (!(v >= 0.0 && std::isfinite(v))) fail(key + "." + name, fmt::format("{} is not allowed; allowed: >= 0", v));
+      if (st->relative == 0.0 && st->absolute == 0.0)
+        fail(key + ".settle", "relative and absolute are both 0, so the stops would never end early; allowed: at least one > 0");
+    }
     if (p->stops > 0) positive(p->wait, "wait");
     positive(p->final_wait, "final_wait");
   } else {

@@ -259,15 +259,23 @@ expect_error "^softpack-normal: error: bad\.yaml:[0-9]+:[0-9]+: normal\.speed: 1
   normal.h5 timeout 60 "$bin/softpack-normal" --config bad.yaml --scene soft-solid --seed 1 --packing p1.h5 --checkpoints ncp --out normal.h5 --quiet
 [ ! -e ncp ] || [ -z "$(ls -A ncp)" ] || fail "checkpoints were written for bad input: $(ls ncp)"
 
+case_name settle_that_never_ends_early_or_without_a_measured_force_is_refused
+edit "$scene" 's/final_wait: 0.05}/final_wait: 0.05, settle: {relative: 0.0, absolute: 0.0}}/'
+expect_error "^softpack-run: error: bad\.yaml:18:[0-9]+: run\.relaxation\.settle: relative and absolute are both 0" run.json run bad.yaml
+edit "$scene" 's/final_wait: 0.05}/final_wait: 0.05, settle: {relative: 0.01, absolute: 0.0}}/'
+expect_error "^softpack-run: error: relaxation\.settle: needs a measured force" run.json run bad.yaml
+
 # --- Command lines: CLI11's errors are bad input (exit 2, one line); --help exits 0 --------------
 case_name every_executable_maps_command_line_errors_to_exit_2
 for exe in softpack-run softpack-pack softpack-normal softpack-tangential softpack-average softpack-fit softpack-table \
-           softpack-config softpack-section softpack-apollonian softpack-packing-study; do
+           softpack-config softpack-section softpack-apollonian softpack-packing-study softpack-timing softpack-accuracy; do
   "$bin/$exe" --help > help.txt || fail "$exe --help: exit code $?"
   grep -q "^Usage: " help.txt || fail "$exe --help printed no usage"
   expect_error "^$exe: error: .+; see $exe --help$" none.txt "$bin/$exe" --no-such-option
   expect_error "^$exe: error: .* is required; see $exe --help$" none.txt "$bin/$exe"
 done
+# softpack-timing given a file of another kind names it.
+expect_error "^softpack-timing: error: p1\.h5: not a softpack sweep results file" none.txt "$bin/softpack-timing" --normal p1.h5
 # A value that does not convert (CLI11's exit code 104), or that a check refuses (105).
 expect_error "^softpack-section: error: .*--offset.*abc" none.txt "$bin/softpack-section" --packing p1.h5 --out s.dat --offset abc
 expect_error "^softpack-apollonian: error: .*--depth.*1\.5" ap.dat "$bin/softpack-apollonian" --depth 1.5 --out ap.dat

@@ -114,7 +114,6 @@ TEST(Sweeps, ResumeAfterAnInterruptionGivesIdenticalResults) {
     for (std::size_t k = 0; k < resumed.size(); ++k) {
       const PointResult& r = resumed[k];
       EXPECT_EQ(r.reused, k < stop) << k;
-      EXPECT_EQ(r.seconds, r.timing.loading.wall + r.timing.relaxation.wall) << k;
       EXPECT_GE(r.timing.loading.cpu, 0.0);
       EXPECT_GE(r.timing.relaxation.cpu, 0.0);
       EXPECT_GT(r.timing.output.wall, 0.0);  // the writer measured its own work

@@ -17,7 +17,6 @@ PointResult point(double delta_n, Elapsed loading, Elapsed relaxation, Elapsed o
   PointResult r;
   r.delta_n = delta_n;
   r.timing = {loading, relaxation, output};
-  r.seconds = loading.wall + relaxation.wall;
   r.reused = reused;
   return r;
 }

@@ -8,15 +8,8 @@
 #   3. a second make accuracy recomputes nothing; changing one setting reruns that one only.
 #
 #   test_accuracy.sh BUILD_DIR SOURCE_DIR
-set -euo pipefail
-build=$(cd "$1" && pwd) source=$(cd "$2" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-pass() { echo "ok: $*"; }
-mkdir -p "$work/tree"
-(cd "$source" && git ls-files -z --cached --others --exclude-standard | xargs -0 -I{} sh -c 'test -e "{}" && echo "{}"' |
-   tar -cf - -T -) | tar -xf - -C "$work/tree"
+source "$(dirname "$0")/common.sh"
+copy_tree "$work/tree"
 cd "$work/tree"
 export MAKEFLAGS=
 acc="$build/engine/softpack-accuracy"

@@ -9,19 +9,13 @@
 # (.dat, .gp, .md) identical except their provenance comments.
 #
 #   test_kill_resume.sh BUILD_DIR SOURCE_DIR [ROUNDS=5]   (RANDOM_SEED=n to replay a run)
-set -euo pipefail
-build=$(cd "$1" && pwd) source=$(cd "$2" && pwd) rounds=${3:-5}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-pass() { echo "ok: $*"; }
+source "$(dirname "$0")/common.sh"
+rounds=${3:-5}
 seed=${RANDOM_SEED:-$(( $(date +%s) % 32768 ))}
 RANDOM=$seed
 echo "random seed $seed (RANDOM_SEED=$seed to replay the same kill moments)"
 
-mkdir -p "$work/tree"
-(cd "$source" && git ls-files -z --cached --others --exclude-standard | xargs -0 -I{} sh -c 'test -e "{}" && echo "{}"' |
-   tar -cf - -T -) | tar -xf - -C "$work/tree"
+copy_tree "$work/tree"
 cd "$work/tree"
 export MAKEFLAGS=
 mk() { make --no-print-directory PROFILE=quick BUILD="$build" FROM_SCRATCH=1 "$@"; }

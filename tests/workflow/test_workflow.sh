@@ -10,19 +10,7 @@
 #   4. make archive, then a fresh copy without the data: make tables figures reuses every result.
 #
 #   test_workflow.sh BUILD_DIR SOURCE_DIR
-set -euo pipefail
-build=$(cd "$1" && pwd) source=$(cd "$2" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-pass() { echo "ok: $*"; }
-
-# copy_tree DEST: the source tree as git sees it (tracked and untracked, not ignored files).
-copy_tree() {
-  mkdir -p "$1"
-  (cd "$source" && git ls-files -z --cached --others --exclude-standard | xargs -0 -I{} sh -c 'test -e "{}" && echo "{}"' |
-     tar -cf - -T -) | tar -xf - -C "$1"
-}
+source "$(dirname "$0")/common.sh"
 copy_tree "$work/tree"
 cd "$work/tree"
 export MAKEFLAGS=
