@@ -54,8 +54,9 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
     const double ratio = r.checks.empty() ? 0.0 : r.checks.back().residuals.force_ratio();
     const std::string what = of == "normal" ? fmt::format("{}delta_n {:.4f}", of != stage ? "normal state " : "", r.delta_n)
                                             : fmt::format("delta_n {:.4f} alpha {:+.3f} deg", r.delta_n, r.alpha_deg);
-    fmt::print(stderr, "{}{} {} seed {}: point {}/{} {}: Fn {:.4e} N, Ft {:+.3e} N, force ratio {:.1e}{}{}", tty ? "\r\033[K" : "",
-               program, o.scene, o.seed, k + 1, n, what, r.force.x(), r.force.y(), ratio,
+    const std::string awake = r.awake_fraction ? fmt::format(", {:.0f}% awake", 100.0 * *r.awake_fraction) : "";
+    fmt::print(stderr, "{}{} {} seed {}: point {}/{} {}: Fn {:.4e} N, Ft {:+.3e} N, force ratio {:.1e}{}{}{}", tty ? "\r\033[K" : "",
+               program, o.scene, o.seed, k + 1, n, what, r.force.x(), r.force.y(), ratio, awake,
                reused ? " (checkpoint)" : fmt::format(", {:.1f} s, ETA {:.0f} s", r.seconds(), eta), tty ? "" : "\n");
     line_open = tty;
   };

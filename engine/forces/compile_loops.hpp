@@ -38,6 +38,21 @@ template <class Law, Effects Fx, class Isa>
   }
 }
 
+template <class Law, Effects Fx, class Isa>
+[[gnu::always_inline]] inline void masked_pairs(Isa isa, World& world, PairList& list, const std::uint8_t* mask, double sign, Vec3* F,
+                                                Vec3* T, std::vector<std::int32_t>& closed) {
+  Particles& p = world.p;
+  const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), F, Fx.rotation ? T : nullptr};
+  MaskedPairContacts<Fx> pairs{{list, s}, mask, sign};
+  contact_loop<Law, Fx>(isa, pairs, 0.0, closed);
+}
+
+template <class Law, Effects Fx>
+[[gnu::target("arch=x86-64-v4")]] void masked_pairs_avx512(World& world, PairList& list, const std::uint8_t* mask, double sign, Vec3* F,
+                                                          Vec3* T, std::vector<std::int32_t>& closed) {
+  masked_pairs<Law, Fx>(simd::Avx512{}, world, list, mask, sign, F, T, closed);
+}
+
 template <class Law, Effects Fx>
 [[gnu::target("arch=x86-64-v4")]] void all_contacts_avx512(World& world, ContactLists& lists, double dt,
                                                           std::vector<std::int32_t>& closed) {
@@ -55,6 +70,11 @@ class LoopsOf final : public ForceLoops {
   void run(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) const override {
     if (cpu::vector_isa() == cpu::VectorIsa::avx512) return all_contacts_avx512<Law, Fx>(world, lists, dt, closed);
     all_contacts_portable<Law, Fx>(world, lists, dt, closed);
+  }
+  void add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T,
+                       std::vector<std::int32_t>& closed) const override {
+    if (cpu::vector_isa() == cpu::VectorIsa::avx512) return masked_pairs_avx512<Law, Fx>(world, pairs, mask, sign, F, T, closed);
+    masked_pairs<Law, Fx>(simd::Portable{}, world, pairs, mask, sign, F, T, closed);
   }
 };
 

@@ -30,6 +30,10 @@ void ForceField::add_contact_forces(World& world, ContactLists& lists, double sp
   if (loops_) loops_->run(world, lists, spring_dt, closed_);
 }
 
+void ForceField::add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T) {
+  if (loops_) loops_->add_pair_forces(world, pairs, mask, sign, F, T, closed_);
+}
+
 // The constants of a contact of materials `mm` with reduced radius R12, reduced mass m12 (a
 // sphere's mass against a wall, which has infinite mass) and the inverse mass of the
 // sliding-rolling mode, 1/mt = sum over the spheres of 1/m + r^2/I (1/m without rotation).

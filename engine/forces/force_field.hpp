@@ -30,6 +30,9 @@ class ForceField {
   /// Adds the force (and torque) of every touching contact to the spheres and the wall loads,
   /// advances the springs of touching contacts by `spring_dt` and clears those of open ones.
   void add_contact_forces(World& world, ContactLists& lists, double spring_dt);
+  /// `sign` times the forces of the touching pairs marked in `mask` into F and T (the active
+  /// set's frozen sums, sim/active_set.hpp; springs neither advanced nor written).
+  void add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T);
 
   /// The constants of the contacts a neighbour rebuild added.
   void set_constants(const World& world, ContactLists& lists, const NewContacts& added) const;

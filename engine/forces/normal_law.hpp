@@ -24,6 +24,11 @@ class ForceLoops {
  public:
   virtual ~ForceLoops() = default;
   virtual void run(World& world, ContactLists& lists, double spring_dt, std::vector<std::int32_t>& scratch) const = 0;
+  /// The active set's frozen sums (sim/active_set.hpp): adds `sign` times the force and torque of
+  /// each touching pair k with mask[k] != 0 to F and T (arrays of the spheres' size), springs not
+  /// advanced (dt = 0) and not written back.
+  virtual void add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T,
+                               std::vector<std::int32_t>& scratch) const = 0;
 };
 
 struct NormalLaw {

@@ -1,6 +1,7 @@
 // What one measured point of a sweep gives (measure/sweeps.hpp); stored in the sweep point
 // files (formats/sweep_file.hpp) and, as columns, in the results files.
 #pragma once
+#include <optional>
 #include <vector>
 
 #include "core/stopwatch.hpp"
@@ -31,6 +32,8 @@ struct PointResult {
   PointTiming timing;
   /// Wall-clock time of the point's loading and relaxation [s].
   double seconds() const { return timing.loading.wall + timing.relaxation.wall; }
+  /// With an active set: the share of sphere-steps of the relaxation that were integrated (not stored).
+  std::optional<double> awake_fraction;
   bool reused = false;  ///< not stored: this run took the point from its checkpoint (timing is the computing run's)
 };
 

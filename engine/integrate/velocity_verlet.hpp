@@ -8,16 +8,20 @@
 //
 //   quench      v = 0 where F·v < 0,  w = 0 where T·w < 0
 #pragma once
+#include <cstdint>
+
 #include "neighbor/neighbours.hpp"
 #include "state/particles.hpp"
 
 namespace softpack {
 
-void half_kick(Particles& p, double dt);
+// `asleep` (one byte per sphere, or null): the spheres an active set holds at rest
+// (sim/active_set.hpp), skipped like the driven ones.
+void half_kick(Particles& p, double dt, const std::uint8_t* asleep = nullptr);
 
 /// Also starts the step's record of displacements since the last neighbour build
 /// (neighbours.moved(); the drivers add their spheres' to it).
-void drift(Particles& p, double dt, Neighbours& neighbours);
+void drift(Particles& p, double dt, Neighbours& neighbours, const std::uint8_t* asleep = nullptr);
 
 /// Per-grain velocity quench of the free spheres (after the second half kick).
 void quench(Particles& p);

@@ -26,6 +26,7 @@ PointResult record_point(const Simulation& sim, const ContactSetup& setup, const
   r.relax_steps = relax.steps;
   r.relax_time = relax.simulated_time;
   r.checks = relax.checks;
+  r.awake_fraction = relax.awake_fraction;
   return r;
 }
 

@@ -49,6 +49,8 @@ std::vector<std::size_t> PairList::replace(const std::vector<PairEntry>& fresh, 
   k = std::move(constants);
   spring = std::move(springs);
   spring_live.clear();
+  masked = false;
+  live.clear();
   return new_ones;
 }
 

@@ -39,6 +39,11 @@ struct PairList {
   /// 1 where the spring may be non-zero (the pair touched at the last force evaluation).
   /// Kept by the force loop (forces/pair_contacts.hpp); empty means every spring may be.
   std::vector<std::uint8_t> spring_live;
+  /// With an active set (sim/active_set.hpp), `masked`: the force loop evaluates only the pairs
+  /// listed in `live` (ascending: those with an awake sphere); the forces of the others, two
+  /// sleeping spheres, are kept by the active set. A rebuild unmasks the list.
+  bool masked = false;
+  std::vector<std::int32_t> live;
 
   std::size_t size() const { return i.size(); }
   /// Replaces the list by `fresh` (sorted by (i, j)); pairs already listed keep their

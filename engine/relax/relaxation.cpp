@@ -19,6 +19,16 @@ RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
     ~Quench() { sim.set_quench(was); }
   } quench{sim, sim.quenching()};
   sim.set_quench(std::visit([](const auto& d) { return d.quench; }, def));
+  // So is the active set: every grain is awake again when the relaxation ends.
+  const std::optional<ActiveSetDef> active = std::visit([](const auto& d) { return d.active_set; }, def);
+  struct ActiveSetScope {
+    Simulation& sim;
+    std::optional<ActiveSetDef> was;
+    ~ActiveSetScope() { sim.set_active_set(was); }
+  } active_scope{sim, sim.active_set() ? std::optional(sim.active_set()->def()) : std::nullopt};
+  if (active) sim.set_active_set(active);
+  const double sphere_steps0 = sim.active_set() ? sim.active_set()->sphere_steps() : 0.0;
+  const double awake0 = sim.active_set() ? sim.active_set()->awake_sphere_steps() : 0.0;
   const long step0 = sim.step_count();
   const double t0 = sim.time();
   RelaxationReport report;
@@ -34,6 +44,7 @@ RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
       sim.run_for(p->wait);
       const Vec3 now = p->settle ? measured() : Vec3::Zero();
       sim.zero_velocities();
+      sim.sleep_check();
       record();
       if (p->settle && k > 0 && (now - before).norm() <= std::max(p->settle->relative * now.norm(), p->settle->absolute)) break;
       before = now;
@@ -51,11 +62,16 @@ RelaxationReport relax(Simulation& sim, const RelaxationDef& def,
         report.converged = true;
         break;
       }
-      if (c.zero_velocities_at_checks) sim.zero_velocities();
+      if (c.zero_velocities_at_checks) {
+        sim.zero_velocities();
+        sim.sleep_check();
+      }
     }
   }
   report.steps = sim.step_count() - step0;
   report.simulated_time = sim.time() - t0;
+  if (const ActiveSet* a = sim.active_set(); a && a->sphere_steps() > sphere_steps0)
+    report.awake_fraction = (a->awake_sphere_steps() - awake0) / (a->sphere_steps() - sphere_steps0);
   return report;
 }
 

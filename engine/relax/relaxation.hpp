@@ -24,6 +24,8 @@ struct RelaxationReport {
   /// converged protocol: whether both tolerances were met; paper protocol: no criterion.
   std::optional<bool> converged;
   std::vector<RelaxationCheck> checks;
+  /// With an active set: the sphere-steps integrated over all sphere-steps (the work done).
+  std::optional<double> awake_fraction;
 };
 
 /// Runs the protocol; `on_check` (optional) sees each check as it happens, for progress;

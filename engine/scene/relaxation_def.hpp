@@ -18,9 +18,14 @@
 // well) has its velocity set to zero, and its spin when T·ω < 0 — the per-grain velocity quench
 // of quenched molecular dynamics. It takes out kinetic energy where the damping is weak (few,
 // barely overlapped contacts) without touching the grains that are still being accelerated.
+//
+// Either protocol may run with an `active_set` (scene/active_set_def.hpp): grains at rest sleep,
+// and cost nothing, until a force wakes them.
 #pragma once
 #include <optional>
 #include <variant>
+
+#include "scene/active_set_def.hpp"
 
 namespace softpack {
 
@@ -34,6 +39,7 @@ struct PaperRelaxationDef {
     double absolute = 0.0;  ///< [N]
   };
   std::optional<Settle> settle = std::nullopt;  ///< none: every stop (the paper)
+  std::optional<ActiveSetDef> active_set = std::nullopt;  ///< none: every grain integrated every step
 };
 
 struct ConvergedRelaxationDef {
@@ -43,6 +49,7 @@ struct ConvergedRelaxationDef {
   double max_time = 0.0;        ///< [s]
   bool zero_velocities_at_checks = false;
   bool quench = false;  ///< per-grain velocity quench (above)
+  std::optional<ActiveSetDef> active_set = std::nullopt;  ///< none: every grain integrated every step
 };
 
 using RelaxationDef = std::variant<PaperRelaxationDef, ConvergedRelaxationDef>;

@@ -137,10 +137,16 @@ ShellContactRadius parse_contact_radius(const ConfigNode& n) {
   return n.choice({"concave", "particle"}) == "concave" ? ShellContactRadius::concave : ShellContactRadius::particle;
 }
 
+ActiveSetDef parse_active_set(const ConfigNode& n) {
+  n.allow_only({"sleep_force", "sleep_speed", "wake_force", "check_interval"});
+  return ActiveSetDef{n.at("sleep_force").number(), n.at("sleep_speed").number(), n.at("wake_force").number(),
+                      n.at("check_interval").number()};
+}
+
 RelaxationDef parse_relaxation(const ConfigNode& n) {
   const std::string protocol = n.at("protocol").choice({"paper", "converged"});
   if (protocol == "paper") {
-    n.allow_only({"protocol", "stops", "wait", "final_wait", "quench", "settle"});
+    n.allow_only({"protocol", "stops", "wait", "final_wait", "quench", "settle", "active_set"});
     PaperRelaxationDef p;
     p.stops = int_of(n.at("stops"));
     p.wait = n.at("wait").number();
@@ -150,10 +156,11 @@ RelaxationDef parse_relaxation(const ConfigNode& n) {
       settle->allow_only({"relative", "absolute"});
       p.settle = PaperRelaxationDef::Settle{settle->at("relative").number(), settle->at("absolute").number()};
     }
+    if (auto a = n.find("active_set")) p.active_set = parse_active_set(*a);
     return p;
   }
   n.allow_only({"protocol", "force_tolerance", "energy_tolerance", "check_interval", "max_time",
-                "zero_velocities_at_checks", "quench"});
+                "zero_velocities_at_checks", "quench", "active_set"});
   ConvergedRelaxationDef c;
   c.force_tolerance = n.at("force_tolerance").number();
   c.energy_tolerance = n.at("energy_tolerance").number();
@@ -161,6 +168,7 @@ RelaxationDef parse_relaxation(const ConfigNode& n) {
   c.max_time = n.at("max_time").number();
   c.zero_velocities_at_checks = n.at("zero_velocities_at_checks").boolean();
   if (auto q = n.find("quench")) c.quench = q->boolean();
+  if (auto a = n.find("active_set")) c.active_set = parse_active_set(*a);
   return c;
 }
 

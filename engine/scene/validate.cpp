@@ -11,22 +11,16 @@
 
 #include "core/error.hpp"
 #include "scene/limits.hpp"
+#include "scene/validate_detail.hpp"
 
 namespace softpack {
 namespace {
 
 using limits::number_text;
-
-[[noreturn]] void fail(const std::string& key, const std::string& what) {
-  throw InputError(key + ": " + what);
-}
+using validation::check;
+using validation::fail;
 
 bool finite(const Vec3& v) { return v.allFinite(); }
-
-// A range of scene/limits.hpp: "<key>: <v> <unit> is not allowed; allowed: <range>".
-void check(const std::string& key, double v, const limits::Range& range) {
-  if (const std::string why = limits::refusal(v, range); !why.empty()) fail(key, why);
-}
 
 // A point: finite, each coordinate within limits::kCoordinate.
 void check_point(const std::string& key, const Vec3& x) {
@@ -301,35 +295,6 @@ void validate_watchdog(const WatchdogDef& wd, const std::string& key) {
   check(key + ".check_interval", static_cast<double>(wd.check_interval), limits::kCheckInterval);
 }
 
-void validate(const RelaxationDef& def, const std::string& key) {
-  const auto positive = [&](double v, const char* name) {
-    if (!(v > 0.0 && std::isfinite(v))) fail(key + "." + name, fmt::format("{} is not allowed; allowed: > 0", v));
-  };
-  if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
-    check(key + ".stops", p->stops, limits::kStops);
-    if (const auto& st = p->settle) {
-      for (const auto& [v, name] : {std::pair{st->relative, "settle.relative"}, {st->absolute, "settle.absolute"}})
-        if (!(v >= 0.0 && std::isfinite(v))) fail(key + "." + name, fmt::format("{} is not allowed; allowed: >= 0", v));
-      if (st->relative == 0.0 && st->absolute == 0.0)
-        fail(key + ".settle", "relative and absolute are both 0, so the stops would never end early; allowed: at least one > 0");
-    }
-    if (p->stops > 0) positive(p->wait, "wait");
-    positive(p->final_wait, "final_wait");
-  } else {
-    const auto& c = std::get<ConvergedRelaxationDef>(def);
-    positive(c.force_tolerance, "force_tolerance");
-    positive(c.energy_tolerance, "energy_tolerance");
-    positive(c.check_interval, "check_interval");
-    positive(c.max_time, "max_time");
-    if (!(c.max_time / c.check_interval <= limits::kMaxChecks))
-      fail(key + ".check_interval",
-           fmt::format("{} s is not allowed; max_time / check_interval = {} checks; allowed: at most {} checks (check_interval >= "
-                       "{} s), each a row of the relaxation's table",
-                       number_text(c.check_interval), number_text(std::ceil(c.max_time / c.check_interval)),
-                       number_text(limits::kMaxChecks), limits::approx_text(c.max_time / limits::kMaxChecks)));
-  }
-}
-
 void validate_drivers(const SceneDef& scene, const std::vector<DriverDef>& drivers) { check_drivers(scene, drivers); }
 
 void validate_steps(double seconds, double dt, const std::string& key, const std::string& what) {
@@ -338,22 +303,6 @@ void validate_steps(double seconds, double dt, const std::string& key, const std
   fail(key, fmt::format("{} is {} time steps of dt = {} s; allowed: at most {} steps ({} s of simulated time)",
                         what.empty() ? number_text(seconds) + " s" : what, limits::approx_text(steps),
                         limits::approx_text(dt), number_text(limits::kMaxSteps), limits::approx_text(limits::kMaxSteps * dt)));
-}
-
-void validate_steps(const RelaxationDef& def, double dt, const std::string& key) {
-  if (const auto* p = std::get_if<PaperRelaxationDef>(&def)) {
-    const auto steps = [&](double t) { return std::max(1.0, std::round(t / dt)); };  // Simulation::steps_for
-    const double total = p->stops * steps(p->wait) + steps(p->final_wait);
-    if (total <= limits::kMaxSteps) return;
-    const bool waits = p->stops > 0 && p->stops * p->wait >= p->final_wait;
-    fail(key + (waits ? ".wait" : ".final_wait"),
-         fmt::format("the protocol ({} stops after {} s each, then {} s) is {} time steps of dt = {} s; allowed: at most {} "
-                     "steps",
-                     p->stops, number_text(p->wait), number_text(p->final_wait), limits::approx_text(total),
-                     limits::approx_text(dt), number_text(limits::kMaxSteps)));
-  }
-  const auto& c = std::get<ConvergedRelaxationDef>(def);
-  validate_steps(c.max_time, dt, key + ".max_time");
 }
 
 void validate_steps(const DriverDef& driver, double dt, const std::string& key) {

@@ -20,6 +20,8 @@ void validate_effects(const EffectsDef& e, const std::vector<Material>& material
 void validate_integration(const IntegrationDef& in, const std::string& key = "integration");
 void validate_neighbor(const NeighborDef& nb, const std::string& key = "neighbor");
 void validate_watchdog(const WatchdogDef& wd, const std::string& key = "watchdog");
+/// An active set (InputError naming <key>.<name>).
+void validate_active_set(const ActiveSetDef& def, const std::string& key);
 /// A relaxation protocol (InputError naming <key>.<name>).
 void validate(const RelaxationDef& def, const std::string& key = "relaxation");
 

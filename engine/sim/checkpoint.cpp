@@ -59,6 +59,7 @@ void Simulation::restore(const SimulationState& s) {
   if (s.x.size() != n || s.v.size() != n || s.F.size() != n || s.w.size() != p.w.size() || s.T.size() != p.T.size() ||
       s.plane_points.size() != world_.planes.size() || s.shell_centres.size() != world_.shells.size())
     throw InputError(fmt::format("the saved state does not fit this scene ({} spheres saved, {} in the scene)", s.x.size(), n));
+  if (active_) active_->wake_all(neighbours_.lists());
   world_.time = s.time;
   world_.steps = s.steps;
   p.x = s.x, p.v = s.v, p.w = s.w, p.F = s.F, p.T = s.T;

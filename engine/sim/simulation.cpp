@@ -50,12 +50,14 @@ Simulation::Simulation(const SceneDef& scene)
 // The step
 
 void Simulation::step() {
-  half_kick(world_.p, dt_);
-  drift(world_.p, dt_, neighbours_);
+  const std::uint8_t* const asleep = active_ ? active_->flags() : nullptr;
+  half_kick(world_.p, dt_, asleep);
+  drift(world_.p, dt_, neighbours_, asleep);
   if (!drivers_.empty()) drivers_.advance(world_, dt_, neighbours_);
   update_neighbours();
   compute_forces(dt_);
-  half_kick(world_.p, dt_);
+  if (active_) wake_now();
+  half_kick(world_.p, dt_, asleep);
   if (quench_) quench(world_.p);
   if (!drivers_.empty()) {
     watchdog_.add_driver_work(drivers_.work(world_, dt_));
@@ -63,7 +65,29 @@ void Simulation::step() {
   }
   world_.time += dt_;
   ++world_.steps;
+  if (active_) {
+    active_->count_step(world_.p.size());
+    if (++since_sleep_check_ >= sleep_interval_) sleep_check();
+  }
   if (++since_check_ >= scene_.watchdog.check_interval) check_now();
+}
+
+void Simulation::wake_now() { active_->wake(world_, neighbours_.lists(), forces_); }
+
+void Simulation::sleep_check() {
+  if (!active_) return;
+  since_sleep_check_ = 0;
+  active_->sleep(world_, neighbours_.lists(), forces_, residuals().mean_contact_force);
+}
+
+void Simulation::set_active_set(const std::optional<ActiveSetDef>& def) {
+  if (active_) active_->wake_all(neighbours_.lists());
+  active_.reset();
+  if (!def) return;
+  validate_active_set(*def, "active_set");
+  sleep_interval_ = steps_for(def->check_interval);
+  since_sleep_check_ = 0;
+  active_.emplace(*def, world_.p.size());
 }
 
 void Simulation::update_neighbours() {
@@ -81,6 +105,7 @@ void Simulation::rebuild_neighbours() {
     throw;
   }
   if (forces_.active()) forces_.set_constants(world_, neighbours_.lists(), added);
+  if (active_) active_->rebuild(world_, neighbours_.lists(), forces_);
 }
 
 // Gravity (or zero), then every contact's force through the normal law's loops. Velocities are
@@ -96,6 +121,7 @@ void Simulation::compute_forces(double spring_dt) {
   if (p.rotates()) std::fill(p.T.begin(), p.T.end(), Vec3::Zero());
   for (auto& l : world_.plane_loads) l = WallLoad{};
   for (auto& l : world_.shell_loads) l = WallLoad{};
+  if (active_) active_->add_frozen(p);
   forces_.add_contact_forces(world_, neighbours_.lists(), spring_dt);
 }
 
@@ -117,6 +143,7 @@ long Simulation::steps_for(double duration) const {
 void Simulation::add_driver(const DriverDef& driver) {
   validate_steps(driver, dt_, "driver");
   drivers_.add(driver, world_);
+  if (active_) wake_now();  // a driven sphere does not sleep
 }
 
 void Simulation::run_for(double duration) { run_steps(steps_for(duration)); }

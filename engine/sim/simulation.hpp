@@ -14,14 +14,17 @@
 //   advance_drivers     kinematic spheres and walls at t + dt            drivers/drivers
 //   update_neighbours   rebuild the Verlet lists when the skin is used up neighbor/neighbours
 //   compute_forces      gravity, then the contact law of every contact   forces/force_field
+//   (wake)              only with an active set: sleeping spheres whose force grew wake  sim/active_set
 //   half_kick
 //   quench              only while set_quench(true): v = 0 where F·v < 0 (relaxation)
 //   finish_drivers      the drivers' work (watchdog budget); drivers that arrived stop
+//   (sleep)             with an active set, every check_interval: spheres at rest fall asleep
 //
 // The watchdog checks the state every scene.watchdog.check_interval steps; it only reads it.
 // Only the declared effects run (scene/scene_def.hpp): the force loops are compiled for each
 // combination of them, and the state of undeclared effects is never allocated.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +33,7 @@
 #include "integrate/time_step.hpp"
 #include "neighbor/neighbours.hpp"
 #include "scene/scene_def.hpp"
+#include "sim/active_set.hpp"
 #include "sim/residuals.hpp"
 #include "sim/watchdog.hpp"
 #include "state/simulation_state.hpp"
@@ -58,6 +62,13 @@ class Simulation {
   /// Turns the per-grain velocity quench of every step on or off (scene/relaxation_def.hpp).
   void set_quench(bool on) { quench_ = on; }
   bool quenching() const { return quench_; }
+  /// Turns the active set (sim/active_set.hpp) on with `def` (validated: InputError naming
+  /// active_set.<key>), or off with nullopt; either way every sphere is awake afterwards.
+  void set_active_set(const std::optional<ActiveSetDef>& def);
+  /// The active set, or null when it is off.
+  const ActiveSet* active_set() const { return active_ ? &*active_ : nullptr; }
+  /// A sleep check now (the paper protocol makes one after each stop); nothing without an active set.
+  void sleep_check();
   /// Starts a driver now (validated like the scene's drivers, its steps with validate_steps()).
   void add_driver(const DriverDef& driver);
   /// Stops every driver now: walls stand still, driven spheres stop and become free.
@@ -70,7 +81,8 @@ class Simulation {
   /// The state of the spheres, walls and springs (no drivers may be moving). sim/checkpoint.cpp.
   SimulationState state() const;
   /// Continues from a state of the same scene; InputError when it does not fit the scene. The
-  /// watchdog checks the state and restarts its energy budget from it.
+  /// watchdog checks the state and restarts its energy budget from it. An active set wakes
+  /// every sphere.
   void restore(const SimulationState& s);
   /// Elastic contact force (normal law and tangential springs, no damping) that the spheres of
   /// body `from` exert on the spheres of body `on`.
@@ -101,6 +113,7 @@ class Simulation {
   void rebuild_neighbours();
   void compute_forces(double spring_dt);
   void check_now();
+  void wake_now();
 
   SceneDef scene_;
   double dt_ = 0.0;
@@ -112,6 +125,9 @@ class Simulation {
   Watchdog watchdog_;
   long since_check_ = 0;  ///< steps since the last watchdog check
   bool quench_ = false;
+  std::optional<ActiveSet> active_;
+  long sleep_interval_ = 0;       ///< steps between sleep checks
+  long since_sleep_check_ = 0;
 };
 
 }  // namespace softpack

@@ -1,0 +1,82 @@
+// The active set (scene/active_set_def.hpp): free spheres at rest sleep until a force wakes them.
+//
+// A sleeping sphere has v = w = 0 and is skipped by the integrator; the force loop skips its
+// contacts with other sleeping spheres (PairList::awake), whose forces cannot change while
+// neither sphere moves (the positions are fixed, the relative velocity is zero, so the springs
+// do not advance). Their sum per sphere, the frozen force and torque, is kept here and starts
+// each step's F and T of a sleeping sphere, so its net force is always the full one: contacts
+// with awake spheres and with walls are evaluated every step.
+//
+// The set changes at two moments, and each change updates the sums by the pairs that changed
+// side (forces/normal_law.hpp add_pair_forces, with the same law and the same bits as the loop):
+//
+//   sleep   at each check (every check_interval, and after each stop of the paper protocol):
+//           a free sphere with |F|, |T|/r < sleep_force x scale and |v|, |w| r < sleep_speed
+//           falls asleep; scale = the mean normal contact force (sim/residuals.hpp)
+//   wake    at every step, once the forces are known: a sleeping sphere whose |F| or |T|/r
+//           exceeds wake_force x scale wakes (before its half kick, so it moves this step)
+//
+// A neighbour rebuild renumbers the pairs: the mask and sums are then made anew.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "forces/force_field.hpp"
+#include "neighbor/contact_list.hpp"
+#include "scene/active_set_def.hpp"
+#include "state/world.hpp"
+
+namespace softpack {
+
+class ActiveSet {
+ public:
+  /// Every sphere awake; `def` is validated by the caller (scene/validate.hpp).
+  ActiveSet(const ActiveSetDef& def, std::size_t spheres);
+
+  const ActiveSetDef& def() const { return def_; }
+  bool asleep(std::size_t i) const { return asleep_[i] != 0; }
+  /// One byte per sphere, 1 while it sleeps (for the integrator).
+  const std::uint8_t* flags() const { return asleep_.data(); }
+  std::size_t sleeping() const { return sleeping_; }
+  /// The mean normal contact force at the last sleep check [N] (0 before the first).
+  double force_scale() const { return scale_; }
+  /// |F| and |T| / r of a sleeping sphere stay at or below this [N] (it wakes otherwise).
+  double wake_threshold() const { return def_.wake_force * scale_; }
+  /// The frozen force and torque of sphere i (zero while it is awake).
+  const Vec3& frozen_force(std::size_t i) const { return frozen_F_[i]; }
+
+  /// Before the contact loops of a step: F and T of each sleeping sphere start from its frozen sums.
+  void add_frozen(Particles& p) const;
+  /// After a neighbour rebuild (new pair numbering): the mask and the frozen sums anew.
+  void rebuild(World& world, ContactLists& lists, ForceField& forces);
+  /// A sleep check; `mean_contact_force` becomes the scale. Returns how many fell asleep.
+  std::size_t sleep(World& world, ContactLists& lists, ForceField& forces, double mean_contact_force);
+  /// After the forces of a step: wakes the sleeping spheres above the threshold, and every driven
+  /// one. Returns how many woke.
+  std::size_t wake(World& world, ContactLists& lists, ForceField& forces);
+  /// Wakes every sphere and leaves the lists as without an active set.
+  void wake_all(ContactLists& lists);
+
+  /// Counts one step: sphere-steps integrated and in all (their ratio is the work saved).
+  void count_step(std::size_t spheres) {
+    sphere_steps_ += static_cast<double>(spheres);
+    awake_sphere_steps_ += static_cast<double>(spheres - sleeping_);
+  }
+  double sphere_steps() const { return sphere_steps_; }
+  double awake_sphere_steps() const { return awake_sphere_steps_; }
+
+ private:
+  /// After asleep_ changed: PairList::live and the frozen sums, by the pairs that changed side.
+  void update(World& world, ContactLists& lists, ForceField& forces);
+
+  ActiveSetDef def_;
+  std::vector<std::uint8_t> asleep_;
+  std::vector<Vec3> frozen_F_, frozen_T_;
+  std::vector<std::uint8_t> awake_;                ///< per pair of the masked list: 1 if live
+  std::vector<std::uint8_t> to_frozen_, to_live_;  ///< scratch of update(), one byte per pair
+  std::size_t sleeping_ = 0;
+  double scale_ = 0.0;
+  double sphere_steps_ = 0.0, awake_sphere_steps_ = 0.0;
+};
+
+}  // namespace softpack
