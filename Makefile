@@ -38,7 +38,7 @@ endif
 
 # The goals that write DATA (the pipeline's, the scenes, clean).
 PIPELINE_GOALS := all tables figures paper archive packings normal tangential sweeps averages fits figure1 figure2 \
-  study-packing study-relaxation accuracy accuracy-report
+  study-packing study-relaxation accuracy accuracy-report fast-check
 MAKE_LETTERS := $(firstword -$(MAKEFLAGS))
 
 # One run per data folder: a goal that writes DATA runs make again under DATA's lock

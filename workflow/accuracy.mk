@@ -9,8 +9,9 @@
 # as failed, with the first error of its logs (DATA/accuracy/<setting>/failed.txt); the study
 # goes on. The reference must not fail.
 
+# Another study (experiments/fast-profile.yaml) runs in a folder of its own: ACCURACY_DIR=data/fast-profile.
 ACCURACY_STUDY ?= experiments/accuracy-cost.yaml
-ACCURACY_DIR := $(DATA)/accuracy
+ACCURACY_DIR ?= $(DATA)/accuracy
 ACCURACY_REPORT := $(ACCURACY_DIR)/report
 ACCURACY_TOOL := $(BUILD)/engine/softpack-accuracy
 
@@ -41,3 +42,15 @@ accuracy-report: | $(TOOLS)  ## compare the settings run so far with the referen
 	  figures/accuracy_cost.gp && mv $(ACCURACY_REPORT)/accuracy-cost.tmp.$$ext $(ACCURACY_REPORT)/accuracy-cost.$$ext \
 	  || { echo "accuracy: FAILED to draw the figure"; exit 1; }; done
 	@echo "accuracy: $(ACCURACY_REPORT)/table.md, $(ACCURACY_REPORT)/accuracy-cost.pdf"
+
+# The fast profile's confirmation (docs/accuracy.md, "The fast profile"): the tables of the paper
+# profile and of the fast one (each reusing or computing its results as `make tables` does;
+# FROM_SCRATCH=1 recomputes both, one after the other, for their costs side by side), then every
+# quantity of the fidelity study compared on the paper's seeds, and the CPU time of each.
+FAST_CHECK_DIR ?= $(DATA)/fast-check
+.PHONY: fast-check
+fast-check: | $(TOOLS)  ## the fast profile against the paper profile on the paper's seeds (DATA/fast-check/)
+	@$(MAKE) --no-print-directory PROFILE=paper tables
+	@$(MAKE) --no-print-directory PROFILE=fast tables
+	@$(ACCURACY_TOOL) check --data $(DATA) --reference experiments/paper.yaml --candidate experiments/fast.yaml \
+	  --out-dir $(FAST_CHECK_DIR)

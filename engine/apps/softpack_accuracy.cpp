@@ -5,6 +5,9 @@
 //       rewritten only when its text changes) and prints their names, the reference first
 //   softpack-accuracy report --study ... --data DIR --out-dir DIR/report
 //       compares every setting with the reference: table.md, pareto.dat, report.json
+//   softpack-accuracy check --data DIR --reference experiments/paper.yaml --candidate experiments/fast.yaml --out-dir DIR
+//       the candidate profile against the reference profile on the seeds of both (the fast
+//       profile's confirmation, report/fast_check.hpp): table.md, check.json
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -12,9 +15,13 @@
 
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
+#include "config/profile.hpp"
+#include "config/yaml_node.hpp"
+#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "report/accuracy_report.hpp"
 #include "report/accuracy_study.hpp"
+#include "report/fast_check.hpp"
 
 int main(int argc, char** argv) {
   using namespace softpack;
@@ -29,8 +36,29 @@ int main(int argc, char** argv) {
   report->add_option("--data", data_dir, "folder holding <setting>/{packings,normal,tangential}/ of every setting")->required();
   report->add_option("--out-dir", out_dir, "folder of table.md, pareto.dat, report.json")->required();
   report->add_option("--title", title, "first line of the table");
+  std::string reference_file, candidate_file;
+  std::vector<double> Fn_at{0.3, 0.4, 0.5}, kt_at{0.4, 0.5};
+  CLI::App* check = app.add_subcommand("check", "a profile against another on their seeds (the fast profile's confirmation)");
+  check->add_option("--data", data_dir, "folder holding <profile>/{packings,normal,tangential}/ of both, e.g. data")->required();
+  check->add_option("--reference", reference_file, "reference profile, e.g. experiments/paper.yaml")->required();
+  check->add_option("--candidate", candidate_file, "profile checked against it, e.g. experiments/fast.yaml")->required();
+  check->add_option("--Fn-at", Fn_at, "Delta_n where Fn is compared (points of both normal grids)")->capture_default_str();
+  check->add_option("--kt-at", kt_at, "Delta_n where kt is compared (points of both tangential grids)")->capture_default_str();
+  check->add_option("--out-dir", out_dir, "folder of table.md, check.json")->required();
   if (const auto code = parse_command_line(app, argc, argv, "softpack-accuracy")) return *code;
   try {
+    if (check->parsed()) {
+      // Each profile's folder is its file's name, as the workflow makes it (DATA/<profile>/).
+      const auto seeds_of = [](const std::string& file) { return parse_seeds(ConfigNode::load_file(file)); };
+      const std::vector<std::uint64_t> seeds = seeds_of(reference_file);
+      if (seeds_of(candidate_file) != seeds)
+        throw InputError(fmt::format("{} and {} have different seeds: the check compares them on the same soft-particles",
+                                     candidate_file, reference_file));
+      const FastCheck c = fast_check(data_dir, std::filesystem::path(reference_file).stem().string(),
+                                     std::filesystem::path(candidate_file).stem().string(), seeds, Fn_at, kt_at);
+      fmt::print("{}", write_fast_check(c, out_dir));
+      return 0;
+    }
     const AccuracyStudy study = read_accuracy_study(study_path);
     if (profiles->parsed()) {
       std::filesystem::create_directories(out_dir);

@@ -39,7 +39,12 @@ void drift(Particles& p, double dt, Neighbours& neighbours, const std::uint8_t* 
   const Vec3* const x0 = neighbours.x_at_build().data();
   Neighbours::LargestTwo moved;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!free(i)) continue;
+    if (!free(i)) {
+      // A sleeping sphere stands still, but its displacement since the last build still counts
+      // towards the skin (the drivers report the driven ones').
+      if (asleep && asleep[i]) moved.add((x[i] - x0[i]).squaredNorm());
+      continue;
+    }
     x[i] += dt * v[i];
     moved.add((x[i] - x0[i]).squaredNorm());
   }

@@ -157,6 +157,37 @@ TEST(ActiveSet, ConvergedRelaxationReachesTheSameRestAsWithout) {
   RecordProperty("awake_fraction", std::to_string(*b.awake_fraction));
 }
 
+// A sleeping sphere stands still, but what it moved since the last neighbour build still counts
+// towards the skin. Sphere 0 moves 0.75 skin and falls asleep; then sphere 1 is driven 0.8 skin
+// towards it, across a gap of 1.5 skin that no list held at the build: the lists must be rebuilt
+// and the contact found (its force on sphere 1). Counting only the awake spheres' displacements
+// (0.8 skin) would miss it.
+TEST(ActiveSet, ASleepersDisplacementStillCountsTowardsTheSkin) {
+  SceneDef s = testing::basic_scene();
+  const double r = 1e-3, skin = s.neighbor.skin * r, gap = 1.5 * skin;
+  s.particles = {ParticleDef{Vec3::Zero(), Vec3(0.01, 0, 0), Vec3::Zero(), r, 0, 0},
+                 ParticleDef{Vec3(2 * r + gap, 0, 0), Vec3::Zero(), Vec3::Zero(), r, 0, 1}};
+  Simulation sim(s);
+  sim.set_active_set(active_set(1e-3, 1e-2));
+  const long rebuilds = sim.neighbour_rebuilds();
+  sim.run_for(0.75 * skin / 0.01);
+  sim.zero_velocities();
+  sim.sleep_check();
+  ASSERT_TRUE(sim.active_set()->asleep(0));
+  ASSERT_EQ(sim.neighbour_rebuilds(), rebuilds);
+  TranslateGroupDef push;
+  push.group = GroupDef{GroupDef::Kind::body, 1};
+  push.velocity = Vec3(-0.01, 0, 0);
+  push.distance = 0.8 * skin;
+  push.after = AfterDrive::hold;
+  sim.add_driver(push);
+  while (sim.drivers_moving()) sim.step();
+  sim.step();
+  ASSERT_LT((sim.particles().x[1] - sim.particles().x[0]).norm(), 2 * r) << "the spheres should overlap";
+  EXPECT_GT(sim.neighbour_rebuilds(), rebuilds);
+  EXPECT_GT(sim.particles().F[0].norm(), 0.0) << "the contact was missed";
+}
+
 TEST(ActiveSet, RefusesBadDefinitions) {
   SceneDef scene = squeezed_packing_with_a_wall();
   Simulation sim(scene);
