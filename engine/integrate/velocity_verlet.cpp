@@ -4,50 +4,47 @@ namespace softpack {
 
 namespace {
 
-// The free spheres an integration phase moves: neither driven nor asleep.
-struct Free {
-  const std::uint8_t* driven;
-  const std::uint8_t* asleep;
-  bool operator()(std::size_t i) const { return (!driven || !driven[i]) && (!asleep || !asleep[i]); }
-};
+// Calls f(i) for every free sphere (not driven), or for the listed ones only.
+template <class F>
+[[gnu::always_inline]] inline void for_free(const Particles& p, const Movers* movers, F&& f) {
+  const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
+  if (movers) {
+    for (const std::int32_t k : *movers->awake) {
+      const auto i = static_cast<std::size_t>(k);
+      if (!driven || !driven[i]) f(i);
+    }
+    return;
+  }
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!driven || !driven[i]) f(i);
+}
 
 }  // namespace
 
-void half_kick(Particles& p, double dt, const std::uint8_t* asleep) {
-  const std::size_t n = p.size();
+void half_kick(Particles& p, double dt, const Movers* movers) {
   const double half = 0.5 * dt;
-  const Free free{p.driven.empty() ? nullptr : p.driven.data(), asleep};
   Vec3* const v = p.v.data();
   const Vec3* const F = p.F.data();
   const double* const inv_m = p.inv_m.data();
-  for (std::size_t i = 0; i < n; ++i)
-    if (free(i)) v[i] += (half * inv_m[i]) * F[i];
+  for_free(p, movers, [&](std::size_t i) { v[i] += (half * inv_m[i]) * F[i]; });
   if (p.rotates()) {
     Vec3* const w = p.w.data();
     const Vec3* const T = p.T.data();
     const double* const inv_I = p.inv_I.data();
-    for (std::size_t i = 0; i < n; ++i)
-      if (free(i)) w[i] += (half * inv_I[i]) * T[i];
+    for_free(p, movers, [&](std::size_t i) { w[i] += (half * inv_I[i]) * T[i]; });
   }
 }
 
-void drift(Particles& p, double dt, Neighbours& neighbours, const std::uint8_t* asleep) {
-  const std::size_t n = p.size();
-  const Free free{p.driven.empty() ? nullptr : p.driven.data(), asleep};
+void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers) {
   Vec3* const x = p.x.data();
   const Vec3* const v = p.v.data();
   const Vec3* const x0 = neighbours.x_at_build().data();
-  Neighbours::LargestTwo moved;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!free(i)) {
-      // A sleeping sphere stands still, but its displacement since the last build still counts
-      // towards the skin (the drivers report the driven ones').
-      if (asleep && asleep[i]) moved.add((x[i] - x0[i]).squaredNorm());
-      continue;
-    }
+  Neighbours::LargestTwo moved = movers ? movers->asleep_moved : Neighbours::LargestTwo{};
+  for_free(p, movers, [&](std::size_t i) {
     x[i] += dt * v[i];
     moved.add((x[i] - x0[i]).squaredNorm());
-  }
+  });
   neighbours.set_moved(moved);
 }
 

@@ -9,19 +9,27 @@
 //   quench      v = 0 where F·v < 0,  w = 0 where T·w < 0
 #pragma once
 #include <cstdint>
+#include <vector>
 
 #include "neighbor/neighbours.hpp"
 #include "state/particles.hpp"
 
 namespace softpack {
 
-// `asleep` (one byte per sphere, or null): the spheres an active set holds at rest
-// (sim/active_set.hpp), skipped like the driven ones.
-void half_kick(Particles& p, double dt, const std::uint8_t* asleep = nullptr);
+/// With an active set (sim/active_set.hpp) only some spheres move: those listed (the awake
+/// ones; driven ones among them are still skipped), while the sleeping ones stand still, with
+/// the two largest squared displacements since the last neighbour build among them.
+struct Movers {
+  const std::vector<std::int32_t>* awake = nullptr;
+  Neighbours::LargestTwo asleep_moved;
+};
+
+/// `movers`: null for every free sphere.
+void half_kick(Particles& p, double dt, const Movers* movers = nullptr);
 
 /// Also starts the step's record of displacements since the last neighbour build
-/// (neighbours.moved(); the drivers add their spheres' to it).
-void drift(Particles& p, double dt, Neighbours& neighbours, const std::uint8_t* asleep = nullptr);
+/// (neighbours.moved(); the drivers add their spheres' to it); sleeping spheres' count too.
+void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers = nullptr);
 
 /// Per-grain velocity quench of the free spheres (after the second half kick).
 void quench(Particles& p);

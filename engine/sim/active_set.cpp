@@ -5,26 +5,31 @@
 namespace softpack {
 
 ActiveSet::ActiveSet(const ActiveSetDef& def, std::size_t spheres)
-    : def_(def), asleep_(spheres, 0), frozen_F_(spheres, Vec3::Zero()), frozen_T_(spheres, Vec3::Zero()) {}
+    : def_(def), asleep_(spheres, 0), frozen_F_(spheres, Vec3::Zero()), frozen_T_(spheres, Vec3::Zero()) {
+  index();
+}
+
+void ActiveSet::index() {
+  awake_list_.clear(), sleeping_list_.clear();
+  for (std::size_t i = 0; i < asleep_.size(); ++i) (asleep_[i] ? sleeping_list_ : awake_list_).push_back(static_cast<std::int32_t>(i));
+}
 
 void ActiveSet::add_frozen(Particles& p) const {
-  if (sleeping_ == 0) return;
-  const std::size_t n = p.size();
-  for (std::size_t i = 0; i < n; ++i)
-    if (asleep_[i]) p.F[i] += frozen_F_[i];
+  for (const std::int32_t i : sleeping_list_) p.F[i] += frozen_F_[i];
   if (p.rotates())
-    for (std::size_t i = 0; i < n; ++i)
-      if (asleep_[i]) p.T[i] += frozen_T_[i];
+    for (const std::int32_t i : sleeping_list_) p.T[i] += frozen_T_[i];
 }
 
 void ActiveSet::rebuild(World& world, ContactLists& lists, ForceField& forces) {
+  asleep_moved_ = {};          // every sphere is where the new lists were built
   lists.pairs.masked = false;  // a new numbering: update() starts from nothing frozen
   std::fill(frozen_F_.begin(), frozen_F_.end(), Vec3::Zero());
   std::fill(frozen_T_.begin(), frozen_T_.end(), Vec3::Zero());
   update(world, lists, forces);
 }
 
-std::size_t ActiveSet::sleep(World& world, ContactLists& lists, ForceField& forces, double mean_contact_force) {
+std::size_t ActiveSet::sleep(World& world, ContactLists& lists, ForceField& forces, double mean_contact_force,
+                             const std::vector<Vec3>& x_at_build) {
   scale_ = mean_contact_force;
   Particles& p = world.p;
   const double F2 = (def_.sleep_force * scale_) * (def_.sleep_force * scale_);
@@ -40,6 +45,7 @@ std::size_t ActiveSet::sleep(World& world, ContactLists& lists, ForceField& forc
     }
     p.v[i].setZero();
     asleep_[i] = 1;
+    asleep_moved_.add((p.x[i] - x_at_build[i]).squaredNorm());
     ++fell;
   }
   if (fell > 0) {
@@ -54,8 +60,8 @@ std::size_t ActiveSet::wake(World& world, ContactLists& lists, ForceField& force
   const Particles& p = world.p;
   const double F2 = wake_threshold() * wake_threshold();
   std::size_t woke = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!asleep_[i]) continue;
+  for (const std::int32_t k : sleeping_list_) {
+    const auto i = static_cast<std::size_t>(k);
     bool up = p.F[i].squaredNorm() > F2 || p.is_driven(i);
     if (!up && p.rotates()) up = p.T[i].squaredNorm() > F2 * p.r[i] * p.r[i];
     if (!up) continue;
@@ -74,6 +80,8 @@ void ActiveSet::wake_all(ContactLists& lists) {
   std::fill(frozen_F_.begin(), frozen_F_.end(), Vec3::Zero());
   std::fill(frozen_T_.begin(), frozen_T_.end(), Vec3::Zero());
   sleeping_ = 0;
+  asleep_moved_ = {};
+  index();
   lists.pairs.masked = false;
   lists.pairs.live.clear();
 }
@@ -104,8 +112,8 @@ void ActiveSet::update(World& world, ContactLists& lists, ForceField& forces) {
   // The pairs that leave the frozen side give back the forces they added.
   if (any_live) forces.add_pair_forces(world, pl, to_live_.data(), -1.0, frozen_F_.data(), T);
   if (any_frozen) forces.add_pair_forces(world, pl, to_frozen_.data(), 1.0, frozen_F_.data(), T);
-  for (std::size_t i = 0; i < asleep_.size(); ++i)
-    if (!asleep_[i]) frozen_F_[i].setZero(), frozen_T_[i].setZero();  // exactly, not by cancellation
+  index();
+  for (const std::int32_t i : awake_list_) frozen_F_[i].setZero(), frozen_T_[i].setZero();  // exactly, not by cancellation
 }
 
 }  // namespace softpack

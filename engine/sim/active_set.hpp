@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "forces/force_field.hpp"
+#include "integrate/velocity_verlet.hpp"
 #include "neighbor/contact_list.hpp"
 #include "scene/active_set_def.hpp"
 #include "state/world.hpp"
@@ -35,8 +36,6 @@ class ActiveSet {
 
   const ActiveSetDef& def() const { return def_; }
   bool asleep(std::size_t i) const { return asleep_[i] != 0; }
-  /// One byte per sphere, 1 while it sleeps (for the integrator).
-  const std::uint8_t* flags() const { return asleep_.data(); }
   std::size_t sleeping() const { return sleeping_; }
   /// The mean normal contact force at the last sleep check [N] (0 before the first).
   double force_scale() const { return scale_; }
@@ -44,13 +43,18 @@ class ActiveSet {
   double wake_threshold() const { return def_.wake_force * scale_; }
   /// The frozen force and torque of sphere i (zero while it is awake).
   const Vec3& frozen_force(std::size_t i) const { return frozen_F_[i]; }
+  /// What the integrator moves: the awake spheres, and the sleepers' largest displacements.
+  Movers movers() const { return {&awake_list_, asleep_moved_}; }
 
   /// Before the contact loops of a step: F and T of each sleeping sphere start from its frozen sums.
   void add_frozen(Particles& p) const;
   /// After a neighbour rebuild (new pair numbering): the mask and the frozen sums anew.
   void rebuild(World& world, ContactLists& lists, ForceField& forces);
-  /// A sleep check; `mean_contact_force` becomes the scale. Returns how many fell asleep.
-  std::size_t sleep(World& world, ContactLists& lists, ForceField& forces, double mean_contact_force);
+  /// A sleep check; `mean_contact_force` becomes the scale; `x_at_build`: the positions of the
+  /// last neighbour build (a sleeper's displacement since then still counts towards the skin).
+  /// Returns how many fell asleep.
+  std::size_t sleep(World& world, ContactLists& lists, ForceField& forces, double mean_contact_force,
+                    const std::vector<Vec3>& x_at_build);
   /// After the forces of a step: wakes the sleeping spheres above the threshold, and every driven
   /// one. Returns how many woke.
   std::size_t wake(World& world, ContactLists& lists, ForceField& forces);
@@ -68,12 +72,16 @@ class ActiveSet {
  private:
   /// After asleep_ changed: PairList::live and the frozen sums, by the pairs that changed side.
   void update(World& world, ContactLists& lists, ForceField& forces);
+  /// The lists of awake and sleeping spheres from asleep_.
+  void index();
 
   ActiveSetDef def_;
   std::vector<std::uint8_t> asleep_;
   std::vector<Vec3> frozen_F_, frozen_T_;
   std::vector<std::uint8_t> awake_;                ///< per pair of the masked list: 1 if live
   std::vector<std::uint8_t> to_frozen_, to_live_;  ///< scratch of update(), one byte per pair
+  std::vector<std::int32_t> awake_list_, sleeping_list_;
+  Neighbours::LargestTwo asleep_moved_;  ///< of the sleepers (and some since woken: an upper bound)
   std::size_t sleeping_ = 0;
   double scale_ = 0.0;
   double sphere_steps_ = 0.0, awake_sphere_steps_ = 0.0;

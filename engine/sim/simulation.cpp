@@ -50,14 +50,15 @@ Simulation::Simulation(const SceneDef& scene)
 // The step
 
 void Simulation::step() {
-  const std::uint8_t* const asleep = active_ ? active_->flags() : nullptr;
-  half_kick(world_.p, dt_, asleep);
-  drift(world_.p, dt_, neighbours_, asleep);
+  const Movers movers = active_ ? active_->movers() : Movers{};
+  half_kick(world_.p, dt_, active_ ? &movers : nullptr);
+  drift(world_.p, dt_, neighbours_, active_ ? &movers : nullptr);
   if (!drivers_.empty()) drivers_.advance(world_, dt_, neighbours_);
   update_neighbours();
   compute_forces(dt_);
   if (active_) wake_now();
-  half_kick(world_.p, dt_, asleep);
+  const Movers after_wake = active_ ? active_->movers() : Movers{};  // the spheres that woke move from now on
+  half_kick(world_.p, dt_, active_ ? &after_wake : nullptr);
   if (quench_) quench(world_.p);
   if (!drivers_.empty()) {
     watchdog_.add_driver_work(drivers_.work(world_, dt_));
@@ -77,7 +78,7 @@ void Simulation::wake_now() { active_->wake(world_, neighbours_.lists(), forces_
 void Simulation::sleep_check() {
   if (!active_) return;
   since_sleep_check_ = 0;
-  active_->sleep(world_, neighbours_.lists(), forces_, residuals().mean_contact_force);
+  active_->sleep(world_, neighbours_.lists(), forces_, residuals().mean_contact_force, neighbours_.x_at_build());
 }
 
 void Simulation::set_active_set(const std::optional<ActiveSetDef>& def) {
