@@ -265,6 +265,12 @@ expect_error "^softpack-run: error: bad\.yaml:18:[0-9]+: run\.relaxation\.settle
 edit "$scene" 's/final_wait: 0.05}/final_wait: 0.05, settle: {relative: 0.01, absolute: 0.0}}/'
 expect_error "^softpack-run: error: relaxation\.settle: needs a measured force" run.json run bad.yaml
 
+case_name active_set_that_would_wake_at_once_or_has_an_unknown_key_is_refused
+edit "$scene" 's/final_wait: 0.05}/final_wait: 0.05, active_set: {sleep_force: 1.0e-3, sleep_speed: 1.0e-6, wake_force: 1.0e-4, check_interval: 0.01}}/'
+expect_error "^softpack-run: error: bad\.yaml:18:[0-9]+: run\.relaxation\.active_set\.wake_force: 0\.0001 is below sleep_force = 0\.001" run.json run bad.yaml
+edit "$scene" 's/final_wait: 0.05}/final_wait: 0.05, active_set: {sleep_force: 1.0e-3, sleep_speed: 1.0e-6, wake: 1.0e-2, check_interval: 0.01}}/'
+expect_error "^softpack-run: error: bad\.yaml:18:[0-9]+: .*wake: unknown key; allowed: sleep_force, sleep_speed, wake_force, check_interval" run.json run bad.yaml
+
 # --- Command lines: CLI11's errors are bad input (exit 2, one line); --help exits 0 --------------
 case_name every_executable_maps_command_line_errors_to_exit_2
 for exe in softpack-run softpack-pack softpack-normal softpack-tangential softpack-average softpack-fit softpack-table \
