@@ -2,10 +2,17 @@
 
 #include <algorithm>
 
+#include "forces/contact_walk.hpp"
+
 namespace softpack {
 
 ActiveSet::ActiveSet(const ActiveSetDef& def, std::size_t spheres)
-    : def_(def), asleep_(spheres, 0), frozen_F_(spheres, Vec3::Zero()), frozen_T_(spheres, Vec3::Zero()) {
+    : def_(def),
+      asleep_(spheres, 0),
+      scale_(spheres, 0.0),
+      wake_limit_(spheres, 0.0),
+      frozen_F_(spheres, Vec3::Zero()),
+      frozen_T_(spheres, Vec3::Zero()) {
   index();
 }
 
@@ -28,15 +35,21 @@ void ActiveSet::rebuild(World& world, ContactLists& lists, ForceField& forces) {
   update(world, lists, forces);
 }
 
-std::size_t ActiveSet::sleep(World& world, ContactLists& lists, ForceField& forces, double mean_contact_force,
-                             const std::vector<Vec3>& x_at_build) {
-  scale_ = mean_contact_force;
+std::size_t ActiveSet::sleep(World& world, ContactLists& lists, ForceField& forces, const std::vector<Vec3>& x_at_build) {
+  // Each sphere's scale: the sum of its contacts' normal forces (Eq. 3).
   Particles& p = world.p;
-  const double F2 = (def_.sleep_force * scale_) * (def_.sleep_force * scale_);
+  std::fill(scale_.begin(), scale_.end(), 0.0);
+  if (forces.active())
+    for_each_closed_contact(world, lists, forces.effects().friction, [&](const ClosedContact& c) {
+      const double Fn = c.Fn(forces.law());
+      scale_[static_cast<std::size_t>(c.i)] += Fn;
+      if (c.j >= 0) scale_[static_cast<std::size_t>(c.j)] += Fn;
+    });
   const double v2 = def_.sleep_speed * def_.sleep_speed;
   std::size_t fell = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (asleep_[i] || p.is_driven(i)) continue;
+    const double F2 = (def_.sleep_force * scale_[i]) * (def_.sleep_force * scale_[i]);
     if (!(p.F[i].squaredNorm() <= F2 && p.v[i].squaredNorm() <= v2)) continue;
     if (p.rotates()) {
       const double r2 = p.r[i] * p.r[i];
@@ -45,6 +58,7 @@ std::size_t ActiveSet::sleep(World& world, ContactLists& lists, ForceField& forc
     }
     p.v[i].setZero();
     asleep_[i] = 1;
+    wake_limit_[i] = def_.wake_force * scale_[i];
     asleep_moved_.add((p.x[i] - x_at_build[i]).squaredNorm());
     ++fell;
   }
@@ -58,10 +72,10 @@ std::size_t ActiveSet::sleep(World& world, ContactLists& lists, ForceField& forc
 std::size_t ActiveSet::wake(World& world, ContactLists& lists, ForceField& forces) {
   if (sleeping_ == 0) return 0;
   const Particles& p = world.p;
-  const double F2 = wake_threshold() * wake_threshold();
   std::size_t woke = 0;
   for (const std::int32_t k : sleeping_list_) {
     const auto i = static_cast<std::size_t>(k);
+    const double F2 = wake_limit_[i] * wake_limit_[i];
     bool up = p.F[i].squaredNorm() > F2 || p.is_driven(i);
     if (!up && p.rotates()) up = p.T[i].squaredNorm() > F2 * p.r[i] * p.r[i];
     if (!up) continue;

@@ -11,10 +11,12 @@
 // side (forces/normal_law.hpp add_pair_forces, with the same law and the same bits as the loop):
 //
 //   sleep   at each check (every check_interval, and after each stop of the paper protocol):
-//           a free sphere with |F|, |T|/r < sleep_force x scale and |v|, |w| r < sleep_speed
-//           falls asleep; scale = the mean normal contact force (sim/residuals.hpp)
+//           a free sphere with |F|, |T|/r <= sleep_force x S and |v|, |w| r <= sleep_speed
+//           falls asleep, S the sum of its contacts' normal forces (a grain pushed by one
+//           contact, a rattler, has |F| = S: it is not at rest and does not sleep)
 //   wake    at every step, once the forces are known: a sleeping sphere whose |F| or |T|/r
-//           exceeds wake_force x scale wakes (before its half kick, so it moves this step)
+//           exceeds wake_force x S (S when it fell asleep) wakes (before its half kick, so it
+//           moves this step)
 //
 // A neighbour rebuild renumbers the pairs: the mask and sums are then made anew.
 #pragma once
@@ -37,10 +39,8 @@ class ActiveSet {
   const ActiveSetDef& def() const { return def_; }
   bool asleep(std::size_t i) const { return asleep_[i] != 0; }
   std::size_t sleeping() const { return sleeping_; }
-  /// The mean normal contact force at the last sleep check [N] (0 before the first).
-  double force_scale() const { return scale_; }
-  /// |F| and |T| / r of a sleeping sphere stay at or below this [N] (it wakes otherwise).
-  double wake_threshold() const { return def_.wake_force * scale_; }
+  /// |F| and |T| / r of sleeping sphere i stay at or below this [N] (it wakes otherwise).
+  double wake_threshold(std::size_t i) const { return wake_limit_[i]; }
   /// The frozen force and torque of sphere i (zero while it is awake).
   const Vec3& frozen_force(std::size_t i) const { return frozen_F_[i]; }
   /// What the integrator moves: the awake spheres, and the sleepers' largest displacements.
@@ -50,11 +50,9 @@ class ActiveSet {
   void add_frozen(Particles& p) const;
   /// After a neighbour rebuild (new pair numbering): the mask and the frozen sums anew.
   void rebuild(World& world, ContactLists& lists, ForceField& forces);
-  /// A sleep check; `mean_contact_force` becomes the scale; `x_at_build`: the positions of the
-  /// last neighbour build (a sleeper's displacement since then still counts towards the skin).
-  /// Returns how many fell asleep.
-  std::size_t sleep(World& world, ContactLists& lists, ForceField& forces, double mean_contact_force,
-                    const std::vector<Vec3>& x_at_build);
+  /// A sleep check; `x_at_build`: the positions of the last neighbour build (a sleeper's
+  /// displacement since then still counts towards the skin). Returns how many fell asleep.
+  std::size_t sleep(World& world, ContactLists& lists, ForceField& forces, const std::vector<Vec3>& x_at_build);
   /// After the forces of a step: wakes the sleeping spheres above the threshold, and every driven
   /// one. Returns how many woke.
   std::size_t wake(World& world, ContactLists& lists, ForceField& forces);
@@ -77,13 +75,14 @@ class ActiveSet {
 
   ActiveSetDef def_;
   std::vector<std::uint8_t> asleep_;
+  std::vector<double> scale_;       ///< per sphere: the sum of its contacts' normal forces at the last check [N]
+  std::vector<double> wake_limit_;  ///< per sleeping sphere: wake_force x its scale when it fell asleep [N]
   std::vector<Vec3> frozen_F_, frozen_T_;
   std::vector<std::uint8_t> awake_;                ///< per pair of the masked list: 1 if live
   std::vector<std::uint8_t> to_frozen_, to_live_;  ///< scratch of update(), one byte per pair
   std::vector<std::int32_t> awake_list_, sleeping_list_;
   Neighbours::LargestTwo asleep_moved_;  ///< of the sleepers (and some since woken: an upper bound)
   std::size_t sleeping_ = 0;
-  double scale_ = 0.0;
   double sphere_steps_ = 0.0, awake_sphere_steps_ = 0.0;
 };
 

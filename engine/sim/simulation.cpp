@@ -78,7 +78,7 @@ void Simulation::wake_now() { active_->wake(world_, neighbours_.lists(), forces_
 void Simulation::sleep_check() {
   if (!active_) return;
   since_sleep_check_ = 0;
-  active_->sleep(world_, neighbours_.lists(), forces_, residuals().mean_contact_force, neighbours_.x_at_build());
+  active_->sleep(world_, neighbours_.lists(), forces_, neighbours_.x_at_build());
 }
 
 void Simulation::set_active_set(const std::optional<ActiveSetDef>& def) {

@@ -28,10 +28,11 @@ ActiveSetDef active_set(double sleep_force, double wake_force) {
 }
 
 // The four-grain frictionless soft-particle (its one state of rest) under the paper's protocol,
-// with and without an active set whose grains wake at 1e-4 of the mean contact force: every
-// point ends below a force ratio of 2e-4 (a sleeping grain may keep up to the wake threshold of
-// the mean at the last check) and the wall forces agree within 1e-3 of the largest — ten times
-// that ratio, the tolerance the other relaxation tests state (measured: 4e-5). The set must
+// with and without an active set whose grains wake at 1e-4 of their own contact forces: every
+// point ends below a force ratio of 5e-4 (a sleeping grain may keep up to 1e-4 of the sum of its
+// four or five contact forces, each about the mean) and the wall forces agree within 5e-3 of the
+// largest — ten times that ratio, the tolerance the other relaxation tests state (measured:
+// 4e-5). The set must
 // have slept: less than 0.9 of the sphere-steps integrated, on average over the points (at
 // Delta_n = 0.03 the four grains stay above the sleep threshold to the end: measured 1.0, 0.88
 // and 0.65).
@@ -44,7 +45,7 @@ TEST(ActiveSet, ReachesTheRestOfTheFullIntegrationOnTheJammedSoftParticle) {
     p.active_set = active_set(1e-5, 1e-4);
     s.relaxation = p;
   });
-  testing::expect_same_rest(full, active, 2e-4, 1e-3);
+  testing::expect_same_rest(full, active, 5e-4, 5e-3);
   double awake = 0.0;
   for (const PointResult& p : active) {
     ASSERT_TRUE(p.awake_fraction.has_value());
@@ -92,8 +93,8 @@ std::vector<Vec3> full_forces(const Simulation& sim, ForceField& field) {
 // wall moves 1 mm into it at 0.02 m/s and the run goes on 0.05 s after it stops. At every step,
 // every sleeping sphere's net force, evaluated in full and independently of the active set's
 // frozen sums, is at most the wake threshold; and the active set's own net force of every sphere
-// is that full one (within 1e-9 of the mean contact force: the frozen sums are exact but for
-// rounding). The scene must test something: most spheres asleep when the wall starts, and the
+// is that full one (the frozen sums are exact but for rounding: within 1e-9 of the largest net
+// force). The scene must test something: most spheres asleep when the wall starts, and the
 // wall wakes some of them.
 TEST(ActiveSet, NeverLeavesAGrainAsleepAboveTheWakeThreshold) {
   const SceneDef scene = squeezed_packing_with_a_wall();
@@ -117,11 +118,12 @@ TEST(ActiveSet, NeverLeavesAGrainAsleepAboveTheWakeThreshold) {
     sim.step();
     if (moving != sim.drivers_moving()) continue;  // the wall's velocity was zeroed after this step's forces
     const std::vector<Vec3> F = full_forces(sim, field);
-    const double limit = set.wake_threshold() * (1.0 + 1e-9);
+    double largest = 0.0;
+    for (const Vec3& f : F) largest = std::max(largest, f.norm());
     for (std::size_t i = 0; i < n; ++i) {
-      ASSERT_NEAR((sim.particles().F[i] - F[i]).norm(), 0.0, 1e-9 * set.force_scale()) << "sphere " << i << ", step " << s;
+      ASSERT_NEAR((sim.particles().F[i] - F[i]).norm(), 0.0, 1e-9 * largest) << "sphere " << i << ", step " << s;
       if (set.asleep(i)) {
-        ASSERT_LE(F[i].norm(), limit) << "sphere " << i << " asleep at step " << s;
+        ASSERT_LE(F[i].norm(), set.wake_threshold(i) * (1.0 + 1e-9)) << "sphere " << i << " asleep at step " << s;
       }
     }
     least_asleep = std::min(least_asleep, set.sleeping());
@@ -132,7 +134,10 @@ TEST(ActiveSet, NeverLeavesAGrainAsleepAboveTheWakeThreshold) {
 }
 
 // Frictionless packing of 300 grains, squeezed: the converged relaxation (to a force ratio of
-// 1e-6) and the same with an active set (sleep at 1e-7, wake at 1e-6) bring it to the same rest:
+// 1e-6) and the same with an active set (sleep at 1e-9, wake at 1e-8 of each grain's own contact
+// forces: the largest grains' sum is up to a hundred times the mean contact force, and with
+// 1e-7 the sleepers kept the ratio above 1e-6) bring it to the same rest (measured: 93% of the
+// grain-steps integrated):
 // the sum of the normal contact forces and the elastic energy within 1e-5 of themselves (not the
 // mean contact force: a contact closed with no force in one rest and open in the other changes
 // the count; measured 892 and 893 contacts, the energies equal to 1e-11).
@@ -143,7 +148,7 @@ TEST(ActiveSet, ConvergedRelaxationReachesTheSameRestAsWithout) {
   c.check_interval = 0.01;
   Simulation full(scene), active(scene);
   const RelaxationReport a = relax(full, c);
-  c.active_set = active_set(1e-7, 1e-6);
+  c.active_set = active_set(1e-9, 1e-8);
   const RelaxationReport b = relax(active, c);
   ASSERT_TRUE(a.converged.value_or(false));
   ASSERT_TRUE(b.converged.value_or(false));
