@@ -45,7 +45,7 @@ std::size_t FastCheck::agreeing() const {
 FastCheck fast_check(const std::string& data, const std::string& reference, const std::string& candidate,
                      const std::vector<std::uint64_t>& seeds, const std::vector<double>& Fn_delta_n,
                      const std::vector<double>& kt_delta_n) {
-  if (seeds.size() < 3) throw InputError(fmt::format("the check needs at least 3 seeds (a jackknife), not {}", seeds.size()));
+  if (seeds.size() < 2) throw InputError(fmt::format("the check needs at least 2 seeds (a jackknife), not {}", seeds.size()));
   // Each profile's values and jackknife standard errors, from a comparison that takes it as the
   // reference; the first also gives the candidate's cost.
   const AccuracyReport ab = accuracy_report(pair_study(reference, candidate, seeds, Fn_delta_n, kt_delta_n), data);

@@ -24,7 +24,7 @@ void validate_active_set(const ActiveSetDef& a, const std::string& key) {
   non_negative(a.sleep_force, "sleep_force", "");
   non_negative(a.sleep_speed, "sleep_speed", " m/s");
   if (!(a.wake_force > 0.0 && std::isfinite(a.wake_force)))
-    fail(key + ".wake_force", fmt::format("{} is not allowed; allowed: > 0 (a fraction of the mean contact force)", a.wake_force));
+    fail(key + ".wake_force", fmt::format("{} is not allowed; allowed: > 0 (a fraction of the sphere's own contact forces)", a.wake_force));
   if (!(a.wake_force >= a.sleep_force))
     fail(key + ".wake_force",
          fmt::format("{} is below sleep_force = {}: a grain put to sleep would wake at once; allowed: wake_force >= sleep_force",

@@ -5,7 +5,9 @@
 #      an unknown key, a setting `of` one that does not run, a key of a section the base lacks;
 #   2. make accuracy runs the reference and every setting, writes the table, the Pareto data and
 #      the figure; the reference compared with itself has zero error, every setting a row;
-#   3. a second make accuracy recomputes nothing; changing one setting reruns that one only.
+#   3. a second make accuracy recomputes nothing; changing one setting reruns that one only;
+#   4. softpack-accuracy check compares two of its profiles on their seeds (the fast profile's
+#      confirmation): every quantity with both standard errors, the costs; different seeds refused.
 #
 #   test_accuracy.sh BUILD_DIR SOURCE_DIR
 source "$(dirname "$0")/common.sh"
@@ -84,3 +86,26 @@ mk -j2 accuracy > "$work/a3.log" 2>&1 || { cat "$work/a3.log"; fail "make accura
 grep -qE '^normal: stops-1 ' "$work/a3.log" || { cat "$work/a3.log"; fail "the changed setting was not rerun"; }
 ! grep -qE '^(normal|tangential|packing): (reference|base) ' "$work/a3.log" || { cat "$work/a3.log"; fail "an unchanged setting was rerun"; }
 pass "a second make accuracy recomputes nothing; a changed setting reruns alone"
+
+# --- 4. one profile against another (softpack-accuracy check, make fast-check's comparison) -----
+"$acc" check --data data/accuracy --reference data/accuracy/profiles/base.yaml --candidate data/accuracy/profiles/stops-1.yaml \
+  --Fn-at 0.5 0.7 --kt-at 0.6 0.7 --out-dir "$work/check" > "$work/check.log" 2>&1 || { cat "$work/check.log"; fail "softpack-accuracy check"; }
+grep -q '^# The stops-1 profile against the base profile on seeds 101, 102' "$work/check/table.md" || fail "check table: $(head -3 "$work/check/table.md")"
+/usr/bin/python3 - "$work/check/check.json" <<'PY' || fail "check.json"
+import json, sys
+c = json.load(open(sys.argv[1]))
+assert len(c["rows"]) == 2 * (4 + 3 + 2 + 2), len(c["rows"])
+assert c["reference_cpu"] > 0 and c["candidate_cpu"] > 0 and c["cpu_ratio"] > 0, c
+assert c["agreeing"] <= c["compared"] <= len(c["rows"]), c
+for r in c["rows"]:
+    if r["established"]:
+        assert r["reference_sigma"] > 0 and r["candidate_sigma"] > 0, r
+        assert r["agrees"] == (abs(r["z"]) <= 1.0), r
+PY
+set +e
+"$acc" check --data data/accuracy --reference data/accuracy/profiles/reference.yaml --candidate data/accuracy/profiles/base.yaml \
+  --out-dir "$work/check2" > /dev/null 2> "$work/err"
+code=$?
+set -e
+[ $code -eq 2 ] && grep -q "different seeds" "$work/err" || fail "profiles of different seeds: exit $code, $(cat "$work/err")"
+pass "softpack-accuracy check: every quantity with both standard errors and the costs; different seeds refused"
