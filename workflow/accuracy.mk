@@ -15,23 +15,49 @@ ACCURACY_DIR ?= $(DATA)/accuracy
 ACCURACY_REPORT := $(ACCURACY_DIR)/report
 ACCURACY_TOOL := $(BUILD)/engine/softpack-accuracy
 
-.PHONY: accuracy accuracy-report
+.PHONY: accuracy accuracy-report calibrate calibrate-report
 accuracy: | $(TOOLS)  ## the fidelity study: every knob's error against its CPU time (DATA/accuracy/report/)
-	@mkdir -p $(ACCURACY_DIR)/profiles
-	@settings=$$($(ACCURACY_TOOL) profiles --study $(ACCURACY_STUDY) --out-dir $(ACCURACY_DIR)/profiles) || exit 2; \
-	chosen="$(ACCURACY_SETTINGS)"; n=0; total=$$(echo $$settings | wc -w); \
-	for s in $$settings; do n=$$((n + 1)); \
-	  if [ -n "$$chosen" ] && [ $$s != reference ] && ! echo " $$chosen " | grep -q " $$s "; then continue; fi; \
-	  echo "accuracy: setting $$n/$$total: $$s ($(ACCURACY_DIR)/$$s)"; mkdir -p $(ACCURACY_DIR)/$$s; \
-	  if $(MAKE) --no-print-directory PROFILE=$$s PROFILE_FILE=$(ACCURACY_DIR)/profiles/$$s.yaml DATA=$(ACCURACY_DIR) \
-	    FROM_SCRATCH=1 tangential > $(ACCURACY_DIR)/$$s/make.log 2>&1; then rm -f $(ACCURACY_DIR)/$$s/failed.txt; \
-	  else [ $$s != reference ] || { tail -20 $(ACCURACY_DIR)/$$s/make.log; exit 1; }; \
-	    grep -h -m1 -e 'numerical error' -e 'error:' $(ACCURACY_DIR)/$$s/*/*.log $(ACCURACY_DIR)/$$s/make.log 2>/dev/null | head -1 \
-	      > $(ACCURACY_DIR)/$$s/failed.txt; \
-	    echo "accuracy: setting $$s FAILED, reported as such: $$(cat $(ACCURACY_DIR)/$$s/failed.txt)"; fi; \
-	  grep -E '^(pack|normal|tangential):' $(ACCURACY_DIR)/$$s/make.log || true; \
-	done
+	@$(call run_study,$(ACCURACY_STUDY),$(ACCURACY_DIR),$(ACCURACY_SETTINGS))
 	@$(MAKE) --no-print-directory accuracy-report
+
+# run_study STUDY DIR SETTINGS: the profile of the reference and of every setting of STUDY
+# (softpack-accuracy profiles), then each one's packings and sweeps by the profile DAG in DIR
+# (SETTINGS: only those, and the reference). A setting whose run fails is recorded as failed.
+define run_study
+mkdir -p $(2)/profiles; \
+settings=$$($(ACCURACY_TOOL) profiles --study $(1) --out-dir $(2)/profiles) || exit 2; \
+chosen="$(3)"; n=0; total=$$(echo $$settings | wc -w); \
+for s in $$settings; do n=$$((n + 1)); \
+  if [ -n "$$chosen" ] && [ $$s != reference ] && ! echo " $$chosen " | grep -q " $$s "; then continue; fi; \
+  echo "study $(1): setting $$n/$$total: $$s ($(2)/$$s)"; mkdir -p $(2)/$$s; \
+  if $(MAKE) --no-print-directory PROFILE=$$s PROFILE_FILE=$(2)/profiles/$$s.yaml DATA=$(2) \
+    FROM_SCRATCH=1 tangential > $(2)/$$s/make.log 2>&1; then rm -f $(2)/$$s/failed.txt; \
+  else [ $$s != reference ] || { tail -20 $(2)/$$s/make.log; exit 1; }; \
+    grep -h -m1 -e 'numerical error' -e 'error:' $(2)/$$s/*/*.log $(2)/$$s/make.log 2>/dev/null | head -1 \
+      > $(2)/$$s/failed.txt; \
+    echo "study $(1): setting $$s FAILED, reported as such: $$(cat $(2)/$$s/failed.txt)"; fi; \
+  grep -E '^(pack|normal|tangential):' $(2)/$$s/make.log || true; \
+done
+endef
+
+# The calibration study (issue 14, paper/calibration.md): every open parameter of the paper
+# profile varied around the base on held-out seeds, each setting run as above; the report gives
+# every setting's laws and packings with their seed-to-seed errors and their change against the
+# base. CALIBRATE_SETTINGS=name... runs only those (and the base).
+CALIBRATE_STUDY ?= experiments/calibrate.yaml
+CALIBRATE_DIR ?= data/calibrate
+calibrate: | $(TOOLS)  ## the calibration study: each open parameter's effect on the laws (CALIBRATE_DIR/report/)
+	@$(call run_study,$(CALIBRATE_STUDY),$(CALIBRATE_DIR),$(CALIBRATE_SETTINGS))
+	@$(MAKE) --no-print-directory calibrate-report
+
+calibrate-report: | $(TOOLS)  ## the calibration table and figure from the settings run so far
+	@mkdir -p $(CALIBRATE_DIR)/report
+	@$(ACCURACY_TOOL) calibrate --study $(CALIBRATE_STUDY) --data $(CALIBRATE_DIR) --out-dir $(CALIBRATE_DIR)/report \
+	  --title "Calibration ($(CALIBRATE_STUDY), release $(VERSION))" > /dev/null
+	@for ext in pdf png; do gnuplot -e "data='$(CALIBRATE_DIR)/report/onset.dat'; out='$(CALIBRATE_DIR)/report/onset.tmp.$$ext'" \
+	  figures/calibration_onset.gp && mv $(CALIBRATE_DIR)/report/onset.tmp.$$ext $(CALIBRATE_DIR)/report/onset.$$ext \
+	  || { echo "calibrate: FAILED to draw the figure"; exit 1; }; done
+	@echo "calibrate: $(CALIBRATE_DIR)/report/table.md, $(CALIBRATE_DIR)/report/onset.pdf"
 
 # The comparison and the figure from what has been run so far (settings not run are listed as such).
 accuracy-report: | $(TOOLS)  ## compare the settings run so far with the reference, draw the figure

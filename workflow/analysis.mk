@@ -24,7 +24,7 @@ $(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 | $(TOOLS)
 	@mkdir -p $(FIT_DIR) && $(call clear_stale,$(call fit_outputs,$(1)))
 	@$$(call from_archive,$(call fit_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "fit: $(PROFILE) $(1) Eqs. 7-8 -> $(FIT_DIR)/$(1).json (log $(FIT_DIR)/$(1).log)"; \
-	  $(RUN) $(BUILD)/engine/softpack-fit --average $(AVERAGE_DIR)/$(1).h5 --out $(FIT_DIR)/$(1).json \
+	  $(RUN) $(BUILD)/engine/softpack-fit --average $(AVERAGE_DIR)/$(1).h5 --config $(PROFILE_FILE) --out $(FIT_DIR)/$(1).json \
 	    --gnuplot $(FIT_DIR)/$(1).gp 2> $(FIT_DIR)/$(1).log \
 	  || { echo "fit: FAILED for $(PROFILE) $(1); see $(FIT_DIR)/$(1).log"; tail -5 $(FIT_DIR)/$(1).log; exit 1; }; }
 endef
@@ -33,7 +33,7 @@ $(foreach scene,$(SCENES),$(eval $(call analysis_rules,$(scene))))
 AVERAGES := $(foreach scene,$(SCENES),$(call average_outputs,$(scene)))
 FITS := $(foreach scene,$(SCENES),$(call fit_outputs,$(scene)))
 TABLES := $(TABLE_DIR)/table1.md $(TABLE_DIR)/table2.md $(TABLE_DIR)/table1.tex $(TABLE_DIR)/table2.tex \
-  $(TABLE_DIR)/published.gp
+  $(TABLE_DIR)/published.gp $(TABLE_DIR)/kt_unit.md
 
 .PHONY: averages fits tables figures
 averages: $(AVERAGES)  ## mean and standard error over the seeds (DATA/PROFILE/averages/)
@@ -42,10 +42,12 @@ fits: $(FITS)  ## Eq. 7 and Eq. 8 fitted to the averages (DATA/PROFILE/fits/*.js
 tables: $(TABLES)  ## Tables 1 and 2: ours beside the paper's (DATA/PROFILE/tables/; printed)
 	@cat $(TABLE_DIR)/table1.md; echo; cat $(TABLE_DIR)/table2.md
 
-$(TABLES) &: $(filter %.json,$(FITS)) $(PUBLISHED) | $(TOOLS)
+# kt_unit.md: the readings of Table 2's unit tested on kt/Fn (analysis/kt_unit.hpp), from the averages.
+$(TABLES) &: $(filter %.json,$(FITS)) $(filter %.h5,$(AVERAGES)) $(PUBLISHED) | $(TOOLS)
 	@mkdir -p $(TABLE_DIR) && $(call clear_stale,$(TABLES))
 	@$(RUN) $(BUILD)/engine/softpack-table --fits $(filter %.json,$(FITS)) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
-	  --gnuplot $(TABLE_DIR)/published.gp > /dev/null 2> $(TABLE_DIR)/tables.log \
+	  --gnuplot $(TABLE_DIR)/published.gp --averages $(filter %.h5,$(AVERAGES)) \
+	  --Rs $$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot | sed 's/^Rs=\([^;]*\);.*/\1/') > /dev/null 2> $(TABLE_DIR)/tables.log \
 	  || { echo "tables: FAILED for $(PROFILE); see $(TABLE_DIR)/tables.log"; cat $(TABLE_DIR)/tables.log; exit 1; }
 
 # Figures 3-6 as PDF (the report) and PNG (the screen). Every figure script reads the averages

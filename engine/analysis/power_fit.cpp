@@ -9,6 +9,7 @@
 #include <numeric>
 #include <unsupported/Eigen/NonLinearOptimization>
 
+#include "analysis/fit_points.hpp"
 #include "core/error.hpp"
 
 namespace softpack::fit {
@@ -19,10 +20,7 @@ using Eigen::VectorXd;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// The fitted points; s = σ (weighted) or 1 (unweighted).
-struct Data {
-  std::vector<double> x, y, s;
-};
+using Data = FitPoints;
 
 /// Eq. 7: a x^b + c, parameters (a, b, c).
 struct NormalModel {
@@ -166,74 +164,39 @@ MatrixXd covariance(const Data& data, const Model& model, const VectorXd& p, dou
   return s2 * scale.cwiseInverse().asDiagonal() * inner * scale.cwiseInverse().asDiagonal();
 }
 
-void check_lengths(std::span<const double> x, std::span<const double> y, std::span<const double> e, const char* yname) {
-  if (x.size() != y.size())
-    throw InputError(fmt::format("delta_n has {} values but {} has {}; allowed: the same number", x.size(), yname, y.size()));
-  if (!e.empty() && e.size() != x.size())
-    throw InputError(fmt::format("delta_n has {} values but the standard errors have {}; allowed: the same number or none",
-                                 x.size(), e.size()));
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
-      throw InputError(fmt::format("point {} (delta_n = {}, {} = {}) is not finite; allowed: finite numbers", i, x[i], yname, y[i]));
-    if (!e.empty() && !(e[i] >= 0.0) )
-      throw InputError(fmt::format("point {} (delta_n = {}): standard error {} is not allowed; allowed: finite numbers >= 0", i,
-                                   x[i], e[i]));
-    if (!e.empty() && !std::isfinite(e[i]))
-      throw InputError(fmt::format("point {} (delta_n = {}): standard error {} is not finite", i, x[i], e[i]));
-  }
-}
-
-/// Indices of x in increasing order.
-std::vector<std::size_t> sorted_order(std::span<const double> x) {
-  std::vector<std::size_t> idx(x.size());
-  std::iota(idx.begin(), idx.end(), std::size_t{0});
-  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
-  return idx;
-}
-
-/// Fills d.s with σ (every selected σ > 0) or ones; records the choice.
-void choose_weights(Data& d, const std::vector<double>& sigma, bool have_errors, PowerLawFit& fit) {
-  fit.weighted = have_errors;
-  std::string why = have_errors ? "" : "unweighted: no standard errors given";
-  if (have_errors)
-    for (std::size_t i = 0; i < sigma.size(); ++i)
-      if (!(sigma[i] > 0.0)) {
-        fit.weighted = false;
-        why = fmt::format("unweighted: the standard error is {} at delta_n = {}", sigma[i], d.x[i]);
-        break;
-      }
-  d.s = fit.weighted ? sigma : std::vector<double>(d.x.size(), 1.0);
-  fit.notes.push_back(fit.weighted ? "weighted by 1/stderr^2" : why);
-}
-
-std::string list_of(const std::vector<double>& v) {
-  std::string s;
-  for (double x : v) s += (s.empty() ? "" : ", ") + fmt::format("{}", x);
-  return s;
-}
-
 }  // namespace
 
-PowerLawFit fit_normal_law(std::span<const double> delta_n, std::span<const double> force, std::span<const double> error) {
+PowerLawFit fit_normal_law(std::span<const double> delta_n, std::span<const double> force, std::span<const double> error,
+                           const FitOptions& options) {
   constexpr const char* law = "Eq. 7 fit of the normal force";
   check_lengths(delta_n, force, error, "Fn");
   const std::vector<std::size_t> order = sorted_order(delta_n);
-  // The run of positive forces after the last non-positive one. A force within round-off of
-  // zero (a net force of ~1e-19 N left by summing grain forces) counts as zero, not positive.
+  check_options(options, law);
+  // The run of loaded points after the last unloaded one, within delta_n_max. A force within
+  // round-off of zero (a net force of ~1e-19 N left by summing grain forces) is never loaded;
+  // a larger onset_force also leaves out the grazing forces of a few grains near the onset.
   double largest = 0.0;
-  for (const double F : force) largest = std::max(largest, std::abs(F));
-  const double zero = kZeroForceRelative * largest;
-  std::size_t first = 0;
-  for (std::size_t k = 0; k < order.size(); ++k)
+  for (std::size_t i = 0; i < force.size(); ++i)
+    if (delta_n[i] <= options.delta_n_max) largest = std::max(largest, std::abs(force[i]));
+  const double zero = options.onset_force * largest;
+  std::size_t first = 0, end = order.size();
+  while (end > 0 && delta_n[order[end - 1]] > options.delta_n_max) --end;
+  for (std::size_t k = 0; k < end; ++k)
     if (!(force[order[k]] > zero) || !(delta_n[order[k]] > 0.0)) first = k + 1;
   std::vector<double> isolated;
   for (std::size_t k = 0; k < first; ++k)
     if (force[order[k]] > zero) isolated.push_back(delta_n[order[k]]);
 
   PowerLawFit fit;
+  fit.onset_force = zero;
+  if (end < order.size())
+    fit.notes.push_back(fmt::format("left out: delta_n above delta_n_max = {} ({} point{})", options.delta_n_max,
+                                    order.size() - end, order.size() - end == 1 ? "" : "s"));
+  if (options.onset_force != kZeroForceRelative)
+    fit.notes.push_back(fmt::format("loaded: Fn > {:.3g} N ({:g} of the largest force)", zero, options.onset_force));
   Data d;
   std::vector<double> sigma;
-  for (std::size_t k = first; k < order.size(); ++k) {
+  for (std::size_t k = first; k < end; ++k) {
     d.x.push_back(delta_n[order[k]]);
     d.y.push_back(force[order[k]]);
     if (!error.empty()) sigma.push_back(error[order[k]]);
@@ -252,7 +215,7 @@ PowerLawFit fit_normal_law(std::span<const double> delta_n, std::span<const doub
   if (!isolated.empty())
     fit.notes.push_back(fmt::format("left out: positive force before a zero at delta_n = {} (Eq. 7: F = 0 below delta)",
                                     list_of(isolated)));
-  choose_weights(d, sigma, !error.empty(), fit);
+  choose_weights(d, sigma, !error.empty(), options.weighting, fit);
 
   const NormalModel model;
   // Start 1: log-log line, c = 0.
@@ -307,17 +270,23 @@ PowerLawFit fit_normal_law(std::span<const double> delta_n, std::span<const doub
 }
 
 PowerLawFit fit_tangential_law(std::span<const double> delta_n, std::span<const double> kt, std::span<const double> error,
-                               double delta) {
+                               double delta, const FitOptions& options) {
   constexpr const char* law = "Eq. 8 fit of the tangential spring constant";
   check_lengths(delta_n, kt, error, "kt");
+  check_options(options, law);
   if (!(delta >= 0.0) || !std::isfinite(delta))
     throw InputError(fmt::format("{}: delta = {} is not allowed; allowed: a finite delta >= 0 (from the normal fit)", law, delta));
   const std::vector<std::size_t> order = sorted_order(delta_n);
   PowerLawFit fit;
   Data d;
   std::vector<double> sigma, dropped;
+  std::size_t beyond = 0;
   for (std::size_t i : order) {
     if (!(delta_n[i] >= delta) || !(delta_n[i] > 0.0)) continue;
+    if (delta_n[i] > options.delta_n_max) {
+      ++beyond;
+      continue;
+    }
     if (!(kt[i] > 0.0)) {
       dropped.push_back(delta_n[i]);
       continue;
@@ -339,7 +308,10 @@ PowerLawFit fit_tangential_law(std::span<const double> delta_n, std::span<const 
                                  kTangentialMinPoints));
   if (!dropped.empty())
     fit.notes.push_back(fmt::format("left out: kt <= 0 (or delta_n = delta) at delta_n = {}", list_of(dropped)));
-  choose_weights(d, sigma, !error.empty(), fit);
+  if (beyond > 0)
+    fit.notes.push_back(fmt::format("left out: delta_n above delta_n_max = {} ({} point{})", options.delta_n_max, beyond,
+                                    beyond == 1 ? "" : "s"));
+  choose_weights(d, sigma, !error.empty(), options.weighting, fit);
 
   TangentialModel model;
   model.delta = delta;

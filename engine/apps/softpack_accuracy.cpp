@@ -5,6 +5,9 @@
 //       rewritten only when its text changes) and prints their names, the reference first
 //   softpack-accuracy report --study ... --data DIR --out-dir DIR/report
 //       compares every setting with the reference: table.md, pareto.dat, report.json
+//   softpack-accuracy calibrate --study experiments/calibrate.yaml --data DIR --out-dir DIR/report
+//       the calibration study's report (report/calibration_report.hpp): every setting's laws and
+//       packings with their seed-to-seed errors, and their change against the base
 //   softpack-accuracy check --data DIR --reference experiments/paper.yaml --candidate experiments/fast.yaml --out-dir DIR
 //       the candidate profile against the reference profile on the seeds of both (the fast
 //       profile's confirmation, report/fast_check.hpp): table.md, check.json
@@ -21,6 +24,7 @@
 #include "io/atomic_file.hpp"
 #include "report/accuracy_report.hpp"
 #include "report/accuracy_study.hpp"
+#include "report/calibration_report.hpp"
 #include "report/fast_check.hpp"
 
 int main(int argc, char** argv) {
@@ -36,6 +40,12 @@ int main(int argc, char** argv) {
   report->add_option("--data", data_dir, "folder holding <setting>/{packings,normal,tangential}/ of every setting")->required();
   report->add_option("--out-dir", out_dir, "folder of table.md, pareto.dat, report.json")->required();
   report->add_option("--title", title, "first line of the table");
+  CLI::App* calibrate = app.add_subcommand("calibrate", "the calibration study's report: every setting's laws and packings, "
+                                                        "and their change against the base (table.md, onset.dat, calibration.json)");
+  calibrate->add_option("--study", study_path, "study file, e.g. experiments/calibrate.yaml")->required();
+  calibrate->add_option("--data", data_dir, "folder holding <setting>/{packings,normal,tangential}/ of every setting")->required();
+  calibrate->add_option("--out-dir", out_dir, "folder of table.md, onset.dat, calibration.json")->required();
+  calibrate->add_option("--title", title, "first line of the table");
   std::string reference_file, candidate_file;
   std::vector<double> Fn_at{0.3, 0.4, 0.5}, kt_at{0.4, 0.5};
   CLI::App* check = app.add_subcommand("check", "a profile against another on their seeds (the fast profile's confirmation)");
@@ -70,6 +80,10 @@ int main(int argc, char** argv) {
         if (read_text_file(path) != text) write_file_atomically(path, text);
         fmt::print("{}\n", s->name);
       }
+      return 0;
+    }
+    if (calibrate->parsed()) {
+      fmt::print("{}", write_calibration_report(calibration_report(study, data_dir), out_dir, title));
       return 0;
     }
     fmt::print("{}", write_accuracy_report(accuracy_report(study, data_dir), out_dir, title));

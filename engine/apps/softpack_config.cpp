@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "analysis/fit_options.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "config/profile.hpp"
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
     const auto seed_list = parse_seeds(root);
     const auto packing = parse_packing(root);
     const MeasurementSettings settings = parse_measurement(root);
+    fit::parse_fit_section(root);
     if (*seeds) fmt::print("{}\n", fmt::join(seed_list, " "));
     if (*scenes) {
       std::vector<std::string> names;

@@ -2,12 +2,16 @@
 // the normal force Fn(Δn), giving a, b, c and δ, then Eq. 8 to the tangential spring constant
 // kt(Δn) with that δ. Reads the average file of softpack-average (HDF5), writes the fit file
 // (JSON, formats/fit_file.hpp). The normal fit is essential: if it fails, exit 2 and no file; a
-// tangential fit that cannot be done is written as null with the reason.
+// tangential fit that cannot be done is written as null with the reason. With --config, the
+// profile's `fit` section says how (analysis/fit_options.hpp, docs/fit.md); without it, or without
+// the section, the fit is that of releases up to 0.4.0.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 
+#include "analysis/fit_options.hpp"
 #include "analysis/power_fit.hpp"
+#include "config/yaml_node.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/stopwatch.hpp"
@@ -19,24 +23,36 @@
 int main(int argc, char** argv) {
   using namespace softpack;
   CLI::App app{"softpack-fit: fit Eq. 7 to the normal force and Eq. 8 to the tangential spring constant of one scene"};
-  std::string average_path, out_path, gnuplot_path;
+  std::string average_path, out_path, gnuplot_path, config_path;
   bool quiet = false;
   app.add_option("--average", average_path, "seed averages of one scene (HDF5), e.g. data/paper/average/soft-solid.h5")
       ->required();
   app.add_option("--out", out_path, "fit file to write (JSON), e.g. data/paper/fit/soft-solid.json")->required();
   app.add_option("--gnuplot", gnuplot_path,
                  "also write the coefficients as gnuplot variables (a_solid=...; kt_a_solid=...; NaN when missing) for figures/*.gp");
+  app.add_option("--config", config_path,
+                 "the profile the averages were made with (experiments/<name>.yaml): its `fit` section says how to fit "
+                 "(weighting, onset_force, delta_n_max, compare; docs/fit.md)");
   app.add_flag("--quiet", quiet, "no summary line on stderr");
   if (const auto code = parse_command_line(app, argc, argv, "softpack-fit")) return *code;
 
   try {
     const Stopwatch watch;
     const AverageFile in = read_average_file(average_path);
+    fit::FitSection section;
+    if (!config_path.empty()) {
+      const ConfigNode root = ConfigNode::load_file(config_path);
+      section = fit::parse_fit_section(root);
+      if (const auto name = root.find("profile"); name && name->string() != in.profile)
+        throw InputError(fmt::format("{}: profile '{}', but {} was averaged for profile '{}'; give the profile it was made with",
+                                     config_path, name->string(), average_path, in.profile));
+    }
     FitFile out;
     out.scene = in.scene;
     out.input = {average_path, in.profile, in.code_version, in.seeds};
+    if (section.given) out.options = section.options;
     try {
-      out.normal = fit::fit_normal_law(in.delta_n, in.Fn, in.Fn_stderr);
+      out.normal = fit::fit_normal_law(in.delta_n, in.Fn, in.Fn_stderr, section.options);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: /normal: {}", average_path, e.what()));
     }
@@ -44,11 +60,26 @@ int main(int argc, char** argv) {
       out.tangential_reason = fmt::format("{} has no /kt group (no tangential sweep averaged)", average_path);
     } else {
       try {
-        out.tangential = fit::fit_tangential_law(in.kt_delta_n, in.kt, in.kt_stderr, out.normal.delta);
+        out.tangential = fit::fit_tangential_law(in.kt_delta_n, in.kt, in.kt_stderr, out.normal.delta, section.options);
       } catch (const InputError& e) {
         out.tangential_reason = fmt::format("/kt: {}", e.what());
       }
     }
+    // fit.compare: the same points with every weighting, side by side (the chosen one included).
+    if (section.compare)
+      for (const auto w : {fit::FitOptions::Weighting::standard_error, fit::FitOptions::Weighting::unweighted,
+                           fit::FitOptions::Weighting::relative}) {
+        fit::FitOptions o = section.options;
+        o.weighting = w;
+        FitFile::Alternative alt{fit::weighting_name(w), std::nullopt, std::nullopt, ""};
+        try {
+          alt.normal = fit::fit_normal_law(in.delta_n, in.Fn, in.Fn_stderr, o);
+          if (in.has_kt) alt.tangential = fit::fit_tangential_law(in.kt_delta_n, in.kt, in.kt_stderr, alt.normal->delta, o);
+        } catch (const InputError& e) {
+          alt.reason = e.what();
+        }
+        out.weightings.push_back(std::move(alt));
+      }
     out.code_version = code_version();
     out.seconds = watch.elapsed().wall;
     out.cpu_seconds = process_cpu_seconds();

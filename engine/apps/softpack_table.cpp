@@ -11,6 +11,8 @@
 #include <set>
 
 #include "analysis/fit_table.hpp"
+#include "analysis/kt_unit.hpp"
+#include "formats/average_file.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "config/yaml_node.hpp"
@@ -53,6 +55,12 @@ int main(int argc, char** argv) {
   app.add_option("--gnuplot", gnuplot_path,
                  "also write the published coefficients as gnuplot variables (paper_a_solid=...; paper_kt_a_soft=...) for "
                  "figures/*.gp");
+  std::vector<std::string> average_paths;
+  double Rs = 0.0;
+  auto* averages = app.add_option("--averages", average_paths,
+                                  "seed averages of softpack-average, one per scene (any order): also write kt_unit.md, the "
+                                  "readings of Table 2's unit tested on kt/Fn (needs --Rs)");
+  app.add_option("--Rs", Rs, "shell radius [m] of the profile (softpack-config PROFILE gnuplot), for kt_unit.md")->needs(averages);
   if (const auto code = parse_command_line(app, argc, argv, "softpack-table")) return *code;
 
   try {
@@ -102,6 +110,27 @@ int main(int argc, char** argv) {
         gp += fmt::format("paper_kt_delta_{}={}\n", sfx, value(t1.columns[i], "delta"));
       }
       write_file_atomically(gnuplot_path, gp);
+    }
+    if (!average_paths.empty()) {
+      if (!(Rs > 0.0)) throw InputError("--averages needs --Rs, the shell radius in metres (> 0)");
+      const auto readings = table::kt_readings(Rs);
+      std::vector<table::KtUnitScene> scenes;
+      for (const std::string& path : average_paths) {
+        const AverageFile a = read_average_file(path);
+        if (!a.has_kt) throw InputError(fmt::format("{}: no /kt group: kt_unit.md needs the tangential averages", path));
+        const auto law = [&](const char* which, std::initializer_list<const char*> keys) {
+          const ConfigNode s = root.at(which).at(a.scene);
+          table::PublishedLaw l;
+          double* dst[] = {&l.a, &l.b, &l.c};
+          std::size_t k = 0;
+          for (const char* key : keys) *dst[k++] = s.at(key).number();
+          l.delta = root.at("table1").at(a.scene).at("delta").number();
+          return l;
+        };
+        scenes.push_back(table::kt_unit_scene(a.scene, a.delta_n, a.Fn, a.Fn_stderr, a.kt_delta_n, a.kt, a.kt_stderr,
+                                              law("table1", {"a", "b", "c"}), law("table2", {"a", "b", "c"}), readings));
+      }
+      write_file_atomically(out("kt_unit.md"), table::kt_unit_markdown(scenes, readings) + "\n<!-- " + provenance + " -->\n");
     }
     fmt::print("{}\n{}", md1, md2);
     return 0;

@@ -12,7 +12,8 @@ namespace softpack {
 
 const std::vector<std::string>& profile_sections() {
   static const std::vector<std::string> sections{"profile",    "description", "seeds",  "material",   "packing",
-                                                 "simulation", "relaxation",  "normal", "tangential", "watchdog"};
+                                                 "simulation", "relaxation",  "normal", "tangential", "watchdog",
+                                                 "fit"};
   return sections;
 }
 
@@ -26,7 +27,9 @@ const std::vector<std::string>& stage_sections(const std::string& stage) {
       {"packing", {"packing"}},
       {"normal", {"packing", "material", "simulation", "relaxation", "normal"}},
       {"tangential", {"packing", "material", "simulation", "relaxation", "normal", "tangential"}},
-      {"average", {"seeds", "packing", "material", "simulation", "relaxation", "normal", "tangential"}},
+      // The average stage's results are the averages and the fits (their `fit` section is read by
+      // softpack-fit only, but averaging costs seconds: one stamp for both).
+      {"average", {"seeds", "packing", "material", "simulation", "relaxation", "normal", "tangential", "fit"}},
   };
   const auto it = sections.find(stage);
   if (it == sections.end())
@@ -34,7 +37,12 @@ const std::vector<std::string>& stage_sections(const std::string& stage) {
   return it->second;
 }
 
+bool optional_section(const std::string& section) { return section == "fit"; }
+
 std::string section_text(const ConfigNode& root, const std::string& section) {
+  // An optional section left out is no text: a profile without it has the stamps it had before
+  // the section existed (and the archives made then stay valid).
+  if (optional_section(section) && !root.has(section)) return "";
   YAML::Emitter out;
   out << YAML::BeginMap << YAML::Key << section << YAML::Value << root.at(section).yaml() << YAML::EndMap;
   return std::string(out.c_str()) + "\n";

@@ -22,8 +22,11 @@ const std::vector<std::string>& profile_stages();
 /// (free text) and `watchdog` (when to stop a run gone wrong; it changes no result) are in none.
 const std::vector<std::string>& stage_sections(const std::string& stage);
 
+/// Sections a profile may leave out (`fit`: the fit's defaults, analysis/fit_options.hpp).
+bool optional_section(const std::string& section);
+
 /// Canonical text of a section (YAML, keys in file order, comments dropped), recorded as the
-/// provenance of the outputs that depend on it.
+/// provenance of the outputs that depend on it; "" for an optional section left out.
 std::string section_text(const ConfigNode& root, const std::string& section);
 
 /// The canonical text of a stage's sections, concatenated: what its results depend on.

@@ -47,6 +47,7 @@ json law(const PowerLawFit& f, bool normal) {
   if (!normal) j["delta_used"] = number_or_null(f.delta);
   j["points"] = f.points;
   j["weighted"] = f.weighted;
+  if (f.weighting == "relative") j["weighting"] = f.weighting;
   j["chi2_per_dof"] = number_or_null(f.chi2_per_dof);
   j["range"] = json::array({f.dn_min, f.dn_max});
   json cov = json::array();
@@ -88,6 +89,23 @@ std::string fit_file_text(const FitFile& f) {
   out[kNormal] = law(f.normal, true);
   out[kTangential] = f.tangential ? law(*f.tangential, false) : json(nullptr);
   if (!f.tangential) out["tangential_reason"] = f.tangential_reason;
+  if (f.options) {
+    const fit::FitOptions& o = *f.options;
+    out["options"] = {{"weighting", fit::weighting_name(o.weighting)},
+                      {"onset_force", o.onset_force},
+                      {"delta_n_max", number_or_null(o.delta_n_max)}};
+  }
+  if (!f.weightings.empty()) {
+    json alt;
+    for (const FitFile::Alternative& w : f.weightings) {
+      json j;
+      j[kNormal] = w.normal ? law(*w.normal, true) : json(nullptr);
+      j[kTangential] = w.tangential ? law(*w.tangential, false) : json(nullptr);
+      if (!w.reason.empty()) j["reason"] = w.reason;
+      alt[w.weighting] = j;
+    }
+    out["weightings"] = alt;
+  }
   out["errors"] =
       "standard errors from s^2 (J^T W J)^-1 with s^2 = chi2/(n - p) (chi2_per_dof; W = 1/stderr^2 when weighted, else 1); "
       "delta_error by first-order propagation with the full covariance of (a, b, c); tangential c = -a delta^b with delta "

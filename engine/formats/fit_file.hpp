@@ -6,6 +6,9 @@
 //               "covariance": [[…]], "notes": […]},
 //    "tangential": {the same without delta/delta_error, plus "delta_used"} or null,
 //    "tangential_reason": "…" (only when "tangential" is null),
+//    "options": {"weighting", "onset_force", "delta_n_max"}   (only when the profile has a `fit` section),
+//    "weightings": {"stderr": {"normal", "tangential"}, "unweighted": …, "relative": …}
+//                  (only with fit.compare: the same points fitted with each weighting, side by side),
 //    "errors": "…", "models": {…},
 //    "provenance": {"program", "code_version", "inputs": [{"path", "scene", "profile",
 //                   "code_version", "seeds"}], "seconds", "cpu_seconds"}}
@@ -18,6 +21,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "analysis/fit_table.hpp"
 #include "analysis/power_fit.hpp"
@@ -30,6 +34,13 @@ struct FitFile {
   fit::PowerLawFit normal;                     ///< Eq. 7
   std::optional<fit::PowerLawFit> tangential;  ///< Eq. 8, or none with the reason:
   std::string tangential_reason;
+  std::optional<fit::FitOptions> options;  ///< the profile's `fit` section, when it has one
+  struct Alternative {                     ///< the fit with another weighting (fit.compare)
+    std::string weighting;
+    std::optional<fit::PowerLawFit> normal, tangential;
+    std::string reason;  ///< why a law could not be fitted
+  };
+  std::vector<Alternative> weightings;
   struct Input {  ///< the average file fitted (formats/average_file.hpp)
     std::string path, profile, code_version;
     std::int64_t seeds = 0;

@@ -17,6 +17,7 @@
 #include "formats/sweep_file.hpp"
 #include "io/atomic_file.hpp"
 #include "report/stage_timing.hpp"
+#include "report/study_runs.hpp"
 
 namespace softpack {
 namespace {
@@ -34,37 +35,7 @@ struct SeedSets {
 // The setting whose runs hold a setting's results (itself, or the one it is `of`).
 const StudySetting& source(const AccuracyStudy& st, const StudySetting& s) { return s.runs() ? s : st.setting(s.of); }
 
-std::string sweep_path(const std::string& dir, const std::string& setting, const std::string& stage, const std::string& scene,
-                       std::uint64_t seed) {
-  return fmt::format("{}/{}/{}/{}-seed-{}.h5", dir, setting, stage, scene, seed);
-}
-
-// The sweep results of the study's runs under `dir`, each file read once (the jackknife and the
-// paired comparisons come back to the reference's files many times).
-class Runs {
- public:
-  explicit Runs(std::string dir) : dir_(std::move(dir)) {}
-  const std::string& dir() const { return dir_; }
-  const SweepResults& results(const std::string& folder, const std::string& stage, const std::string& scene, std::uint64_t seed) {
-    const std::string path = sweep_path(dir_, folder, stage, scene, seed);
-    auto it = cache_.find(path);
-    if (it == cache_.end()) it = cache_.emplace(path, read_sweep_results_file(path, stage, scene)).first;
-    return it->second;
-  }
-  /// The seed of the second packing of soft-soft's seed `seed` in `folder`, as its normal results
-  /// record it ("<path> (seed k), <path> (seed m)"): the pairing is the workflow's, read, not redone.
-  std::uint64_t partner(const std::string& folder, std::uint64_t seed) {
-    const SweepResults& r = results(folder, "normal", "soft-soft", seed);
-    const std::size_t at = r.packings.rfind("(seed ");
-    if (at == std::string::npos || at == r.packings.find("(seed "))
-      throw InputError(fmt::format("{}: /provenance/packings: '{}' names no second packing", r.path, r.packings));
-    return std::stoull(r.packings.substr(at + 6));
-  }
-
- private:
-  std::string dir_;
-  std::map<std::string, SweepResults> cache_;
-};
+using Runs = StudyRuns;
 
 std::vector<std::string> names(const AccuracyStudy& st) {
   std::vector<std::string> n;
@@ -142,19 +113,6 @@ std::vector<Quantity> measure(const AccuracyStudy& st, Runs& runs, const std::st
   return q;
 }
 
-// The files of a running setting's measurement on `seeds`, for its cost and completeness.
-TimingInputs files_of(const std::string& dir, const StudySetting& run, const Seeds& seeds) {
-  TimingInputs in;
-  for (std::uint64_t s : seeds) {
-    in.packings.push_back(fmt::format("{}/{}/packings/seed-{}.h5", dir, run.name, s));
-    for (const auto& scene : kScenes) {
-      in.normal.push_back(sweep_path(dir, run.name, "normal", scene, s));
-      in.tangential.push_back(sweep_path(dir, run.name, "tangential", scene, s));
-    }
-  }
-  return in;
-}
-
 // The median over the loaded normal points (Fn at least 1% of the sweep's largest) of the largest
 // unbalanced force over the mean contact force after the relaxation: how far from rest the
 // setting measures.
@@ -172,18 +130,6 @@ double median_residual(Runs& runs, const std::string& folder, const Seeds& seeds
   return ratios[ratios.size() / 2];
 }
 
-std::string knob_text(const AccuracyStudy& st, const StudySetting& s) {
-  if (!s.runs()) return fmt::format("{} on {} of its seeds", s.of, s.seeds.size());
-  if (s.set.empty()) return s.name == "reference" ? "the reference" : fmt::format("(the base, {})", st.base);
-  std::string t;
-  for (const auto& [key, value] : s.set) {
-    YAML::Emitter e;
-    e << YAML::Flow << value;
-    t += (t.empty() ? "" : ", ") + key + " = " + e.c_str();
-  }
-  return t;
-}
-
 }  // namespace
 
 AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) {
@@ -191,7 +137,7 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
   AccuracyReport r;
   r.quantities = names(st);
   const StudySetting& ref = st.reference;
-  const TimingInputs ref_files = files_of(dir, ref, ref.seeds);
+  const TimingInputs ref_files = study_files(dir, ref.name, ref.seeds);
   const ProfileTiming ref_time = collect_timing(ref_files);
   if (!ref_time.complete())
     throw InputError(fmt::format("{}/{}: the reference's results are not complete (make accuracy runs it first); missing: {}", dir,
@@ -225,7 +171,7 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
   const auto row_of = [&](const StudySetting& s) {
     SettingRow row;
     row.name = s.name;
-    row.knob = knob_text(st, s);
+    row.knob = setting_changes(st, s);
     row.runs = s.runs();
     row.seeds = s.seeds.size();
     const StudySetting& src = source(st, s);
@@ -236,7 +182,7 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
       if (row.failed.empty()) row.failed = "its run failed (no message)";
       return row;
     }
-    const ProfileTiming time = collect_timing(files_of(dir, src, s.seeds));
+    const ProfileTiming time = collect_timing(study_files(dir, src.name, s.seeds));
     row.cpu_seconds = time.total().cpu;
     row.complete = time.complete();
     if (!row.complete) return row;

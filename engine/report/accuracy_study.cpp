@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <set>
 
+#include "analysis/fit_options.hpp"
 #include "config/profile.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
@@ -83,7 +84,7 @@ const StudySetting& AccuracyStudy::setting(const std::string& name) const {
 
 AccuracyStudy read_accuracy_study(const std::string& path) {
   const ConfigNode root = ConfigNode::load_file(path);
-  root.allow_only({"study", "base", "seeds", "common", "compare", "reference", "settings"});
+  root.allow_only({"study", "base", "seeds", "common", "compare", "calibrate", "reference", "settings"});
   AccuracyStudy st;
   st.path = path;
   root.at("study").string();
@@ -98,6 +99,17 @@ AccuracyStudy read_accuracy_study(const std::string& path) {
   cmp.allow_only({"Fn_delta_n", "kt_delta_n"});
   st.Fn_delta_n = read_numbers(cmp.at("Fn_delta_n"));
   st.kt_delta_n = read_numbers(cmp.at("kt_delta_n"));
+  if (auto cal = root.find("calibrate")) {
+    cal->allow_only({"b_range"});
+    const ConfigNode ranges = cal->at("b_range");
+    ranges.allow_only({"soft-solid", "soft-soft"});
+    for (const std::string& scene : ranges.keys()) {
+      const std::vector<double> r = read_numbers(ranges.at(scene));
+      if (r.size() != 2 || !(r[0] >= 0.0 && r[0] < r[1]))
+        ranges.at(scene).fail("allowed: [low, high] with 0 <= low < high (a range of delta_n)");
+      st.b_range[scene] = {r[0], r[1]};
+    }
+  }
   if (auto common = root.find("common"))
     for (const std::string& key : common->keys()) st.common.emplace_back(key, YAML::Clone(common->at(key).yaml()));
   st.reference = read_setting("reference", root.at("reference"), st.seeds);
@@ -144,12 +156,25 @@ AccuracyStudy read_accuracy_study(const std::string& path) {
       parse_seeds(p);
       parse_packing(p);
       parse_measurement(p);
+      fit::parse_fit_section(p);
     } catch (const InputError& e) {
       const std::string msg = e.what();
       throw InputError(msg.rfind(name, 0) == 0 ? msg : name + ": " + msg);
     }
   }
   return st;
+}
+
+std::string setting_changes(const AccuracyStudy& st, const StudySetting& s) {
+  if (!s.runs()) return fmt::format("{} on {} of its seeds", s.of, s.seeds.size());
+  if (s.set.empty()) return s.name == "reference" ? "the reference" : fmt::format("(the base, {})", st.base);
+  std::string t;
+  for (const auto& [key, value] : s.set) {
+    YAML::Emitter e;
+    e << YAML::Flow << value;
+    t += (t.empty() ? "" : ", ") + key + " = " + e.c_str();
+  }
+  return t;
 }
 
 std::string setting_profile_text(const AccuracyStudy& study, const StudySetting& setting) {

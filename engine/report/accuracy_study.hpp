@@ -5,6 +5,7 @@
 // those seeds (no run).
 #pragma once
 #include <cstdint>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +28,9 @@ struct AccuracyStudy {
   std::vector<std::uint64_t> seeds;
   std::vector<std::pair<std::string, YAML::Node>> common;  ///< replaced in every setting first
   std::vector<double> Fn_delta_n, kt_delta_n;  ///< where Fn and kt are compared
+  /// calibrate.b_range: per scene, the fixed Δn range of the calibration report's Eq. 7 fit
+  /// ("b on a fixed range", report/calibration_report.hpp); empty for an accuracy study.
+  std::map<std::string, std::pair<double, double>> b_range;
   StudySetting reference;                      ///< name "reference", its own seeds
   std::vector<StudySetting> settings;
   const StudySetting& setting(const std::string& name) const;  ///< reference or a setting; InputError
@@ -37,6 +41,10 @@ struct AccuracyStudy {
 /// setting's profile valid (it is generated and read as the stages read it). InputError names
 /// the file, line and key.
 AccuracyStudy read_accuracy_study(const std::string& path);
+
+/// What a setting changes, for the reports: "key = value, ..." ("(the base, FILE)" for none;
+/// "S on n of its seeds" for a setting `of` S).
+std::string setting_changes(const AccuracyStudy& study, const StudySetting& setting);
 
 /// The profile of a running setting (or the reference): the base with the keys of `set`
 /// replaced, its `profile` name and `seeds`; a header says where it comes from.

@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "analysis/fit_options.hpp"
 #include "config/profile.hpp"
 #include "core/error.hpp"
 #include "core/integer_text.hpp"
@@ -173,6 +174,7 @@ std::string profile_error(const std::string& text) {
     parse_seeds(root);
     parse_packing(root);
     parse_measurement(root);
+    softpack::fit::parse_fit_section(root);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -437,5 +439,34 @@ TEST(Experiments, EveryFileStillLoads) {
   EXPECT_NO_THROW(parse_seeds(study));
 }
 
+
+TEST(Profile, FitSectionIsOptionalAndLeftOutChangesNoStamp) {
+  const std::string text = quick_profile();
+  const ConfigNode plain = ConfigNode::load_string(text, "profile.yaml");
+  const softpack::fit::FitSection none = softpack::fit::parse_fit_section(plain);
+  EXPECT_FALSE(none.given);
+  EXPECT_EQ(none.options.onset_force, softpack::fit::kZeroForceRelative);
+  // Without the section the average stage's text is what it was before the section existed.
+  EXPECT_EQ(stage_text(plain, "average").find("fit:"), std::string::npos);
+  const ConfigNode with = ConfigNode::load_string(text + "fit: {weighting: relative, onset_force: 1.0e-2, delta_n_max: 0.45}\n",
+                                                  "profile.yaml");
+  const softpack::fit::FitSection f = softpack::fit::parse_fit_section(with);
+  EXPECT_TRUE(f.given);
+  EXPECT_EQ(f.options.weighting, softpack::fit::FitOptions::Weighting::relative);
+  EXPECT_EQ(f.options.onset_force, 1e-2);
+  EXPECT_EQ(f.options.delta_n_max, 0.45);
+  // The section is the average stage's (the fits are made with the averages): its stamp changes,
+  // the sweeps' do not.
+  EXPECT_NE(stage_stamp(plain, "average", "0"), stage_stamp(with, "average", "0"));
+  EXPECT_EQ(stage_stamp(plain, "tangential", "0"), stage_stamp(with, "tangential", "0"));
+}
+
+TEST(Profile, BadFitSectionIsRefusedNamingTheKey) {
+  const std::string text = quick_profile();
+  EXPECT_CONTAINS(profile_error(text + "fit: {weighting: chi2}\n"), "fit.weighting");
+  EXPECT_CONTAINS(profile_error(text + "fit: {onset_force: 1.5}\n"), "fit.onset_force: 1.5 is not allowed; allowed: 0 <= onset_force < 1");
+  EXPECT_CONTAINS(profile_error(text + "fit: {delta_n_max: -1}\n"), "fit.delta_n_max: -1 is not allowed");
+  EXPECT_CONTAINS(profile_error(text + "fit: {onset: 0.1}\n"), "fit");
+}
 }  // namespace
 }  // namespace softpack

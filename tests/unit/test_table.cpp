@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "analysis/fit_table.hpp"
+#include "analysis/kt_unit.hpp"
 
 namespace {
 
@@ -98,3 +100,32 @@ TEST(FitTable, LatexIsABooktabsTabularWithTheProvenanceAsComments) {
 }
 
 }  // namespace
+
+// --- The unit of Table 2 (analysis/kt_unit.hpp) ------------------------------------------------
+
+TEST(KtUnit, AKtPrintedPerDegreeIsRecognisedByItsRatioToFn) {
+  // Ours: the paper's laws, with kt in N per metre of ht: kt_paper [N/deg] / (pi Rs / 180 m/deg),
+  // and both forces ten times the paper's (a stiffer soft-particle of the same shape of response).
+  using namespace softpack::table;
+  const double Rs = 0.016, per_degree = std::numbers::pi * Rs / 180.0;
+  const PublishedLaw Fn{73.669, 2.799, -0.035, 0.065}, kt{0.740, 2.100, -0.0024, 0.065};
+  std::vector<double> dn, F, Fe, kdn, k, ke;
+  for (double x : {0.2, 0.3, 0.4, 0.5}) {
+    dn.push_back(x), F.push_back(10 * Fn(x)), Fe.push_back(0.01 * Fn(x));
+    kdn.push_back(x), k.push_back(10 * kt(x) / per_degree), ke.push_back(0.01 * kt(x) / per_degree);
+  }
+  const auto readings = kt_readings(Rs);
+  const KtUnitScene s = kt_unit_scene("soft-solid", dn, F, Fe, kdn, k, ke, Fn, kt, readings);
+  ASSERT_EQ(s.points.size(), 4u);
+  std::size_t degree = 0;
+  while (readings[degree].unit != "N/deg") ++degree;
+  EXPECT_NEAR(std::exp(s.mean_log_q[degree]), 1.0, 1e-12);
+  for (std::size_t r = 0; r < readings.size(); ++r)
+    if (r != degree) EXPECT_GT(std::abs(s.mean_log_q[r]), 1.0) << readings[r].unit;  // off by e or more
+  EXPECT_NE(kt_unit_markdown({s}, readings).find("Closest to 1 on soft-solid: per degree of alpha (N/deg)"), std::string::npos);
+  // A point within two standard errors of zero is listed, not counted.
+  ke[0] = k[0];
+  const KtUnitScene t = kt_unit_scene("soft-solid", dn, F, Fe, kdn, k, ke, Fn, kt, readings);
+  EXPECT_FALSE(t.points[0].established);
+  EXPECT_TRUE(t.points[1].established);
+}

@@ -109,3 +109,30 @@ code=$?
 set -e
 [ $code -eq 2 ] && grep -q "different seeds" "$work/err" || fail "profiles of different seeds: exit $code, $(cat "$work/err")"
 pass "softpack-accuracy check: every quantity with both standard errors and the costs; different seeds refused"
+
+# --- 5. the calibration report on the same runs (make calibrate-report, softpack-accuracy calibrate) ---
+cp "$work/study.yaml" "$work/calibrate.yaml"
+sed -i 's/^compare:.*/compare: {Fn_delta_n: [0.5, 0.7], kt_delta_n: [0.6, 0.7]}\ncalibrate: {b_range: {soft-solid: [0.4, 0.8]}}\ncommon: {fit: {weighting: unweighted, onset_force: 1.0e-3}}/' \
+  "$work/calibrate.yaml"
+# The same profiles as the accuracy study's plus a fit section: only the averages would differ, not the runs.
+mk CALIBRATE_STUDY="$work/calibrate.yaml" CALIBRATE_DIR=data/accuracy calibrate-report > "$work/c.log" 2>&1 ||
+  { cat "$work/c.log"; fail "make calibrate-report"; }
+cal=data/accuracy/report
+for f in table.md onset.dat calibration.json onset.pdf onset.png; do [[ -s $cal/$f ]] || fail "$cal/$f is missing or empty"; done
+grep -q '^| reference | (the base, experiments/quick.yaml) | 3 |' $cal/table.md || fail "calibration table: $(head -20 $cal/table.md)"
+/usr/bin/python3 - "$cal/calibration.json" <<'PY' || fail "calibration.json"
+import json, sys
+r = json.load(open(sys.argv[1]))
+q = r["quantities"]
+s = {x["name"]: x for x in r["settings"]}
+assert set(s) == {"reference", "base", "stops-1", "base-1-seed"}, list(s)
+ref = s["reference"]
+phi = ref["value"][q.index("solid fraction")]
+assert 0.3 < phi < 0.8, phi
+z = ref["value"][q.index("coordination after growth")]
+assert z >= 1.0, z  # growth leaves every grown grain touching a neighbour or the shell
+assert ref["error"][q.index("soft-solid Fn(0.7)")] > 0, ref
+# One seed has no seed-to-seed error.
+assert all(e is None for e in s["base-1-seed"]["error"]), s["base-1-seed"]["error"]
+PY
+pass "make calibrate-report: every setting's laws and packings with their errors, table, data, figure"

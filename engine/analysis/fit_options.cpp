@@ -1,0 +1,49 @@
+#include "analysis/fit_options.hpp"
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace softpack::fit {
+
+FitOptions::Weighting parse_weighting(const std::string& name) {
+  if (name == "stderr") return FitOptions::Weighting::standard_error;
+  if (name == "unweighted") return FitOptions::Weighting::unweighted;
+  if (name == "relative") return FitOptions::Weighting::relative;
+  throw InputError(fmt::format("weighting '{}' is not allowed; allowed: stderr, unweighted, relative", name));
+}
+
+const char* weighting_name(FitOptions::Weighting w) {
+  switch (w) {
+    case FitOptions::Weighting::standard_error: return "stderr";
+    case FitOptions::Weighting::unweighted: return "unweighted";
+    case FitOptions::Weighting::relative: return "relative";
+  }
+  return "?";
+}
+
+
+FitSection parse_fit_section(const ConfigNode& root) {
+  FitSection out;
+  const std::optional<ConfigNode> section = root.find("fit");
+  if (!section) return out;
+  out.given = true;
+  section->allow_only({"weighting", "onset_force", "delta_n_max", "compare"});
+  if (const auto w = section->find("weighting"))
+    out.options.weighting = parse_weighting(w->choice({"stderr", "unweighted", "relative"}));
+  if (const auto f = section->find("onset_force")) {
+    const double v = f->number();
+    if (!(v >= 0.0 && v < 1.0))
+      f->fail(fmt::format("{} is not allowed; allowed: 0 <= onset_force < 1 (a fraction of the curve's largest force)", v));
+    out.options.onset_force = v;
+  }
+  if (const auto m = section->find("delta_n_max")) {
+    const double v = m->number();
+    if (!(v > 0.0)) m->fail(fmt::format("{} is not allowed; allowed: delta_n_max > 0", v));
+    out.options.delta_n_max = v;
+  }
+  if (const auto c = section->find("compare")) out.compare = c->boolean();
+  return out;
+}
+
+}  // namespace softpack::fit

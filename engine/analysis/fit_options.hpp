@@ -1,0 +1,47 @@
+// The profile's optional `fit` section: how softpack-fit fits Eq. 7 and Eq. 8 (docs/fit.md).
+//
+//   fit:
+//     weighting: relative     # stderr (1/stderr^2), unweighted, relative (1/value^2)
+//     onset_force: 1.0e-2     # Eq. 7's loaded points: Fn > this x the curve's largest force
+//     delta_n_max: 0.5        # fit only delta_n <= this
+//     compare: true           # also fit with every other weighting, side by side in the fit file
+//
+// Every key may be left out (its default is the fit of releases up to 0.4.0: stderr, 1e-9, no
+// bound, no comparison); a profile without the section fits as those releases did.
+#pragma once
+#include <limits>
+#include <string>
+
+#include "config/yaml_node.hpp"
+
+namespace softpack::fit {
+
+/// A force below this fraction of the largest |F| of the curve is round-off, i.e. zero.
+inline constexpr double kZeroForceRelative = 1e-9;
+
+/// How a law is fitted (the profile's `fit` section; docs/fit.md). The defaults are the fit of
+/// releases up to 0.4.0.
+struct FitOptions {
+  enum class Weighting { standard_error, unweighted, relative };
+  Weighting weighting = Weighting::standard_error;
+  double onset_force = kZeroForceRelative;  ///< Eq. 7: loaded when F > onset_force × the curve's largest |F|
+  double delta_n_max = std::numeric_limits<double>::infinity();  ///< fit only Δn <= this
+};
+
+/// "stderr", "unweighted", "relative"; InputError naming the allowed values otherwise.
+FitOptions::Weighting parse_weighting(const std::string& name);
+const char* weighting_name(FitOptions::Weighting w);
+
+
+
+struct FitSection {
+  FitOptions options;
+  bool compare = false;  ///< also fit with the other weightings (the fit file's "weightings")
+  bool given = false;    ///< the profile has a `fit` section
+};
+
+/// Reads `fit` of a profile root (defaults when it has none). InputError at the key's line and
+/// column: an unknown key, a weighting not allowed, onset_force outside [0, 1), delta_n_max <= 0.
+FitSection parse_fit_section(const ConfigNode& root);
+
+}  // namespace softpack::fit
