@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "analysis/power_fit.hpp"
 #include "core/error.hpp"
 
 namespace softpack::table {
@@ -22,7 +23,11 @@ std::vector<KtReading> kt_readings(double Rs) {
           {"per radian of alpha (= per unit of ht/Rs)", "N/rad", Rs}};
 }
 
-double PublishedLaw::operator()(double dn) const { return dn >= delta ? a * std::pow(dn, b) + c : 0.0; }
+double PublishedLaw::operator()(double dn) const {
+  fit::PowerLawFit law;
+  law.a = a, law.b = b, law.c = c, law.delta = delta;
+  return fit::evaluate(law, dn);
+}
 
 KtUnitScene kt_unit_scene(const std::string& scene, const std::vector<double>& delta_n, const std::vector<double>& Fn,
                           const std::vector<double>& Fn_error, const std::vector<double>& kt_delta_n,

@@ -24,7 +24,7 @@ struct KtReading {
 /// The candidate readings for a shell of radius Rs [m], in a fixed order.
 std::vector<KtReading> kt_readings(double Rs);
 
-/// Eq. 7 or 8 as published: a Δn^b + c for Δn >= δ, else 0.
+/// Eq. 7 or 8 as published: a Δn^b + c for Δn >= δ, else 0 (fit::evaluate).
 struct PublishedLaw {
   double a = 0.0, b = 0.0, c = 0.0, delta = 0.0;
   double operator()(double dn) const;

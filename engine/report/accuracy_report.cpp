@@ -155,14 +155,9 @@ AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) 
   }
   for (std::size_t k = 0; k < nq; ++k) {
     r.reference_value.push_back(all[k].value);
-    double m = 0.0;
-    for (double v : leave[k]) m += v;
-    m /= static_cast<double>(ns);
-    double s2 = 0.0;
-    for (double v : leave[k]) s2 += (v - m) * (v - m);
     // The jackknife, floored by the reference's own standard error: where every leave-one-out fit
     // pins δ at the same grid point the jackknife collapses (to 1e-7), the fit's error does not.
-    const double jack = std::sqrt(s2 * static_cast<double>(ns - 1) / static_cast<double>(ns));
+    const double jack = jackknife_error(leave[k]);
     r.reference_sigma.push_back(std::isfinite(all[k].error) ? std::max(jack, all[k].error) : jack);
     // Established: the reference measures it, and distinguishes it from zero (2 σ); else it is
     // left out of the errors (a force at a Δn below the onset is zero within round-off).

@@ -207,18 +207,7 @@ CalibrationReport calibration_report(const AccuracyStudy& st, const std::string&
         const std::vector<double> v = measure(st, runs, src.name, rest, options, nullptr);
         for (std::size_t k = 0; k < nq; ++k) leave[k].push_back(v[k]);
       }
-    for (std::size_t k = 0; k < nq; ++k) {
-      if (ns < 2) {
-        row.error.push_back(kNaN);
-        continue;
-      }
-      double m = 0.0;
-      for (double v : leave[k]) m += v;
-      m /= static_cast<double>(ns);
-      double s2 = 0.0;
-      for (double v : leave[k]) s2 += (v - m) * (v - m);
-      row.error.push_back(std::sqrt(s2 * static_cast<double>(ns - 1) / static_cast<double>(ns)));
-    }
+    for (std::size_t k = 0; k < nq; ++k) row.error.push_back(jackknife_error(leave[k]));
     r.rows.push_back(row);
   }
   return r;
@@ -240,16 +229,16 @@ std::size_t index_of(const CalibrationReport& r, const std::string& name) {
 // One Markdown table: a row per complete setting, a column per quantity (value ± standard error).
 std::string table(const CalibrationReport& r, const std::vector<std::string>& columns) {
   std::string md = "| setting |";
-  for (const auto& c : columns) md += " " + c + " |";
+  for (const auto& c : columns) md += fmt::format(" {} |", c);
   md += "\n|---|";
   for (std::size_t k = 0; k < columns.size(); ++k) md += "---|";
   md += "\n";
   for (const auto& row : r.rows) {
     if (!row.complete) continue;
-    md += "| " + row.name + " |";
+    md += fmt::format("| {} |", row.name);
     for (const auto& c : columns) {
       const std::size_t k = index_of(r, c);
-      md += " " + cell(row.value[k], row.error[k]) + " |";
+      md += fmt::format(" {} |", cell(row.value[k], row.error[k]));
     }
     md += "\n";
   }
@@ -281,20 +270,20 @@ std::string write_calibration_report(const CalibrationReport& r, const std::stri
     std::vector<std::string> cols;
     for (const auto& q : r.quantities)
       if (q.rfind(scene + " ", 0) == 0 && q.find("contacts") == std::string::npos) cols.push_back(q);
-    md += "## " + scene + "\n\n" + table(r, cols);
+    md += fmt::format("## {}\n\n{}", scene, table(r, cols));
   }
   // The change of each quantity against the base: z = Δ / √(σ² + σ_base²).
   const CalibrationRow* base = r.rows.empty() || !r.rows.front().complete ? nullptr : &r.rows.front();
   if (base) {
     md += "## Change against the base\n\n(setting − base) / √(σ² + σ_base²); |z| ≥ 2 in bold.\n\n| quantity |";
     for (const auto& row : r.rows)
-      if (row.complete && &row != base) md += " " + row.name + " |";
+      if (row.complete && &row != base) md += fmt::format(" {} |", row.name);
     md += "\n|---|";
     for (const auto& row : r.rows)
       if (row.complete && &row != base) md += "---|";
     md += "\n";
     for (std::size_t k = 0; k < r.quantities.size(); ++k) {
-      md += "| " + r.quantities[k] + " |";
+      md += fmt::format("| {} |", r.quantities[k]);
       for (const auto& row : r.rows) {
         if (!row.complete || &row == base) continue;
         const double z = (row.value[k] - base->value[k]) / std::hypot(row.error[k], base->error[k]);

@@ -120,8 +120,11 @@ TEST(KtUnit, AKtPrintedPerDegreeIsRecognisedByItsRatioToFn) {
   std::size_t degree = 0;
   while (readings[degree].unit != "N/deg") ++degree;
   EXPECT_NEAR(std::exp(s.mean_log_q[degree]), 1.0, 1e-12);
-  for (std::size_t r = 0; r < readings.size(); ++r)
-    if (r != degree) EXPECT_GT(std::abs(s.mean_log_q[r]), 1.0) << readings[r].unit;  // off by e or more
+  for (std::size_t r = 0; r < readings.size(); ++r) {
+    if (r != degree) {
+      EXPECT_GT(std::abs(s.mean_log_q[r]), 1.0) << readings[r].unit;  // off by e or more
+    }
+  }
   EXPECT_NE(kt_unit_markdown({s}, readings).find("Closest to 1 on soft-solid: per degree of alpha (N/deg)"), std::string::npos);
   // A point within two standard errors of zero is listed, not counted.
   ke[0] = k[0];
