@@ -17,7 +17,8 @@ using namespace formats;
 constexpr const char *kCentres = "centres", *kRadii = "radii", *kShellRadius = "shell/radius";
 constexpr const char *kProgram = "provenance/program", *kParameters = "parameters", *kRs = "parameters/Rs";
 constexpr std::array kLayout{kCentres, kRadii, kProgram};  // what makes a file a packing file
-constexpr const char* kPack = "softpack-pack";              // the program that writes them
+constexpr const char* kPack = "softpack-pack";
+constexpr const char* kNearest = "parameters/nearest_neighbour";  // since 0.5.0; absent: surface              // the program that writes them
 
 // /parameters: f(dataset, member) for each of the generator's parameters, in the file's order.
 template <class P, class F>
@@ -59,6 +60,7 @@ void write_packing_file(const std::string& path, const PackingParameters& p, con
   put(f, kShellRadius, p.Rs);
   put(f, "shell/centre", std::vector<double>{0.0, 0.0, 0.0});
   each_parameter(p, writer(f));
+  put(f, kNearest, std::string(name(p.nearest_neighbour)));
   put(f, "stats/sampled", packing.sampled);
   put(f, "stats/inserted", n);
   put(f, "stats/discarded", packing.discarded);
@@ -95,6 +97,7 @@ PackingFile read_packing_file(const std::string& path) {
   PackingParameters& p = out.parameters;
   each_parameter(p, reader(f));
   try {
+    if (f.exists(kNearest)) p.nearest_neighbour = parse_nearest_neighbour(f.read_string(kNearest));
     validate(p);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: /{}: {}", path, kParameters, e.what()));

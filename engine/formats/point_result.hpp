@@ -25,6 +25,9 @@ struct PointResult {
   Vec3 force_first = Vec3::Zero();    ///< load on the first shell [N] (minus force in balance)
   Vec3 force_between = Vec3::Zero();  ///< elastic force of the first body's spheres on the second's [N]
   long contacts = 0;                  ///< closed contacts at the end
+  /// Largest overlap at the end relative to the smaller radius of its contact (a sphere's own
+  /// radius against a wall): h / r [-], where the Hertz law holds only for h / r << 1.
+  double overlap_max = 0.0;
   long relax_steps = 0;
   double relax_time = 0.0;            ///< simulated [s]
   std::vector<RelaxationCheck> checks;

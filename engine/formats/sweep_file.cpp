@@ -43,6 +43,7 @@ void each_result_field(R& r, F&& f) {
   f("result/force_first", r.force_first);
   f("result/force_between", r.force_between);
   f("result/contacts", r.contacts);
+  f("result/overlap_max", r.overlap_max);
   f("result/relax_steps", r.relax_steps);
   f("result/relax_time", r.relax_time);
   f("result/steps", r.steps);
@@ -172,8 +173,11 @@ constexpr std::array<const char*, 3> kPhaseCpu{"timing/loading/cpu", "timing/rel
 constexpr std::array<const char*, 3> kPhaseDescription{
     "moving the second body (normal) or turning the first soft-particle (tangential), with the restore of its start state",
     "the relaxation protocol", "writing the point file"};
-constexpr const char *kReused = "timing/reused", *kCpuSeconds = "provenance/cpu_seconds";
+constexpr const char *kReused = "timing/reused", *kCpuSeconds = "provenance/cpu_seconds", *kOverlap = "overlap_max";
 Elapsed PointTiming::*const kPhaseMember[] = {&PointTiming::loading, &PointTiming::relaxation, &PointTiming::output};
+
+// The first release whose results files have a column.
+enum class Since { always, release_0_4, release_0_5 };
 
 struct Column {
   const char* name;
@@ -181,7 +185,7 @@ struct Column {
   const char* description = nullptr;  ///< attribute "description"
   bool per_check = false;             ///< one value per relaxation check (else per point)
   bool finite = true;                 ///< numbers: the reader refuses NaN and infinities
-  bool since_0_4 = false;             ///< absent from the files of releases before 0.4.0 (read as empty)
+  Since since = Since::always;        ///< absent from the files of older releases (read as empty)
 };
 
 // f(column, member) for each column of `s`, in the file's order.
@@ -198,6 +202,11 @@ void each_column(S& s, F&& f) {
   f({"force_first", "N"}, s.force_first);
   f({"force_between", "N"}, s.force_between);
   f({"contacts"}, s.contacts);
+  f({.name = kOverlap,
+     .description = "largest overlap at the end of the point over the smaller radius of its contact (a sphere's own "
+                    "radius against a wall); the Hertz law holds for overlaps << 1",
+     .since = Since::release_0_5},
+    s.overlap_max);
   f({"steps"}, s.steps);
   f({"relaxation/steps"}, s.relax_steps);
   f({"relaxation/time"}, s.relax_time);
@@ -209,12 +218,12 @@ void each_column(S& s, F&& f) {
   f({.name = "relaxation/checks/energy_ratio", .per_check = true, .finite = false}, s.check_energy_ratio);
   f({.name = "seconds", .description = "wall-clock time of each point's loading and relaxation"}, s.seconds);
   for (std::size_t k = 0; k < kPhases.size(); ++k) {
-    f({.name = kPhaseWall[k], .unit = "s", .description = kPhaseDescription[k], .since_0_4 = true}, s.phase_wall[k]);
-    f({.name = kPhaseCpu[k], .unit = "s", .description = kPhaseDescription[k], .since_0_4 = true}, s.phase_cpu[k]);
+    f({.name = kPhaseWall[k], .unit = "s", .description = kPhaseDescription[k], .since = Since::release_0_4}, s.phase_wall[k]);
+    f({.name = kPhaseCpu[k], .unit = "s", .description = kPhaseDescription[k], .since = Since::release_0_4}, s.phase_cpu[k]);
   }
   f({.name = kReused,
      .description = "1: this run took the point from its checkpoint, its timing is that of the run that computed it",
-     .since_0_4 = true},
+     .since = Since::release_0_4},
     s.reused);
 }
 
@@ -235,6 +244,7 @@ SweepResults columns(const std::vector<PointResult>& points) {
     s.Fn.push_back(r.force.x()), s.Ft_parallel.push_back(r.force.y()), s.Ft_perpendicular.push_back(r.force.z());
     s.force.push_back(r.force), s.force_first.push_back(r.force_first), s.force_between.push_back(r.force_between);
     s.contacts.push_back(r.contacts), s.steps.push_back(r.steps), s.relax_steps.push_back(r.relax_steps);
+    s.overlap_max.push_back(r.overlap_max);
     s.relax_time.push_back(r.relax_time), s.seconds.push_back(r.seconds());
     for (std::size_t p = 0; p < kPhases.size(); ++p) {
       s.phase_wall[p].push_back((r.timing.*kPhaseMember[p]).wall);
@@ -341,6 +351,7 @@ SweepResults read_sweep_results_file(const std::string& path, const std::string&
   // The timings (release 0.4.0 on): all of them or none.
   s.has_timing = f.exists(kReused);
   if (s.has_timing) get(f, kCpuSeconds, s.total_cpu_seconds);
+  s.has_overlap = f.exists(kOverlap);  // release 0.5.0 on
   if (!stage.empty() && s.provenance.stage != stage)
     throw InputError(
         fmt::format("{}: /{}: these are {} results, {} ones are expected here", path, kStage, s.provenance.stage, stage));
@@ -348,7 +359,8 @@ SweepResults read_sweep_results_file(const std::string& path, const std::string&
     throw InputError(
         fmt::format("{}: /{}: these are results of the {} scene, not of {}", path, kScene, s.provenance.scene, scene));
   each_column(s, [&](const Column& c, auto& column) {
-    if (c.since_0_4 && !s.has_timing) return;
+    if (c.since == Since::release_0_4 && !s.has_timing) return;
+    if (c.since == Since::release_0_5 && !s.has_overlap) return;
     get(f, c.name, column);
     if (c.per_check) same_length(f, c.name, column.size(), kCheckPoint, s.check_point.size());
     else same_length(f, c.name, column.size(), kDeltaN, s.delta_n.size());

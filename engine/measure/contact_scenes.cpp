@@ -7,9 +7,11 @@
 namespace softpack {
 namespace {
 
+constexpr int kGrain = 0, kWall = 1;  // the scenes' materials
+
 SceneDef base_scene(const SimulationSettings& s) {
   SceneDef scene;
-  scene.materials = {s.material};
+  scene.materials = {s.material, s.wall_material};  // kGrain, kWall
   scene.effects = s.effects;
   scene.integration = s.integration;
   scene.neighbor = s.neighbor;
@@ -23,9 +25,10 @@ void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Ve
     d.x = centre + p.centres[i];
     d.r = p.radii[i];
     d.body = body;
+    d.material = kGrain;
     scene.particles.push_back(d);
   }
-  scene.shells.push_back(ShellDef{shell, body, centre, p.Rs, 0, radius});
+  scene.shells.push_back(ShellDef{shell, body, centre, p.Rs, kWall, radius});
 }
 
 }  // namespace
@@ -36,7 +39,7 @@ ContactSetup soft_solid_setup(const PackingFile& first, const SimulationSettings
   c.scene = base_scene(s);
   c.Rs = first.Rs;
   add_soft_particle(c.scene, first, 0, Vec3::Zero(), "shell-1", s.shell_contact_radius);
-  c.scene.planes.push_back(PlaneDef{"wall", Vec3(first.Rs, 0, 0), Vec3(-1, 0, 0), 0});
+  c.scene.planes.push_back(PlaneDef{"wall", Vec3(first.Rs, 0, 0), Vec3(-1, 0, 0), kWall});
   c.second_wall = "wall";
   c.first_shell = "shell-1";
   return c;
@@ -67,7 +70,7 @@ ContactSetup hertz_check_setup(double Rs, const SimulationSettings& s) {
   sphere.r = Rs;
   sphere.body = 0;
   c.scene.particles.push_back(sphere);
-  c.scene.planes.push_back(PlaneDef{"wall", Vec3(Rs, 0, 0), Vec3(-1, 0, 0), 0});
+  c.scene.planes.push_back(PlaneDef{"wall", Vec3(Rs, 0, 0), Vec3(-1, 0, 0), kWall});
   // The held sphere stands for the fixed shell.
   c.scene.drivers.emplace_back(std::in_place_type<HoldGroupDef>, HoldGroupDef{GroupDef{GroupDef::Kind::body, 0}});
   c.second_wall = "wall";

@@ -49,7 +49,22 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   root.allow_only(profile_sections());
   MeasurementSettings m;
   SimulationSettings& s = m.simulation;
-  s.material = parse_material(root.at("material"), "grain");
+  {
+    // The grains' material; `wall` (optional: E, nu, mu, each left out the grains') is the
+    // shells' and the plane wall's (the soft-solid scene's solid).
+    const ConfigNode material = root.at("material");
+    material.allow_only({"E", "nu", "mu", "density", "wall"});
+    s.material = Material{"grain", material.at("E").number(), material.at("nu").number(), material.at("mu").number(),
+                          material.at("density").number()};
+    s.wall_material = s.material;
+    s.wall_material.name = "wall";
+    if (const auto wall = material.find("wall")) {
+      wall->allow_only({"E", "nu", "mu"});
+      if (const auto v = wall->find("E")) s.wall_material.E = v->number();
+      if (const auto v = wall->find("nu")) s.wall_material.nu = v->number();
+      if (const auto v = wall->find("mu")) s.wall_material.mu = v->number();
+    }
+  }
   const ConfigNode sim = root.at("simulation");
   sim.allow_only({"effects", "integration", "neighbor", "shells"});
   s.effects = parse_effects(sim.at("effects"));
@@ -62,7 +77,8 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   if (auto w = root.find("watchdog")) m.watchdog = parse_watchdog(*w);
   try {  // the scene's rules, named by the profile's keys
     validate_material(s.material, "material");
-    validate_effects(s.effects, {s.material}, "simulation.effects");
+    validate_material(s.wall_material, "material.wall");
+    validate_effects(s.effects, {s.material, s.wall_material}, "simulation.effects");
     validate_integration(s.integration, "simulation.integration");
     validate_neighbor(s.neighbor, "simulation.neighbor");
     validate(m.relaxation, "relaxation");

@@ -27,7 +27,8 @@ std::string scene_name(ContactScene s);
 /// Engine settings of the measurement scenes: the profile's `material` and `simulation`
 /// sections, in the scene format's own terms (docs/scene-format.md), read by its own readers.
 struct SimulationSettings {
-  Material material;  ///< of the grains, the shells and the wall
+  Material material;       ///< of the grains (and of the shells and the wall unless `material.wall`)
+  Material wall_material;  ///< of the shells and the plane wall: `material.wall`, each key left out the grains'
   EffectsDef effects;
   IntegrationDef integration;
   NeighborDef neighbor;

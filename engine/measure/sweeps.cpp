@@ -22,7 +22,9 @@ PointResult record_point(const Simulation& sim, const ContactSetup& setup, const
   r.force = measured_force(sim, setup);
   if (!setup.first_shell.empty()) r.force_first = sim.wall_load(setup.first_shell).force;
   r.force_between = setup.second_body >= 0 ? sim.force_between(setup.first_body, setup.second_body) : r.force;
-  r.contacts = static_cast<long>(sim.residuals().contacts);
+  const Measurement m = sim.residuals();
+  r.contacts = static_cast<long>(m.contacts);
+  r.overlap_max = m.deepest.fraction;
   r.relax_steps = relax.steps;
   r.relax_time = relax.simulated_time;
   r.checks = relax.checks;

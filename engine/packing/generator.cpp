@@ -16,6 +16,16 @@
 
 namespace softpack {
 
+const char* name(NearestNeighbour n) { return n == NearestNeighbour::centre ? "centre" : "surface"; }
+
+NearestNeighbour parse_nearest_neighbour(const std::string& text) {
+  if (text == "surface") return NearestNeighbour::surface;
+  if (text == "centre") return NearestNeighbour::centre;
+  throw InputError(fmt::format("'{}' is not allowed; allowed: surface (the smallest surface gap) or centre (the nearest "
+                               "centre)",
+                               text));
+}
+
 void validate(const PackingParameters& p) {
   using limits::approx_text;
   const auto check = [](const char* key, double v, const limits::Range& range) {
@@ -96,7 +106,8 @@ Packing generate_packing(const PackingParameters& p, std::uint64_t seed, const P
     if (progress && (k + 1) % report == 0) progress("insert", k + 1, list.size());
   }
 
-  // Step 4: growth, largest first, each until it touches its nearest neighbour.
+  // Step 4: growth, largest first, each until it touches its nearest neighbour (by surface gap
+  // or by centre distance, p.nearest_neighbour).
   const int n = static_cast<int>(grid.size());
   for (int id = 0; id < n; ++id) {
     const Vec3& x = grid.centre(id);
@@ -105,9 +116,20 @@ Packing generate_packing(const PackingParameters& p, std::uint64_t seed, const P
     // Search the nearest sphere within a growing gap until one is found or the shell is
     // nearer than anything left unsearched (then the outcome is decided in both modes).
     double sphere_gap = std::numeric_limits<double>::infinity();
-    for (double search = r; search < 4.0 * p.Rs; search *= 2.0) {
-      sphere_gap = grid.nearest_gap(x, r, id, search);
-      if (std::isfinite(sphere_gap) || shell_gap < search) break;
+    if (p.nearest_neighbour == NearestNeighbour::surface) {
+      for (double search = r; search < 4.0 * p.Rs; search *= 2.0) {
+        sphere_gap = grid.nearest_gap(x, r, id, search);
+        if (std::isfinite(sphere_gap) || shell_gap < search) break;
+      }
+    } else {
+      // The nearest centre: searched within a growing distance until one is found (every
+      // sphere is within 2 Rs); the gap to it, negative if they already overlap.
+      for (double search = 2.0 * r; search < 4.0 * p.Rs; search *= 2.0) {
+        const auto [distance, j] = grid.nearest_centre(x, id, search);
+        if (j < 0) continue;
+        sphere_gap = distance - r - grid.radius(j);
+        break;
+      }
     }
     double grow = 0.0;
     if (p.shell_is_neighbour) grow = std::min(sphere_gap, shell_gap);

@@ -16,6 +16,14 @@
 //                               would cross the shell on its way there does not grow.
 // It sets the gap between the shell and the outermost grains, hence where the soft-particle
 // starts to push back (delta of Table 1).
+//
+// Which sphere is "the nearest neighbour" is a second reading (`packing.nearest_neighbour`):
+//   surface: the sphere with the smallest surface gap |x_i - x_j| - r_i - r_j, the first one the
+//            growing sphere touches; after growth no two spheres overlap (the default);
+//   centre:  the sphere whose centre is nearest, |x_i - x_j| smallest; the sphere grows until it
+//            touches that one and may overlap nearer surfaces on its way (a larger sphere
+//            further off), so the packing starts with overlaps that its first relaxation
+//            pushes apart. With shell_is_neighbour the shell still bounds the growth.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -26,6 +34,12 @@
 
 namespace softpack {
 
+/// Which sphere step 4 grows a sphere to touch (see above).
+enum class NearestNeighbour { surface, centre };
+const char* name(NearestNeighbour n);
+/// "surface" or "centre"; InputError naming what is allowed otherwise.
+NearestNeighbour parse_nearest_neighbour(const std::string& text);
+
 struct PackingParameters {
   double Rs = 0.0;              ///< shell radius [m]
   double r_max = 0.0;           ///< largest radius of the list [m]
@@ -34,6 +48,7 @@ struct PackingParameters {
   double beta = 0.0;            ///< list volume / shell volume (Eq. 2)
   long trials = 0;              ///< I
   bool shell_is_neighbour = true;
+  NearestNeighbour nearest_neighbour = NearestNeighbour::surface;
   double level_ratio = 0.0;     ///< cell size ratio of the insertion grid (cost only)
 };
 

@@ -123,4 +123,18 @@ double InsertionGrid::nearest_gap(const Vec3& x, double r, int self, double sear
   return best;
 }
 
+std::pair<double, int> InsertionGrid::nearest_centre(const Vec3& x, int self, double search) const {
+  std::pair<double, int> best{std::numeric_limits<double>::infinity(), -1};
+  for (const Level& L : levels_) {
+    if (L.population == 0) continue;
+    scan(L, x, search, [&](int j) {
+      if (j == self) return false;
+      const double d = (x - x_[j]).norm();
+      if (d < search && (d < best.first || (d == best.first && j < best.second))) best = {d, j};
+      return false;
+    });
+  }
+  return best;
+}
+
 }  // namespace softpack

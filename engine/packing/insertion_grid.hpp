@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
@@ -31,6 +32,9 @@ class InsertionGrid {
   /// Smallest surface gap |x - xj| - r - rj to a stored sphere other than `self`, among those
   /// with a gap below `search`; +infinity when there is none.
   double nearest_gap(const Vec3& x, double r, int self, double search) const;
+  /// The stored sphere other than `self` whose centre is nearest to x, among those whose centre
+  /// lies within `search` of x: {distance, id}; {+infinity, -1} when there is none.
+  std::pair<double, int> nearest_centre(const Vec3& x, int self, double search) const;
   /// Grows (or shrinks) a stored sphere in place.
   void set_radius(int id, double r);
 

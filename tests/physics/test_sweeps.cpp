@@ -29,6 +29,26 @@ TEST(NormalSweep, TheChainMeasuresHertz) {
     const double expected = std::sqrt(0.016) * std::pow(p.hn, 1.5) / D;
     EXPECT_NEAR(p.force.x(), expected, 1e-6 * expected + 1e-300) << "delta_n = " << p.delta_n;
     EXPECT_NEAR(p.force.y(), 0.0, 1e-12 * (expected + 1e-12));
+    // The deepest overlap relative to the radius: the sphere's own on the wall, hn / Rs.
+    EXPECT_NEAR(p.overlap_max, p.delta_n, 1e-9) << "delta_n = " << p.delta_n;
+  }
+}
+
+// A wall of another material (material.wall): Eq. 4 with both materials,
+// D = 3/4 ((1 - nu^2) / E + (1 - nu'^2) / E').
+TEST(NormalSweep, TheChainMeasuresHertzOnAWallOfAnotherMaterial) {
+  TempDir tmp("hertz-wall");
+  SimulationSettings s = parse_measurement(profile()).simulation;
+  s.wall_material.E = 20.0 * s.material.E;
+  s.wall_material.nu = 0.45;
+  SweepContext c = context(hertz_check_setup(0.016, s), tmp / "n");
+  c.settings.simulation = s;
+  const auto points = run_normal_sweep(c);
+  const Material &m = s.material, &w = s.wall_material;
+  const double D = 0.75 * ((1 - m.nu * m.nu) / m.E + (1 - w.nu * w.nu) / w.E);
+  for (const PointResult& p : points) {
+    const double expected = std::sqrt(0.016) * std::pow(p.hn, 1.5) / D;
+    EXPECT_NEAR(p.force.x(), expected, 1e-6 * expected + 1e-300) << "delta_n = " << p.delta_n;
   }
 }
 

@@ -461,6 +461,31 @@ TEST(Profile, FitSectionIsOptionalAndLeftOutChangesNoStamp) {
   EXPECT_EQ(stage_stamp(plain, "tangential", "0"), stage_stamp(with, "tangential", "0"));
 }
 
+// material.wall (optional): the shells' and the plane wall's material, each key left out the
+// grains'; left out, the walls are of the grains' material and no stamp changes.
+TEST(Profile, WallMaterialIsOptionalAndInheritsTheGrainsKeys) {
+  const std::string text = quick_profile();
+  const std::string grains = "material: {E: 5.0e5, nu: 0.3, mu: 0.3, density: 250000.0}";
+  ASSERT_NE(text.find(grains), std::string::npos);
+  const ConfigNode plain = ConfigNode::load_string(text, "profile.yaml");
+  const SimulationSettings s = parse_measurement(plain).simulation;
+  EXPECT_EQ(s.wall_material.E, s.material.E);
+  EXPECT_EQ(s.wall_material.mu, s.material.mu);
+  const ConfigNode with = ConfigNode::load_string(
+      replace(text, grains, "material: {E: 5.0e5, nu: 0.3, mu: 0.3, density: 250000.0, wall: {E: 5.0e7, mu: 0.0}}"),
+      "profile.yaml");
+  const SimulationSettings w = parse_measurement(with).simulation;
+  EXPECT_EQ(w.wall_material.E, 5.0e7);
+  EXPECT_EQ(w.wall_material.nu, 0.3);
+  EXPECT_EQ(w.wall_material.mu, 0.0);
+  EXPECT_EQ(w.material.E, 5.0e5);
+  EXPECT_NE(stage_stamp(plain, "normal", "0"), stage_stamp(with, "normal", "0"));
+  EXPECT_CONTAINS(profile_error(replace(text, grains, "material: {E: 5.0e5, nu: 0.3, mu: 0.3, density: 250000.0, wall: {E: -1}}")),
+                  "material.wall");
+  EXPECT_CONTAINS(profile_error(replace(text, grains, "material: {E: 5.0e5, nu: 0.3, mu: 0.3, density: 250000.0, wall: {rho: 1}}")),
+                  "material.wall.rho: unknown key");
+}
+
 TEST(Profile, BadFitSectionIsRefusedNamingTheKey) {
   const std::string text = quick_profile();
   EXPECT_CONTAINS(profile_error(text + "fit: {weighting: chi2}\n"), "fit.weighting");

@@ -180,6 +180,48 @@ TEST(Generated, ShellAsNeighbourClosesTheGapToTheShell) {
   EXPECT_LT(with.depletion_length, without.depletion_length);
 }
 
+// packing.nearest_neighbour: centre. Every grown sphere touches the sphere whose centre is
+// nearest (brute force over all pairs, to 1e-12 Rs) unless the shell stopped it first, and
+// never crosses the shell; the reading differs from the surface one (overlaps appear), and the
+// insertion (step 3) is the same, so the same spheres are placed at the same centres.
+TEST(Generated, CentreReadingTouchesTheNearestCentre) {
+  PackingParameters p = small_packing();
+  const Packing surface = generate_packing(p, 4);
+  p.nearest_neighbour = NearestNeighbour::centre;
+  const Packing pk = generate_packing(p, 4);
+  const std::size_t n = pk.radii.size();
+  ASSERT_EQ(n, surface.radii.size());
+  EXPECT_EQ(pk.centres, surface.centres);
+  EXPECT_EQ(pk.radii_inserted, surface.radii_inserted);
+  std::size_t overlapping = 0, grown = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double shell_gap = p.Rs - pk.centres[i].norm() - pk.radii[i];
+    ASSERT_GE(shell_gap, -1e-12 * p.Rs) << "sphere " << i << " crosses the shell";
+    // The nearest centre and the gap to it, with the radii after growth (each sphere grows
+    // once, in order: a later sphere's growth cannot open a gap that an earlier one closed).
+    std::size_t nearest = n;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i) continue;
+      const double d = (pk.centres[i] - pk.centres[j]).norm();
+      if (d < best) best = d, nearest = j;
+      if (d < pk.radii[i] + pk.radii[j] - 1e-12 * p.Rs && j > i) ++overlapping;
+    }
+    ASSERT_LT(nearest, n);
+    if (pk.radii[i] == pk.radii_inserted[i]) continue;
+    ++grown;
+    const double gap = best - pk.radii[i] - pk.radii[nearest];
+    // Touches its nearest centre (or overlaps it, when that one grew later), unless the shell
+    // stopped it first.
+    if (std::abs(shell_gap) > 1e-12 * p.Rs)
+      EXPECT_LE(gap, 1e-12 * p.Rs) << "grown sphere " << i << " is " << gap << " m from its nearest centre's sphere";
+  }
+  EXPECT_EQ(grown, pk.grown);
+  EXPECT_GT(grown, n / 2);
+  EXPECT_GT(overlapping, 0u) << "the centre reading gave the surface reading's packing";
+  RecordProperty("overlapping_pairs", std::to_string(overlapping));
+}
+
 TEST(Generated, SameSeedSameBitsOtherSeedOtherPacking) {
   const PackingParameters p = small_packing();
   const Packing a = generate_packing(p, 11), b = generate_packing(p, 11), c = generate_packing(p, 12);
@@ -240,6 +282,8 @@ TEST(PackingProfile, BadValuesNameTheKeyAndTheRange) {
       {{"  beta: 1.0\n", ""}, "packing: missing required key 'beta'"},
       {{"trials: 100", "trials: many"}, "packing.trials: expected a number, got 'many'"},
       {{"beta: 1.0", "beta: 1.0\n  bta: 2"}, "packing.bta: unknown key; did you mean 'beta'?"},
+      {{"beta: 1.0", "beta: 1.0\n  nearest_neighbour: middle"},
+       "packing.nearest_neighbour: 'middle' is not allowed; allowed: surface (the smallest surface gap) or centre"},
   };
   for (const auto& [edit, expected] : cases) {
     const std::string msg = packing_error(edit.first, edit.second);
