@@ -213,8 +213,9 @@ TEST(Generated, CentreReadingTouchesTheNearestCentre) {
     const double gap = best - pk.radii[i] - pk.radii[nearest];
     // Touches its nearest centre (or overlaps it, when that one grew later), unless the shell
     // stopped it first.
-    if (std::abs(shell_gap) > 1e-12 * p.Rs)
+    if (std::abs(shell_gap) > 1e-12 * p.Rs) {
       EXPECT_LE(gap, 1e-12 * p.Rs) << "grown sphere " << i << " is " << gap << " m from its nearest centre's sphere";
+    }
   }
   EXPECT_EQ(grown, pk.grown);
   EXPECT_GT(grown, n / 2);
