@@ -54,10 +54,11 @@ calibrate-report: | $(TOOLS)  ## the calibration table and figure from the setti
 	@mkdir -p $(CALIBRATE_DIR)/report
 	@$(ACCURACY_TOOL) calibrate --study $(CALIBRATE_STUDY) --data $(CALIBRATE_DIR) --out-dir $(CALIBRATE_DIR)/report \
 	  --title "Calibration ($(CALIBRATE_STUDY), release $(VERSION))" > /dev/null
-	@for ext in pdf png; do gnuplot -e "data='$(CALIBRATE_DIR)/report/onset.dat'; out='$(CALIBRATE_DIR)/report/onset.tmp.$$ext'" \
-	  figures/calibration_onset.gp && mv $(CALIBRATE_DIR)/report/onset.tmp.$$ext $(CALIBRATE_DIR)/report/onset.$$ext \
-	  || { echo "calibrate: FAILED to draw the figure"; exit 1; }; done
-	@echo "calibrate: $(CALIBRATE_DIR)/report/table.md, $(CALIBRATE_DIR)/report/onset.pdf"
+	@for fig in onset sensitivity; do for ext in pdf png; do \
+	  gnuplot -e "data='$(CALIBRATE_DIR)/report/$$fig.dat'; out='$(CALIBRATE_DIR)/report/$$fig.tmp.$$ext'" \
+	  figures/calibration_$$fig.gp && mv $(CALIBRATE_DIR)/report/$$fig.tmp.$$ext $(CALIBRATE_DIR)/report/$$fig.$$ext \
+	  || { echo "calibrate: FAILED to draw the figure $$fig"; exit 1; }; done; done
+	@echo "calibrate: $(CALIBRATE_DIR)/report/table.md, $(CALIBRATE_DIR)/report/onset.pdf, $(CALIBRATE_DIR)/report/sensitivity.pdf"
 
 # The comparison and the figure from what has been run so far (settings not run are listed as such).
 accuracy-report: | $(TOOLS)  ## compare the settings run so far with the reference, draw the figure

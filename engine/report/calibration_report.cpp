@@ -45,6 +45,11 @@ std::vector<std::string> quantity_names(const AccuracyStudy& st) {
   return n;
 }
 
+// The quantities of the sensitivity figure, in its column order.
+const std::vector<std::string> kSensitivityColumns{
+    "solid fraction",       "soft-solid delta",   "soft-solid b",         "soft-solid b fixed range", "soft-solid Fn(0.3)",
+    "soft-solid kt/Fn(0.5)", "soft-soft delta",   "soft-soft Fn(0.5)",    "soft-soft kt/Fn(0.5)"};
+
 // Contacts per grain of a grown packing: grain–grain contacts counted at both grains, grain–shell
 // at the grain, over the grains (all pairs: the packings hold a few thousand grains).
 double coordination(const PackingFile& p) {
@@ -323,6 +328,28 @@ std::string write_calibration_report(const CalibrationReport& r, const std::stri
     dat += fmt::format("{} \"{}\" {} {} {} {} {} {} {} {}\n", i++, row.name, v(kphi), e(kphi), v(ks), e(ks), v(kf), e(kf), v(kz), e(kz));
   }
   write_file_atomically(out_dir + "/onset.dat", dat);
+
+  // sensitivity.dat: the coefficient change per parameter change, for the figure
+  // (figures/calibration_sensitivity.gp): per complete setting but the base (rows) and headline
+  // quantity (columns), z = Δ / √(σ² + σ_base²) and the relative change Δ / base.
+  std::string sens = "# column row z relative_change setting quantity\n";
+  if (base) {
+    std::size_t row_index = 0;
+    for (const auto& row : r.rows) {
+      if (!row.complete || &row == base) continue;
+      for (std::size_t c = 0; c < kSensitivityColumns.size(); ++c) {
+        const auto at = std::find(r.quantities.begin(), r.quantities.end(), kSensitivityColumns[c]);
+        if (at == r.quantities.end()) continue;  // a study that does not compare at these Δn
+        const auto k = static_cast<std::size_t>(at - r.quantities.begin());
+        const double z = (row.value[k] - base->value[k]) / std::hypot(row.error[k], base->error[k]);
+        const double rel = (row.value[k] - base->value[k]) / base->value[k];
+        sens += fmt::format("{} {} {} {} \"{}\" \"{}\"\n", c, row_index, std::isfinite(z) ? fmt::format("{:.4g}", z) : "NaN",
+                            std::isfinite(rel) ? fmt::format("{:.4g}", rel) : "NaN", row.name, kSensitivityColumns[c]);
+      }
+      ++row_index;
+    }
+  }
+  write_file_atomically(out_dir + "/sensitivity.dat", sens);
 
   nlohmann::json j;
   j["quantities"] = r.quantities;
