@@ -44,6 +44,7 @@ void each_result_field(R& r, F&& f) {
   f("result/force_between", r.force_between);
   f("result/contacts", r.contacts);
   f("result/overlap_max", r.overlap_max);
+  f("result/overlap_q99", r.overlap_q99);
   f("result/relax_steps", r.relax_steps);
   f("result/relax_time", r.relax_time);
   f("result/steps", r.steps);
@@ -207,6 +208,10 @@ void each_column(S& s, F&& f) {
                     "radius against a wall); the Hertz law holds for overlaps << 1",
      .since = Since::release_0_5},
     s.overlap_max);
+  f({.name = "overlap_q99",
+     .description = "99th percentile of the closed contacts' overlaps over the smaller radius at the end of the point",
+     .since = Since::release_0_5},
+    s.overlap_q99);
   f({"steps"}, s.steps);
   f({"relaxation/steps"}, s.relax_steps);
   f({"relaxation/time"}, s.relax_time);
@@ -244,7 +249,7 @@ SweepResults columns(const std::vector<PointResult>& points) {
     s.Fn.push_back(r.force.x()), s.Ft_parallel.push_back(r.force.y()), s.Ft_perpendicular.push_back(r.force.z());
     s.force.push_back(r.force), s.force_first.push_back(r.force_first), s.force_between.push_back(r.force_between);
     s.contacts.push_back(r.contacts), s.steps.push_back(r.steps), s.relax_steps.push_back(r.relax_steps);
-    s.overlap_max.push_back(r.overlap_max);
+    s.overlap_max.push_back(r.overlap_max), s.overlap_q99.push_back(r.overlap_q99);
     s.relax_time.push_back(r.relax_time), s.seconds.push_back(r.seconds());
     for (std::size_t p = 0; p < kPhases.size(); ++p) {
       s.phase_wall[p].push_back((r.timing.*kPhaseMember[p]).wall);

@@ -3,7 +3,7 @@
 // The point file: one measured point with the simulation state it ended in; the checkpoint
 // that lets an interrupted sweep resume, and the normal states the tangential stage shears.
 //   /result/...      PointResult: delta_n, hn, alpha_deg, ht, force, force_first, force_between
-//                    (3), contacts, overlap_max, relax_steps, relax_time, steps, and per relaxation
+//                    (3), contacts, overlap_max, overlap_q99, relax_steps, relax_time, steps, and per relaxation
 //                    check checks/{time, force_ratio, energy_ratio, kinetic_energy,
 //                    elastic_energy, max_unbalanced_force, mean_contact_force, contacts};
 //                    last, timing/{loading, relaxation, output}/{wall, cpu}
@@ -19,7 +19,8 @@
 //   /Fn, /Ft_parallel, /Ft_perpendicular [N]      the force on the second body along x, y, z
 //   /force, /force_first, /force_between (N, 3)   [N], as in PointResult
 //   /contacts, /steps, /relaxation/{steps, time, final_force_ratio, final_energy_ratio}
-//   /overlap_max                                  largest overlap / smaller radius at the end (0.5.0 on)
+//   /overlap_max, /overlap_q99                    largest overlap / smaller radius at the end, and its
+//                                                 99th percentile over the contacts (0.5.0 on)
 //   /relaxation/checks/{point, time, force_ratio, energy_ratio}   one value per relaxation check
 //   /seconds                                      wall-clock time of each point's loading and relaxation
 //   /timing/{loading, relaxation, output}/{wall, cpu} [s]   where each point's time went (PointTiming)
@@ -83,6 +84,7 @@ struct SweepResults : SweepColumns {
   std::vector<std::int64_t> reused;                          ///< per point: 1 = taken from its checkpoint
   bool has_timing = false;  ///< the file has the timings (release 0.4.0 on; else the four above are empty)
   std::vector<double> overlap_max;  ///< per point: largest overlap / smaller radius [-] (PointResult)
+  std::vector<double> overlap_q99;  ///< per point: its 99th percentile over the contacts [-]
   bool has_overlap = false;         ///< the file has overlap_max (release 0.5.0 on; else it is empty)
   PointProvenance provenance;
   std::string packings;

@@ -1,7 +1,9 @@
 #include "sim/residuals.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <vector>
 
 #include "forces/contact_walk.hpp"
 
@@ -47,6 +49,23 @@ Measurement residuals(const World& world, const ContactLists& lists, const Force
     m.max_unbalanced_force = std::max(m.max_unbalanced_force, p.F[i].norm());
   }
   return m;
+}
+
+OverlapSummary overlap_summary(const World& world, const ContactLists& lists, const ForceField& forces) {
+  OverlapSummary out;
+  if (!forces.active()) return out;
+  const Particles& p = world.p;
+  std::vector<double> fraction;
+  for_each_closed_contact(world, lists, forces.effects().friction, [&](const ClosedContact& c) {
+    fraction.push_back(c.h / (c.j >= 0 ? std::min(p.r[c.i], p.r[c.j]) : p.r[c.i]));
+  });
+  if (fraction.empty()) return out;
+  // The 99th percentile as the nearest rank: the smallest value at least 99 % of the contacts do not exceed.
+  const auto rank = static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(fraction.size()))) - 1;
+  std::nth_element(fraction.begin(), fraction.begin() + static_cast<std::ptrdiff_t>(rank), fraction.end());
+  out.q99 = fraction[rank];
+  out.max = *std::max_element(fraction.begin() + static_cast<std::ptrdiff_t>(rank), fraction.end());
+  return out;
 }
 
 }  // namespace softpack

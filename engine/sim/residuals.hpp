@@ -32,4 +32,13 @@ struct Measurement {
 
 Measurement residuals(const World& world, const ContactLists& lists, const ForceField& forces);
 
+/// How deep the closed contacts are, each as h / r with r the smaller radius of its contact (a
+/// sphere's own against a wall): the largest and the 99th percentile (the value 99 % of the
+/// contacts do not exceed; 0 with no contact). The Hertz law holds for h / r << 1: the
+/// percentile says whether a few pinned grains or the network leave that range.
+struct OverlapSummary {
+  double max = 0.0, q99 = 0.0;
+};
+OverlapSummary overlap_summary(const World& world, const ContactLists& lists, const ForceField& forces);
+
 }  // namespace softpack

@@ -31,6 +31,7 @@ TEST(NormalSweep, TheChainMeasuresHertz) {
     EXPECT_NEAR(p.force.y(), 0.0, 1e-12 * (expected + 1e-12));
     // The deepest overlap relative to the radius: the sphere's own on the wall, hn / Rs.
     EXPECT_NEAR(p.overlap_max, p.delta_n, 1e-9) << "delta_n = " << p.delta_n;
+    EXPECT_EQ(p.overlap_q99, p.overlap_max) << "one contact: its percentile is its value";
   }
 }
 
