@@ -23,6 +23,12 @@ const char* weighting_name(FitOptions::Weighting w) {
 }
 
 
+FitOptions FitSection::options_for(const std::string& scene) const {
+  FitOptions o = options;
+  if (const auto it = delta_n_max_of.find(scene); it != delta_n_max_of.end()) o.delta_n_max = it->second;
+  return o;
+}
+
 FitSection parse_fit_section(const ConfigNode& root) {
   FitSection out;
   const std::optional<ConfigNode> section = root.find("fit");
@@ -38,9 +44,18 @@ FitSection parse_fit_section(const ConfigNode& root) {
     out.options.onset_force = v;
   }
   if (const auto m = section->find("delta_n_max")) {
-    const double v = m->number();
-    if (!(v > 0.0)) m->fail(fmt::format("{} is not allowed; allowed: delta_n_max > 0", v));
-    out.options.delta_n_max = v;
+    const auto bound = [](const ConfigNode& n) {
+      const double v = n.number();
+      if (!(v > 0.0)) n.fail(fmt::format("{} is not allowed; allowed: delta_n_max > 0", v));
+      return v;
+    };
+    if (m->yaml().IsMap()) {  // per scene
+      m->allow_only({"soft-solid", "soft-soft"});
+      for (const char* scene : {"soft-solid", "soft-soft"})
+        if (const auto v = m->find(scene)) out.delta_n_max_of[scene] = bound(*v);
+    } else {
+      out.options.delta_n_max = bound(*m);
+    }
   }
   if (const auto c = section->find("compare")) out.compare = c->boolean();
   return out;

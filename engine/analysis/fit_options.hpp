@@ -3,13 +3,14 @@
 //   fit:
 //     weighting: relative     # stderr (1/stderr^2), unweighted, relative (1/value^2)
 //     onset_force: 1.0e-2     # Eq. 7's loaded points: Fn > this x the curve's largest force
-//     delta_n_max: 0.5        # fit only delta_n <= this
+//     delta_n_max: 0.5        # fit only delta_n <= this; or per scene, {soft-solid: 0.5, soft-soft: 0.35}
 //     compare: true           # also fit with every other weighting, side by side in the fit file
 //
 // Every key may be left out (its default is the fit of releases up to 0.4.0: stderr, 1e-9, no
 // bound, no comparison); a profile without the section fits as those releases did.
 #pragma once
 #include <limits>
+#include <map>
 #include <string>
 
 #include "config/yaml_node.hpp"
@@ -36,12 +37,18 @@ const char* weighting_name(FitOptions::Weighting w);
 
 struct FitSection {
   FitOptions options;
+  /// delta_n_max per scene ("soft-solid", "soft-soft") when the section gives a map; a scene
+  /// left out has options.delta_n_max (no bound).
+  std::map<std::string, double> delta_n_max_of;
   bool compare = false;  ///< also fit with the other weightings (the fit file's "weightings")
   bool given = false;    ///< the profile has a `fit` section
+  /// The options of one scene's fit: `options` with its delta_n_max.
+  FitOptions options_for(const std::string& scene) const;
 };
 
 /// Reads `fit` of a profile root (defaults when it has none). InputError at the key's line and
-/// column: an unknown key, a weighting not allowed, onset_force outside [0, 1), delta_n_max <= 0.
+/// column: an unknown key, a weighting not allowed, onset_force outside [0, 1), delta_n_max <= 0
+/// or a map of it with a key other than soft-solid and soft-soft.
 FitSection parse_fit_section(const ConfigNode& root);
 
 }  // namespace softpack::fit

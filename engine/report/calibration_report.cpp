@@ -75,7 +75,7 @@ double value_at(const std::vector<double>& x, const std::vector<MeanError>& y, d
 // Every quantity of one setting on `seeds` (soft-soft's seed k stands for its pair); notes of
 // what could not be measured.
 std::vector<double> measure(const AccuracyStudy& st, StudyRuns& runs, const std::string& folder, const Seeds& seeds,
-                            const fit::FitOptions& options, std::vector<std::string>* notes) {
+                            const fit::FitSection& section, std::vector<std::string>* notes) {
   std::vector<double> q;
   const auto note = [&](std::string text) {
     if (notes) notes->push_back(std::move(text));
@@ -95,6 +95,7 @@ std::vector<double> measure(const AccuracyStudy& st, StudyRuns& runs, const std:
     note("");
   }
   for (const auto& scene : kScenes) {
+    const fit::FitOptions options = section.options_for(scene);
     std::vector<SweepColumns> normal, tangential;
     std::vector<double> at_zero, at_onset;
     // Per Δn of Fn_delta_n, per seed: the largest overlap and its 99th percentile.
@@ -180,9 +181,9 @@ std::vector<double> measure(const AccuracyStudy& st, StudyRuns& runs, const std:
   return q;
 }
 
-fit::FitOptions profile_fit_options(const AccuracyStudy& st, const StudySetting& s) {
+fit::FitSection profile_fit_section(const AccuracyStudy& st, const StudySetting& s) {
   const ConfigNode p = ConfigNode::load_string(setting_profile_text(st, s), fmt::format("{} (setting {})", st.path, s.name));
-  return fit::parse_fit_section(p).options;
+  return fit::parse_fit_section(p);
 }
 
 }  // namespace
@@ -214,9 +215,9 @@ CalibrationReport calibration_report(const AccuracyStudy& st, const std::string&
       r.rows.push_back(row);
       continue;
     }
-    const fit::FitOptions options = profile_fit_options(st, src);
+    const fit::FitSection fit_section = profile_fit_section(st, src);
     std::vector<std::string> notes;
-    row.value = measure(st, runs, src.name, s->seeds, options, &notes);
+    row.value = measure(st, runs, src.name, s->seeds, fit_section, &notes);
     row.note = notes;
     // Leave-one-seed-out jackknife.
     const std::size_t ns = s->seeds.size(), nq = row.value.size();
@@ -225,7 +226,7 @@ CalibrationReport calibration_report(const AccuracyStudy& st, const std::string&
       for (std::size_t i = 0; i < ns; ++i) {
         Seeds rest = s->seeds;
         rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
-        const std::vector<double> v = measure(st, runs, src.name, rest, options, nullptr);
+        const std::vector<double> v = measure(st, runs, src.name, rest, fit_section, nullptr);
         for (std::size_t k = 0; k < nq; ++k) leave[k].push_back(v[k]);
       }
     for (std::size_t k = 0; k < nq; ++k) row.error.push_back(jackknife_error(leave[k]));

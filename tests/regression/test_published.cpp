@@ -311,11 +311,12 @@ TEST(ArchiveConsistency, RefittingTheArchivedAveragesReproducesTheArchivedFits) 
   const fit::FitSection section = fit::parse_fit_section(archive().profile);
   for (const std::string& s : kScenes) {
     const AverageFile& a = archive().averages.at(s);
-    const fit::PowerLawFit n = fit::fit_normal_law(a.delta_n, a.Fn, a.Fn_stderr, section.options);
+    const fit::FitOptions options = section.options_for(s);
+    const fit::PowerLawFit n = fit::fit_normal_law(a.delta_n, a.Fn, a.Fn_stderr, options);
     const FitEstimates& f = archive().fits.at(s);
     for (const auto& [key, value] : std::map<std::string, double>{{"a", n.a}, {"b", n.b}, {"c", n.c}, {"delta", n.delta}})
       EXPECT_NEAR(value, f.normal.at(key).value, 1e-10 * std::abs(value)) << s << " normal " << key;
-    const fit::PowerLawFit t = fit::fit_tangential_law(a.kt_delta_n, a.kt, a.kt_stderr, n.delta, section.options);
+    const fit::PowerLawFit t = fit::fit_tangential_law(a.kt_delta_n, a.kt, a.kt_stderr, n.delta, options);
     ASSERT_TRUE(f.tangential) << s;
     for (const auto& [key, value] : std::map<std::string, double>{{"a", t.a}, {"b", t.b}, {"c", t.c}})
       EXPECT_NEAR(value, f.tangential->at(key).value, 1e-10 * std::abs(value)) << s << " tangential " << key;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -484,6 +485,17 @@ TEST(Profile, WallMaterialIsOptionalAndInheritsTheGrainsKeys) {
                   "material.wall");
   EXPECT_CONTAINS(profile_error(replace(text, grains, "material: {E: 5.0e5, nu: 0.3, mu: 0.3, density: 250000.0, wall: {rho: 1}}")),
                   "material.wall.rho: unknown key");
+}
+
+TEST(Profile, FitRangeMayBeGivenPerScene) {
+  const std::string text = quick_profile();
+  const softpack::fit::FitSection f = softpack::fit::parse_fit_section(
+      ConfigNode::load_string(text + "fit: {weighting: unweighted, delta_n_max: {soft-soft: 0.35}}\n", "profile.yaml"));
+  EXPECT_EQ(f.options_for("soft-soft").delta_n_max, 0.35);
+  EXPECT_EQ(f.options_for("soft-solid").delta_n_max, std::numeric_limits<double>::infinity());  // no bound
+  EXPECT_EQ(f.options_for("soft-soft").weighting, softpack::fit::FitOptions::Weighting::unweighted);
+  EXPECT_CONTAINS(profile_error(text + "fit: {delta_n_max: {soft-hard: 0.3}}\n"), "fit.delta_n_max.soft-hard: unknown key");
+  EXPECT_CONTAINS(profile_error(text + "fit: {delta_n_max: {soft-soft: 0}}\n"), "fit.delta_n_max.soft-soft: 0 is not allowed");
 }
 
 TEST(Profile, BadFitSectionIsRefusedNamingTheKey) {
