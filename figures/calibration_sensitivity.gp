@@ -19,16 +19,20 @@ if (system("test -r '".data."' && echo yes") ne "yes") {
 }
 if (out[strlen(out)-3:] eq ".pdf") {
   set terminal pdfcairo size 16cm,12cm font "Helvetica,7" linewidth 1.2
+  small = 6; tiny = 5
 } else {
   set terminal pngcairo size 2400,1800 font "Helvetica,20" linewidth 3
+  small = 17; tiny = 15
 }
 set output out
-stats data using 1:2 nooutput
-if (STATS_records == 0) {
+rows = int(system("grep -vc '^#' '".data."' || true"))
+if (rows == 0) {
   set label 1 "no setting run yet" at graph 0.5, graph 0.5 center
   unset border; unset tics
+  set xrange [0:1]; set yrange [0:1]
   plot 1/0 notitle
 } else {
+  stats data using 1:2 nooutput
   ncol = int(STATS_max_x) + 1
   nrow = int(STATS_max_y) + 1
   set xrange [-0.5:ncol - 0.5]
@@ -36,10 +40,11 @@ if (STATS_records == 0) {
   set cbrange [-10:10]
   set cblabel "change / standard error (z)"
   set palette defined (-10 "#2166ac", -2 "#d1e5f0", 0 "#f7f7f7", 2 "#fddbc7", 10 "#b2182b")
-  set xtics rotate by 35 right scale 0 font ",6"
-  set ytics scale 0 font ",6"
+  set xtics rotate by 35 right scale 0 font ",".small
+  set ytics scale 0 font ",".small
   unset key
   clip(z) = z > 10 ? 10 : (z < -10 ? -10 : z)
-  plot data using 1:2:(clip($3)):xtic(6):ytic(5) with image, \
-       data using 1:2:(sprintf("%+.0f%%", 100 * $4)) with labels font ",5"
+  set style fill solid 1.0 noborder
+  plot data using 1:2:(0.5):(0.5):(clip($3)):xtic(6):ytic(5) with boxxyerror lc palette, \
+       data using 1:2:(valid(4) ? sprintf("%+.0f%%", 100 * $4) : "") with labels font ",".tiny
 }
