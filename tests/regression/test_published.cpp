@@ -29,6 +29,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -50,7 +51,7 @@ const std::vector<std::string> kScenes{"soft-solid", "soft-soft"};
 
 // The release whose archive the gaps below were measured on. A test of another release's
 // archive fails until its gaps are recorded (paper/paper.tex gives them with their causes).
-constexpr const char* kRecordedRelease = "0.4.0";
+constexpr const char* kRecordedRelease = "0.5.0";
 
 struct Archive {
   fs::path dir;
@@ -93,16 +94,16 @@ struct Expectation {
 const std::vector<Expectation>& expectations() {
   const double per_degree = std::numbers::pi * 0.016 / 180.0;  // m of ht per degree of α (Rs = 0.016 m)
   static const std::vector<Expectation> e{
-      {"table1", "soft-solid", "a", Tolerance::factor, 2.0, 1.09543},
-      {"table1", "soft-solid", "b", Tolerance::relative, 0.25, 0.67407},
-      {"table1", "soft-solid", "delta", Tolerance::relative, 0.35, 1.30504},
-      {"table1", "soft-soft", "a", Tolerance::factor, 2.0, 2009.62},
-      {"table1", "soft-soft", "b", Tolerance::relative, 0.25, 3.50866},
-      {"table1", "soft-soft", "delta", Tolerance::relative, 0.35, 1.48776},
-      {"table2", "soft-solid", "a", Tolerance::factor, 2.0, 2.18396, per_degree},
-      {"table2", "soft-solid", "b", Tolerance::relative, 0.35, 1.16371},
-      {"table2", "soft-soft", "a", Tolerance::factor, 2.0, 18886.4, per_degree},
-      {"table2", "soft-soft", "b", Tolerance::relative, 0.35, 4.40962},
+      {"table1", "soft-solid", "a", Tolerance::factor, 2.0, std::nullopt},
+      {"table1", "soft-solid", "b", Tolerance::relative, 0.25, std::nullopt},
+      {"table1", "soft-solid", "delta", Tolerance::relative, 0.35, 0.59487},
+      {"table1", "soft-soft", "a", Tolerance::factor, 2.0, -0.51203},
+      {"table1", "soft-soft", "b", Tolerance::relative, 0.25, std::nullopt},
+      {"table1", "soft-soft", "delta", Tolerance::relative, 0.35, 0.38535},
+      {"table2", "soft-solid", "a", Tolerance::factor, 2.0, std::nullopt, per_degree},
+      {"table2", "soft-solid", "b", Tolerance::relative, 0.35, std::nullopt},
+      {"table2", "soft-soft", "a", Tolerance::factor, 2.0, -0.59070, per_degree},
+      {"table2", "soft-soft", "b", Tolerance::relative, 0.35, -0.43289},
   };
   return e;
 }
@@ -152,18 +153,26 @@ INSTANTIATE_TEST_SUITE_P(PublishedCoefficients, Published, ::testing::Range<std:
 
 // --- The paper's claims ----------------------------------------------------------------------
 
-TEST(PaperClaims, NoForceBelowDelta) {
-  // Eq. 7: F = 0 for Δn < δ. Every averaged force below the fitted δ is zero within two of its
-  // standard errors, or below 10^-6 of the largest force (round-off: grains barely touching).
+// Eq. 7: F = 0 for Δn < δ. Every averaged force below the fitted δ should be zero within two of
+// its standard errors, or below 10^-6 of the largest force (round-off: grains barely touching).
+// Release 0.5.0 does not reproduce it: its dense packings carry a toe of force before the fitted
+// δ, which Eq. 7 has not (paper/calibration.md, "At 0.75 the onset stops moving"). Expected
+// failure asserting the gap: the largest such force, relative to the curve's largest, per scene.
+TEST(PaperClaims, NoForceBelowDelta_expected_failure) {
+  const std::map<std::string, double> recorded{{"soft-solid", 3.6475e-3}, {"soft-soft", 4.4998e-3}};
   for (const std::string& s : kScenes) {
     const AverageFile& a = archive().averages.at(s);
     const double delta = archive().fits.at(s).normal.at("delta").value;
     const double top = *std::max_element(a.Fn.begin(), a.Fn.end());
+    double largest = 0.0;  // the largest force below δ that is not zero within the criterion, / top
     for (std::size_t k = 0; k < a.delta_n.size(); ++k)
-      if (a.delta_n[k] < delta) {
-        EXPECT_TRUE(std::abs(a.Fn[k]) <= 2.0 * a.Fn_stderr[k] || std::abs(a.Fn[k]) <= 1e-6 * top)
-            << s << ": Fn(" << a.delta_n[k] << ") = " << a.Fn[k] << " ± " << a.Fn_stderr[k] << " below delta = " << delta;
-      }
+      if (a.delta_n[k] < delta && !(std::abs(a.Fn[k]) <= 2.0 * a.Fn_stderr[k] || std::abs(a.Fn[k]) <= 1e-6 * top))
+        largest = std::max(largest, std::abs(a.Fn[k]) / top);
+    EXPECT_GT(largest, 0.0) << s << ": no force below delta now: record the claim as reproduced";
+    EXPECT_NEAR(largest, recorded.at(s), 1e-3 * recorded.at(s))
+        << fmt::format("{}: the largest force below delta changed: {:.5g} of the largest force", s, largest);
+    fmt::print("expected failure: {}: a force of {:.2g} of the largest below delta = {:.3f} (paper/paper.tex)\n", s, largest,
+               delta);
   }
 }
 
@@ -214,11 +223,18 @@ TangentialSeeds tangential_seeds(const std::string& scene) {
   return t;
 }
 
-TEST(PaperClaims, PerpendicularTangentialForceIsZeroWithinItsStandardErrors) {
-  // "the tangential force in the perpendicular direction ... is, on average, unaffected by the
-  // deformation": at every (Δn, α) the mean over the seeds is within two of its standard errors
-  // of zero. (The points of one Δn share their normal state, so they are not independent, and no
-  // statistic over all of them is tested.)
+// "the tangential force in the perpendicular direction ... is, on average, unaffected by the
+// deformation": at every (Δn, α) the mean over the seeds should be within two of its standard
+// errors of zero. (The points of one Δn share their normal state, so they are not independent,
+// and no statistic over all of them is tested.) Release 0.5.0: the five points of soft-solid
+// Δn = 0.2 lie 2.1–2.3 standard errors from zero, every other of the 14 (scene, Δn) groups
+// within 2 — one group beyond 2σ among 14 happens by chance half the time (1 − 0.954^14), but
+// the test is as specified: an expected failure asserting which group and how far.
+TEST(PaperClaims, PerpendicularTangentialForceIsZeroWithinItsStandardErrors_expected_failure) {
+  const std::set<std::pair<std::string, double>> recorded_groups{{"soft-solid", 0.2}};
+  constexpr double kRecordedLargest = 2.3445;  // the largest |mean| / standard error
+  std::set<std::pair<std::string, double>> failing;
+  double largest = 0.0;
   for (const std::string& s : kScenes) {
     const TangentialSeeds t = tangential_seeds(s);
     ASSERT_GE(t.perpendicular.size(), 2u) << s;
@@ -229,9 +245,14 @@ TEST(PaperClaims, PerpendicularTangentialForceIsZeroWithinItsStandardErrors) {
       m /= n;
       for (const auto& seed : t.perpendicular) v += (seed[k] - m) * (seed[k] - m);
       const double se = std::sqrt(v / (n - 1.0) / n);
-      EXPECT_LE(std::abs(m), 2.0 * se) << s << ": Ft_perpendicular at delta_n = " << t.delta_n[k] << ", alpha = " << t.alpha[k];
+      if (std::abs(m) > 2.0 * se) failing.insert({s, std::round(t.delta_n[k] * 1e6) / 1e6});
+      largest = std::max(largest, std::abs(m) / se);
     }
   }
+  EXPECT_EQ(failing, recorded_groups) << "the (scene, delta_n) groups beyond two standard errors changed";
+  EXPECT_NEAR(largest, kRecordedLargest, 1e-3 * kRecordedLargest) << "the largest |mean| / standard error changed";
+  fmt::print("expected failure: Ft_perpendicular beyond 2 standard errors at soft-solid delta_n = 0.2 (largest {:.3f} se)\n",
+             largest);
 }
 
 TEST(PaperClaims, PrestrainShrinksAsMoreSeedsAreAveraged) {
