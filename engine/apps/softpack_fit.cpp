@@ -50,9 +50,10 @@ int main(int argc, char** argv) {
     FitFile out;
     out.scene = in.scene;
     out.input = {average_path, in.profile, in.code_version, in.seeds};
-    if (section.given) out.options = section.options;
+    const fit::FitOptions options = options_for(in.scene);  // with the scene's delta_n_max
+    if (section.given) out.options = options;
     try {
-      out.normal = fit::fit_normal_law(in.delta_n, in.Fn, in.Fn_stderr, section.options);
+      out.normal = fit::fit_normal_law(in.delta_n, in.Fn, in.Fn_stderr, options);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: /normal: {}", average_path, e.what()));
     }
@@ -60,7 +61,7 @@ int main(int argc, char** argv) {
       out.tangential_reason = fmt::format("{} has no /kt group (no tangential sweep averaged)", average_path);
     } else {
       try {
-        out.tangential = fit::fit_tangential_law(in.kt_delta_n, in.kt, in.kt_stderr, out.normal.delta, section.options);
+        out.tangential = fit::fit_tangential_law(in.kt_delta_n, in.kt, in.kt_stderr, out.normal.delta, options);
       } catch (const InputError& e) {
         out.tangential_reason = fmt::format("/kt: {}", e.what());
       }
@@ -69,7 +70,7 @@ int main(int argc, char** argv) {
     if (section.compare)
       for (const auto w : {fit::FitOptions::Weighting::standard_error, fit::FitOptions::Weighting::unweighted,
                            fit::FitOptions::Weighting::relative}) {
-        fit::FitOptions o = section.options;
+        fit::FitOptions o = options;
         o.weighting = w;
         FitFile::Alternative alt{fit::weighting_name(w), std::nullopt, std::nullopt, ""};
         try {
