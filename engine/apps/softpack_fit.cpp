@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
     FitFile out;
     out.scene = in.scene;
     out.input = {average_path, in.profile, in.code_version, in.seeds};
-    const fit::FitOptions options = options_for(in.scene);  // with the scene's delta_n_max
+    const fit::FitOptions options = section.options_for(in.scene);  // with the scene's delta_n_max
     if (section.given) out.options = options;
     try {
       out.normal = fit::fit_normal_law(in.delta_n, in.Fn, in.Fn_stderr, options);
