@@ -77,6 +77,21 @@ expect_error "/provenance/scene: 'soft-hard' is not allowed; allowed: soft-solid
 "$py" -c "import h5py; f = h5py.File('$tmp/avg-soft.h5', 'a'); del f['normal/Fn_stderr']; f['normal/Fn_stderr'] = [1.0, 2.0]"
 expect_error "/normal/Fn_stderr has 2 values but /normal/delta_n has 21" "$out" fit "$tmp/avg-soft.h5" "$out"
 
+# fit.delta_n_max per scene: the bound of the average's scene is applied (and recorded), the
+# other scene's is not.
+printf 'profile: fake\nfit: {weighting: unweighted, delta_n_max: {soft-solid: 0.3, soft-soft: 0.45}}\n' > "$tmp/range.yaml"
+"$bin/softpack-fit" --average "$tmp/late.h5" --config "$tmp/range.yaml" --out "$tmp/r.json" --quiet 2> /dev/null && fail "a fit of 0 loaded points"
+fake soft-solid 73.669 2.799 -0.035 0.740 2.100 7 "$tmp/ranged.h5"
+"$bin/softpack-fit" --average "$tmp/ranged.h5" --config "$tmp/range.yaml" --out "$tmp/r.json" --quiet || fail "ranged fit"
+"$py" -c "
+import json, sys
+j = json.load(open('$tmp/r.json'))
+n = j['normal']
+assert j['options']['delta_n_max'] == 0.3, j['options']
+assert n['range'][1] == 0.3, n['range']
+assert abs(n['b'] - 2.799) < 1e-3, n['b']
+" || fail "the soft-solid bound of a per-scene delta_n_max: $(cat "$tmp/r.json")"
+
 table() { "$bin/softpack-table" --fits "$@" --published "$root/experiments/published.yaml" --out-dir "$tmp/t2"; }
 expect_error "cannot open the file" "$tmp/t2" table "$tmp/fit/none.json"
 expect_error "scene 'soft-solid' is given twice" "$tmp/t2" table "$tmp/fit/soft-solid.json" "$tmp/fit/soft-solid.json"
