@@ -17,7 +17,7 @@ ACCURACY_TOOL := $(BUILD)/engine/softpack-accuracy
 
 .PHONY: accuracy accuracy-report calibrate calibrate-report
 accuracy: | $(TOOLS)  ## the fidelity study: every knob's error against its CPU time (DATA/accuracy/report/)
-	@$(call run_study,$(ACCURACY_STUDY),$(ACCURACY_DIR),$(ACCURACY_SETTINGS))
+	+@$(call run_study,$(ACCURACY_STUDY),$(ACCURACY_DIR),$(ACCURACY_SETTINGS))
 	@$(MAKE) --no-print-directory accuracy-report
 
 # run_study STUDY DIR SETTINGS: the profile of the reference and of every setting of STUDY
@@ -47,7 +47,7 @@ endef
 CALIBRATE_STUDY ?= experiments/calibrate.yaml
 CALIBRATE_DIR ?= data/calibrate
 calibrate: | $(TOOLS)  ## the calibration study: each open parameter's effect on the laws (CALIBRATE_DIR/report/)
-	@$(call run_study,$(CALIBRATE_STUDY),$(CALIBRATE_DIR),$(CALIBRATE_SETTINGS))
+	+@$(call run_study,$(CALIBRATE_STUDY),$(CALIBRATE_DIR),$(CALIBRATE_SETTINGS))
 	@$(MAKE) --no-print-directory calibrate-report
 
 calibrate-report: | $(TOOLS)  ## the calibration table and figure from the settings run so far

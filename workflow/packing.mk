@@ -40,8 +40,9 @@ $(FIGURES_OUT)/fig2_softparticle.%: $(FIGURES_OUT)/fig2_section.dat figures/fig2
 STUDY_DIR := $(DATA)/studies/packing-density
 study-packing: $(STUDY_DIR)/packing-density.md figures/generated/studies/packing-density.png  ## the packing density study (beta, I, r_max/Rs)
 	@cat $(STUDY_DIR)/packing-density.md
-# The study varies the paper profile's packing section: it depends on that section only.
-STUDY_STAMP := $(call stamp,packing-density,packing,experiments/paper.yaml,$(DATA)/studies/stamps)
+# The study varies its base profile's packing section (experiments/fast.yaml: the packing of
+# releases <= 0.4.0): it depends on that section only.
+STUDY_STAMP := $(call stamp,packing-density,packing,experiments/fast.yaml,$(DATA)/studies/stamps)
 $(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/packing-density.yaml $(STUDY_STAMP) | $(TOOLS)
 	$(RUN) $(BUILD)/engine/softpack-packing-study --config experiments/packing-density.yaml --out $(STUDY_DIR)
 figures/generated/studies/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
