@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <numbers>
 #include <set>
 
 #include "analysis/fit_table.hpp"
@@ -69,6 +70,10 @@ int main(int argc, char** argv) {
     root.allow_only({"table1", "table2"});
     table::Table t1{"Table 1 (normal, Eq. 7)", table::table1_rows(), {}};
     table::Table t2{"Table 2 (tangential spring, Eq. 8)", table::table2_rows(), {}};
+    if (Rs > 0.0)  // the paper's "N/m" compared as N per degree of α (kt_unit.md); our N/m stays above
+      for (const char* k : {"a", "c"})
+        t2.rows.push_back({std::string(k) + "_per_degree", fmt::format("{} [N/deg], read per degree of α", k),
+                           fmt::format("${}$ [N/deg], per degree of $\\alpha$", k)});
     std::set<std::string> scenes;
     std::vector<std::string> sources;
     for (const std::string& path : fit_paths) {
@@ -79,6 +84,21 @@ int main(int argc, char** argv) {
       table::Column c2{fit.scene, std::move(fit.tangential), {}, {}};
       add_published(c1, root, "table1", {"a", "b", "c", "delta"});
       add_published(c2, root, "table2", {"a", "b", "c"});
+      if (Rs > 0.0) {
+        // Table 2 read per degree of α, the reading kt_unit.md supports (analysis/kt_unit.hpp):
+        // kt per degree = kt per metre of ht × the metres of ht in one degree, π Rs / 180.
+        const double per_degree = std::numbers::pi * Rs / 180.0;
+        if (c2.ours)
+          for (const char* k : {"a", "c"})
+            if (const auto it = c2.ours->find(k); it != c2.ours->end())
+              (*c2.ours)[std::string(k) + "_per_degree"] = table::Estimate{it->second.value * per_degree, it->second.error * per_degree};
+        for (const char* k : {"a", "c"})
+          if (const auto it = c2.published.find(k); it != c2.published.end()) {
+            c2.published[std::string(k) + "_per_degree"] = it->second;
+            if (const auto t = c2.published_text.find(k); t != c2.published_text.end())
+              c2.published_text[std::string(k) + "_per_degree"] = t->second;
+          }
+      }
       t1.columns.push_back(std::move(c1));
       t2.columns.push_back(std::move(c2));
       sources.push_back(fmt::format("{} ({}, softpack-fit {})", path, fit.scene, fit.code_version));
