@@ -42,6 +42,11 @@ class Watchdog {
     std::optional<Vec3> gravity;
   };
 
+  /// Overlaps below this fraction of the radius are of rounding size: a state whose contacts all
+  /// stay below it, and whose motion carries no more energy than they do, is not judged by the
+  /// energy criterion.
+  static constexpr double kRoundOffOverlap = 1e-9;
+
   Watchdog() = default;
   Watchdog(const WatchdogDef& def, Context context) : def_(def), context_(std::move(context)) {}
 

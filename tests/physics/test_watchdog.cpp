@@ -13,6 +13,7 @@
 #include "measure/settings.hpp"
 #include "scene/scene_yaml.hpp"
 #include "sim/simulation.hpp"
+#include "state/world.hpp"
 #include "support/scenes.hpp"
 
 namespace softpack {
@@ -151,6 +152,27 @@ TEST(Watchdog, SoundDrivenRunsStayFarFromTheThresholds) {
   EXPECT_GT(sim.watchdog().budget(), 0.0);
   EXPECT_LT(sim.watchdog().largest_energy_ratio(), 1.1);  // E <= budget up to integration error
   EXPECT_LT(sim.watchdog().largest_overlap_fraction(), 0.5);
+}
+
+// Energies of round-off are no blow-up: grains touching by 1e-13 of a radius carry 1e-39 J,
+// whose rounding noise grows tenfold and more between checks (a soft-particle's first relaxed
+// state, release 0.5.0's calibration). The same growth with a real overlap, or carried by motion,
+// still stops the run.
+TEST(Watchdog, RoundOffEnergiesAreNotABlowUp) {
+  const World world = make_world(two_spheres(1e-13));
+  Watchdog dog(WatchdogDef{}, Watchdog::Context{});
+  Measurement m;
+  m.elastic_energy = 3e-39;
+  m.deepest.fraction = 1e-13;
+  m.deepest.i = 0, m.deepest.j = 1;
+  dog.start(world, m);
+  m.elastic_energy = 1.4e-34;  // 5e4 times the budget
+  EXPECT_NO_THROW(dog.check(world, m));
+  m.deepest.fraction = 1e-3;  // a real overlap: judged
+  EXPECT_THROW(dog.check(world, m), NumericalError);
+  m.deepest.fraction = 1e-13;
+  m.kinetic_energy = 1e-33;  // the energy is in the motion: judged
+  EXPECT_THROW(dog.check(world, m), NumericalError);
 }
 
 TEST(Watchdog, FreeFallIsPaidForByGravity) {
