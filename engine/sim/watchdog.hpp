@@ -43,8 +43,8 @@ class Watchdog {
   };
 
   /// Overlaps below this fraction of the radius are of rounding size: a state whose contacts all
-  /// stay below it, and whose motion carries no more energy than they do, is not judged by the
-  /// energy criterion.
+  /// stay below it, and whose spheres move by less than it per step, is not judged by the energy
+  /// criterion.
   static constexpr double kRoundOffOverlap = 1e-9;
 
   Watchdog() = default;
