@@ -123,7 +123,13 @@ verify:  ## check every archived file against MANIFEST.sha256 (ARCHIVES=dir... f
 # (workflow/stamps.mk). Before it is built (a fresh clone), the pipeline's goals build the tools,
 # then run make again, which then reads the profile.
 CONFIG_TOOL := $(BUILD)/engine/softpack-config
-ifneq ($(wildcard $(CONFIG_TOOL)),)
+# Goals that need no profile: they must work with tools of an older checkout, which may refuse
+# the current profile (make build is what updates them).
+NO_PROFILE_GOALS := build build-tools setup help clean test test-sanitize bench verify
+PROFILE_GOALS := $(if $(MAKECMDGOALS),$(filter-out $(NO_PROFILE_GOALS),$(MAKECMDGOALS)),help)
+ifeq ($(PROFILE_GOALS),)
+# build, setup, test... only: the pipeline's rules are not read.
+else ifneq ($(wildcard $(CONFIG_TOOL)),)
 include workflow/stamps.mk
 include workflow/packing.mk
 include workflow/sweeps.mk
