@@ -15,11 +15,13 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }
 
+double metres_per_degree(double Rs) { return std::numbers::pi * Rs / 180.0; }
+
 std::vector<KtReading> kt_readings(double Rs) {
   if (!(Rs > 0.0)) throw InputError(fmt::format("Rs = {} m is not allowed; allowed: Rs > 0", Rs));
   return {{"per metre of ht", "N/m", 1.0},
           {"per millimetre of ht", "N/mm", 1e-3},
-          {"per degree of alpha", "N/deg", std::numbers::pi * Rs / 180.0},
+          {"per degree of alpha", "N/deg", metres_per_degree(Rs)},
           {"per radian of alpha (= per unit of ht/Rs)", "N/rad", Rs}};
 }
 

@@ -21,6 +21,8 @@ struct KtReading {
   std::string unit;    ///< "N/deg", ...
   double metres = 0.0; ///< metres of ht per unit: kt_U = kt[N/m] × metres
 };
+/// Metres of ht in one degree of α, π Rs / 180 (ht = π Rs α / 180, paper §4).
+double metres_per_degree(double Rs);
 /// The candidate readings for a shell of radius Rs [m], in a fixed order.
 std::vector<KtReading> kt_readings(double Rs);
 

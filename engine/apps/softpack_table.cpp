@@ -8,7 +8,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <numbers>
 #include <set>
 
 #include "analysis/fit_table.hpp"
@@ -86,8 +85,8 @@ int main(int argc, char** argv) {
       add_published(c2, root, "table2", {"a", "b", "c"});
       if (Rs > 0.0) {
         // Table 2 read per degree of α, the reading kt_unit.md supports (analysis/kt_unit.hpp):
-        // kt per degree = kt per metre of ht × the metres of ht in one degree, π Rs / 180.
-        const double per_degree = std::numbers::pi * Rs / 180.0;
+        // kt per degree = kt per metre of ht × the metres of ht in one degree.
+        const double per_degree = table::metres_per_degree(Rs);
         if (c2.ours)
           for (const char* k : {"a", "c"})
             if (const auto it = c2.ours->find(k); it != c2.ours->end())

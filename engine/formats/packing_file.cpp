@@ -17,8 +17,8 @@ using namespace formats;
 constexpr const char *kCentres = "centres", *kRadii = "radii", *kShellRadius = "shell/radius";
 constexpr const char *kProgram = "provenance/program", *kParameters = "parameters", *kRs = "parameters/Rs";
 constexpr std::array kLayout{kCentres, kRadii, kProgram};  // what makes a file a packing file
-constexpr const char* kPack = "softpack-pack";
-constexpr const char* kNearest = "parameters/nearest_neighbour";  // since 0.5.0; absent: surface              // the program that writes them
+constexpr const char* kPack = "softpack-pack";              // the program that writes them
+constexpr const char* kNearest = "parameters/nearest_neighbour";  // since 0.5.0; absent: surface
 
 // /parameters: f(dataset, member) for each of the generator's parameters, in the file's order.
 template <class P, class F>

@@ -28,7 +28,7 @@ struct PointResult {
   /// Largest overlap at the end relative to the smaller radius of its contact (a sphere's own
   /// radius against a wall): h / r [-], where the Hertz law holds only for h / r << 1.
   double overlap_max = 0.0;
-  double overlap_q99 = 0.0;  ///< the same, the value 99 % of the contacts do not exceed (sim/residuals.hpp)
+  double overlap_q99 = 0.0;  ///< the same, the value 99 % of the contacts do not exceed (sim/residuals.hpp, overlap_quantile)
   long relax_steps = 0;
   double relax_time = 0.0;            ///< simulated [s]
   std::vector<RelaxationCheck> checks;

@@ -53,9 +53,7 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
     // The grains' material; `wall` (optional: E, nu, mu, each left out the grains') is the
     // shells' and the plane wall's (the soft-solid scene's solid).
     const ConfigNode material = root.at("material");
-    material.allow_only({"E", "nu", "mu", "density", "wall"});
-    s.material = Material{"grain", material.at("E").number(), material.at("nu").number(), material.at("mu").number(),
-                          material.at("density").number()};
+    s.material = parse_material(material, "grain", {"wall"});
     s.wall_material = s.material;
     s.wall_material.name = "wall";
     if (const auto wall = material.find("wall")) {

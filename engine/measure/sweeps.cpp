@@ -22,10 +22,10 @@ PointResult record_point(const Simulation& sim, const ContactSetup& setup, const
   r.force = measured_force(sim, setup);
   if (!setup.first_shell.empty()) r.force_first = sim.wall_load(setup.first_shell).force;
   r.force_between = setup.second_body >= 0 ? sim.force_between(setup.first_body, setup.second_body) : r.force;
-  r.contacts = static_cast<long>(sim.residuals().contacts);
-  const OverlapSummary o = sim.overlap_summary();
-  r.overlap_max = o.max;
-  r.overlap_q99 = o.q99;
+  const Measurement m = sim.residuals();
+  r.contacts = static_cast<long>(m.contacts);
+  r.overlap_max = m.deepest.fraction;
+  r.overlap_q99 = sim.overlap_quantile(0.99);
   r.relax_steps = relax.steps;
   r.relax_time = relax.simulated_time;
   r.checks = relax.checks;

@@ -248,6 +248,12 @@ std::size_t index_of(const CalibrationReport& r, const std::string& name) {
   return static_cast<std::size_t>(it - r.quantities.begin());
 }
 
+// The change of quantity k of a setting against the base in units of their errors:
+// z = Δ / √(σ² + σ_base²) (NaN where either is not measured).
+double change_z(const CalibrationRow& row, const CalibrationRow& base, std::size_t k) {
+  return (row.value[k] - base.value[k]) / std::hypot(row.error[k], base.error[k]);
+}
+
 // One Markdown table: a row per complete setting, a column per quantity (value ± standard error).
 std::string table(const CalibrationReport& r, const std::vector<std::string>& columns) {
   std::string md = "| setting |";
@@ -310,7 +316,7 @@ std::string write_calibration_report(const CalibrationReport& r, const std::stri
       md += fmt::format("| {} |", r.quantities[k]);
       for (const auto& row : r.rows) {
         if (!row.complete || &row == base) continue;
-        const double z = (row.value[k] - base->value[k]) / std::hypot(row.error[k], base->error[k]);
+        const double z = change_z(row, *base, k);
         md += std::isfinite(z) ? (std::abs(z) >= 2.0 ? fmt::format(" **{:+.1f}** |", z) : fmt::format(" {:+.1f} |", z)) : " – |";
       }
       md += "\n";
@@ -349,7 +355,7 @@ std::string write_calibration_report(const CalibrationReport& r, const std::stri
         const auto at = std::find(r.quantities.begin(), r.quantities.end(), kSensitivityColumns[c]);
         if (at == r.quantities.end()) continue;  // a study that does not compare at these Δn
         const auto k = static_cast<std::size_t>(at - r.quantities.begin());
-        const double z = (row.value[k] - base->value[k]) / std::hypot(row.error[k], base->error[k]);
+        const double z = change_z(row, *base, k);
         const double rel = (row.value[k] - base->value[k]) / base->value[k];
         sens += fmt::format("{} {} {} {} \"{}\" \"{}\"\n", c, row_index, std::isfinite(z) ? fmt::format("{:.4g}", z) : "NaN",
                             std::isfinite(rel) ? fmt::format("{:.4g}", rel) : "NaN", row.name, kSensitivityColumns[c]);

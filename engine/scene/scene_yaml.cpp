@@ -98,8 +98,10 @@ int int_of(const ConfigNode& n) {
 
 }  // namespace
 
-Material parse_material(const ConfigNode& m, const std::string& name) {
-  m.allow_only({"E", "nu", "mu", "density"});
+Material parse_material(const ConfigNode& m, const std::string& name, const std::vector<std::string>& also) {
+  std::vector<std::string> keys{"E", "nu", "mu", "density"};
+  keys.insert(keys.end(), also.begin(), also.end());
+  m.allow_only(keys);
   return Material{name, m.at("E").number(), m.at("nu").number(), m.at("mu").number(), m.at("density").number()};
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "config/yaml_node.hpp"
 #include "scene/relaxation_def.hpp"
@@ -30,7 +31,8 @@ SceneFile load_scene_file(const std::string& path);
 
 // The readers of the scene's parts, shared with the profiles (measure/settings.cpp): types and
 // keys only; the ranges are validate()'s (scene/validate.hpp).
-Material parse_material(const ConfigNode& node, const std::string& name);
+/// `also`: keys the caller reads itself besides E, nu, mu, density (the profile's `wall`).
+Material parse_material(const ConfigNode& node, const std::string& name, const std::vector<std::string>& also = {});
 EffectsDef parse_effects(const ConfigNode& node);
 IntegrationDef parse_integration(const ConfigNode& node);
 NeighborDef parse_neighbor(const ConfigNode& node);

@@ -51,21 +51,18 @@ Measurement residuals(const World& world, const ContactLists& lists, const Force
   return m;
 }
 
-OverlapSummary overlap_summary(const World& world, const ContactLists& lists, const ForceField& forces) {
-  OverlapSummary out;
-  if (!forces.active()) return out;
+double overlap_quantile(const World& world, const ContactLists& lists, const ForceField& forces, double q) {
+  if (!forces.active()) return 0.0;
   const Particles& p = world.p;
   std::vector<double> fraction;
   for_each_closed_contact(world, lists, forces.effects().friction, [&](const ClosedContact& c) {
     fraction.push_back(c.h / (c.j >= 0 ? std::min(p.r[c.i], p.r[c.j]) : p.r[c.i]));
   });
-  if (fraction.empty()) return out;
-  // The 99th percentile as the nearest rank: the smallest value at least 99 % of the contacts do not exceed.
-  const auto rank = static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(fraction.size()))) - 1;
+  if (fraction.empty()) return 0.0;
+  // The nearest rank: the smallest value at least a fraction q of the contacts do not exceed.
+  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(fraction.size()))) - 1;
   std::nth_element(fraction.begin(), fraction.begin() + static_cast<std::ptrdiff_t>(rank), fraction.end());
-  out.q99 = fraction[rank];
-  out.max = *std::max_element(fraction.begin() + static_cast<std::ptrdiff_t>(rank), fraction.end());
-  return out;
+  return fraction[rank];
 }
 
 }  // namespace softpack

@@ -32,13 +32,10 @@ struct Measurement {
 
 Measurement residuals(const World& world, const ContactLists& lists, const ForceField& forces);
 
-/// How deep the closed contacts are, each as h / r with r the smaller radius of its contact (a
-/// sphere's own against a wall): the largest and the 99th percentile (the value 99 % of the
-/// contacts do not exceed; 0 with no contact). The Hertz law holds for h / r << 1: the
-/// percentile says whether a few pinned grains or the network leave that range.
-struct OverlapSummary {
-  double max = 0.0, q99 = 0.0;
-};
-OverlapSummary overlap_summary(const World& world, const ContactLists& lists, const ForceField& forces);
+/// The value a fraction `q` (0 < q <= 1) of the closed contacts do not exceed of h / r, with r the
+/// smaller radius of the contact (a sphere's own against a wall), as Measurement::Deepest; 0
+/// with no contact. The Hertz law holds for h / r << 1: beside the deepest contact, q = 0.99
+/// says whether a few pinned grains or the network leave that range.
+double overlap_quantile(const World& world, const ContactLists& lists, const ForceField& forces, double q);
 
 }  // namespace softpack

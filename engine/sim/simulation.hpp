@@ -77,7 +77,7 @@ class Simulation {
   bool drivers_moving() const { return drivers_.moving(); }
   /// Residuals of the current state (sim/residuals.hpp).
   Measurement residuals() const { return softpack::residuals(world_, neighbours_.lists(), forces_); }
-  OverlapSummary overlap_summary() const { return softpack::overlap_summary(world_, neighbours_.lists(), forces_); }
+  double overlap_quantile(double q) const { return softpack::overlap_quantile(world_, neighbours_.lists(), forces_, q); }
 
   /// The state of the spheres, walls and springs (no drivers may be moving). sim/checkpoint.cpp.
   SimulationState state() const;

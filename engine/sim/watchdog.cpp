@@ -133,14 +133,14 @@ void Watchdog::check(const World& world, const Measurement& m) {
   // its radius and no sphere moves by more than that fraction of its radius in a step, E and its
   // budget are rounding errors (3e-39 J growing to 1e-34 J on a soft-particle whose grains
   // touch by 1e-13 of a radius and move at 1e-14 m/s) and are not judged.
-  const auto at_rest = [&] {
+  const auto round_off = [&] {
+    if (!(m.deepest.fraction < kRoundOffOverlap && context_.dt > 0.0)) return false;
     const Particles& p = world.p;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (!p.is_driven(i) && p.v[i].norm() * context_.dt >= kRoundOffOverlap * p.r[i]) return false;
     return true;
   };
-  const bool round_off = m.deepest.fraction < kRoundOffOverlap && context_.dt > 0.0 && at_rest();
-  if (!(E <= def_.energy_growth * budget_) && E > 0.0 && !round_off) {
+  if (!(E <= def_.energy_growth * budget_) && E > 0.0 && !round_off()) {
     const Particles& p = world.p;
     std::string hot = "no free sphere moves";
     if (m.hottest >= 0)

@@ -27,13 +27,13 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <numbers>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "analysis/fit_options.hpp"
+#include "analysis/kt_unit.hpp"
 #include "analysis/power_fit.hpp"
 #include "config/profile.hpp"
 #include "config/yaml_node.hpp"
@@ -92,7 +92,7 @@ struct Expectation {
 
 // The recorded gaps of release kRecordedRelease (nullopt: reproduced within the tolerance).
 const std::vector<Expectation>& expectations() {
-  const double per_degree = std::numbers::pi * 0.016 / 180.0;  // m of ht per degree of α (Rs = 0.016 m)
+  const double per_degree = table::metres_per_degree(0.016);  // m of ht per degree of α (the paper's Rs)
   static const std::vector<Expectation> e{
       {"table1", "soft-solid", "a", Tolerance::factor, 2.0, std::nullopt},
       {"table1", "soft-solid", "b", Tolerance::relative, 0.25, std::nullopt},
