@@ -87,6 +87,13 @@ def main(folder, out="figure3.png"):
 
 
 if __name__ == "__main__":
+    if len(sys.argv) > 1 and sys.argv[1] in ("-h", "--help"):
+        print(__doc__)
+        sys.exit(0)
     if len(sys.argv) not in (2, 3):
         sys.exit(__doc__.split("\n\n")[1])
+    for scene in SCENES:  # a clear message, not a traceback, when the folder lacks a file
+        for need in (Path(sys.argv[1]) / "averages" / f"{scene}.h5", Path(sys.argv[1]) / "fits" / f"{scene}.json"):
+            if not need.is_file():
+                sys.exit(f"figure3.py: {need}: no such file (make tables writes it; or give an archive folder)")
     main(*sys.argv[1:])

@@ -211,10 +211,15 @@ class Folder:
 
     def packing(self, path, where, f, d):
         x, r, Rs, grid = f["centres"][:], f["radii"][:], f["shell/radius"][()], self.grid
-        if f["stats/inserted"][()] != len(r) or f["stats/sampled"][()] != len(r) + f["stats/discarded"][()]:
+        imported = text(f, "provenance/program") == "softpack-import"
+        if f["stats/inserted"][()] != len(r) or \
+                (not imported and f["stats/sampled"][()] != len(r) + f["stats/discarded"][()]):
             fail(where, "stats/inserted differs from the number of spheres, or sampled from inserted + discarded")
-        if np.any(np.linalg.norm(x, axis=1) + r > Rs * (1 + 1e-9)) or np.any(r <= 0) or np.any(r < f["radii_inserted"][:]):
+        if np.any(np.linalg.norm(x, axis=1) + r > Rs * (1 + 1e-9)) or np.any(r <= 0) or \
+                (not imported and np.any(r < f["radii_inserted"][:])):
             fail(where, "a sphere reaches beyond the shell, has a radius <= 0, or shrank in the growth")
+        if imported and len(text(f, "imported/source_sha256")) != 64:
+            fail(where, "imported/source_sha256 is not 64 hex digits")
         if f["parameters/Rs"][()] != Rs or (grid and Rs != grid["Rs"]) or (grid and grid["bins"] and d["B"] != grid["bins"]):
             fail(where, "shell/radius, parameters/Rs and the profile's Rs (or profile_bins) differ")
         if f["provenance/seed"][()] != int(path.stem.split("-")[-1]):
@@ -320,6 +325,8 @@ def main():
     ap.add_argument("data", type=Path)
     ap.add_argument("--profile", help="the profile file (default: DATA_DIR/profile.yaml when there)")
     ap.add_argument("--guide", type=Path, default=GUIDE)
+    ap.add_argument("--normal-only", action="store_true",
+                    help="a normal-only profile's folder (packings and normal results; no averages or fits)")
     args = ap.parse_args()
     data = args.data
     if not data.is_dir():
@@ -333,9 +340,18 @@ def main():
     folder = Folder(data, profile_grid(args, data))
     grid, results = folder.grid, folder.results
 
-    visit(sorted(data.glob("packings/*.h5")), data, specs["packing"], folder.packing)
+    # A packing is generated (softpack-pack) or imported (softpack-import): the guide's table of its kind.
+    generated, imported = [], []
+    for p in sorted(data.glob("packings/*.h5")):
+        try:
+            with h5py.File(p, "r") as f:
+                (imported if text(f, "provenance/program") == "softpack-import" else generated).append(p)
+        except (OSError, KeyError):
+            generated.append(p)  # visit() says what is wrong with it
+    visit(generated, data, specs["packing"], folder.packing)
+    visit(imported, data, dataset_specs(tables.get("imported_packing", [])), folder.packing)
     visit(sorted(data.glob("normal/*.h5")) + sorted(data.glob("tangential/*.h5")), data, specs["sweep"], folder.sweep)
-    for stage in ("normal", "tangential"):
+    for stage in ("normal",) if args.normal_only else ("normal", "tangential"):
         if len({tuple(v["rows"]) for k, v in results.items() if k[0] == stage}) > 1:
             fail(data / stage, "the seeds' results have different grids")
         have = sorted((k[1], k[2]) for k in results if k[0] == stage)
@@ -371,7 +387,10 @@ def main():
             fail(path.relative_to(data), "an HDF5 file of no kind the guide describes")
     counts = {"packings": len(folder.sizes), "results": len(results), "averages": len(folder.averages),
               "fits": len(fits), "checkpoints": len(points)}
-    if not (counts["packings"] and counts["results"] and counts["averages"] and counts["fits"]):
+    if args.normal_only:
+        if not (counts["packings"] and counts["results"]) or counts["averages"] or counts["fits"]:
+            fail(data, f"a normal-only folder holds packings and normal results only ({counts})")
+    elif not (counts["packings"] and counts["results"] and counts["averages"] and counts["fits"]):
         fail(data, f"no packings, results, averages or fits found ({counts})")
     for e in errors:
         print(f"FAIL: {e}")
