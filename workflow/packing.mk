@@ -4,14 +4,16 @@
 PACKING_DIR := $(DATA)/$(PROFILE)/packings
 PACKINGS := $(foreach s,$(SEEDS),$(PACKING_DIR)/seed-$(s).h5)
 FIGURES_OUT := figures/generated/$(PROFILE)
-PACK := $(BUILD)/engine/softpack-pack
+# Generated packings (softpack-pack), or imported ones when the profile's packing section has
+# `import` (softpack-import; docs/import.md): same options, same packing file.
+PACK := $(BUILD)/engine/softpack-$(if $(filter imported,$(call config,packings)),import,pack)
 
 .PHONY: packings study-packing figure1 figure2
 # The executables are brought up to date before any stage runs (an order-only prerequisite);
 # not under make -n or make -q, which must only say what would run.
 TOOLS := $(if $(findstring n,$(MAKE_LETTERS))$(findstring q,$(MAKE_LETTERS)),,build-tools)
 
-packings: $(PACKINGS)  ## packings of the profile's seeds (DATA/PROFILE/packings/, with .vtp and .xyz)
+packings: $(PACKINGS)  ## packings of the profile's seeds, generated or imported (DATA/PROFILE/packings/, with .vtp and .xyz)
 
 $(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | $(TOOLS)
 	@mkdir -p $(@D) && $(call clear_stale,$@ $(@:.h5=.vtp) $(@:.h5=.xyz))

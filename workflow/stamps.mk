@@ -36,6 +36,15 @@ $(error $(PROFILE_FILE): no such profile (PROFILE=$(PROFILE)); profiles: $(notdi
 endif
 SEEDS := $(call config,seeds)
 SCENES := $(call config,scenes)
+# A normal-only profile (no `tangential` section) has the packing and normal stages only: the
+# averages, fits, tables and figures need both sweeps.
+STAGES := $(call config,stages)
+ifeq ($(filter tangential,$(STAGES)),)
+ifneq ($(filter tangential sweeps averages fits tables figures paper archive all timing,$(MAKECMDGOALS)),)
+$(error $(PROFILE_FILE) is a normal-only profile (no tangential section): its targets are packings and normal; \
+  $(filter tangential sweeps averages fits tables figures paper archive all timing,$(MAKECMDGOALS)) need both sweeps)
+endif
+endif
 PACK_STAMP := $(call stamp,packing,packing)
 NORMAL_STAMP := $(call stamp,normal,normal)
 TANGENTIAL_STAMP := $(call stamp,tangential,tangential)

@@ -9,6 +9,8 @@
 //   softpack-config PROFILE text STAGE        their canonical text (what the stamp covers)
 //   softpack-config PROFILE stamp STAGE       the stage's configuration stamp (16 hex digits)
 //   softpack-config PROFILE gnuplot           Rs, E and nu as gnuplot variables (the figures)
+//   softpack-config PROFILE stages            the stages it has (a normal-only profile: packing normal)
+//   softpack-config PROFILE packings          generated or imported (which program makes them)
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -33,6 +35,8 @@ int main(int argc, char** argv) {
   auto* text = app.add_subcommand("text", "the canonical text of the sections a stage reads");
   auto* stamp = app.add_subcommand("stamp", "the stage's configuration stamp: a hash of the release and of that text");
   auto* gnuplot = app.add_subcommand("gnuplot", "Rs, E and nu as gnuplot variables: Rs=...; E=...; nu=...");
+  auto* stages = app.add_subcommand("stages", "the stages the profile has, on one line (a normal-only profile: packing normal)");
+  auto* packings = app.add_subcommand("packings", "generated (softpack-pack) or imported (softpack-import, packing.import)");
   for (auto* sub : {sections, text, stamp})
     sub->add_option("stage", stage, "packing, normal, tangential or average")
         ->required()
@@ -53,11 +57,15 @@ int main(int argc, char** argv) {
       fmt::print("{}\n", fmt::join(names, " "));
     }
     if (*sections) fmt::print("{}\n", fmt::join(stage_sections(stage), " "));
-    if (*text) fmt::print("{}", stage_text(root, stage));
-    if (*stamp) fmt::print("{}\n", stage_stamp(root, stage, release));
+    // Imported packings: every stage also depends on the bytes of the source files (their SHA-256).
+    const std::string sources = (*text || *stamp) && packing.import ? import_sources_text(*packing.import) : "";
+    if (*text) fmt::print("{}{}", stage_text(root, stage), sources);
+    if (*stamp) fmt::print("{}\n", stage_stamp(root, stage, release, sources));
     if (*gnuplot)
-      fmt::print("Rs={}; E={}; nu={}\n", packing.parameters.Rs, settings.simulation.material.E,
+      fmt::print("Rs={}; E={}; nu={}\n", shell_radius(packing, seed_list), settings.simulation.material.E,
                  settings.simulation.material.nu);
+    if (*stages) fmt::print("{}\n", settings.has_tangential ? "packing normal tangential average" : "packing normal");
+    if (*packings) fmt::print("{}\n", packing.import ? "imported" : "generated");
     return 0;
   } catch (...) {
     return exit_on_error("softpack-config");

@@ -37,7 +37,7 @@ const std::vector<std::string>& stage_sections(const std::string& stage) {
   return it->second;
 }
 
-bool optional_section(const std::string& section) { return section == "fit"; }
+bool optional_section(const std::string& section) { return section == "fit" || section == "tangential"; }
 
 std::string section_text(const ConfigNode& root, const std::string& section) {
   // An optional section left out is no text: a profile without it has the stamps it had before
@@ -54,9 +54,9 @@ std::string stage_text(const ConfigNode& root, const std::string& stage) {
   return text;
 }
 
-std::string stage_stamp(const ConfigNode& root, const std::string& stage, const std::string& version) {
+std::string stage_stamp(const ConfigNode& root, const std::string& stage, const std::string& version, const std::string& extra) {
   Fnv1a h;
-  h.add("softpack " + version + "\n" + stage_text(root, stage));
+  h.add("softpack " + version + "\n" + stage_text(root, stage) + extra);
   return fmt::format("{:016x}", h.value);
 }
 

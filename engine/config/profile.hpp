@@ -22,7 +22,8 @@ const std::vector<std::string>& profile_stages();
 /// (free text) and `watchdog` (when to stop a run gone wrong; it changes no result) are in none.
 const std::vector<std::string>& stage_sections(const std::string& stage);
 
-/// Sections a profile may leave out (`fit`: the fit's defaults, analysis/fit_options.hpp).
+/// Sections a profile may leave out (`fit`: the fit's defaults, analysis/fit_options.hpp;
+/// `tangential`: a normal-only profile, whose tangential stage does not exist).
 bool optional_section(const std::string& section);
 
 /// Canonical text of a section (YAML, keys in file order, comments dropped), recorded as the
@@ -32,9 +33,11 @@ std::string section_text(const ConfigNode& root, const std::string& section);
 /// The canonical text of a stage's sections, concatenated: what its results depend on.
 std::string stage_text(const ConfigNode& root, const std::string& stage);
 
-/// The stage's configuration stamp: 16 hex digits of a 64-bit FNV-1a hash of "softpack VERSION"
-/// and the stage's text. It changes when a section the stage reads changes, and only then.
-std::string stage_stamp(const ConfigNode& root, const std::string& stage, const std::string& version);
+/// The stage's configuration stamp: 16 hex digits of a 64-bit FNV-1a hash of "softpack VERSION",
+/// the stage's text and `extra` (what else the stage depends on: the digests of imported
+/// packings' source files). It changes when a section the stage reads changes, and only then.
+std::string stage_stamp(const ConfigNode& root, const std::string& stage, const std::string& version,
+                        const std::string& extra = "");
 
 /// The seeds of the profile (`seeds` list): seeds as parse_seed() (core/random.hpp) reads them, distinct.
 std::vector<std::uint64_t> parse_seeds(const ConfigNode& root);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -18,6 +19,7 @@ constexpr const char *kCentres = "centres", *kRadii = "radii", *kShellRadius = "
 constexpr const char *kProgram = "provenance/program", *kParameters = "parameters", *kRs = "parameters/Rs";
 constexpr std::array kLayout{kCentres, kRadii, kProgram};  // what makes a file a packing file
 constexpr const char* kPack = "softpack-pack";              // the program that writes them
+constexpr const char* kImport = "softpack-import";          // ... or imports them
 constexpr const char* kNearest = "parameters/nearest_neighbour";  // since 0.5.0; absent: surface
 
 // /parameters: f(dataset, member) for each of the generator's parameters, in the file's order.
@@ -45,26 +47,20 @@ void each_provenance(V& v, F&& f) {
   f("provenance/cpu_seconds", v.cpu_seconds);
 }
 
-}  // namespace
+// /imported: f(dataset, member) for each field of an imported packing's record.
+template <class R, class F>
+void each_import_field(R& r, F&& f) {
+  f("imported/source_file", r.source_file);
+  f("imported/source_sha256", r.source_sha256);
+  f("imported/format", r.format);
+  f("imported/shell", r.shell);
+  f("imported/shell_centre_in_file", r.shell_centre_in_file);
+  f("imported/length_unit", r.length_unit);
+  f("imported/overlap_tolerance", r.overlap_tolerance);
+  f("imported/largest_overlap", r.largest_overlap);
+}
 
-void write_packing_file(const std::string& path, const PackingParameters& p, const Packing& packing,
-                        const PackingStatistics& stats, const PackingProvenance& provenance) {
-  h5::AtomicH5 out(path);
-  h5::File& f = out.file();
-  const std::size_t n = packing.radii.size();
-  put(f, kCentres, packing.centres);
-  put(f, kRadii, packing.radii);
-  put(f, "radii_inserted", packing.radii_inserted);
-  f.set_attribute(kCentres, "unit", std::string("m"));
-  f.set_attribute(kRadii, "unit", std::string("m"));
-  put(f, kShellRadius, p.Rs);
-  put(f, "shell/centre", std::vector<double>{0.0, 0.0, 0.0});
-  each_parameter(p, writer(f));
-  put(f, kNearest, std::string(name(p.nearest_neighbour)));
-  put(f, "stats/sampled", packing.sampled);
-  put(f, "stats/inserted", n);
-  put(f, "stats/discarded", packing.discarded);
-  put(f, "stats/grown", packing.grown);
+void put_statistics(h5::File& f, const PackingStatistics& stats) {
   put(f, "stats/solid_fraction", stats.solid_fraction);
   put(f, "stats/bulk_fraction", stats.bulk_fraction);
   put(f, "stats/depletion_length", stats.depletion_length);
@@ -76,6 +72,47 @@ void write_packing_file(const std::string& path, const PackingParameters& p, con
   put(f, "stats/radial_profile/r_inner", stats.profile.r_inner);
   put(f, "stats/radial_profile/r_outer", stats.profile.r_outer);
   put(f, "stats/radial_profile/solid_fraction", stats.profile.solid_fraction);
+}
+
+void put_spheres(h5::File& f, const std::vector<Vec3>& centres, const std::vector<double>& radii, double Rs) {
+  put(f, kCentres, centres);
+  put(f, kRadii, radii);
+  f.set_attribute(kCentres, "unit", std::string("m"));
+  f.set_attribute(kRadii, "unit", std::string("m"));
+  put(f, kShellRadius, Rs);
+  put(f, "shell/centre", std::vector<double>{0.0, 0.0, 0.0});
+}
+
+}  // namespace
+
+void write_imported_packing_file(const std::string& path, const ImportRecord& record, const std::vector<Vec3>& centres,
+                                 const std::vector<double>& radii, double Rs, const PackingStatistics& stats,
+                                 const PackingProvenance& provenance) {
+  h5::AtomicH5 out(path);
+  h5::File& f = out.file();
+  put_spheres(f, centres, radii, Rs);
+  put(f, kRs, Rs);
+  each_import_field(record, writer(f));
+  put(f, "stats/inserted", radii.size());
+  put_statistics(f, stats);
+  each_provenance(provenance, writer(f));
+  out.commit();
+}
+
+void write_packing_file(const std::string& path, const PackingParameters& p, const Packing& packing,
+                        const PackingStatistics& stats, const PackingProvenance& provenance) {
+  h5::AtomicH5 out(path);
+  h5::File& f = out.file();
+  const std::size_t n = packing.radii.size();
+  put_spheres(f, packing.centres, packing.radii, p.Rs);
+  put(f, "radii_inserted", packing.radii_inserted);
+  each_parameter(p, writer(f));
+  put(f, kNearest, std::string(name(p.nearest_neighbour)));
+  put(f, "stats/sampled", packing.sampled);
+  put(f, "stats/inserted", n);
+  put(f, "stats/discarded", packing.discarded);
+  put(f, "stats/grown", packing.grown);
+  put_statistics(f, stats);
 
   each_provenance(provenance, writer(f));
   out.commit();
@@ -87,20 +124,30 @@ PackingFile read_packing_file(const std::string& path) {
   PackingFile out;
   PackingProvenance& v = out.provenance;
   get(f, kProgram, v.program);
-  if (v.program != kPack)
-    throw InputError(fmt::format("{}: not a softpack packing file (/{} is '{}', not '{}')", path, kProgram, v.program, kPack));
+  if (v.program != kPack && v.program != kImport)
+    throw InputError(fmt::format("{}: not a softpack packing file (/{} is '{}', not '{}' or '{}')", path, kProgram, v.program, kPack,
+                                 kImport));
   get(f, kCentres, out.centres);  // shape (N, 3), finite
   get(f, kRadii, out.radii);
   same_length(f, kRadii, out.radii.size(), kCentres, out.centres.size());
   if (out.radii.empty()) throw InputError(fmt::format("{}: /{}: the packing holds no spheres", path, kRadii));
   get(f, kShellRadius, out.Rs);
   PackingParameters& p = out.parameters;
-  each_parameter(p, reader(f));
-  try {
-    if (f.exists(kNearest)) p.nearest_neighbour = parse_nearest_neighbour(f.read_string(kNearest));
-    validate(p);
-  } catch (const InputError& e) {
-    throw InputError(fmt::format("{}: /{}: {}", path, kParameters, e.what()));
+  if (v.program == kImport) {  // no generator: its shell, and the largest grain
+    ImportRecord r;
+    each_import_field(r, reader(f));
+    out.imported = r;
+    get(f, kRs, p.Rs);
+    p.r_max = 0.0;
+    for (const double radius : out.radii) p.r_max = std::max(p.r_max, radius);
+  } else {
+    each_parameter(p, reader(f));
+    try {
+      if (f.exists(kNearest)) p.nearest_neighbour = parse_nearest_neighbour(f.read_string(kNearest));
+      validate(p);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: /{}: {}", path, kParameters, e.what()));
+    }
   }
   if (out.Rs != p.Rs)
     throw InputError(fmt::format("{}: /{} = {} differs from /{} = {}", path, kShellRadius, out.Rs, kRs, p.Rs));
@@ -123,7 +170,8 @@ PackingFile read_packing_file(const std::string& path) {
 
 std::string describe_packing_file(const h5::File& f) {
   if (!has_layout(f, kLayout)) return "";
-  return f.read_string(kProgram) == kPack ? fmt::format("a packing file ({})", kPack) : "a packing file of another program";
+  const std::string program = f.read_string(kProgram);
+  return program == kPack || program == kImport ? fmt::format("a packing file ({})", program) : "a packing file of another program";
 }
 
 }  // namespace softpack

@@ -12,8 +12,17 @@
 //                       exponent_r_min, exponent_r_max, radial_profile/{r_inner,r_outer,solid_fraction}
 //   /provenance/...     program, code_version, config_file, config (the YAML slice read),
 //                       seed, seconds, cpu_seconds (wall-clock and CPU time of the generation)
+//
+// An imported packing (softpack-import, packing/import.hpp) has /centres, /radii, /shell, /stats
+// (solid fraction, bulk fraction, depletion length, min shell gap, exponent, radial profile),
+// /provenance (program softpack-import) and, instead of the generator's parameters,
+//   /parameters/Rs      the shell radius [m]
+//   /imported/...       source_file, source_sha256, format, shell (given|read|enclosing),
+//                       shell_centre_in_file (3, the file's unit), length_unit [m per unit],
+//                       overlap_tolerance, largest_overlap (over the smaller radius)
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,18 +47,31 @@ struct PackingProvenance {
 void write_packing_file(const std::string& path, const PackingParameters& p, const Packing& packing,
                         const PackingStatistics& stats, const PackingProvenance& provenance);
 
+/// What an imported packing records of its source (/imported).
+struct ImportRecord {
+  std::string source_file, source_sha256, format, shell;
+  Vec3 shell_centre_in_file = Vec3::Zero();
+  double length_unit = 1.0, overlap_tolerance = 0.0, largest_overlap = 0.0;
+};
+
+/// Writes an imported packing atomically; `centres` about the shell's centre, SI.
+void write_imported_packing_file(const std::string& path, const ImportRecord& record, const std::vector<Vec3>& centres,
+                                 const std::vector<double>& radii, double Rs, const PackingStatistics& stats,
+                                 const PackingProvenance& provenance);
+
 struct PackingFile {
   std::vector<Vec3> centres;
   std::vector<double> radii;
   double Rs = 0.0;
-  PackingParameters parameters;
+  PackingParameters parameters;  ///< imported: Rs, and r_max the largest radius
   PackingProvenance provenance;
+  std::optional<ImportRecord> imported;  ///< an imported packing's source
 };
 
 /// Reads a packing file; InputError names the file and what is missing or wrong.
 PackingFile read_packing_file(const std::string& path);
 
-/// "a packing file (softpack-pack)" when `f` has the layout of one, else "" (formats/file_kind.hpp).
+/// "a packing file (softpack-pack)" (or softpack-import) when `f` has the layout of one, else "" (formats/file_kind.hpp).
 std::string describe_packing_file(const h5::File& f);
 
 }  // namespace softpack

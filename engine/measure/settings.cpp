@@ -95,11 +95,14 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
     }
   }
   m.normal.delta_n = increasing_list(nn.at("delta_n"), 0.0, 1.0);
-  if (m.normal.delta_n.front() != 0.0) nn.at("delta_n").fail("must start at 0 (the undeformed state)");
   m.normal.speed = nn.at("speed").number();
   if (const std::string why = limits::refusal(m.normal.speed, kSpeed); !why.empty()) nn.at("speed").fail(why);
   m.normal.incremental = nn.at("path").choice({"incremental", "direct"}) == "incremental";
 
+  if (!root.has("tangential")) {  // a normal-only profile
+    m.has_tangential = false;
+    return m;
+  }
   const ConfigNode tn = root.at("tangential");
   tn.allow_only({"delta_n", "alpha_deg", "rate", "after_rotation"});
   m.tangential.delta_n = increasing_list(tn.at("delta_n"), 0.0, 1.0);
@@ -132,6 +135,7 @@ void validate_sweep_steps(const MeasurementSettings& m, double Rs, double dt) {
                  fmt::format("{} m/s, the approach of {} m (delta_n {} of Rs = {} m) in {} s,", limits::number_text(m.normal.speed),
                              limits::approx_text(way * Rs), limits::approx_text(way), limits::number_text(Rs),
                              limits::approx_text(way * Rs / m.normal.speed)));
+  if (!m.has_tangential) return;
   // The largest rotation of a tangential point, and its turn per time step.
   double angle = 0.0;
   for (const double a : m.tangential.alpha_deg) angle = std::max(angle, std::abs(a) * std::numbers::pi / 180.0);

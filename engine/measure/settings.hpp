@@ -40,7 +40,7 @@ enum class AfterRotation { release, hold };
 
 struct NormalSettings {
   std::vector<ContactScene> scenes;
-  std::vector<double> delta_n;  ///< hn / Rs, increasing, from 0
+  std::vector<double> delta_n;  ///< hn / Rs, increasing, >= 0 (the first point approaches from contact)
   double speed = 0.0;           ///< approach speed of the second body [m/s]
   bool incremental = true;      ///< from the previous point (else from the undeformed state)
 };
@@ -57,6 +57,7 @@ struct MeasurementSettings {
   RelaxationDef relaxation;
   NormalSettings normal;
   TangentialSettings tangential;
+  bool has_tangential = true;  ///< false: a normal-only profile (no `tangential` section)
   WatchdogDef watchdog;  ///< `watchdog` section (optional; defaults of WatchdogDef)
 };
 

@@ -56,6 +56,8 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
     const std::string msg = e.what();
     throw InputError(msg.rfind(o.config_path, 0) == 0 ? msg : o.config_path + ": " + msg);
   }
+  if (o.stage == "tangential" && !settings.has_tangential)
+    throw InputError(fmt::format("{}: no `tangential` section: this profile is normal-only (make packings normal)", o.config_path));
   const ContactScene kind = parse_contact_scene(o.scene);
   const std::string packing_section = section_text(root, "packing");
 
@@ -64,7 +66,7 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
   std::string packings;
   if (o.hertz_check) {
     if (kind != ContactScene::soft_solid) throw InputError("--hertz-check: only for the soft-solid scene");
-    c.setup = hertz_check_setup(parse_packing(root).parameters.Rs, settings.simulation);
+    c.setup = hertz_check_setup(shell_radius(parse_packing(root), parse_seeds(root)), settings.simulation);
     packings = "none: Hertz check, one solid sphere of radius Rs";
   } else {
     if (o.packing.empty()) throw InputError("--packing: required (the packing file of this seed)");

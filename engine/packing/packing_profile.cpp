@@ -10,9 +10,21 @@ namespace softpack {
 PackingProfile parse_packing(const ConfigNode& root) {
   root.allow_only(profile_sections());
   const ConfigNode n = root.at("packing");
-  n.allow_only({"Rs", "r_max_over_Rs", "polydispersity", "exponent", "beta", "trials", "shell_is_neighbour",
-                "nearest_neighbour", "level_ratio", "profile_bins"});
   PackingProfile out;
+  if (const auto import = n.find("import")) {  // packings made elsewhere: no generator
+    n.allow_only({"import", "profile_bins"});
+    out.import = parse_import(*import, parse_seeds(root));
+    out.profile_bins = 40;
+    if (const auto b = n.find("profile_bins")) {
+      const long bins = b->integer();
+      if (bins < 1 || bins > 100000) b->fail(fmt::format("{} is not allowed; allowed: 1 <= bins <= 100000", bins));
+      out.profile_bins = static_cast<int>(bins);
+    }
+    if (out.import->shell == ShellSource::given) out.parameters.Rs = out.import->shell_radius * out.import->length_unit;
+    return out;
+  }
+  n.allow_only({"import", "Rs", "r_max_over_Rs", "polydispersity", "exponent", "beta", "trials", "shell_is_neighbour",
+                "nearest_neighbour", "level_ratio", "profile_bins"});
   PackingParameters& p = out.parameters;
   p.Rs = n.at("Rs").number();
   p.r_max = n.at("r_max_over_Rs").number() * p.Rs;
@@ -38,6 +50,11 @@ PackingProfile parse_packing(const ConfigNode& root) {
     throw root.locate(e);
   }
   return out;
+}
+
+double shell_radius(const PackingProfile& profile, const std::vector<std::uint64_t>& seeds) {
+  if (!profile.import || profile.import->shell == ShellSource::given) return profile.parameters.Rs;
+  return import_packing(*profile.import, seeds.at(0)).Rs;
 }
 
 }  // namespace softpack

@@ -1,0 +1,92 @@
+// softpack-import: one imported packing of the DAG, in place of softpack-pack. Reads the
+// `packing.import` section of a profile (a LAMMPS data file, extended XYZ or "x y z r" text per
+// seed; packing/import.hpp), checks the spheres like a generated packing (inside the shell, no
+// overlap beyond the tolerance) and writes a packing file every stage accepts, marked as imported
+// with the source file's SHA-256 and the import options; on request pictures for ParaView and OVITO.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+
+#include "apps/command_line.hpp"
+#include "apps/exit_codes.hpp"
+#include "config/profile.hpp"
+#include "core/error.hpp"
+#include "core/stopwatch.hpp"
+#include "core/version.hpp"
+#include "formats/packing_file.hpp"
+#include "io/particle_export.hpp"
+#include "packing/packing_profile.hpp"
+#include "packing/statistics.hpp"
+
+int main(int argc, char** argv) {
+  using namespace softpack;
+  CLI::App app{
+      "softpack-import: import the packing of one seed from another program (LAMMPS data file with atom_style sphere, "
+      "extended XYZ, or x y z r text), as the profile's packing.import section says (docs/import.md)"};
+  std::string config_path, out_path, vtp_path, xyz_path;
+  long long seed = -1;
+  bool quiet = false;
+  app.add_option("--config", config_path, "profile file whose `packing` section holds `import` (files per seed, shell, unit)")->required();
+  app.add_option("--seed", seed, "the seed the packing is filed under (a key of packing.import.files)")->required()->check(seed_check());
+  app.add_option("--out", out_path, "packing file to write (HDF5), e.g. data/<profile>/packings/seed-1.h5")->required();
+  app.add_option("--vtp", vtp_path, "also write the spheres for ParaView (VTK PolyData)");
+  app.add_option("--xyz", xyz_path, "also write the spheres for OVITO (extended XYZ)");
+  app.add_flag("--quiet", quiet, "no summary line on stderr");
+  if (const auto code = parse_command_line(app, argc, argv, "softpack-import")) return *code;
+
+  try {
+    const Stopwatch watch;
+    if (seed < 0) throw InputError(fmt::format("--seed: {} is not allowed; allowed: a seed >= 0", seed));
+    const ConfigNode root = ConfigNode::load_file(config_path);
+    PackingProfile profile;
+    try {
+      profile = parse_packing(root);
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      throw InputError(msg.rfind(config_path, 0) == 0 ? msg : config_path + ": " + msg);
+    }
+    if (!profile.import)
+      throw InputError(fmt::format("{}: packing: no `import` section; this profile's packings are generated (softpack-pack)", config_path));
+    const ImportSpec& spec = *profile.import;
+    const ImportedPacking imported = import_packing(spec, static_cast<std::uint64_t>(seed));
+    double r_max = 0.0;
+    for (const double r : imported.radii) r_max = std::max(r_max, r);
+    const PackingStatistics stats = packing_statistics(imported.centres, imported.radii, imported.Rs, r_max, profile.profile_bins);
+
+    ImportRecord record;
+    record.source_file = imported.source;
+    record.source_sha256 = imported.sha256;
+    record.format = name(imported.format);
+    record.shell = name(spec.shell);
+    record.shell_centre_in_file = imported.shell_centre_in_file;
+    record.length_unit = spec.length_unit;
+    record.overlap_tolerance = spec.overlap_tolerance;
+    record.largest_overlap = imported.largest_overlap;
+    PackingProvenance prov;
+    prov.program = "softpack-import";
+    prov.code_version = code_version();
+    prov.config_file = config_path;
+    prov.config = section_text(root, "packing");
+    prov.seed = static_cast<std::uint64_t>(seed);
+    prov.seconds = watch.elapsed().wall;
+    prov.cpu_seconds = process_cpu_seconds();
+    const std::string line = fmt::format("softpack-import {} seed {} from {} (sha256 {}), profile {}", prov.code_version, seed,
+                                         imported.source, imported.sha256, config_path);
+    if (!vtp_path.empty()) write_vtp(vtp_path, imported.centres, imported.radii, {}, line);
+    if (!xyz_path.empty()) {
+      const ExportBox box{Vec3::Constant(-imported.Rs), Vec3::Constant(imported.Rs), {false, false, false}};
+      write_extended_xyz(xyz_path, imported.centres, imported.radii, box, line);
+    }
+    write_imported_packing_file(out_path, record, imported.centres, imported.radii, imported.Rs, stats, prov);
+    if (!quiet)
+      fmt::print(stderr,
+                 "softpack-import seed {}: {} spheres from {} ({}), shell {} m ({}), largest overlap {:.2g} of a radius, solid "
+                 "fraction {:.4f}, {:.2f} s -> {}\n",
+                 seed, imported.radii.size(), imported.source, name(imported.format), imported.Rs, name(spec.shell),
+                 imported.largest_overlap, stats.solid_fraction, watch.elapsed().wall, out_path);
+    return 0;
+  } catch (...) {
+    return exit_on_error("softpack-import");
+  }
+}

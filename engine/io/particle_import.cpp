@@ -1,0 +1,283 @@
+#include "io/particle_import.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace softpack {
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> words;
+  std::istringstream in(line);
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// A file's lines, and the place of a message: "FILE:LINE: ".
+struct Lines {
+  std::string path;
+  std::vector<std::string> text;
+  std::string at(std::size_t k) const { return fmt::format("{}:{}: ", path, k + 1); }
+  [[noreturn]] void fail(std::size_t k, const std::string& why) const { throw InputError(at(k) + why); }
+};
+
+Lines read_lines(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot read this file", path));
+  Lines l{path, {}};
+  for (std::string s; std::getline(in, s);) {
+    if (!s.empty() && s.back() == '\r') s.pop_back();
+    l.text.push_back(s);
+  }
+  return l;
+}
+
+std::optional<double> to_number(const std::string& w) {
+  double v = 0.0;
+  const char* end = w.data() + w.size();
+  const auto [p, ec] = std::from_chars(w.data(), end, v);
+  if (ec != std::errc() || p != end) return std::nullopt;
+  return v;
+}
+
+double number(const Lines& l, std::size_t k, const std::string& w, const char* what) {
+  const auto v = to_number(w);
+  if (!v || !std::isfinite(*v)) l.fail(k, fmt::format("{} '{}' is not a finite number", what, w));
+  return *v;
+}
+
+void add_sphere(ForeignSpheres& s, const Lines& l, std::size_t k, const Vec3& x, double r) {
+  if (!(r > 0.0)) l.fail(k, fmt::format("radius {} is not allowed; allowed: a radius > 0 (a grain, not a point)", r));
+  s.centres.push_back(x);
+  s.radii.push_back(r);
+  s.lines.push_back(static_cast<long>(k + 1));
+}
+
+std::string strip_comment(const std::string& s) { return s.substr(0, s.find('#')); }
+
+// --- LAMMPS data file (read_data): a title line, a header, then sections ------------------------
+ForeignSpheres read_lammps(const Lines& l) {
+  if (l.text.empty()) throw InputError(l.path + ": empty file; expected a LAMMPS data file (read_data)");
+  ForeignSpheres s;
+  long atoms = -1;
+  std::array<std::optional<std::pair<double, double>>, 3> bounds;
+  std::size_t k = 1;  // line 1 is the title
+  // The header: "N atoms", "lo hi xlo xhi", ...; it ends at the first section keyword.
+  for (; k < l.text.size(); ++k) {
+    const std::vector<std::string> w = split(strip_comment(l.text[k]));
+    if (w.empty()) continue;
+    if (!to_number(w[0])) break;  // a section keyword
+    if (w.size() == 2 && w[1] == "atoms") {
+      const auto n = to_number(w[0]);
+      if (!n || *n < 0 || *n != std::floor(*n)) l.fail(k, fmt::format("'{}' is not a count of atoms", w[0]));
+      atoms = static_cast<long>(*n);
+    } else if (w.size() == 4 && w[2].size() == 3 && w[2][1] == 'l' && w[2][2] == 'o' && w[3] == std::string(1, w[2][0]) + "hi" &&
+               w[2][0] >= 'x' && w[2][0] <= 'z') {
+      bounds[static_cast<std::size_t>(w[2][0] - 'x')] = {number(l, k, w[0], "box bound"), number(l, k, w[1], "box bound")};
+    } else if (w.size() == 6 && w[3] == "xy") {
+      for (int i = 0; i < 3; ++i)
+        if (number(l, k, w[static_cast<std::size_t>(i)], "tilt factor") != 0.0)
+          l.fail(k, "a triclinic box (non-zero tilt factors) is not allowed; softpack-import reads orthogonal boxes");
+    }
+  }
+  if (atoms < 0) throw InputError(l.path + ": no 'N atoms' line in the header; is this a LAMMPS data file (read_data)?");
+  if (bounds[0] && bounds[1] && bounds[2])
+    s.box = ForeignBox{{bounds[0]->first, bounds[1]->first, bounds[2]->first}, {bounds[0]->second, bounds[1]->second, bounds[2]->second}};
+  // The sections: a keyword line, then the entries up to the next keyword.
+  bool found = false;
+  while (k < l.text.size()) {
+    const std::string keyword_line = l.text[k];
+    const std::vector<std::string> w = split(strip_comment(keyword_line));
+    if (w.empty()) {
+      ++k;
+      continue;
+    }
+    const std::size_t section = k++;
+    if (w[0] != "Atoms") {
+      while (k < l.text.size()) {  // skip its entries
+        const std::vector<std::string> e = split(strip_comment(l.text[k]));
+        if (!e.empty() && !to_number(e[0])) break;
+        ++k;
+      }
+      continue;
+    }
+    if (found) l.fail(section, "a second Atoms section");
+    found = true;
+    if (const std::size_t hash = keyword_line.find('#'); hash != std::string::npos) {
+      const std::vector<std::string> style = split(keyword_line.substr(hash + 1));
+      if (!style.empty() && style[0] != "sphere")
+        l.fail(section, fmt::format("atom_style {}: softpack-import reads atom_style sphere (id type diameter density x y z)", style[0]));
+    }
+    for (; k < l.text.size(); ++k) {
+      const std::vector<std::string> e = split(strip_comment(l.text[k]));
+      if (e.empty()) continue;
+      if (!to_number(e[0])) break;
+      if (e.size() != 7 && e.size() != 10)
+        l.fail(k, fmt::format("{} columns; atom_style sphere has 7 (id type diameter density x y z) or 10 (and ix iy iz)", e.size()));
+      Vec3 x(number(l, k, e[4], "x"), number(l, k, e[5], "y"), number(l, k, e[6], "z"));
+      if (e.size() == 10) {  // image flags: unwrap through the periodic box
+        for (int i = 0; i < 3; ++i) {
+          const double n = number(l, k, e[7 + static_cast<std::size_t>(i)], "image flag");
+          if (n != 0.0) {
+            if (!s.box) l.fail(k, "an image flag without the box bounds xlo xhi, ylo yhi, zlo zhi in the header");
+            x[i] += n * (s.box->hi[i] - s.box->lo[i]);
+          }
+        }
+      }
+      add_sphere(s, l, k, x, 0.5 * number(l, k, e[2], "diameter"));
+    }
+  }
+  if (!found) throw InputError(l.path + ": no Atoms section");
+  if (static_cast<long>(s.radii.size()) != atoms)
+    throw InputError(fmt::format("{}: the header says {} atoms, the Atoms section holds {}", l.path, atoms, s.radii.size()));
+  return s;
+}
+
+// --- extended XYZ: count, a line of key=value pairs, one line per atom -----------------------------
+std::map<std::string, std::string> key_values(const Lines& l, std::size_t k) {
+  std::map<std::string, std::string> kv;
+  const std::string& s = l.text[k];
+  std::size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    if (i == s.size()) break;
+    std::size_t j = i;
+    while (j < s.size() && s[j] != '=' && !std::isspace(static_cast<unsigned char>(s[j]))) ++j;
+    const std::string key = s.substr(i, j - i);
+    std::string value;
+    if (j < s.size() && s[j] == '=') {
+      ++j;
+      if (j < s.size() && s[j] == '"') {
+        const std::size_t close = s.find('"', j + 1);
+        if (close == std::string::npos) l.fail(k, fmt::format("the value of {} has no closing quote", key));
+        value = s.substr(j + 1, close - j - 1);
+        j = close + 1;
+      } else {
+        const std::size_t start = j;
+        while (j < s.size() && !std::isspace(static_cast<unsigned char>(s[j]))) ++j;
+        value = s.substr(start, j - start);
+      }
+    }
+    kv[lower(key)] = value;
+    i = j;
+  }
+  return kv;
+}
+
+ForeignSpheres read_xyz(const Lines& l) {
+  if (l.text.size() < 2) throw InputError(l.path + ": expected an extended XYZ file (a count, a comment line, the atoms)");
+  const auto count = to_number(split(l.text[0]).empty() ? "" : split(l.text[0])[0]);
+  if (!count || *count < 0 || *count != std::floor(*count)) l.fail(0, "expected the number of atoms on the first line");
+  const auto n = static_cast<std::size_t>(*count);
+  const std::map<std::string, std::string> kv = key_values(l, 1);
+  ForeignSpheres s;
+  // Properties=name:type:columns:... (default species:S:1:pos:R:3)
+  const std::string properties = kv.count("properties") ? kv.at("properties") : "species:S:1:pos:R:3";
+  std::vector<std::string> p;
+  for (std::size_t a = 0, b; a <= properties.size(); a = b + 1) {
+    b = std::min(properties.find(':', a), properties.size());
+    p.push_back(properties.substr(a, b - a));
+  }
+  if (p.size() % 3 != 0) l.fail(1, fmt::format("Properties={} is not name:type:columns triples", properties));
+  long pos = -1, radius = -1, diameter = -1, column = 0;
+  for (std::size_t i = 0; i < p.size(); i += 3) {
+    const auto cols = to_number(p[i + 2]);
+    if (!cols || *cols < 1) l.fail(1, fmt::format("Properties: '{}' is not a column count", p[i + 2]));
+    const std::string name = lower(p[i]);
+    if (name == "pos" && *cols == 3) pos = column;
+    if ((name == "radius" || name == "radii") && *cols == 1) radius = column;
+    if (name == "diameter" && *cols == 1) diameter = column;
+    column += static_cast<long>(*cols);
+  }
+  if (pos < 0) l.fail(1, fmt::format("Properties={} has no pos:R:3 column", properties));
+  if (radius < 0 && diameter < 0) l.fail(1, fmt::format("Properties={} has no radius (radius:R:1) or diameter column", properties));
+  if (kv.count("lattice")) {
+    std::vector<double> c;
+    for (const std::string& w : split(kv.at("lattice"))) c.push_back(number(l, 1, w, "Lattice entry"));
+    if (c.size() != 9) l.fail(1, "Lattice must hold 9 numbers (three cell vectors)");
+    if (c[1] != 0.0 || c[2] != 0.0 || c[3] != 0.0 || c[5] != 0.0 || c[6] != 0.0 || c[7] != 0.0)
+      l.fail(1, "a non-orthogonal Lattice is not allowed; softpack-import reads orthogonal cells");
+    Vec3 origin = Vec3::Zero();
+    if (kv.count("origin")) {
+      const std::vector<std::string> o = split(kv.at("origin"));
+      if (o.size() != 3) l.fail(1, "Origin must hold 3 numbers");
+      origin = Vec3(number(l, 1, o[0], "Origin"), number(l, 1, o[1], "Origin"), number(l, 1, o[2], "Origin"));
+    }
+    s.box = ForeignBox{origin, origin + Vec3(c[0], c[4], c[8])};
+  }
+  if (l.text.size() < 2 + n) throw InputError(fmt::format("{}: the first line says {} atoms, the file holds {}", l.path, n, l.text.size() - 2));
+  for (std::size_t k = 2; k < 2 + n; ++k) {
+    const std::vector<std::string> w = split(l.text[k]);
+    if (static_cast<long>(w.size()) != column) l.fail(k, fmt::format("{} columns; Properties={} gives {}", w.size(), properties, column));
+    const auto at = [&](long c) { return number(l, k, w[static_cast<std::size_t>(c)], "value"); };
+    add_sphere(s, l, k, Vec3(at(pos), at(pos + 1), at(pos + 2)), radius >= 0 ? at(radius) : 0.5 * at(diameter));
+  }
+  for (std::size_t k = 2 + n; k < l.text.size(); ++k)
+    if (!split(l.text[k]).empty()) l.fail(k, "a second frame (or extra lines); give a file of one frame");
+  return s;
+}
+
+// --- plain text: "x y z r" per line, '#' comments ----------------------------------------------------
+ForeignSpheres read_text(const Lines& l) {
+  ForeignSpheres s;
+  for (std::size_t k = 0; k < l.text.size(); ++k) {
+    const std::vector<std::string> w = split(strip_comment(l.text[k]));
+    if (w.empty()) continue;
+    if (w.size() != 4) l.fail(k, fmt::format("{} values; expected 4: x y z r", w.size()));
+    add_sphere(s, l, k, Vec3(number(l, k, w[0], "x"), number(l, k, w[1], "y"), number(l, k, w[2], "z")), number(l, k, w[3], "r"));
+  }
+  return s;
+}
+
+}  // namespace
+
+const char* name(ForeignFormat f) {
+  switch (f) {
+    case ForeignFormat::lammps: return "lammps";
+    case ForeignFormat::xyz: return "xyz";
+    case ForeignFormat::text: return "text";
+  }
+  return "?";
+}
+
+ForeignFormat parse_foreign_format(const std::string& text) {
+  for (const ForeignFormat f : {ForeignFormat::lammps, ForeignFormat::xyz, ForeignFormat::text})
+    if (text == name(f)) return f;
+  throw InputError(fmt::format("'{}' is not allowed; allowed: lammps (a data file, atom_style sphere), xyz (extended XYZ), "
+                               "text (x y z r per line)",
+                               text));
+}
+
+ForeignFormat foreign_format_of(const std::string& path) {
+  const std::size_t dot = path.rfind('.');
+  const std::string ext = dot == std::string::npos ? "" : lower(path.substr(dot));
+  if (ext == ".data" || ext == ".lmp" || ext == ".lammps") return ForeignFormat::lammps;
+  if (ext == ".xyz" || ext == ".extxyz") return ForeignFormat::xyz;
+  if (ext == ".txt" || ext == ".xyzr") return ForeignFormat::text;
+  throw InputError(fmt::format("{}: cannot tell the format from the extension '{}' (.data .lmp .lammps: lammps; .xyz .extxyz: xyz; "
+                               ".txt .xyzr: text); give `format`",
+                               path, ext));
+}
+
+ForeignSpheres read_foreign_spheres(const std::string& path, ForeignFormat format) {
+  const Lines l = read_lines(path);
+  ForeignSpheres s = format == ForeignFormat::lammps ? read_lammps(l) : format == ForeignFormat::xyz ? read_xyz(l) : read_text(l);
+  if (s.radii.empty()) throw InputError(path + ": no spheres");
+  return s;
+}
+
+}  // namespace softpack

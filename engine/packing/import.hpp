@@ -1,0 +1,58 @@
+// Packings made elsewhere (LAMMPS, LIGGGHTS, a user's generator), measured like generated ones:
+// the profile's `packing.import` section names a source file per seed (docs/import.md), and
+// softpack-import turns it into a packing file every stage accepts. The spheres are scaled to
+// metres, moved so that the shell's centre is the origin, and checked like a generated packing:
+// inside the shell, no overlap beyond a tolerance.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/yaml_node.hpp"
+#include "core/types.hpp"
+#include "io/particle_import.hpp"
+
+namespace softpack {
+
+/// Where the rigid shell comes from: given in the profile (radius and centre, in the file's
+/// unit), read from the file's box (LAMMPS box, extended XYZ Lattice and Origin: it must be a
+/// cube; the shell is the sphere inscribed in it), or the enclosing sphere (centred on the
+/// middle of the grains' bounding box, touching the farthest grain).
+enum class ShellSource { given, read, enclosing };
+const char* name(ShellSource s);
+
+struct ImportSpec {
+  std::map<std::uint64_t, std::string> files;  ///< seed -> source file (relative to the working directory)
+  std::optional<ForeignFormat> format;         ///< from each file's extension when absent
+  double length_unit = 1.0;                    ///< metres per length unit of the files
+  ShellSource shell = ShellSource::read;
+  double shell_radius = 0.0;                   ///< given: in the file's unit
+  Vec3 shell_centre = Vec3::Zero();            ///< given: in the file's unit
+  double overlap_tolerance = 1e-6;             ///< largest overlap allowed, over the smaller radius
+};
+
+/// Reads `packing.import` (file, line and column in messages); every seed of the profile must
+/// have a file, and every file a seed of the profile.
+ImportSpec parse_import(const ConfigNode& import, const std::vector<std::uint64_t>& seeds);
+
+struct ImportedPacking {
+  std::vector<Vec3> centres;  ///< [m], the shell's centre at the origin
+  std::vector<double> radii;  ///< [m]
+  double Rs = 0.0;            ///< shell radius [m]
+  Vec3 shell_centre_in_file = Vec3::Zero();  ///< where the shell's centre was, in the file's unit
+  ForeignFormat format = ForeignFormat::text;
+  std::string source, sha256;  ///< the source file and the SHA-256 of its bytes
+  double largest_overlap = 0.0;  ///< deepest overlap between two grains, over the smaller radius
+};
+
+/// Imports the source file of `seed`: InputError naming the file, its line and what is wrong
+/// (a grain beyond the shell, two grains overlapping beyond the tolerance, a bad file).
+ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed);
+
+/// One line per seed, "seed <seed> <file> sha256 <digest>": what the stages' stamps add to the
+/// profile's text, so that a changed source file reruns its packing and everything after.
+std::string import_sources_text(const ImportSpec& spec);
+
+}  // namespace softpack

@@ -1,0 +1,136 @@
+// The readers of other programs' packings (io/particle_import.hpp) and the import's checks
+// (packing/import.hpp): what each format says is what is read, and what is wrong is refused
+// with the file and line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "core/sha256.hpp"
+#include "io/particle_import.hpp"
+#include "packing/import.hpp"
+
+namespace softpack {
+namespace {
+
+std::string write(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / "softpack-test-import";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string error_of(const std::string& path, ForeignFormat f) {
+  try {
+    read_foreign_spheres(path, f);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kLammps =
+    "LAMMPS data file via write_data\n\n2 atoms\n1 atom types\n\n"
+    "-1 1 xlo xhi\n-1 1 ylo yhi\n0 4 zlo zhi\n\n"
+    "Masses\n\n1 1.0\n\n"
+    "Atoms # sphere\n\n"
+    "7 1 0.5 2500 0.1 0.2 0.3 0 0 0\n"
+    "8 1 0.25 2500 0.5 0.5 0.5 1 0 -1  # image flags\n\n"
+    "Velocities\n\n7 0 0 0 0 0 0\n8 0 0 0 0 0 0\n";
+
+TEST(ParticleImport, LammpsDataFileWithImageFlags) {
+  const ForeignSpheres s = read_foreign_spheres(write("a.data", kLammps), ForeignFormat::lammps);
+  ASSERT_EQ(s.radii.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.radii[0], 0.25);  // half the diameter
+  EXPECT_DOUBLE_EQ(s.radii[1], 0.125);
+  EXPECT_EQ(s.centres[0], Vec3(0.1, 0.2, 0.3));
+  EXPECT_EQ(s.centres[1], Vec3(0.5 + 2.0, 0.5, 0.5 - 4.0));  // unwrapped through the box
+  EXPECT_EQ(s.lines[1], 17);
+  ASSERT_TRUE(s.box);
+  EXPECT_EQ(s.box->lo, Vec3(-1, -1, 0));
+  EXPECT_EQ(s.box->hi, Vec3(1, 1, 4));
+}
+
+TEST(ParticleImport, LammpsRefusesWhatItCannotRead) {
+  std::string t = kLammps;
+  EXPECT_NE(error_of(write("b.data", t.replace(t.find("# sphere"), 8, "# atomic")), ForeignFormat::lammps)
+                .find("b.data:14: atom_style atomic"),
+            std::string::npos);
+  t = kLammps;
+  EXPECT_NE(error_of(write("c.data", t.replace(t.find("2 atoms"), 7, "3 atoms")), ForeignFormat::lammps)
+                .find("the header says 3 atoms, the Atoms section holds 2"),
+            std::string::npos);
+  t = kLammps;
+  EXPECT_NE(error_of(write("d.data", t.replace(t.find("0.25 2500"), 4, "0.00")), ForeignFormat::lammps).find("d.data:17: radius 0"),
+            std::string::npos);
+  t = kLammps;
+  EXPECT_NE(error_of(write("e.data", t.replace(t.find("\n\nMasses"), 0, "\n0.5 0 0 xy xz yz")), ForeignFormat::lammps)
+                .find("triclinic"),
+            std::string::npos);
+}
+
+TEST(ParticleImport, ExtendedXyzWithDiameterAndOrigin) {
+  const std::string path = write("a.xyz",
+                                 "2\nLattice=\"2 0 0 0 2 0 0 0 2\" Origin=\"-1 -1 -1\" "
+                                 "Properties=species:S:1:pos:R:3:Diameter:R:1 pbc=\"F F F\"\n"
+                                 "X 0.1 0.2 0.3 0.5\nX -0.5 0 0.5 0.25\n");
+  const ForeignSpheres s = read_foreign_spheres(path, ForeignFormat::xyz);
+  ASSERT_EQ(s.radii.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.radii[1], 0.125);
+  EXPECT_EQ(s.centres[1], Vec3(-0.5, 0, 0.5));
+  ASSERT_TRUE(s.box);
+  EXPECT_EQ(s.box->lo, Vec3(-1, -1, -1));
+  EXPECT_EQ(s.box->hi, Vec3(1, 1, 1));
+  EXPECT_NE(error_of(write("b.xyz", "1\nProperties=species:S:1:pos:R:3\nX 0 0 0\n"), ForeignFormat::xyz).find("no radius"),
+            std::string::npos);
+  EXPECT_NE(error_of(write("c.xyz", "1\nProperties=species:S:1:pos:R:3:radius:R:1\nX 0 0 0 1\n1\n\nX 0 0 0 1\n"), ForeignFormat::xyz)
+                .find("c.xyz:4: a second frame"),
+            std::string::npos);
+}
+
+TEST(ParticleImport, TextAndFormatNames) {
+  const ForeignSpheres s = read_foreign_spheres(write("a.txt", "# x y z r\n0 0 0 1\n\n3 0 0 2 # big\n"), ForeignFormat::text);
+  ASSERT_EQ(s.radii.size(), 2u);
+  EXPECT_EQ(s.lines[1], 4);
+  EXPECT_FALSE(s.box);
+  EXPECT_EQ(foreign_format_of("x/run.lmp"), ForeignFormat::lammps);
+  EXPECT_EQ(foreign_format_of("run.EXTXYZ"), ForeignFormat::xyz);
+  EXPECT_THROW(foreign_format_of("run.h5"), InputError);
+  EXPECT_NE(error_of(write("b.txt", "0 0 0\n"), ForeignFormat::text).find("b.txt:1: 3 values; expected 4"), std::string::npos);
+}
+
+TEST(ParticleImport, ShellEnclosingAndOverlapTolerance) {
+  ImportSpec spec;
+  spec.files[1] = write("two.txt", "0 0 0 1\n3 0 0 2\n");  // touching: |x1 - x2| = r1 + r2
+  spec.shell = ShellSource::enclosing;
+  spec.length_unit = 0.5;
+  const ImportedPacking p = import_packing(spec, 1);
+  // Bounding box x in [-1, 5]: centre x = 2, the shell through the far side of both grains.
+  EXPECT_DOUBLE_EQ(p.shell_centre_in_file.x(), 2.0);
+  EXPECT_DOUBLE_EQ(p.Rs, 3.0 * 0.5);
+  EXPECT_DOUBLE_EQ(p.centres[0].x(), -1.0);  // (0 - 2) * 0.5
+  EXPECT_DOUBLE_EQ(p.radii[1], 1.0);
+  EXPECT_EQ(p.sha256, sha256_of_file(spec.files[1]));
+  EXPECT_EQ(p.sha256.size(), 64u);
+  spec.files[1] = write("overlap.txt", "0 0 0 1\n2.9 0 0 2\n");  // overlap 0.1 of the smaller radius
+  spec.overlap_tolerance = 0.2;
+  EXPECT_NEAR(import_packing(spec, 1).largest_overlap, 0.1, 1e-12);
+  spec.overlap_tolerance = 0.05;
+  try {
+    import_packing(spec, 1);
+    FAIL() << "an overlap of 0.1 passed a tolerance of 0.05";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("overlap.txt:1 and "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("overlap.txt:2: these grains overlap by 0.1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ParticleImport, Sha256OfKnownText) {
+  // sha256("abc"), FIPS 180-2 appendix B.1.
+  EXPECT_EQ(sha256_of_file(write("abc.txt", "abc")), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+}
+
+}  // namespace
+}  // namespace softpack
