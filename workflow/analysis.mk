@@ -8,17 +8,18 @@ TABLE_DIR := $(DATA)/$(PROFILE)/tables
 PUBLISHED := experiments/published.yaml
 
 # average_outputs SCENE: the files softpack-average writes for SCENE.
-average_outputs = $(AVERAGE_DIR)/$(1).h5 $(AVERAGE_DIR)/normal-$(1).dat $(AVERAGE_DIR)/tangential-$(1).dat \
-  $(AVERAGE_DIR)/kt-$(1).dat
+# (A normal-only profile, NORMAL_ONLY in workflow/stamps.mk: no tangential results to average.)
+average_outputs = $(AVERAGE_DIR)/$(1).h5 $(AVERAGE_DIR)/normal-$(1).dat $(if $(NORMAL_ONLY),,$(AVERAGE_DIR)/tangential-$(1).dat \
+  $(AVERAGE_DIR)/kt-$(1).dat)
 fit_outputs = $(FIT_DIR)/$(1).json $(FIT_DIR)/$(1).gp
 
 define analysis_rules
-$(call average_outputs,$(1)) &: $(AVERAGE_STAMP) $(call NORMAL_RESULTS,$(1)) $(call TANGENTIAL_RESULTS,$(1)) | $(TOOLS)
+$(call average_outputs,$(1)) &: $(AVERAGE_STAMP) $(call NORMAL_RESULTS,$(1)) $(if $(NORMAL_ONLY),,$(call TANGENTIAL_RESULTS,$(1))) | $(TOOLS)
 	@mkdir -p $(AVERAGE_DIR) && $(call clear_stale,$(call average_outputs,$(1)))
 	@$$(call from_archive,$(call average_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "average: $(PROFILE) $(1) over seeds $(SEEDS) -> $(AVERAGE_DIR)/$(1).h5 (log $(AVERAGE_DIR)/$(1).log)"; \
 	  $(RUN) $(BUILD)/engine/softpack-average --scene $(1) --profile $(PROFILE) --normal $(call NORMAL_RESULTS,$(1)) \
-	    --tangential $(call TANGENTIAL_RESULTS,$(1)) --out-dir $(AVERAGE_DIR) 2> $(AVERAGE_DIR)/$(1).log \
+	    $(if $(NORMAL_ONLY),,--tangential $(call TANGENTIAL_RESULTS,$(1))) --out-dir $(AVERAGE_DIR) 2> $(AVERAGE_DIR)/$(1).log \
 	  || { echo "average: FAILED for $(PROFILE) $(1); see $(AVERAGE_DIR)/$(1).log"; tail -5 $(AVERAGE_DIR)/$(1).log; exit 1; }; }
 $(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 | $(TOOLS)
 	@mkdir -p $(FIT_DIR) && $(call clear_stale,$(call fit_outputs,$(1)))
@@ -33,7 +34,7 @@ $(foreach scene,$(SCENES),$(eval $(call analysis_rules,$(scene))))
 AVERAGES := $(foreach scene,$(SCENES),$(call average_outputs,$(scene)))
 FITS := $(foreach scene,$(SCENES),$(call fit_outputs,$(scene)))
 TABLES := $(TABLE_DIR)/table1.md $(TABLE_DIR)/table2.md $(TABLE_DIR)/table1.tex $(TABLE_DIR)/table2.tex \
-  $(TABLE_DIR)/published.gp $(TABLE_DIR)/kt_unit.md
+  $(TABLE_DIR)/published.gp $(if $(NORMAL_ONLY),,$(TABLE_DIR)/kt_unit.md)
 
 .PHONY: averages fits tables figures
 averages: $(AVERAGES)  ## mean and standard error over the seeds (DATA/PROFILE/averages/)
@@ -46,13 +47,13 @@ tables: $(TABLES)  ## Tables 1 and 2: ours beside the paper's (DATA/PROFILE/tabl
 $(TABLES) &: $(filter %.json,$(FITS)) $(filter %.h5,$(AVERAGES)) $(PUBLISHED) | $(TOOLS)
 	@mkdir -p $(TABLE_DIR) && $(call clear_stale,$(TABLES))
 	@$(RUN) $(BUILD)/engine/softpack-table --fits $(filter %.json,$(FITS)) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
-	  --gnuplot $(TABLE_DIR)/published.gp --averages $(filter %.h5,$(AVERAGES)) \
-	  --Rs $$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot | sed 's/^Rs=\([^;]*\);.*/\1/') > /dev/null 2> $(TABLE_DIR)/tables.log \
+	  --gnuplot $(TABLE_DIR)/published.gp $(if $(NORMAL_ONLY),,--averages $(filter %.h5,$(AVERAGES)) \
+	  --Rs $$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot | sed 's/^Rs=\([^;]*\);.*/\1/')) > /dev/null 2> $(TABLE_DIR)/tables.log \
 	  || { echo "tables: FAILED for $(PROFILE); see $(TABLE_DIR)/tables.log"; cat $(TABLE_DIR)/tables.log; exit 1; }
 
 # Figures 3-6 as PDF (the report) and PNG (the screen). Every figure script reads the averages
 # and the coefficients (ours, the paper's) as gnuplot variables.
-FIGURE_NAMES := fig3_normal fig4_tangential_soft_solid fig5_tangential_soft_soft fig6_kt
+FIGURE_NAMES := fig3_normal $(if $(NORMAL_ONLY),,fig4_tangential_soft_solid fig5_tangential_soft_soft fig6_kt)
 FIGURES_3_6 := $(foreach f,$(FIGURE_NAMES),$(FIGURES_OUT)/$(f).pdf $(FIGURES_OUT)/$(f).png)
 figures: figure1 figure2 $(FIGURES_3_6)  ## Figures 1-6 (figures/generated/PROFILE/, PDF and PNG)
 

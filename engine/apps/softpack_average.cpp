@@ -2,6 +2,7 @@
 // (analysis/average.hpp), to the average files: HDF5 for softpack-fit, text columns for gnuplot
 // (formats/average_file.hpp).
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <fmt/format.h>
 
 
@@ -22,8 +23,10 @@ int main(int argc, char** argv) {
   app.add_option("--scene", p.scene, "soft-solid or soft-soft (recorded)")->required();
   app.add_option("--profile", p.profile, "profile name (recorded)")->required();
   app.add_option("--normal", p.normal_inputs, "normal results of every seed")->required();
-  app.add_option("--tangential", p.tangential_inputs, "tangential results of every seed")->required();
-  app.add_option("--out-dir", out_dir, "writes <scene>.h5, normal-<scene>.dat, tangential-<scene>.dat, kt-<scene>.dat")->required();
+  app.add_option("--tangential", p.tangential_inputs, "tangential results of every seed (left out: a normal-only profile)");
+  app.add_option("--out-dir", out_dir,
+                 "writes <scene>.h5, normal-<scene>.dat, tangential-<scene>.dat, kt-<scene>.dat (the last two with --tangential)")
+      ->required();
   if (const auto code = parse_command_line(app, argc, argv, "softpack-average")) return *code;
   try {
     const Stopwatch watch;
@@ -42,14 +45,17 @@ int main(int argc, char** argv) {
     };
     std::vector<SeedFile> normal_files, tangential_files;
     const std::vector<SweepColumns> normal = read(p.normal_inputs, "normal", normal_files);
-    const std::vector<SweepColumns> tangential = read(p.tangential_inputs, "tangential", tangential_files);
-    check_same_seeds(normal_files, tangential_files);
     const NormalAverage n = average_normal(normal);
-    const TangentialAverage t = average_tangential(tangential);
+    std::optional<TangentialAverage> t;
+    if (!p.tangential_inputs.empty()) {
+      const std::vector<SweepColumns> tangential = read(p.tangential_inputs, "tangential", tangential_files);
+      check_same_seeds(normal_files, tangential_files);
+      t = average_tangential(tangential);
+    }
     p.code_version = code_version();
     p.seconds = watch.elapsed().wall;
     p.cpu_seconds = process_cpu_seconds();
-    write_average_files(out_dir, n, t, p);
+    write_average_files(out_dir, n, t ? &*t : nullptr, p);
     return 0;
   } catch (...) {
     return exit_on_error("softpack-average");

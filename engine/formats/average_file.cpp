@@ -29,7 +29,7 @@ std::string header(const std::string& what, const AverageProvenance& p, const st
   return h;
 }
 
-void write_dat_files(const std::string& dir, const NormalAverage& n, const TangentialAverage& t, const AverageProvenance& p) {
+void write_dat_files(const std::string& dir, const NormalAverage& n, const TangentialAverage* tangential, const AverageProvenance& p) {
   const auto path = [&](const std::string& name) { return (std::filesystem::path(dir) / name).string(); };
   std::string dat = header("normal force", p, p.normal_inputs) +
                     "# columns: delta_n Fn_mean[N] Fn_stderr Ft_parallel_mean Ft_parallel_stderr Ft_perpendicular_mean "
@@ -39,6 +39,8 @@ void write_dat_files(const std::string& dir, const NormalAverage& n, const Tange
                        n.Ft_parallel[k].mean, n.Ft_parallel[k].error, n.Ft_perpendicular[k].mean, n.Ft_perpendicular[k].error,
                        n.seeds);
   write_file_atomically(path("normal-" + p.scene + ".dat"), dat);
+  if (!tangential) return;  // a normal-only profile
+  const TangentialAverage& t = *tangential;
 
   dat = header("tangential force", p, p.tangential_inputs) +
         "# one block per delta_n (gnuplot index); columns: delta_n alpha_deg ht[m] Ft_parallel_mean[N] Ft_parallel_stderr "
@@ -81,8 +83,9 @@ void read_columns(const h5::File& f, std::initializer_list<std::pair<std::string
 
 }  // namespace
 
-void write_average_files(const std::string& dir, const NormalAverage& n, const TangentialAverage& t, const AverageProvenance& p) {
-  write_dat_files(dir, n, t, p);
+void write_average_files(const std::string& dir, const NormalAverage& n, const TangentialAverage* tangential,
+                         const AverageProvenance& p) {
+  write_dat_files(dir, n, tangential, p);
   h5::AtomicH5 out((std::filesystem::path(dir) / (p.scene + ".h5")).string());
   h5::File& f = out.file();
   put(f, kNormalDeltaN, n.delta_n);
@@ -90,14 +93,17 @@ void write_average_files(const std::string& dir, const NormalAverage& n, const T
   put_pairs(f, "normal/Ft_parallel", n.Ft_parallel);
   put_pairs(f, "normal/Ft_perpendicular", n.Ft_perpendicular);
   put(f, kSeeds, n.seeds);
-  put(f, "tangential/delta_n", t.delta_n);
-  put(f, "tangential/alpha_deg", t.alpha_deg);
-  put(f, "tangential/ht", t.ht);
-  put_pairs(f, "tangential/Ft_parallel", t.Ft_parallel);
-  put_pairs(f, "tangential/Ft_perpendicular", t.Ft_perpendicular);
-  put_pairs(f, "tangential/Fn", t.Fn);
-  put(f, kKtDeltaN, t.kt_delta_n);
-  put_pairs(f, t.kt, kKtMean, kKtStderr);
+  if (tangential) {
+    const TangentialAverage& t = *tangential;
+    put(f, "tangential/delta_n", t.delta_n);
+    put(f, "tangential/alpha_deg", t.alpha_deg);
+    put(f, "tangential/ht", t.ht);
+    put_pairs(f, "tangential/Ft_parallel", t.Ft_parallel);
+    put_pairs(f, "tangential/Ft_perpendicular", t.Ft_perpendicular);
+    put_pairs(f, "tangential/Fn", t.Fn);
+    put(f, kKtDeltaN, t.kt_delta_n);
+    put_pairs(f, t.kt, kKtMean, kKtStderr);
+  }
   put(f, kScene, p.scene);
   put(f, kProfile, p.profile);
   put(f, kCodeVersion, p.code_version);

@@ -10,6 +10,7 @@
 //               /provenance/{scene, profile, code_version, inputs, seconds, cpu_seconds}
 //   normal-<scene>.dat, tangential-<scene>.dat (one block per delta_n, gnuplot's index) and
 //   kt-<scene>.dat: the same numbers as columns, under a header that names them.
+// A normal-only profile's averages have no /tangential and /kt, and no tangential and kt .dat.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -29,8 +30,8 @@ struct AverageProvenance {
   double cpu_seconds = 0.0;  ///< CPU time of the process [s]
 };
 
-/// Writes the four files into `dir`, each atomically.
-void write_average_files(const std::string& dir, const NormalAverage& normal, const TangentialAverage& tangential,
+/// Writes the four files into `dir`, each atomically (two without `tangential`: normal only).
+void write_average_files(const std::string& dir, const NormalAverage& normal, const TangentialAverage* tangential,
                          const AverageProvenance& provenance);
 
 /// What softpack-fit reads from an average file.

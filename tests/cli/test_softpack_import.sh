@@ -4,8 +4,9 @@
 #      a Velocities section), an extended XYZ file (our own --xyz export) and "x y z r" text, each
 #      written from a generated packing, import to the generated spheres (to 1e-12 of Rs), with
 #      the source's SHA-256 and the options as provenance; the stamps follow the source's bytes.
-#   2. make packings normal on a normal-only profile of imported packings, whose grid does not
-#      start at 0: both scenes swept, the packings made by softpack-import.
+#   2. make tables figures on a normal-only profile of imported packings, whose grid does not
+#      start at 0: both scenes swept, averaged and fitted (Table 1, Figure 3), the packings made
+#      by softpack-import; make tangential refused with a message.
 #   3. The direct path on a grid that does not start at 0: each point is what a one-point sweep
 #      at its Delta_n gives, bit for bit (every point starts from the scene as built).
 #   4. Bad input: overlapping grains, a grain beyond the shell, a missing seed, another atom
@@ -43,9 +44,10 @@ for s in (1, 2):
         o.write("# x y z r [m]\n" + "".join(f"{p[0] / 1e3!r} {p[1] / 1e3!r} {p[2] / 1e3!r} {q / 1e3!r}\n" for p, q in zip(x, r)))
 PY
 # profile FILE PACKING_YAML [DELTA_N]: the sweep test profile with another packing section, no
-# tangential section, and the normal grid DELTA_N.
+# tangential section, and the normal grid DELTA_N; named `imported`.
 profile() {
-  awk -v packing="$2" -v grid="${3:-[0.1, 0.3, 0.5]}" '
+  awk -v packing="$2" -v grid="${3:-[0.1, 0.2, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65]}" '
+    /^profile:/ {print "profile: imported"; next}
     /^packing:/ {print packing; skip = 1; next}
     /^tangential:/ {skip = 1; next}
     skip && /^  / {next}
@@ -95,21 +97,24 @@ cp "$tmp/run-2.orig" "$tmp/run-2.data"
 "$bin/softpack-config" "$tmp/lammps.yaml" stages | grep -qx "packing normal" || fail "a normal-only profile: stages"
 echo "ok: the stamps follow the source files' bytes; a profile without tangential has the stages packing normal"
 
-# --- 2. make packings normal on the imported packings -----------------------------------------------
-(cd "$root" && make --no-print-directory PROFILE=imported PROFILE_FILE="$tmp/lammps.yaml" DATA="$tmp/data" \
-   BUILD="$(dirname "$bin")" TOOLS= -j2 packings normal) > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; fail "make packings normal"; }
+# --- 2. the DAG of a normal-only profile on the imported packings -------------------------------------
+mk() { (cd "$root" && make --no-print-directory PROFILE=imported PROFILE_FILE="$tmp/lammps.yaml" DATA="$tmp/data" \
+          FIGURES_OUT="$tmp/figures" BUILD="$(dirname "$bin")" TOOLS= "$@"); }
+mk -j2 tables figures > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; fail "make tables figures (normal-only, imported)"; }
 for s in 1 2; do
   h5dump -d /provenance/program "$tmp/data/imported/packings/seed-$s.h5" | grep -q softpack-import || fail "seed $s was not imported"
   for scene in soft-solid soft-soft; do
-    h5dump -d /delta_n "$tmp/data/imported/normal/$scene-seed-$s.h5" | grep -q "0.1, 0.3, 0.5" || fail "$scene seed $s: not the profile's grid"
+    h5dump -d /delta_n "$tmp/data/imported/normal/$scene-seed-$s.h5" | grep -q "0.1, 0.2, 0.3, 0.35" || fail "$scene seed $s: not the profile's grid"
   done
 done
+grep -q "^| a \[N\] | [0-9]" "$tmp/data/imported/tables/table1.md" || fail "Table 1 has no fitted a: $(cat "$tmp/data/imported/tables/table1.md")"
+[[ -s $tmp/figures/fig3_normal.png && ! -e $tmp/figures/fig4_tangential_soft_solid.png ]] || fail "Figure 3 (and only the normal figures) expected"
+[[ ! -e $tmp/data/imported/tangential && ! -e $tmp/data/imported/averages/kt-soft-solid.dat ]] || fail "tangential outputs on a normal-only profile"
 $py "$root/tests/readers/check_hdf5.py" "$tmp/data/imported" --normal-only > "$tmp/check.log" ||
-  { cat "$tmp/check.log"; fail "the imported packings and their sweeps do not read as docs/reading-files.md says"; }
-(cd "$root" && make --no-print-directory PROFILE=imported PROFILE_FILE="$tmp/lammps.yaml" DATA="$tmp/data" \
-   BUILD="$(dirname "$bin")" TOOLS= tables) > "$tmp/make2.log" 2>&1 && fail "make tables on a normal-only profile did not stop"
-grep -q "normal-only profile" "$tmp/make2.log" || fail "make tables on a normal-only profile: $(cat "$tmp/make2.log")"
-echo "ok: make packings normal sweeps both scenes on imported packings, from delta_n 0.1 (h5py reads them as the guide says); make tables says why not"
+  { cat "$tmp/check.log"; fail "the imported packings, sweeps and averages do not read as docs/reading-files.md says"; }
+mk tangential > "$tmp/make2.log" 2>&1 && fail "make tangential on a normal-only profile did not stop"
+grep -q "normal-only profile" "$tmp/make2.log" || fail "make tangential on a normal-only profile: $(cat "$tmp/make2.log")"
+echo "ok: make tables figures on a normal-only profile of imported packings (grid from 0.1): both scenes swept, averaged, fitted; Table 1 and Figure 3; h5py reads it all as the guide says; make tangential says why not"
 
 # --- 3. the direct path from a grid that does not start at 0 -------------------------------------------
 profile "$tmp/direct.yaml" "$(import_section "$tmp/run-1.data" "$tmp/run-2.data" $'    length_unit: 1.0e-3\n    shell: read\n')" "[0.2, 0.4]"

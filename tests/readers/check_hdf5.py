@@ -203,8 +203,8 @@ def visit(paths, data, spec, body):
 class Folder:
     """What the files of one data folder say, gathered kind by kind for the next kind's checks."""
 
-    def __init__(self, data, grid):
-        self.data, self.grid = data, grid
+    def __init__(self, data, grid, normal_only=False):
+        self.data, self.grid, self.normal_only = data, grid, normal_only
         self.sizes, self.Rs = {}, {}  # packing file name: spheres, shell radius
         self.results = {}             # (stage, scene, seed): columns of the results file
         self.averages = {}            # scene: seeds, delta_n
@@ -267,15 +267,27 @@ class Folder:
         keys = [(p.parent.name, *re.fullmatch(r"(.*)-seed-(\d+)", p.stem).groups()) for p in inputs]
         normal = [self.results.get((st, sc, int(seed))) for st, sc, seed in keys if st == "normal"]
         tangential = [self.results.get((st, sc, int(seed))) for st, sc, seed in keys if st == "tangential"]
-        if not normal or None in normal + tangential or any(k[1] != scene for k in keys) or len(normal) != len(tangential):
+        if not normal or None in normal + tangential or any(k[1] != scene for k in keys) or \
+                len(normal) != (len(normal) if self.normal_only else len(tangential)):
             fail(where, f"provenance/inputs {[str(p) for p in inputs]}: not this scene's results in the folder")
             return ""
         seeds = f["normal/seeds"][()]
         if seeds != len(normal) or (grid and seeds != len(grid["seeds"])):
             fail(where, f"normal/seeds = {seeds}, but {len(normal)} normal results are averaged")
         same(where, "/normal/delta_n", f["normal/delta_n"][:], normal[0]["delta_n"])
-        for group, runs, columns in (("normal", normal, ("Fn", "Ft_parallel", "Ft_perpendicular")),
-                                     ("tangential", tangential, ("Ft_parallel", "Ft_perpendicular", "Fn"))):
+        groups = [("normal", normal, ("Fn", "Ft_parallel", "Ft_perpendicular")),
+                  ("tangential", tangential, ("Ft_parallel", "Ft_perpendicular", "Fn"))]
+        if self.normal_only:  # no tangential stage: the normal group only
+            if "tangential" in f or "kt" in f:
+                fail(where, "a normal-only profile's average holds /tangential or /kt")
+            for group, runs, columns in groups[:1]:
+                for c in columns:
+                    me = [mean_error([run[c][k] for run in runs]) for k in range(len(runs[0][c]))]
+                    same(where, f"/{group}/{c}_mean", f[f"{group}/{c}_mean"][:], [m for m, _ in me], rtol=1e-12)
+                    same(where, f"/{group}/{c}_stderr", f[f"{group}/{c}_stderr"][:], [e for _, e in me], rtol=1e-12)
+            self.averages[scene] = {"seeds": int(seeds), "delta_n": f["normal/delta_n"][:]}
+            return f"{d['D']} normal rows: the mean of {seeds} seeds' results (normal only)"
+        for group, runs, columns in groups:
             for c in columns:
                 me = [mean_error([run[c][k] for run in runs]) for k in range(len(runs[0][c]))]
                 same(where, f"/{group}/{c}_mean", f[f"{group}/{c}_mean"][:], [m for m, _ in me], rtol=1e-12)
@@ -326,7 +338,7 @@ def main():
     ap.add_argument("--profile", help="the profile file (default: DATA_DIR/profile.yaml when there)")
     ap.add_argument("--guide", type=Path, default=GUIDE)
     ap.add_argument("--normal-only", action="store_true",
-                    help="a normal-only profile's folder (packings and normal results; no averages or fits)")
+                    help="a normal-only profile's folder (no tangential results; averages of the normal law only)")
     args = ap.parse_args()
     data = args.data
     if not data.is_dir():
@@ -337,7 +349,9 @@ def main():
     for kind, s in specs.items():
         if not s:
             fail(args.guide, f"no table of kind {kind}")
-    folder = Folder(data, profile_grid(args, data))
+    folder = Folder(data, profile_grid(args, data), args.normal_only)
+    if args.normal_only:  # the averages without their tangential and kt groups
+        specs["average"] = [spec for spec in specs["average"] if not spec[0].startswith(("tangential/", "kt/"))]
     grid, results = folder.grid, folder.results
 
     # A packing is generated (softpack-pack) or imported (softpack-import): the guide's table of its kind.
@@ -388,8 +402,9 @@ def main():
     counts = {"packings": len(folder.sizes), "results": len(results), "averages": len(folder.averages),
               "fits": len(fits), "checkpoints": len(points)}
     if args.normal_only:
-        if not (counts["packings"] and counts["results"]) or counts["averages"] or counts["fits"]:
-            fail(data, f"a normal-only folder holds packings and normal results only ({counts})")
+        if not (counts["packings"] and counts["results"] and counts["averages"] and counts["fits"]) or \
+                any(k[0] == "tangential" for k in results):
+            fail(data, f"a normal-only folder holds packings, normal results, averages and fits ({counts})")
     elif not (counts["packings"] and counts["results"] and counts["averages"] and counts["fits"]):
         fail(data, f"no packings, results, averages or fits found ({counts})")
     for e in errors:
