@@ -107,7 +107,7 @@ test-sanitize:  ## the test suite under AddressSanitizer + UndefinedBehaviorSani
 	  -DSOFTPACK_SANITIZE=ON -DSOFTPACK_BENCH=OFF \
 	  $(if $(filter true,$(CI)),-DSOFTPACK_WERROR=ON)
 	cmake --build $(BUILD_SANITIZE) -j $(JOBS)
-	cd $(BUILD_SANITIZE) && ctest --output-on-failure -j $(JOBS) -LE "cluster|readers"  # Python and Slurm around our files: make test runs them
+	cd $(BUILD_SANITIZE) && ctest --output-on-failure -j $(JOBS) -LE "cluster|readers|slow"  # make test runs these: Python and Slurm around our files, and the long ones
 
 bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side by side
 	bench/run_benchmarks.sh $(BUILD)

@@ -43,8 +43,7 @@ int main(int argc, char** argv) {
     try {
       profile = parse_packing(root);
     } catch (const InputError& e) {
-      const std::string msg = e.what();
-      throw InputError(msg.rfind(config_path, 0) == 0 ? msg : config_path + ": " + msg);
+      throw in_file(config_path, e);
     }
     if (!profile.import)
       throw InputError(fmt::format("{}: packing: no `import` section; this profile's packings are generated (softpack-pack)", config_path));

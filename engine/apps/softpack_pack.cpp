@@ -42,9 +42,12 @@ int main(int argc, char** argv) {
     try {
       profile = parse_packing(root);
     } catch (const InputError& e) {
-      const std::string msg = e.what();
-      throw InputError(msg.rfind(config_path, 0) == 0 ? msg : config_path + ": " + msg);
+      throw in_file(config_path, e);
     }
+    if (profile.import)
+      throw InputError(fmt::format("{}: packing.import: this profile's packings are imported, not generated; make them with "
+                                   "softpack-import (make packings does)",
+                                   config_path));
     const bool tty = ::isatty(STDERR_FILENO) != 0;
     double last = -1.0;  // redraw at most 10 times a second on a terminal, once a second in a log
     const auto progress = [&](const std::string& phase, std::size_t done, std::size_t total) {

@@ -52,6 +52,9 @@ int main(int argc, char** argv) {
     const std::string base_path = study.at("base").string();
     const ConfigNode base = ConfigNode::load_file(base_path);
     const PackingProfile profile = parse_packing(base);
+    if (profile.import)
+      study.at("base").fail(fmt::format("{} imports its packings (packing.import); the study varies the generator's parameters",
+                                        base_path));
     const std::vector<std::uint64_t> seeds = parse_seeds(study);
     const ConfigNode vary = study.at("vary");
     vary.allow_only({"beta", "trials", "r_max_over_Rs", "shell_is_neighbour"});

@@ -15,6 +15,13 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// `e` as an error of the file `path`: its message prefixed with the path, unless it already
+/// starts with it (a reader that placed it, with line and column).
+inline InputError in_file(const std::string& path, const InputError& e) {
+  const std::string msg = e.what();
+  return InputError(msg.rfind(path, 0) == 0 ? msg : path + ": " + msg);
+}
+
 /// The simulation left the physical regime (a non-finite value, an overlap beyond the allowed
 /// fraction of a radius, an energy blow-up): the run stops before it writes wrong results. The
 /// message is the watchdog's diagnostic: step, time, sphere ids, overlap, dt and its stable limit.

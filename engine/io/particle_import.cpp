@@ -54,6 +54,16 @@ std::optional<double> to_number(const std::string& w) {
   return v;
 }
 
+// A count: decimal digits only, at most 10^9 (a file of more spheres is not a packing we can run).
+long count(const Lines& l, std::size_t k, const std::string& w, const char* what) {
+  long long v = -1;
+  const char* end = w.data() + w.size();
+  const auto [p, ec] = std::from_chars(w.data(), end, v);
+  if (ec != std::errc() || p != end || v < 0 || v > 1000000000LL)
+    l.fail(k, fmt::format("{} '{}' is not allowed; allowed: a whole number from 0 to 1e9", what, w));
+  return static_cast<long>(v);
+}
+
 double number(const Lines& l, std::size_t k, const std::string& w, const char* what) {
   const auto v = to_number(w);
   if (!v || !std::isfinite(*v)) l.fail(k, fmt::format("{} '{}' is not a finite number", what, w));
@@ -74,6 +84,7 @@ ForeignSpheres read_lammps(const Lines& l) {
   if (l.text.empty()) throw InputError(l.path + ": empty file; expected a LAMMPS data file (read_data)");
   ForeignSpheres s;
   long atoms = -1;
+  bool triclinic = false;
   std::array<std::optional<std::pair<double, double>>, 3> bounds;
   std::size_t k = 1;  // line 1 is the title
   // The header: "N atoms", "lo hi xlo xhi", ...; it ends at the first section keyword.
@@ -82,20 +93,21 @@ ForeignSpheres read_lammps(const Lines& l) {
     if (w.empty()) continue;
     if (!to_number(w[0])) break;  // a section keyword
     if (w.size() == 2 && w[1] == "atoms") {
-      const auto n = to_number(w[0]);
-      if (!n || *n < 0 || *n != std::floor(*n)) l.fail(k, fmt::format("'{}' is not a count of atoms", w[0]));
-      atoms = static_cast<long>(*n);
+      atoms = count(l, k, w[0], "the count of atoms");
     } else if (w.size() == 4 && w[2].size() == 3 && w[2][1] == 'l' && w[2][2] == 'o' && w[3] == std::string(1, w[2][0]) + "hi" &&
                w[2][0] >= 'x' && w[2][0] <= 'z') {
       bounds[static_cast<std::size_t>(w[2][0] - 'x')] = {number(l, k, w[0], "box bound"), number(l, k, w[1], "box bound")};
     } else if (w.size() == 6 && w[3] == "xy") {
       for (int i = 0; i < 3; ++i)
-        if (number(l, k, w[static_cast<std::size_t>(i)], "tilt factor") != 0.0)
-          l.fail(k, "a triclinic box (non-zero tilt factors) is not allowed; softpack-import reads orthogonal boxes");
+        if (number(l, k, w[static_cast<std::size_t>(i)], "tilt factor") != 0.0) triclinic = true;
+    } else if (w.size() >= 4 && (w.back() == "avec" || w.back() == "bvec" || w.back() == "cvec")) {
+      triclinic = true;  // a general triclinic box (LAMMPS 2024 on)
     }
   }
   if (atoms < 0) throw InputError(l.path + ": no 'N atoms' line in the header; is this a LAMMPS data file (read_data)?");
-  if (bounds[0] && bounds[1] && bounds[2])
+  if (triclinic)
+    s.no_box_reason = "a triclinic box";
+  else if (bounds[0] && bounds[1] && bounds[2])
     s.box = ForeignBox{{bounds[0]->first, bounds[1]->first, bounds[2]->first}, {bounds[0]->second, bounds[1]->second, bounds[2]->second}};
   // The sections: a keyword line, then the entries up to the next keyword.
   bool found = false;
@@ -133,7 +145,7 @@ ForeignSpheres read_lammps(const Lines& l) {
         for (int i = 0; i < 3; ++i) {
           const double n = number(l, k, e[7 + static_cast<std::size_t>(i)], "image flag");
           if (n != 0.0) {
-            if (!s.box) l.fail(k, "an image flag without the box bounds xlo xhi, ylo yhi, zlo zhi in the header");
+            if (!s.box) l.fail(k, "a non-zero image flag needs an orthogonal box (xlo xhi, ylo yhi, zlo zhi in the header)");
             x[i] += n * (s.box->hi[i] - s.box->lo[i]);
           }
         }
@@ -180,9 +192,9 @@ std::map<std::string, std::string> key_values(const Lines& l, std::size_t k) {
 
 ForeignSpheres read_xyz(const Lines& l) {
   if (l.text.size() < 2) throw InputError(l.path + ": expected an extended XYZ file (a count, a comment line, the atoms)");
-  const auto count = to_number(split(l.text[0]).empty() ? "" : split(l.text[0])[0]);
-  if (!count || *count < 0 || *count != std::floor(*count)) l.fail(0, "expected the number of atoms on the first line");
-  const auto n = static_cast<std::size_t>(*count);
+  const std::vector<std::string> first = split(l.text[0]);
+  if (first.empty()) l.fail(0, "expected the number of atoms on the first line");
+  const auto n = static_cast<std::size_t>(count(l, 0, first[0], "the number of atoms"));
   const std::map<std::string, std::string> kv = key_values(l, 1);
   ForeignSpheres s;
   // Properties=name:type:columns:... (default species:S:1:pos:R:3)
@@ -195,13 +207,13 @@ ForeignSpheres read_xyz(const Lines& l) {
   if (p.size() % 3 != 0) l.fail(1, fmt::format("Properties={} is not name:type:columns triples", properties));
   long pos = -1, radius = -1, diameter = -1, column = 0;
   for (std::size_t i = 0; i < p.size(); i += 3) {
-    const auto cols = to_number(p[i + 2]);
-    if (!cols || *cols < 1) l.fail(1, fmt::format("Properties: '{}' is not a column count", p[i + 2]));
+    const long cols = count(l, 1, p[i + 2], "Properties: the column count");
+    if (cols < 1 || cols > 1000) l.fail(1, fmt::format("Properties: '{}' is not allowed as a column count; allowed: 1 to 1000", p[i + 2]));
     const std::string name = lower(p[i]);
-    if (name == "pos" && *cols == 3) pos = column;
-    if ((name == "radius" || name == "radii") && *cols == 1) radius = column;
-    if (name == "diameter" && *cols == 1) diameter = column;
-    column += static_cast<long>(*cols);
+    if (name == "pos" && cols == 3) pos = column;
+    if ((name == "radius" || name == "radii") && cols == 1) radius = column;
+    if (name == "diameter" && cols == 1) diameter = column;
+    column += cols;
   }
   if (pos < 0) l.fail(1, fmt::format("Properties={} has no pos:R:3 column", properties));
   if (radius < 0 && diameter < 0) l.fail(1, fmt::format("Properties={} has no radius (radius:R:1) or diameter column", properties));
@@ -209,15 +221,16 @@ ForeignSpheres read_xyz(const Lines& l) {
     std::vector<double> c;
     for (const std::string& w : split(kv.at("lattice"))) c.push_back(number(l, 1, w, "Lattice entry"));
     if (c.size() != 9) l.fail(1, "Lattice must hold 9 numbers (three cell vectors)");
-    if (c[1] != 0.0 || c[2] != 0.0 || c[3] != 0.0 || c[5] != 0.0 || c[6] != 0.0 || c[7] != 0.0)
-      l.fail(1, "a non-orthogonal Lattice is not allowed; softpack-import reads orthogonal cells");
     Vec3 origin = Vec3::Zero();
     if (kv.count("origin")) {
       const std::vector<std::string> o = split(kv.at("origin"));
       if (o.size() != 3) l.fail(1, "Origin must hold 3 numbers");
       origin = Vec3(number(l, 1, o[0], "Origin"), number(l, 1, o[1], "Origin"), number(l, 1, o[2], "Origin"));
     }
-    s.box = ForeignBox{origin, origin + Vec3(c[0], c[4], c[8])};
+    if (c[1] != 0.0 || c[2] != 0.0 || c[3] != 0.0 || c[5] != 0.0 || c[6] != 0.0 || c[7] != 0.0)
+      s.no_box_reason = "a non-orthogonal Lattice";
+    else
+      s.box = ForeignBox{origin, origin + Vec3(c[0], c[4], c[8])};
   }
   if (l.text.size() < 2 + n) throw InputError(fmt::format("{}: the first line says {} atoms, the file holds {}", l.path, n, l.text.size() - 2));
   for (std::size_t k = 2; k < 2 + n; ++k) {

@@ -40,9 +40,17 @@ PackingFile checked_packing(const std::string& path, const std::string& packing_
   PackingFile p = read_packing_file(path);
   if (p.provenance.config != packing_section)
     throw InputError(fmt::format("{}: this packing was made from another packing configuration than the `packing` section of "
-                                 "{} ({}; regenerate it with softpack-pack --config {})",
-                                 path, config_path, first_difference(p.provenance.config, packing_section), config_path));
+                                 "{} ({}; make it again with {} --config {})",
+                                 path, config_path, first_difference(p.provenance.config, packing_section),
+                                 p.imported ? "softpack-import" : "softpack-pack", config_path));
   return p;
+}
+
+// How a packing is named in the points' configuration: its path and seed, and for an imported
+// one the SHA-256 of its source, so that a checkpoint measured on an older source is not reused.
+std::string packing_label(const std::string& path, const PackingFile& p) {
+  return p.imported ? fmt::format("{} (seed {}, source sha256 {})", path, p.provenance.seed, p.imported->source_sha256)
+                    : fmt::format("{} (seed {})", path, p.provenance.seed);
 }
 
 StageSummary run(const StageOptions& o, const StageProgress& progress) {
@@ -53,8 +61,7 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
   try {
     settings = parse_measurement(root);
   } catch (const InputError& e) {
-    const std::string msg = e.what();
-    throw InputError(msg.rfind(o.config_path, 0) == 0 ? msg : o.config_path + ": " + msg);
+    throw in_file(o.config_path, e);
   }
   if (o.stage == "tangential" && !settings.has_tangential)
     throw InputError(fmt::format("{}: no `tangential` section: this profile is normal-only (make packings normal)", o.config_path));
@@ -73,17 +80,17 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
     const PackingFile first = checked_packing(o.packing, packing_section, o.config_path);
     // The seed the results are filed and averaged under is the packing's own.
     if (first.provenance.seed != static_cast<std::uint64_t>(o.seed))
-      throw InputError(fmt::format("--seed: {} does not match --packing {}, which softpack-pack made with seed {}; "
+      throw InputError(fmt::format("--seed: {} does not match --packing {}, which was made with seed {}; "
                                    "give the packing of seed {}, or --seed {}",
                                    o.seed, o.packing, first.provenance.seed, o.seed, first.provenance.seed));
-    packings = fmt::format("{} (seed {})", o.packing, first.provenance.seed);
+    packings = packing_label(o.packing, first);
     if (kind == ContactScene::soft_soft) {
       if (o.second_packing.empty()) throw InputError("--second-packing: required for soft-soft (a packing of another seed)");
       const PackingFile second = checked_packing(o.second_packing, packing_section, o.config_path);
       if (second.provenance.seed == first.provenance.seed)
         throw InputError(fmt::format("--second-packing: {} has the same seed as --packing; soft-soft needs two independent packings",
                                      o.second_packing));
-      packings += fmt::format(", {} (seed {})", o.second_packing, second.provenance.seed);
+      packings += ", " + packing_label(o.second_packing, second);
       c.setup = soft_soft_setup(first, second, settings.simulation);
     } else {
       c.setup = soft_solid_setup(first, settings.simulation);

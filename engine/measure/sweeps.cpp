@@ -123,11 +123,13 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
   for (std::size_t k = done; k < grid.size(); ++k) {
     Stopwatch watch;
     // Before the restore: a direct-path point's `steps` counts from the previous point's end (a
-    // known error of that diagnostic column, kept until the next release bump changes result bits).
-    const long step0 = sim.step_count();
+    // known error of that diagnostic column, kept until the next release bump changes result bits;
+    // a grid that does not start at 0, new, counts from the restored state).
+    long step0 = sim.step_count();
     const double hn = grid[k] * c.setup.Rs;
     if (direct && !zero_first && (k > 0 || done > 0)) {
       sim.restore(built);
+      step0 = sim.step_count();
       hn_now = 0.0;
     } else if (direct && k > 0) {
       sim.restore(k == done && done > 0 ? undeformed_if_direct : read_point_file(normal_point_path(c.checkpoint_dir, 0), true).state);

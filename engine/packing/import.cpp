@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "core/sha256.hpp"
+#include "scene/limits.hpp"
 
 namespace softpack {
 namespace {
@@ -113,49 +114,85 @@ ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& s
   return s;
 }
 
+namespace {
+
+struct Shell {
+  Vec3 centre = Vec3::Zero();
+  double radius = 0.0;  ///< in the file's unit
+};
+
+ForeignFormat format_of(const ImportSpec& spec, const std::string& path) { return spec.format ? *spec.format : foreign_format_of(path); }
+
+// The shell of one file, in its unit: given, the sphere inscribed in its cubic box, or the
+// sphere about the middle of the grains' bounding box through the farthest grain.
+Shell shell_of(const ImportSpec& spec, const std::string& path, const ForeignSpheres& s) {
+  if (spec.shell == ShellSource::given) return {spec.shell_centre, spec.shell_radius};
+  if (spec.shell == ShellSource::read) {
+    if (!s.box)
+      throw InputError(fmt::format("{}: packing.import.shell: read, but the file gives no box{}; give shell: {{radius: R, centre: "
+                                   "[x, y, z]}} or shell: enclosing",
+                                   path, s.no_box_reason.empty() ? "" : " (" + s.no_box_reason + ")"));
+    const Vec3 edge = s.box->hi - s.box->lo;
+    if (!(edge.minCoeff() > 0.0) || edge.maxCoeff() - edge.minCoeff() > 1e-9 * edge.maxCoeff())
+      throw InputError(fmt::format("{}: packing.import.shell: read needs a cubic box (the shell is the sphere inscribed in it); the box "
+                                   "is {} x {} x {}; give shell: {{radius: R, centre: [x, y, z]}} or shell: enclosing",
+                                   path, edge.x(), edge.y(), edge.z()));
+    return {0.5 * (s.box->lo + s.box->hi), 0.5 * edge.x()};
+  }
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (std::size_t i = 0; i < s.radii.size(); ++i) {
+    lo = lo.cwiseMin(s.centres[i] - Vec3::Constant(s.radii[i]));
+    hi = hi.cwiseMax(s.centres[i] + Vec3::Constant(s.radii[i]));
+  }
+  Shell shell{0.5 * (lo + hi), 0.0};
+  for (std::size_t i = 0; i < s.radii.size(); ++i) shell.radius = std::max(shell.radius, (s.centres[i] - shell.centre).norm() + s.radii[i]);
+  return shell;
+}
+
+}  // namespace
+
 ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed) {
   const auto it = spec.files.find(seed);
   if (it == spec.files.end()) throw InputError(fmt::format("packing.import.files: no file for seed {}", seed));
   const std::string& path = it->second;
   ImportedPacking out;
   out.source = path;
-  out.format = spec.format ? *spec.format : foreign_format_of(path);
+  out.format = format_of(spec, path);
   out.sha256 = sha256_of_file(path);
   const ForeignSpheres s = read_foreign_spheres(path, out.format);
   const auto line = [&](std::size_t i) { return fmt::format("{}:{}", path, s.lines[i]); };
 
-  // The shell, in the file's unit.
-  Vec3 c = spec.shell_centre;
-  double R = spec.shell_radius;
-  if (spec.shell == ShellSource::read) {
-    if (!s.box)
-      throw InputError(fmt::format("{}: packing.import.shell: read, but the file gives no box; give shell: {{radius: R, centre: [x, y, z]}} "
-                                   "or shell: enclosing",
-                                   path));
-    const Vec3 edge = s.box->hi - s.box->lo;
-    if (!(edge.minCoeff() > 0.0) || edge.maxCoeff() - edge.minCoeff() > 1e-9 * edge.maxCoeff())
-      throw InputError(fmt::format("{}: packing.import.shell: read needs a cubic box (the shell is the sphere inscribed in it); the box "
-                                   "is {} x {} x {}; give shell: {{radius: R, centre: [x, y, z]}} or shell: enclosing",
-                                   path, edge.x(), edge.y(), edge.z()));
-    c = 0.5 * (s.box->lo + s.box->hi);
-    R = 0.5 * edge.x();
-  } else if (spec.shell == ShellSource::enclosing) {
-    Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-    for (std::size_t i = 0; i < s.radii.size(); ++i) {
-      lo = lo.cwiseMin(s.centres[i] - Vec3::Constant(s.radii[i]));
-      hi = hi.cwiseMax(s.centres[i] + Vec3::Constant(s.radii[i]));
+  // The shell, in the file's unit. Every seed's packing has the same shell radius (soft-soft
+  // pairs two seeds, and the averages are over one Rs): read from the boxes, they must agree;
+  // enclosing, the largest seed's radius serves all (each seed keeps its own centre).
+  Shell shell = shell_of(spec, path, s);
+  if (spec.shell != ShellSource::given)
+    for (const auto& [other_seed, other] : spec.files) {
+      if (other_seed == seed) continue;
+      const Shell o = shell_of(spec, other, read_foreign_spheres(other, format_of(spec, other)));
+      if (spec.shell == ShellSource::enclosing) {
+        shell.radius = std::max(shell.radius, o.radius);
+      } else if (std::abs(o.radius - shell.radius) > 1e-12 * shell.radius) {
+        throw InputError(fmt::format("{} and {}: the shells read from their boxes differ (radius {} and {} in the file's unit); the "
+                                     "packings of a profile share one shell radius; give shell: {{radius: R, centre: [x, y, z]}} or "
+                                     "shell: enclosing",
+                                     path, other, shell.radius, o.radius));
+      }
     }
-    c = 0.5 * (lo + hi);
-    R = 0.0;
-    for (std::size_t i = 0; i < s.radii.size(); ++i) R = std::max(R, (s.centres[i] - c).norm() + s.radii[i]);
-  }
+  const Vec3 c = shell.centre;
+  const double R = shell.radius;
   out.shell_centre_in_file = c;
   out.Rs = R * spec.length_unit;
+  if (const std::string why = limits::refusal(out.Rs, limits::kPackingRs); !why.empty())
+    throw InputError(fmt::format("{}: the shell radius {} (in the file's unit) times packing.import.length_unit = {}: {}", path, R,
+                                 spec.length_unit, why));
 
   // To metres, the shell's centre at the origin; every grain inside the shell.
   for (std::size_t i = 0; i < s.radii.size(); ++i) {
     const Vec3 x = (s.centres[i] - c) * spec.length_unit;
     const double r = s.radii[i] * spec.length_unit;
+    if (const std::string why = limits::refusal(r, limits::kRadius); !why.empty())
+      throw InputError(fmt::format("{}: the radius times packing.import.length_unit = {}: {}", line(i), spec.length_unit, why));
     if (!(x.norm() + r <= out.Rs * (1.0 + 1e-9)))
       throw InputError(fmt::format("{}: this grain reaches {} from the shell's centre, beyond the shell (radius {}, {}; in the file's unit)",
                                    line(i), x.norm() / spec.length_unit + s.radii[i], R, name(spec.shell)));

@@ -220,7 +220,7 @@ expect_error "^softpack-average: error: --tangential: t-bad\.h5 and t1-copy\.h5 
 case_name results_of_another_seed_than_the_packing_or_the_other_law_are_refused
 # Both exited 0: a sweep filed under --seed 2 measured the packing of seed 1; an average mixed
 # the normal results of seeds 1 and 2 with the tangential results of seed 1.
-expect_error "^softpack-normal: error: --seed: 2 does not match --packing p1\.h5, which softpack-pack made with seed 1" n-seed.h5 \
+expect_error "^softpack-normal: error: --seed: 2 does not match --packing p1\.h5, which was made with seed 1" n-seed.h5 \
   "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 2 --packing p1.h5 --checkpoints ncp-seed --out n-seed.h5 --quiet
 "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 2 --packing p2.h5 --checkpoints n2 --out n2.h5 --quiet
 rm -rf avg

@@ -96,6 +96,18 @@ cp "$tmp/run-2.orig" "$tmp/run-2.data"
 [[ $(stamp packing) == "$before" ]] || fail "the stamp did not come back with the source file"
 "$bin/softpack-config" "$tmp/lammps.yaml" stages | grep -qx "packing normal" || fail "a normal-only profile: stages"
 echo "ok: the stamps follow the source files' bytes; a profile without tangential has the stages packing normal"
+# Enclosing shells: one radius for every seed (the larger), each seed its own centre.
+profile "$tmp/enclosing.yaml" "$(import_section "$tmp/run-1.txt" "$tmp/run-2.txt" $'    shell: enclosing\n')"
+for s in 1 2; do "$bin/softpack-import" --config "$tmp/enclosing.yaml" --seed $s --out "$tmp/enc-$s.h5" --quiet; done
+$py - "$tmp" <<'PY' || fail "enclosing shells: not one radius for both seeds"
+import sys, h5py, numpy as np
+d = sys.argv[1]
+R = [h5py.File(f"{d}/enc-{s}.h5", "r")["shell/radius"][()] for s in (1, 2)]
+reach = [max(np.linalg.norm(f["centres"][()], axis=1) + f["radii"][()]) for f in (h5py.File(f"{d}/enc-{s}.h5", "r") for s in (1, 2))]
+assert R[0] == R[1] and abs(max(reach) - R[0]) < 1e-12 * R[0] and min(reach) <= R[0], (R, reach)
+print("ok")
+PY
+echo "ok: enclosing shells share the larger radius across seeds"
 
 # --- 2. the DAG of a normal-only profile on the imported packings -------------------------------------
 mk() { (cd "$root" && make --no-print-directory PROFILE=imported PROFILE_FILE="$tmp/lammps.yaml" DATA="$tmp/data" \
@@ -129,7 +141,7 @@ $py - "$tmp/direct.h5" "$tmp/direct-one.h5" <<'PY' || fail "direct path: the poi
 import sys, h5py, numpy as np
 a, b = h5py.File(sys.argv[1], "r"), h5py.File(sys.argv[2], "r")
 assert list(a["delta_n"][()]) == [0.2, 0.4] and list(b["delta_n"][()]) == [0.4]
-assert a["Fn"][1] == b["Fn"][0], (a["Fn"][()], b["Fn"][()])  # (not steps: docs/measurement.md, known error)
+assert a["Fn"][1] == b["Fn"][0] and a["steps"][1] == b["steps"][0], (a["Fn"][()], b["Fn"][()], a["steps"][()], b["steps"][()])
 assert np.array_equal(a["force"][1], b["force"][0])
 print("ok")
 PY
@@ -163,7 +175,10 @@ profile "$tmp/bad.yaml" $'packing:\n  import:\n    files: {1: '"$tmp/run-1.data"
 expect_error "packing.import.files: no file for seed 2" "$out" imp "$tmp/bad.yaml"
 profile "$tmp/bad.yaml" "$(import_section "$tmp/run-1.data" "$tmp/run-2.data" $'    shell: read\n')"$'\n  beta: 2.0'
 expect_error "packing.beta" "$out" imp "$tmp/bad.yaml"
+awk '$3 ~ /^[xyz]lo$/ {$1 = $1 - 0.5; $2 = $2 + 0.5} {print}' "$tmp/run-2.data" > "$tmp/bigger-box.data"
+profile "$tmp/bad.yaml" "$(import_section "$tmp/run-1.data" "$tmp/bigger-box.data" "$unit")"
+expect_error "the shells read from their boxes differ" "$out" imp "$tmp/bad.yaml"
 bad_profile "$tmp/missing.data" "$unit"
 expect_error "missing.data: cannot read" "$out" imp "$tmp/bad.yaml"
 expect_error "packing: no \`import\` section" "$out" imp "$base"
-echo "ok: overlapping grains, a grain beyond the shell, another atom style, a wrong count, a non-cubic box, no box, a missing seed or file, generator keys: refused"
+echo "ok: overlapping grains, a grain beyond the shell, another atom style, a wrong count, a non-cubic box, no box, boxes of two sizes, a missing seed or file, generator keys: refused"

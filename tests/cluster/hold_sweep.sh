@@ -12,6 +12,9 @@ done
 "$@" &
 pid=$!
 while kill -0 "$pid" 2> /dev/null && ! compgen -G "$checkpoints/point-000.h5" > /dev/null; do sleep 0.05; done
-kill -STOP "$pid" 2> /dev/null || true
-echo "${SLURM_JOB_ID:-none}" > "$HOLD_OUT.held.tmp" && mv "$HOLD_OUT.held.tmp" "$HOLD_OUT.held"
+# Held only if it is still running (else it ended before its first point was seen: say nothing,
+# and the test reports that the sweep was never held).
+if kill -STOP "$pid" 2> /dev/null && kill -0 "$pid" 2> /dev/null; then
+  echo "${SLURM_JOB_ID:-none}" > "$HOLD_OUT.held.tmp" && mv "$HOLD_OUT.held.tmp" "$HOLD_OUT.held"
+fi
 wait "$pid"

@@ -24,7 +24,10 @@ if [[ $cmd == env ]]; then echo "export SLURM_CONF=$conf"; exit 0; fi
 
 stop() {
   export SLURM_CONF=$conf
-  [[ -f $conf ]] && scancel --quiet --user="$(id -un)" 2> /dev/null || true
+  if [[ -f $conf ]] && scancel --quiet --user="$(id -un)" 2> /dev/null; then
+    # The cancel reaches the job steps through slurmd: wait (10 s at most) until no job is left.
+    for _ in $(seq 1 100); do [[ -z $(squeue -h -o %i 2> /dev/null) ]] && break; sleep 0.1; done
+  fi
   local f pid
   for f in slurmd slurmctld munged; do
     [[ -f $dir/$f.pid ]] || continue
@@ -43,11 +46,21 @@ for tool in munged slurmctld slurmd sinfo srun; do
     { echo "slurm_cluster.sh: $tool not found (Debian packages slurm-wlm and munge; make setup)" >&2; exit 77; }
 done
 PATH=$PATH:/usr/sbin
-free_port() {  # a TCP port nobody listens on
-  local p
+used_ports=" "
+free_port() {  # a TCP port nobody listens on (ss, else /proc/net/tcp), not given out before
+  local p hex
   while :; do
     p=$(shuf -i 20000-60000 -n 1)
-    ss -Htln "sport = :$p" 2> /dev/null | grep -q . || { echo "$p"; return; }
+    [[ $used_ports == *" $p "* ]] && continue
+    if command -v ss > /dev/null; then
+      ss -Htln "sport = :$p" 2> /dev/null | grep -q . && continue
+    else
+      hex=$(printf ':%04X ' "$p")
+      grep -qi "$hex" /proc/net/tcp /proc/net/tcp6 2> /dev/null && continue
+    fi
+    used_ports+="$p "
+    echo "$p"
+    return
   done
 }
 mkdir -p "$dir"/{munge,state,spool,log}
@@ -63,6 +76,9 @@ chmod 400 "$dir/munge/munge.key"
 munged --force --key-file="$dir/munge/munge.key" --socket="$dir/munge/munge.socket" \
   --pid-file="$dir/munged.pid" --log-file="$dir/log/munged.log" --seed-file="$dir/munge/seed"
 
+ctld_port=$(free_port)
+used_ports+="$ctld_port "
+slurmd_port=$(free_port)
 cat > "$conf" <<CONF
 # written by tests/cluster/slurm_cluster.sh: a one-node cluster for the tests
 ClusterName=softpack-test
@@ -72,8 +88,8 @@ SlurmdUser=$(id -un)
 AuthType=auth/munge
 CredType=cred/munge
 AuthInfo=socket=$dir/munge/munge.socket
-SlurmctldPort=$(free_port)
-SlurmdPort=$(free_port)
+SlurmctldPort=$ctld_port
+SlurmdPort=$slurmd_port
 StateSaveLocation=$dir/state
 SlurmdSpoolDir=$dir/spool
 SlurmctldPidFile=$dir/slurmctld.pid

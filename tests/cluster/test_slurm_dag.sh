@@ -13,8 +13,19 @@
 source "$(dirname "$0")/../workflow/common.sh"
 here=$(cd "$(dirname "$0")" && pwd)
 cluster=$work/cluster
-trap '"$here"/slurm_cluster.sh stop "$cluster" || true; rm -rf "$work"' EXIT
+bg=  # the process group of a make started in the background
+cleanup() {
+  [[ -n $bg ]] && kill -- -"$bg" 2> /dev/null
+  "$here"/slurm_cluster.sh stop "$cluster" || true
+  rm -rf "$work"
+}
+trap cleanup EXIT
+trap 'exit 1' INT TERM  # (the EXIT trap runs)
 "$here"/slurm_cluster.sh start "$cluster" || exit $?
+# Should this script be killed outright (a ctest timeout sends SIGKILL), a watcher in its own
+# session stops the daemons, which have detached themselves.
+setsid bash -c 'while kill -0 '"$$"' 2> /dev/null; do sleep 2; done; "$0" stop "$1"; rm -rf "$2"' \
+  "$here"/slurm_cluster.sh "$cluster" "$work" > /dev/null 2>&1 < /dev/null &
 eval "$("$here"/slurm_cluster.sh env "$cluster")"
 export MAKEFLAGS=
 jobs_done() { [[ -f $cluster/jobcomp.txt ]] && wc -l < "$cluster/jobcomp.txt" || echo 0; }
@@ -32,7 +43,8 @@ expected=$(mk -n FROM_SCRATCH=1 RUN=__RUN__ tables figures 2> /dev/null | grep -
 n_expected=$(awk '{n += $1} END {print n}' <<< "$expected")
 mk -j2 FROM_SCRATCH=1 RUN="srun -N1 -n1" tables figures > "$work/slurm.log" 2>&1 ||
   { tail -30 "$work/slurm.log"; tail -20 "$cluster"/log/*.log; fail "make -j2 RUN=srun tables figures"; }
-sleep 1  # the controller writes the job record when the job's end is processed
+# The controller writes a job's record when it has processed its end: wait for all of them.
+for _ in $(seq 1 300); do [[ $(jobs_done) -ge $n_expected ]] && break; sleep 0.1; done
 n_jobs=$(jobs_done)
 states=$(grep -o 'JobState=[A-Z]*' "$cluster/jobcomp.txt" | sort | uniq -c | tr -s ' ')
 echo "engine invocations make -n lists:"; echo "$expected"
@@ -54,13 +66,14 @@ before=$(jobs_done)
 sweep=data-cancel/quick/normal/soft-solid-seed-1.h5
 HOLD_OUT=$sweep setsid make --no-print-directory PROFILE=quick BUILD="$build" DATA=data-cancel TOOLS= FROM_SCRATCH=1 -j2 \
   RUN="srun -N1 -n1 $here/hold_sweep.sh" tables > "$work/cancel.log" 2>&1 &
-pid=$!
+pid=$! bg=$!
 for _ in $(seq 1 3000); do [[ -e $sweep.held ]] && break; kill -0 "$pid" 2> /dev/null || break; sleep 0.1; done
 [[ -e $sweep.held ]] || { kill -- -"$pid" 2> /dev/null; cat "$work/cancel.log"; fail "the sweep $sweep was never held"; }
 job=$(cat "$sweep.held")
 squeue -h -j "$job" -t RUNNING -o %i | grep -qx "$job" || fail "job $job of $sweep is not running"
 scancel "$job"
 wait "$pid" && fail "make succeeded although its sweep job $job was cancelled"
+bg=
 grep -q "normal: FAILED for quick soft-solid seed 1" "$work/cancel.log" || { cat "$work/cancel.log"; fail "make did not report the cancelled sweep"; }
 [[ -e $sweep ]] && fail "the cancelled sweep left its result file $sweep"
 for _ in $(seq 1 100); do grep -q "JobId=$job .*JobState=CANCELLED" "$cluster/jobcomp.txt" && break; sleep 0.1; done

@@ -236,7 +236,7 @@ class Folder:
         col = {k: f[k][:] for k in ("delta_n", "hn", "alpha_deg", "ht", "Fn", "Ft_parallel", "Ft_perpendicular", "force")}
         for k, axis in (("Fn", 0), ("Ft_parallel", 1), ("Ft_perpendicular", 2)):
             same(where, f"/{k} against /force[:, {axis}]", col[k], col["force"][:, axis])
-        names = [Path(p).name for p in re.findall(r"(\S+) \(seed \d+\)", text(f, "provenance/packings"))]
+        names = [Path(p).name for p in re.findall(r"(\S+) \(seed \d+[,)]", text(f, "provenance/packings"))]
         if len(names) != (1 if m[1] == "soft-solid" else 2) or names[0] != f"seed-{m[2]}.h5" \
                 or any(n not in self.sizes for n in names):
             fail(where, f"provenance/packings {names}: not this seed's packing(s) of packings/")

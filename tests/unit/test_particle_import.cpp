@@ -5,6 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 #include "core/error.hpp"
 #include "core/sha256.hpp"
@@ -15,7 +18,8 @@ namespace softpack {
 namespace {
 
 std::string write(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "softpack-test-import";
+  // One folder per process: two builds' suites may run at once.
+  const auto dir = std::filesystem::temp_directory_path() / ("softpack-test-import-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / name).string();
   std::ofstream(path) << text;
@@ -65,9 +69,19 @@ TEST(ParticleImport, LammpsRefusesWhatItCannotRead) {
   t = kLammps;
   EXPECT_NE(error_of(write("d.data", t.replace(t.find("0.25 2500"), 4, "0.00")), ForeignFormat::lammps).find("d.data:17: radius 0"),
             std::string::npos);
+  // A triclinic box: read as no box (the shell must then be given or enclosing); image flags
+  // cannot be unwrapped through it.
   t = kLammps;
-  EXPECT_NE(error_of(write("e.data", t.replace(t.find("\n\nMasses"), 0, "\n0.5 0 0 xy xz yz")), ForeignFormat::lammps)
-                .find("triclinic"),
+  t.replace(t.find("\n\nMasses"), 0, "\n0.5 0 0 xy xz yz");
+  EXPECT_NE(error_of(write("e.data", t), ForeignFormat::lammps).find("e.data:18: a non-zero image flag needs an orthogonal box"),
+            std::string::npos);
+  t.replace(t.find("1 0 -1"), 6, "0 0 0");
+  const ForeignSpheres s = read_foreign_spheres(write("f.data", t), ForeignFormat::lammps);
+  EXPECT_FALSE(s.box);
+  EXPECT_EQ(s.no_box_reason, "a triclinic box");
+  EXPECT_NE(error_of(write("g.data", std::string(kLammps).replace(std::string(kLammps).find("2 atoms"), 7, "inf atoms")),
+                     ForeignFormat::lammps)
+                .find("g.data:3: the count of atoms 'inf' is not allowed"),
             std::string::npos);
 }
 
