@@ -72,11 +72,7 @@ int main(int argc, char** argv) {
     prov.cpu_seconds = process_cpu_seconds();
     const std::string line = fmt::format("softpack-import {} seed {} from {} (sha256 {}), profile {}", prov.code_version, seed,
                                          imported.source, imported.sha256, config_path);
-    if (!vtp_path.empty()) write_vtp(vtp_path, imported.centres, imported.radii, {}, line);
-    if (!xyz_path.empty()) {
-      const ExportBox box{Vec3::Constant(-imported.Rs), Vec3::Constant(imported.Rs), {false, false, false}};
-      write_extended_xyz(xyz_path, imported.centres, imported.radii, box, line);
-    }
+    write_packing_pictures(vtp_path, xyz_path, imported.centres, imported.radii, imported.Rs, line);
     write_imported_packing_file(out_path, record, imported.centres, imported.radii, imported.Rs, stats, prov);
     if (!quiet)
       fmt::print(stderr,

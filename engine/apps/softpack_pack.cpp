@@ -74,11 +74,7 @@ int main(int argc, char** argv) {
     // The packing file last: it is what make (and the sweeps) take as the stage's result, so a
     // write that fails (a full disk) leaves no packing file beside missing pictures.
     const std::string line = fmt::format("softpack-pack {} seed {} from {}", prov.code_version, seed, config_path);
-    if (!vtp_path.empty()) write_vtp(vtp_path, packing.centres, packing.radii, {}, line);
-    if (!xyz_path.empty()) {
-      const ExportBox box{Vec3::Constant(-p.Rs), Vec3::Constant(p.Rs), {false, false, false}};
-      write_extended_xyz(xyz_path, packing.centres, packing.radii, box, line);
-    }
+    write_packing_pictures(vtp_path, xyz_path, packing.centres, packing.radii, p.Rs, line);
     write_packing_file(out_path, p, packing, stats, prov);
     if (!quiet)
       fmt::print(stderr,

@@ -157,4 +157,11 @@ void write_extended_xyz(const std::string& path, std::span<const Vec3> centres,
   write_file_atomically(path, fmt::to_string(buf));
 }
 
+void write_packing_pictures(const std::string& vtp_path, const std::string& xyz_path, std::span<const Vec3> centres,
+                            std::span<const double> radii, double Rs, const std::string& provenance) {
+  if (!vtp_path.empty()) write_vtp(vtp_path, centres, radii, {}, provenance);
+  if (!xyz_path.empty())
+    write_extended_xyz(xyz_path, centres, radii, ExportBox{Vec3::Constant(-Rs), Vec3::Constant(Rs), {false, false, false}}, provenance);
+}
+
 }  // namespace softpack

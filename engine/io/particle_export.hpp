@@ -40,4 +40,9 @@ void write_extended_xyz(const std::string& path, std::span<const Vec3> centres,
                         const std::optional<ExportBox>& box = std::nullopt,
                         const std::string& provenance = {});
 
+/// The pictures of a packing in its shell (radius Rs, centred at the origin), each when its path
+/// is not empty: .vtp, and extended XYZ with the shell's cube as its (non-periodic) box.
+void write_packing_pictures(const std::string& vtp_path, const std::string& xyz_path, std::span<const Vec3> centres,
+                            std::span<const double> radii, double Rs, const std::string& provenance);
+
 }  // namespace softpack

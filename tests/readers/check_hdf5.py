@@ -277,21 +277,16 @@ class Folder:
         same(where, "/normal/delta_n", f["normal/delta_n"][:], normal[0]["delta_n"])
         groups = [("normal", normal, ("Fn", "Ft_parallel", "Ft_perpendicular")),
                   ("tangential", tangential, ("Ft_parallel", "Ft_perpendicular", "Fn"))]
-        if self.normal_only:  # no tangential stage: the normal group only
-            if "tangential" in f or "kt" in f:
-                fail(where, "a normal-only profile's average holds /tangential or /kt")
-            for group, runs, columns in groups[:1]:
-                for c in columns:
-                    me = [mean_error([run[c][k] for run in runs]) for k in range(len(runs[0][c]))]
-                    same(where, f"/{group}/{c}_mean", f[f"{group}/{c}_mean"][:], [m for m, _ in me], rtol=1e-12)
-                    same(where, f"/{group}/{c}_stderr", f[f"{group}/{c}_stderr"][:], [e for _, e in me], rtol=1e-12)
-            self.averages[scene] = {"seeds": int(seeds), "delta_n": f["normal/delta_n"][:]}
-            return f"{d['D']} normal rows: the mean of {seeds} seeds' results (normal only)"
-        for group, runs, columns in groups:
+        if self.normal_only and ("tangential" in f or "kt" in f):
+            fail(where, "a normal-only profile's average holds /tangential or /kt")
+        for group, runs, columns in groups[:1] if self.normal_only else groups:
             for c in columns:
                 me = [mean_error([run[c][k] for run in runs]) for k in range(len(runs[0][c]))]
                 same(where, f"/{group}/{c}_mean", f[f"{group}/{c}_mean"][:], [m for m, _ in me], rtol=1e-12)
                 same(where, f"/{group}/{c}_stderr", f[f"{group}/{c}_stderr"][:], [e for _, e in me], rtol=1e-12)
+        if self.normal_only:  # no tangential stage: the normal group only
+            self.averages[scene] = {"seeds": int(seeds), "delta_n": f["normal/delta_n"][:]}
+            return f"{d['D']} normal rows: the mean of {seeds} seeds' results (normal only)"
         for c in ("delta_n", "alpha_deg", "ht"):
             same(where, f"/tangential/{c}", f[f"tangential/{c}"][:], tangential[0][c])
         dn = tangential[0]["delta_n"]
