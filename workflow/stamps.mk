@@ -21,12 +21,13 @@ config = $(shell $(CONFIG_TOOL) $(or $(2),$(PROFILE_FILE)) $(1))$(if $(filter-ou
   $(or $(2),$(PROFILE_FILE)) is refused (the message above); fix it, or make build if softpack-config is out of date))
 
 # stamp NAME STAGE [PROFILE [DIR]]: the path of DIR/NAME.hash (DIR: $(STAMPS)), with a rule that
-# writes the stage's current stamp into it when it holds another (or does not exist).
+# writes the stage's current stamp into it when it holds another (or does not exist), first
+# removing what a run killed between the write and the rename left (only this rule writes them).
 stamp = $(eval $(call stamp_rule,$(or $(4),$(STAMPS))/$(1).hash,$(call config,stamp $(2) --release $(VERSION),$(3))))$(or \
   $(4),$(STAMPS))/$(1).hash
 define stamp_rule
 $(1): $(if $(filter-out $(2),$(file < $(1))),FORCE)
-	@mkdir -p $$(@D) && echo $(2) > $$@.tmp.$$$$$$$$ && mv $$@.tmp.$$$$$$$$ $$@
+	@mkdir -p $$(@D) && rm -f $$@.tmp.* && echo $(2) > $$@.tmp.$$$$$$$$ && mv $$@.tmp.$$$$$$$$ $$@
 endef
 .PHONY: FORCE
 FORCE:
