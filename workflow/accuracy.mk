@@ -15,7 +15,7 @@ ACCURACY_DIR ?= $(DATA)/accuracy
 ACCURACY_REPORT := $(ACCURACY_DIR)/report
 ACCURACY_TOOL := $(BUILD)/engine/softpack-accuracy
 
-.PHONY: accuracy accuracy-report calibrate calibrate-report
+.PHONY: accuracy accuracy-report calibrate calibrate-report radius
 accuracy: | $(TOOLS)  ## the fidelity study: every knob's error against its CPU time (DATA/accuracy/report/)
 	+@$(call run_study,$(ACCURACY_STUDY),$(ACCURACY_DIR),$(ACCURACY_SETTINGS))
 	@$(MAKE) --no-print-directory accuracy-report
@@ -31,7 +31,7 @@ for s in $$settings; do n=$$((n + 1)); \
   if [ -n "$$chosen" ] && [ $$s != reference ] && ! echo " $$chosen " | grep -q " $$s "; then continue; fi; \
   echo "study $(1): setting $$n/$$total: $$s ($(2)/$$s)"; mkdir -p $(2)/$$s; \
   if $(MAKE) --no-print-directory PROFILE=$$s PROFILE_FILE=$(2)/profiles/$$s.yaml DATA=$(2) \
-    FROM_SCRATCH=1 tangential > $(2)/$$s/make.log 2>&1; then rm -f $(2)/$$s/failed.txt; \
+    FROM_SCRATCH=1 $(or $(STUDY_GOALS),tangential) > $(2)/$$s/make.log 2>&1; then rm -f $(2)/$$s/failed.txt; \
   else [ $$s != reference ] || { tail -20 $(2)/$$s/make.log; exit 1; }; \
     grep -h -m1 -e 'numerical error' -e 'error:' $(2)/$$s/*/*.log $(2)/$$s/make.log 2>/dev/null | head -1 \
       > $(2)/$$s/failed.txt; \
@@ -81,3 +81,11 @@ fast-check: | $(TOOLS)  ## the fast profile against the paper profile on the pap
 	@$(MAKE) --no-print-directory PROFILE=fast tables
 	@$(ACCURACY_TOOL) check --data $(DATA) --reference experiments/paper.yaml --candidate experiments/fast.yaml \
 	  --out-dir $(FAST_CHECK_DIR)
+
+# The radius study (issue 16, paper/radius.md): the laws at shell radii Rs0/2 to 4 Rs0, the grains
+# scaled with the shell (self-similar) or not (fixed), and soft-soft contacts of two radii, each
+# setting run as above. RADIUS_SETTINGS=name... runs only those (and the reference).
+RADIUS_STUDY ?= experiments/radius-study.yaml
+RADIUS_DIR ?= data/radius
+radius: | $(TOOLS)  ## the radius study: the laws against the soft-particle's radius (RADIUS_DIR/report/)
+	+@$(call run_study,$(RADIUS_STUDY),$(RADIUS_DIR),$(RADIUS_SETTINGS))
