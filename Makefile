@@ -41,7 +41,7 @@ $(error the build folder '$(BUILD)' or the source folder '$(CURDIR)' holds a spa
 endif
 
 # The goals that write DATA (the pipeline's, the scenes, clean).
-PIPELINE_GOALS := all tables figures paper archive packings normal tangential sweeps averages fits figure1 figure2 \
+PIPELINE_GOALS := all tables figures paper archive packings normal tangential sliding sweeps averages fits figure1 figure2 \
   study-packing study-relaxation accuracy accuracy-report fast-check
 MAKE_LETTERS := $(firstword -$(MAKEFLAGS))
 

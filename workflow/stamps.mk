@@ -51,6 +51,14 @@ endif
 PACK_STAMP := $(call stamp,packing,packing)
 NORMAL_STAMP := $(call stamp,normal,normal)
 TANGENTIAL_STAMP := $(call stamp,tangential,tangential)
+# The sliding measurement (issue 16): only in a profile with a `sliding` section.
+HAS_SLIDING := $(filter sliding,$(STAGES))
+ifneq ($(filter sliding,$(MAKECMDGOALS)),)
+ifeq ($(HAS_SLIDING),)
+$(error $(PROFILE_FILE) has no sliding section: make sliding measures the friction of a profile that has one (experiments/radius-study.yaml))
+endif
+endif
+SLIDING_STAMP := $(if $(HAS_SLIDING),$(call stamp,sliding,sliding))
 AVERAGE_STAMP := $(call stamp,average,average)
 
 # Results recorded in the archive are reused when their stage's stamp matches (FROM_SCRATCH=1

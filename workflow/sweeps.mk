@@ -11,7 +11,7 @@ CHECKPOINTS := $(SWEEP_DIR)/checkpoints
 seed_index = $(words $(shell for s in $(SEEDS); do echo $$s; [ $$s = $(1) ] && break; done))
 next_seed = $(or $(word 2,$(wordlist $(call seed_index,$(1)),999,$(SEEDS))),$(firstword $(SEEDS)))
 
-.PHONY: normal tangential sweeps
+.PHONY: normal tangential sliding sweeps
 
 # sweep_args SCENE SEED: the arguments both stages share.
 sweep_args = --config $(PROFILE_FILE) --scene $(1) --seed $(2) --packing $(PACKING_DIR)/seed-$(2).h5 \
@@ -37,10 +37,25 @@ $(SWEEP_DIR)/tangential/$(1)-seed-$(2).h5: $(TANGENTIAL_STAMP) $(SWEEP_DIR)/norm
 endef
 $(foreach scene,$(SCENES),$(foreach seed,$(SEEDS),$(eval $(call sweep_rules,$(scene),$(seed)))))
 
+# The sliding measurement (issue 16, a profile with a `sliding` section): from the normal states,
+# as the tangential stage.
+define sliding_rules
+$(SWEEP_DIR)/sliding/$(1)-seed-$(2).h5: $(SLIDING_STAMP) $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5 | $(TOOLS)
+	@mkdir -p $$(@D) && $$(call clear_stale,$$@,$(CHECKPOINTS)/normal/$(1)/seed-$(2) $(CHECKPOINTS)/sliding/$(1)/seed-$(2))
+	@echo "sliding: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"; \
+	  $(RUN) $(BUILD)/engine/softpack-sliding $(call sweep_args,$(1),$(2)) \
+	    --checkpoints $(CHECKPOINTS)/sliding/$(1)/seed-$(2) --normal-checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) \
+	    --out $$@ 2> $$(@:.h5=.log) \
+	  || { echo "sliding: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }
+endef
+$(if $(HAS_SLIDING),$(foreach scene,$(SCENES),$(foreach seed,$(SEEDS),$(eval $(call sliding_rules,$(scene),$(seed))))))
+
 NORMAL_RESULTS = $(foreach seed,$(SEEDS),$(SWEEP_DIR)/normal/$(1)-seed-$(seed).h5)
 TANGENTIAL_RESULTS = $(foreach seed,$(SEEDS),$(SWEEP_DIR)/tangential/$(1)-seed-$(seed).h5)
 normal: $(foreach scene,$(SCENES),$(call NORMAL_RESULTS,$(scene)))  ## normal sweeps of every scene and seed (make -j2: two at once)
 tangential: $(foreach scene,$(SCENES),$(call TANGENTIAL_RESULTS,$(scene)))  ## tangential sweeps (after the normal ones)
+SLIDING_RESULTS = $(foreach seed,$(SEEDS),$(SWEEP_DIR)/sliding/$(1)-seed-$(seed).h5)
+sliding: $(foreach scene,$(SCENES),$(call SLIDING_RESULTS,$(scene)))  ## the sliding measurement (a profile with a sliding section)
 sweeps: normal tangential  ## both sweeps
 
 # How long to relax: the soft-soft normal sweeps again with 30 stops instead of six, compared

@@ -9,7 +9,8 @@
 //   softpack-config PROFILE text STAGE        their canonical text (what the stamp covers)
 //   softpack-config PROFILE stamp STAGE       the stage's configuration stamp (16 hex digits)
 //   softpack-config PROFILE gnuplot           Rs, E and nu as gnuplot variables (the figures)
-//   softpack-config PROFILE stages            the stages it has (a normal-only profile: packing normal)
+//   softpack-config PROFILE stages            the stages it has (a normal-only profile: packing normal;
+//                                             with a `sliding` section, sliding at the end)
 //   softpack-config PROFILE packings          generated or imported (which program makes them)
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -38,7 +39,7 @@ int main(int argc, char** argv) {
   auto* stages = app.add_subcommand("stages", "the stages the profile has, on one line (a normal-only profile: packing normal)");
   auto* packings = app.add_subcommand("packings", "generated (softpack-pack) or imported (softpack-import, packing.import)");
   for (auto* sub : {sections, text, stamp})
-    sub->add_option("stage", stage, "packing, normal, tangential or average")
+    sub->add_option("stage", stage, "packing, normal, tangential, average or sliding")
         ->required()
         ->check(CLI::IsMember(profile_stages()));
   stamp->add_option("--release", release, "the release the stamp includes (default: this build's, " + release_version() + ")");
@@ -64,7 +65,9 @@ int main(int argc, char** argv) {
     if (*gnuplot)
       fmt::print("Rs={}; E={}; nu={}\n", shell_radius(packing, seed_list), settings.simulation.material.E,
                  settings.simulation.material.nu);
-    if (*stages) fmt::print("{}\n", settings.has_tangential ? "packing normal tangential average" : "packing normal");
+    if (*stages)
+      fmt::print("{}{}\n", settings.has_tangential ? "packing normal tangential average" : "packing normal",
+                 settings.has_sliding ? " sliding" : "");
     if (*packings) fmt::print("{}\n", packing.import ? "imported" : "generated");
     return 0;
   } catch (...) {

@@ -1,5 +1,6 @@
-// The command line of softpack-normal and softpack-tangential: the same options but one each
-// (--hertz-check for the normal stage, --normal-checkpoints for the tangential one), then
+// The command line of softpack-normal, softpack-tangential and softpack-sliding: the same options
+// (--hertz-check for the normal and sliding stages, --normal-checkpoints for the tangential and
+// sliding ones), then
 // run_stage (measure/stage.hpp) with a progress line per point (with the time left), a summary
 // line, and the exit codes of apps/exit_codes.hpp (apps/command_line.hpp for the command line's).
 #pragma once
@@ -29,10 +30,12 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
   app.add_option("--packing", o.packing, "packing file of the first soft-particle");
   app.add_option("--second-packing", o.second_packing, "soft-soft: packing file of the second soft-particle (another seed)");
   app.add_option("--checkpoints", o.checkpoints, "directory of this stage's point files (resume from them)")->required();
-  if (stage == "normal")
+  if (stage != "tangential")
     app.add_flag("--hertz-check", o.hertz_check, "replace the soft-particle by one solid sphere of radius Rs (validation)");
-  else
-    app.add_option("--normal-checkpoints", o.normal_checkpoints, "point files of the normal stage (its states are sheared)")
+  if (stage != "normal")
+    app.add_option("--normal-checkpoints", o.normal_checkpoints,
+                   stage == "tangential" ? "point files of the normal stage (its states are sheared)"
+                                         : "point files of the normal stage (its states are slid)")
         ->required();
   app.add_option("--out", o.out, "results file (HDF5)")->required();
   app.add_flag("--quiet", quiet, "no progress lines");
@@ -52,8 +55,9 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
     if (quiet || (reused && of != stage)) return;  // normal states the tangential stage reuses: not worth a line
     const double eta = computed ? computed_seconds / static_cast<double>(computed) * static_cast<double>(n - k - 1) : 0.0;
     const double ratio = r.checks.empty() ? 0.0 : r.checks.back().residuals.force_ratio();
-    const std::string what = of == "normal" ? fmt::format("{}delta_n {:.4f}", of != stage ? "normal state " : "", r.delta_n)
-                                            : fmt::format("delta_n {:.4f} alpha {:+.3f} deg", r.delta_n, r.alpha_deg);
+    const std::string what = of == "normal"    ? fmt::format("{}delta_n {:.4f}", of != stage ? "normal state " : "", r.delta_n)
+                             : of == "sliding" ? fmt::format("delta_n {:.4f} ht {:.3e} m", r.delta_n, r.ht)
+                                               : fmt::format("delta_n {:.4f} alpha {:+.3f} deg", r.delta_n, r.alpha_deg);
     const std::string awake = r.awake_fraction ? fmt::format(", {:.0f}% awake", 100.0 * *r.awake_fraction) : "";
     fmt::print(stderr, "{}{} {} seed {}: point {}/{} {}: Fn {:.4e} N, Ft {:+.3e} N, force ratio {:.1e}{}{}{}", tty ? "\r\033[K" : "",
                program, o.scene, o.seed, k + 1, n, what, r.force.x(), r.force.y(), ratio, awake,

@@ -13,12 +13,12 @@ namespace softpack {
 const std::vector<std::string>& profile_sections() {
   static const std::vector<std::string> sections{"profile",    "description", "seeds",  "material",   "packing",
                                                  "simulation", "relaxation",  "normal", "tangential", "watchdog",
-                                                 "fit"};
+                                                 "fit",        "sliding"};
   return sections;
 }
 
 const std::vector<std::string>& profile_stages() {
-  static const std::vector<std::string> stages{"packing", "normal", "tangential", "average"};
+  static const std::vector<std::string> stages{"packing", "normal", "tangential", "average", "sliding"};
   return stages;
 }
 
@@ -27,17 +27,21 @@ const std::vector<std::string>& stage_sections(const std::string& stage) {
       {"packing", {"packing"}},
       {"normal", {"packing", "material", "simulation", "relaxation", "normal"}},
       {"tangential", {"packing", "material", "simulation", "relaxation", "normal", "tangential"}},
+      // The sliding measurement (issue 16) starts from the normal states, as the tangential one.
+      {"sliding", {"packing", "material", "simulation", "relaxation", "normal", "sliding"}},
       // The average stage's results are the averages and the fits (their `fit` section is read by
       // softpack-fit only, but averaging costs seconds: one stamp for both).
       {"average", {"seeds", "packing", "material", "simulation", "relaxation", "normal", "tangential", "fit"}},
   };
   const auto it = sections.find(stage);
   if (it == sections.end())
-    throw InputError(fmt::format("stage '{}' is not allowed; allowed: packing, normal, tangential, average", stage));
+    throw InputError(fmt::format("stage '{}' is not allowed; allowed: packing, normal, tangential, average, sliding", stage));
   return it->second;
 }
 
-bool optional_section(const std::string& section) { return section == "fit" || section == "tangential"; }
+bool optional_section(const std::string& section) {
+  return section == "fit" || section == "tangential" || section == "sliding";
+}
 
 std::string section_text(const ConfigNode& root, const std::string& section) {
   // An optional section left out is no text: a profile without it has the stamps it had before

@@ -141,7 +141,13 @@ void Drivers::advance(World& world, double dt, Neighbours& neighbours) {
               p.x[i] = x_new;
               if (p.rotates()) p.w[i] = Omega;
             }
-            if (d.shell >= 0) world.shells[d.shell].spin = Omega;
+            if (d.shell >= 0) {  // the shell turns with its spheres (about its own centre: its centre stays, exactly)
+              SphericalShell& shell = world.shells[d.shell];
+              const Vec3 c_new = def.centre + R * (shell.centre - def.centre);
+              shell.velocity = (c_new - shell.centre) / dt;
+              shell.centre = c_new;
+              shell.spin = Omega;
+            }
           }
           // HoldGroupDef: the spheres stay where they are, at rest.
         },

@@ -20,7 +20,7 @@ struct PointTiming {
 
 struct PointResult {
   double delta_n = 0.0, hn = 0.0;    ///< normal deformation, hn = delta_n Rs [m]
-  double alpha_deg = 0.0, ht = 0.0;  ///< tangential stage: rotation and ht = pi Rs alpha / 180 [m]
+  double alpha_deg = 0.0, ht = 0.0;  ///< tangential stage: rotation and ht = pi Rs alpha / 180 [m]; sliding: 0 and the move [m]
   Vec3 force = Vec3::Zero();          ///< on the second body [N]
   Vec3 force_first = Vec3::Zero();    ///< load on the first shell [N] (minus force in balance)
   Vec3 force_between = Vec3::Zero();  ///< elastic force of the first body's spheres on the second's [N]

@@ -296,8 +296,9 @@ PointFile read_point_file(const std::string& path, bool with_state) {
   expect_layout(f, "sweep point", kPointLayout);
   PointFile p;
   each_provenance_field(p.provenance, reader(f));
-  if (p.provenance.stage != "normal" && p.provenance.stage != "tangential")
-    throw InputError(fmt::format("{}: /{}: '{}' is not allowed; allowed: normal, tangential", path, kStage, p.provenance.stage));
+  if (p.provenance.stage != "normal" && p.provenance.stage != "tangential" && p.provenance.stage != "sliding")
+    throw InputError(
+        fmt::format("{}: /{}: '{}' is not allowed; allowed: normal, tangential, sliding", path, kStage, p.provenance.stage));
   each_result_field(p.result, reader(f));
   each_timing_field(p.result, reader(f));
   p.result.checks = read_checks(f);

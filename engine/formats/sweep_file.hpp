@@ -15,7 +15,8 @@
 // The results file: the points of one sweep (one stage, scene and seed) as columns, read by
 // softpack-average and the checks of the archive (tests/stability/test_archive.cpp); one value
 // per point unless said:
-//   /delta_n, /hn [m], /alpha_deg, /ht [m]        the deformation (ht: tangential stage)
+//   /delta_n, /hn [m], /alpha_deg, /ht [m]        the deformation (ht: tangential stage, pi Rs alpha / 180;
+//                                                 sliding stage, the second body's move along +y, alpha 0)
 //   /Fn, /Ft_parallel, /Ft_perpendicular [N]      the force on the second body along x, y, z
 //   /force, /force_first, /force_between (N, 3)   [N], as in PointResult
 //   /contacts, /steps, /relaxation/{steps, time, final_force_ratio, final_energy_ratio}
@@ -41,7 +42,7 @@
 namespace softpack {
 
 struct PointProvenance {
-  std::string stage;   ///< "normal" or "tangential"
+  std::string stage;   ///< "normal", "tangential" or "sliding"
   std::string scene;   ///< "soft-solid" or "soft-soft"
   std::string config;  ///< the configuration the point depends on (YAML)
   std::string code_version;

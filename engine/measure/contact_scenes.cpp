@@ -18,17 +18,18 @@ SceneDef base_scene(const SimulationSettings& s) {
   return scene;
 }
 
+// The packing's grains and shell about `centre`, every length times `scale` (1: as generated).
 void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Vec3& centre, const std::string& shell,
-                       ShellContactRadius radius) {
+                       ShellContactRadius radius, double scale = 1.0) {
   for (std::size_t i = 0; i < p.radii.size(); ++i) {
     ParticleDef d;
-    d.x = centre + p.centres[i];
-    d.r = p.radii[i];
+    d.x = centre + scale * p.centres[i];
+    d.r = scale * p.radii[i];
     d.body = body;
     d.material = kGrain;
     scene.particles.push_back(d);
   }
-  scene.shells.push_back(ShellDef{shell, body, centre, p.Rs, kWall, radius});
+  scene.shells.push_back(ShellDef{shell, body, centre, scale * p.Rs, kWall, radius});
 }
 
 }  // namespace
@@ -45,16 +46,19 @@ ContactSetup soft_solid_setup(const PackingFile& first, const SimulationSettings
   return c;
 }
 
-ContactSetup soft_soft_setup(const PackingFile& first, const PackingFile& second, const SimulationSettings& s) {
+ContactSetup soft_soft_setup(const PackingFile& first, const PackingFile& second, const SimulationSettings& s,
+                             double second_radius_ratio) {
   if (first.Rs != second.Rs)
-    throw InputError(fmt::format("soft-soft needs two soft-particles of equal size; the packings have Rs = {} and {} m",
+    throw InputError(fmt::format("soft-soft needs two packings of equal size (the second is scaled by normal.second_radius_ratio); "
+                                 "the packings have Rs = {} and {} m",
                                  first.Rs, second.Rs));
   ContactSetup c;
   c.kind = ContactScene::soft_soft;
   c.scene = base_scene(s);
   c.Rs = first.Rs;
   add_soft_particle(c.scene, first, 0, Vec3::Zero(), "shell-1", s.shell_contact_radius);
-  add_soft_particle(c.scene, second, 1, Vec3(2.0 * first.Rs, 0, 0), "shell-2", s.shell_contact_radius);
+  const double Rs2 = second_radius_ratio * second.Rs;  // touching: centres Rs + Rs2 apart
+  add_soft_particle(c.scene, second, 1, Vec3(first.Rs + Rs2, 0, 0), "shell-2", s.shell_contact_radius, second_radius_ratio);
   c.second_wall = "shell-2";
   c.first_shell = "shell-1";
   c.second_body = 1;

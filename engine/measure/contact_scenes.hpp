@@ -5,13 +5,15 @@
 //   soft-solid: the second body is a plane wall (a solid sphere of infinite radius) at x = Rs,
 //               normal -x, named "wall";
 //   soft-soft:  the second body is a soft-particle of equal size from another packing, centred
-//               at (2 Rs, 0, 0): its shell "shell-2" (body 1) and its spheres.
+//               at (2 Rs, 0, 0): its shell "shell-2" (body 1) and its spheres. With
+//               normal.second_radius_ratio k != 1 that packing is scaled by k (radius k Rs, the
+//               self-similar soft-particle of that size), centred at ((1 + k) Rs, 0, 0).
 //
 // The force on the second body is what holds it in place: the load on the wall, or on the
 // second shell (in balance, the spheres of the second body carry to their shell the force the
 // first body exerts on them). Its x component is the normal force Fn, y and z the tangential
 // ones; the tangential stage turns the first soft-particle about +z, so +y is the direction of
-// the tangential deformation.
+// the tangential deformation; the sliding stage moves the second body along +y.
 #pragma once
 #include <string>
 
@@ -33,8 +35,9 @@ struct ContactSetup {
 
 /// Soft-particle against a plane wall.
 ContactSetup soft_solid_setup(const PackingFile& first, const SimulationSettings& s);
-/// Two soft-particles of equal size.
-ContactSetup soft_soft_setup(const PackingFile& first, const PackingFile& second, const SimulationSettings& s);
+/// Two soft-particles: of equal size, or the second's packing scaled by `second_radius_ratio`.
+ContactSetup soft_soft_setup(const PackingFile& first, const PackingFile& second, const SimulationSettings& s,
+                             double second_radius_ratio = 1.0);
 /// The soft-particle replaced by one solid sphere of radius Rs held at the origin, against the
 /// wall: the chain must measure Hertz's law (Eq. 3) for it.
 ContactSetup hertz_check_setup(double Rs, const SimulationSettings& s);

@@ -86,7 +86,7 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   }
 
   const ConfigNode nn = root.at("normal");
-  nn.allow_only({"scenes", "delta_n", "speed", "path"});
+  nn.allow_only({"scenes", "delta_n", "speed", "path", "second_radius_ratio"});
   for (const ConfigNode& v : nn.at("scenes").items()) {
     try {
       m.normal.scenes.push_back(parse_contact_scene(v.string()));
@@ -98,6 +98,30 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   m.normal.speed = nn.at("speed").number();
   if (const std::string why = limits::refusal(m.normal.speed, kSpeed); !why.empty()) nn.at("speed").fail(why);
   m.normal.incremental = nn.at("path").choice({"incremental", "direct"}) == "incremental";
+  if (const auto v = nn.find("second_radius_ratio")) {
+    m.normal.second_radius_ratio = v->number();
+    if (!(m.normal.second_radius_ratio >= 0.1 && m.normal.second_radius_ratio <= 10.0))
+      v->fail(fmt::format("{} is not allowed; allowed: 0.1 <= ratio <= 10 (Rs of the second soft-particle / Rs)",
+                          m.normal.second_radius_ratio));
+  }
+
+  // A subset of the normal grid: the tangential and sliding stages start from its saved states.
+  const auto subset_of_normal = [&](const ConfigNode& list, const std::vector<double>& values, const char* stage) {
+    for (std::size_t k = 0; k < values.size(); ++k)
+      if (std::find(m.normal.delta_n.begin(), m.normal.delta_n.end(), values[k]) == m.normal.delta_n.end())
+        list.items()[k].fail(fmt::format("{} is not in normal.delta_n: the {} stage starts from the saved normal states",
+                                         values[k], stage));
+  };
+  if (const auto sl = root.find("sliding")) {
+    sl->allow_only({"delta_n", "ht_over_Rs", "speed"});
+    m.has_sliding = true;
+    m.sliding.delta_n = increasing_list(sl->at("delta_n"), 0.0, 1.0);
+    subset_of_normal(sl->at("delta_n"), m.sliding.delta_n, "sliding");
+    m.sliding.ht_over_Rs = increasing_list(sl->at("ht_over_Rs"), 0.0, 1.0);
+    if (m.sliding.ht_over_Rs.front() == 0.0) sl->at("ht_over_Rs").items()[0].fail("0 is not allowed; allowed: 0 < value < 1 (the normal state is ht = 0)");
+    m.sliding.speed = sl->at("speed").number();
+    if (const std::string why = limits::refusal(m.sliding.speed, kSpeed); !why.empty()) sl->at("speed").fail(why);
+  }
 
   if (!root.has("tangential")) {  // a normal-only profile
     m.has_tangential = false;
@@ -106,10 +130,7 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   const ConfigNode tn = root.at("tangential");
   tn.allow_only({"delta_n", "alpha_deg", "rate", "after_rotation"});
   m.tangential.delta_n = increasing_list(tn.at("delta_n"), 0.0, 1.0);
-  for (std::size_t k = 0; k < m.tangential.delta_n.size(); ++k)
-    if (std::find(m.normal.delta_n.begin(), m.normal.delta_n.end(), m.tangential.delta_n[k]) == m.normal.delta_n.end())
-      tn.at("delta_n").items()[k].fail(fmt::format("{} is not in normal.delta_n: the tangential stage shears the saved normal states",
-                                                   m.tangential.delta_n[k]));
+  subset_of_normal(tn.at("delta_n"), m.tangential.delta_n, "tangential");
   std::vector<double> alpha;
   for (const ConfigNode& v : tn.at("alpha_deg").items()) {
     const double a = v.number();
@@ -135,6 +156,22 @@ void validate_sweep_steps(const MeasurementSettings& m, double Rs, double dt) {
                  fmt::format("{} m/s, the approach of {} m (delta_n {} of Rs = {} m) in {} s,", limits::number_text(m.normal.speed),
                              limits::approx_text(way * Rs), limits::approx_text(way), limits::number_text(Rs),
                              limits::approx_text(way * Rs / m.normal.speed)));
+  if (m.has_sliding) {  // the longest move of a sliding point: the largest step of its grid
+    const double orbit_rate = m.sliding.speed / Rs;  // soft-soft: the second soft-particle's orbit [rad/s]
+    if (!(orbit_rate * dt <= limits::kMaxRotationPerStep))
+      throw InputError(fmt::format("sliding.speed: {} m/s turns the second soft-particle's orbit by {} rad in a time step of "
+                                   "dt = {} s; allowed: at most {} rad per step (speed <= {} m/s)",
+                                   limits::number_text(m.sliding.speed), limits::approx_text(orbit_rate * dt),
+                                   limits::approx_text(dt), limits::number_text(limits::kMaxRotationPerStep),
+                                   limits::approx_text(limits::kMaxRotationPerStep / dt * Rs)));
+    const std::vector<double>& ht = m.sliding.ht_over_Rs;
+    double step = ht.front();
+    for (std::size_t k = 1; k < ht.size(); ++k) step = std::max(step, ht[k] - ht[k - 1]);
+    validate_steps(step * Rs / m.sliding.speed, dt, "sliding.speed",
+                   fmt::format("{} m/s, the move of {} m (ht_over_Rs {} of Rs = {} m) in {} s,", limits::number_text(m.sliding.speed),
+                               limits::approx_text(step * Rs), limits::approx_text(step), limits::number_text(Rs),
+                               limits::approx_text(step * Rs / m.sliding.speed)));
+  }
   if (!m.has_tangential) return;
   // The largest rotation of a tangential point, and its turn per time step.
   double angle = 0.0;

@@ -43,6 +43,9 @@ struct NormalSettings {
   std::vector<double> delta_n;  ///< hn / Rs, increasing, >= 0 (the first point approaches from contact)
   double speed = 0.0;           ///< approach speed of the second body [m/s]
   bool incremental = true;      ///< from the previous point (else from the undeformed state)
+  /// soft-soft: the second soft-particle is its packing scaled by this ratio (radius Rs2 = ratio
+  /// Rs, the self-similar soft-particle of that radius); 1: two of equal size (the paper's).
+  double second_radius_ratio = 1.0;
 };
 
 struct TangentialSettings {
@@ -52,12 +55,24 @@ struct TangentialSettings {
   AfterRotation after = AfterRotation::release;
 };
 
+/// The sliding measurement (issue 16, the soft-particle's friction coefficient): from the saved
+/// normal state at each of `delta_n`, the second body is moved along +y, parallel to the contact,
+/// through each ht = ht_over_Rs Rs in turn (each point from the previous one, as a shear test),
+/// at `speed`, then the scene relaxes; the contact slides where Ft / Fn stops growing.
+struct SlidingSettings {
+  std::vector<double> delta_n;     ///< hn / Rs of the normal states to slide (a subset of normal)
+  std::vector<double> ht_over_Rs;  ///< tangential displacement of the second body / Rs, increasing, > 0
+  double speed = 0.0;              ///< its speed [m/s]
+};
+
 struct MeasurementSettings {
   SimulationSettings simulation;
   RelaxationDef relaxation;
   NormalSettings normal;
   TangentialSettings tangential;
   bool has_tangential = true;  ///< false: a normal-only profile (no `tangential` section)
+  SlidingSettings sliding;
+  bool has_sliding = false;  ///< the optional `sliding` section is there
   WatchdogDef watchdog;  ///< `watchdog` section (optional; defaults of WatchdogDef)
 };
 
@@ -66,8 +81,8 @@ MeasurementSettings parse_measurement(const ConfigNode& root);
 
 /// The rules of the sweeps that need the time step dt of the measurement scene (soft-particles
 /// of shell radius Rs), checked before the first point (measure/stage.cpp): the relaxation, the
-/// longest approach of a normal point (normal.speed) and the largest rotation of a tangential
-/// one (tangential.rate) each take at most limits::kMaxSteps steps, and the rotation turns at
+/// longest approach of a normal point (normal.speed), the largest rotation of a tangential
+/// one (tangential.rate) and the longest move of a sliding one (sliding.speed) each take at most limits::kMaxSteps steps, and the rotation turns at
 /// most limits::kMaxRotationPerStep per step (scene/limits.hpp). InputError names the key.
 void validate_sweep_steps(const MeasurementSettings& m, double Rs, double dt);
 

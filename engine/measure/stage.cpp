@@ -65,6 +65,8 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
   }
   if (o.stage == "tangential" && !settings.has_tangential)
     throw InputError(fmt::format("{}: no `tangential` section: this profile is normal-only (make packings normal)", o.config_path));
+  if (o.stage == "sliding" && !settings.has_sliding)
+    throw InputError(fmt::format("{}: no `sliding` section: this profile has no sliding measurement", o.config_path));
   const ContactScene kind = parse_contact_scene(o.scene);
   const std::string packing_section = section_text(root, "packing");
 
@@ -91,7 +93,7 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
         throw InputError(fmt::format("--second-packing: {} has the same seed as --packing; soft-soft needs two independent packings",
                                      o.second_packing));
       packings += ", " + packing_label(o.second_packing, second);
-      c.setup = soft_soft_setup(first, second, settings.simulation);
+      c.setup = soft_soft_setup(first, second, settings.simulation, settings.normal.second_radius_ratio);
     } else {
       c.setup = soft_solid_setup(first, settings.simulation);
     }
@@ -115,15 +117,16 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
   c.code_version = code_version();
   c.stop_after = static_cast<std::size_t>(std::max(0L, o.stop_after));
   c.progress = progress;
-  if (o.stage == "tangential") {  // the normal states to shear: reused, or computed where missing
+  if (o.stage != "normal") {  // the normal states to shear or slide: reused, or computed where missing
     SweepContext normal = c;
     normal.config = config("normal");
     normal.checkpoint_dir = o.normal_checkpoints;
     normal.stop_after = 0;
     run_normal_sweep(normal);
   }
-  const std::vector<PointResult> points =
-      o.stage == "normal" ? run_normal_sweep(c) : run_tangential_sweep(c, o.normal_checkpoints);
+  const std::vector<PointResult> points = o.stage == "normal"       ? run_normal_sweep(c)
+                                         : o.stage == "tangential" ? run_tangential_sweep(c, o.normal_checkpoints)
+                                                                   : run_sliding_sweep(c, o.normal_checkpoints);
   if (points.empty()) return StageSummary{0, 0.0, true};  // stopped on purpose (tests)
   // The stage's wall-clock time since it began, and its process's CPU time (with its start-up).
   const Elapsed stage_time{watch.elapsed().wall, process_cpu_seconds()};

@@ -14,10 +14,10 @@
 namespace softpack {
 
 struct StageOptions {
-  std::string stage;  ///< "normal" or "tangential"
+  std::string stage;  ///< "normal", "tangential" or "sliding"
   std::string config_path, scene, packing, second_packing;
   std::string checkpoints;         ///< point files of this stage
-  std::string normal_checkpoints;  ///< tangential: the normal stage's point files
+  std::string normal_checkpoints;  ///< tangential, sliding: the normal stage's point files
   std::string out;
   long long seed = -1;
   bool hertz_check = false;  ///< replace the soft-particle by a solid sphere of radius Rs

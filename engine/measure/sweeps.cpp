@@ -33,11 +33,11 @@ PointResult record_point(const Simulation& sim, const ContactSetup& setup, const
   return r;
 }
 
-// Moves the second body along -x by `distance` at the loading speed (rigidly: its shell and,
-// for soft-soft, its spheres), until it arrives.
-void approach(Simulation& sim, const ContactSetup& setup, double distance, double speed) {
+// Moves the second body by `distance` along `direction` (a unit vector) at `speed`, rigidly: its
+// shell and, for soft-soft, its spheres, released when it arrives.
+void move_second_body(Simulation& sim, const ContactSetup& setup, const Vec3& direction, double distance, double speed) {
   if (distance <= 0.0) return;
-  const Vec3 velocity(-speed, 0, 0);
+  const Vec3 velocity = speed * direction;
   sim.add_driver(MoveWallDef{setup.second_wall, velocity, distance, std::nullopt});
   if (setup.second_body >= 0) {
     TranslateGroupDef t;
@@ -48,6 +48,30 @@ void approach(Simulation& sim, const ContactSetup& setup, double distance, doubl
     sim.add_driver(t);
   }
   while (sim.drivers_moving()) sim.step();
+}
+
+// The sliding stage's move by `dht` at `speed`, parallel to the contact: the wall along +y; the
+// second soft-particle (shell and spheres, rigidly) on an orbit about the first's centre by the
+// angle dht / Rs, so that its centre keeps its distance and the contact its depth hn (a
+// translation would open the contact as it slides).
+void slide_second_body(Simulation& sim, const ContactSetup& setup, double dht, double speed) {
+  if (dht <= 0.0) return;
+  if (setup.second_body < 0) return move_second_body(sim, setup, Vec3(0, 1, 0), dht, speed);
+  RotateGroupDef orbit;
+  orbit.group = GroupDef{GroupDef::Kind::body, setup.second_body};
+  orbit.centre = Vec3::Zero();  // the first shell's centre
+  orbit.axis = Vec3::UnitZ();
+  orbit.rate = speed / setup.Rs;
+  orbit.angle = dht / setup.Rs;
+  orbit.after = AfterDrive::release;
+  orbit.with_shell = true;
+  sim.add_driver(orbit);
+  while (sim.drivers_moving()) sim.step();
+}
+
+// The normal approach: along -x by `distance`.
+void approach(Simulation& sim, const ContactSetup& setup, double distance, double speed) {
+  move_second_body(sim, setup, Vec3(-1, 0, 0), distance, speed);
 }
 
 // Runs fn(); when the watchdog stops the run, its diagnostic names the point.
@@ -88,6 +112,79 @@ std::string normal_point_path(const std::string& dir, std::size_t k) {
 
 std::string tangential_point_path(const std::string& dir, std::size_t hn_index, std::size_t alpha_index) {
   return (std::filesystem::path(dir) / fmt::format("point-{:03d}-{:03d}.h5", hn_index, alpha_index)).string();
+}
+
+std::string sliding_point_path(const std::string& dir, std::size_t hn_index, std::size_t ht_index) {
+  return tangential_point_path(dir, hn_index, ht_index);
+}
+
+// The normal state at delta_n (a point of the normal grid), from the normal stage's point files.
+namespace {
+std::string normal_state_path(const SweepContext& c, const std::string& normal_dir, double delta_n) {
+  const auto& grid = c.settings.normal.delta_n;
+  const std::size_t k = static_cast<std::size_t>(std::find(grid.begin(), grid.end(), delta_n) - grid.begin());
+  const std::string path = normal_point_path(normal_dir, k);
+  if (!std::filesystem::exists(path))
+    throw InputError(fmt::format("{}: missing normal state for delta_n = {} (run the normal stage of this scene and seed first)",
+                                 path, delta_n));
+  return path;
+}
+}  // namespace
+
+std::vector<PointResult> run_sliding_sweep(const SweepContext& c, const std::string& normal_dir) {
+  const auto& hn_grid = c.settings.sliding.delta_n;
+  const auto& ht_grid = c.settings.sliding.ht_over_Rs;
+  const std::size_t total = hn_grid.size() * ht_grid.size();
+  std::vector<PointResult> points;
+  std::size_t computed = 0;
+  for (std::size_t a = 0; a < hn_grid.size(); ++a) {
+    const std::string state_path = normal_state_path(c, normal_dir, hn_grid[a]);
+    // Each point continues from the previous one: reuse the finished ones in order, keeping the
+    // last state, then compute the rest in one simulation.
+    std::size_t done = 0;
+    SimulationState last;
+    while (done < ht_grid.size()) {
+      std::optional<PointFile> f = reusable(sliding_point_path(c.checkpoint_dir, a, done), c.config);
+      if (!f) break;
+      points.push_back(f->result);
+      points.back().reused = true;
+      if (c.progress) c.progress("sliding", points.size() - 1, total, points.back(), true);
+      last = std::move(f->state);
+      ++done;
+    }
+    if (done == ht_grid.size()) continue;
+    Simulation sim(c.setup.scene);
+    sim.restore(done == 0 ? read_point_file(state_path, true).state : last);
+    double ht_now = done == 0 ? 0.0 : ht_grid[done - 1] * c.setup.Rs;
+    for (std::size_t b = done; b < ht_grid.size(); ++b) {
+      Stopwatch watch;
+      const long step0 = sim.step_count();
+      const double ht = ht_grid[b] * c.setup.Rs;
+      RelaxationReport relax;
+      PointTiming timing;
+      at_point(fmt::format("sliding point {}/{} (delta_n = {}, ht/Rs = {})", points.size() + 1, total, hn_grid[a], ht_grid[b]),
+               [&] {
+                 slide_second_body(sim, c.setup, ht - ht_now, c.settings.sliding.speed);
+                 timing.loading = watch.lap();
+                 relax = softpack::relax(sim, c.settings.relaxation, {}, [&] { return measured_force(sim, c.setup); });
+                 timing.relaxation = watch.lap();
+               });
+      ht_now = ht;
+      PointResult r = record_point(sim, c.setup, relax);
+      r.delta_n = hn_grid[a];
+      r.hn = hn_grid[a] * c.setup.Rs;
+      r.ht = ht;
+      // soft-soft: the orbit's angle, by which the contact's frame has turned about +z
+      if (c.setup.second_body >= 0) r.alpha_deg = ht / c.setup.Rs * 180.0 / std::numbers::pi;
+      r.steps = sim.step_count() - step0;
+      r.timing = timing;
+      write_point_file(sliding_point_path(c.checkpoint_dir, a, b), r, sim.state(), provenance(c, "sliding"));
+      points.push_back(r);
+      if (c.progress) c.progress("sliding", points.size() - 1, total, r, false);
+      if (c.stop_after && ++computed == c.stop_after && points.size() < total) return {};
+    }
+  }
+  return points;
 }
 
 std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
@@ -158,18 +255,13 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
 }
 
 std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::string& normal_dir) {
-  const auto& normal_grid = c.settings.normal.delta_n;
   const auto& hn_grid = c.settings.tangential.delta_n;
   const auto& alphas = c.settings.tangential.alpha_deg;
   const std::size_t total = hn_grid.size() * alphas.size();
   std::vector<PointResult> points;
   std::size_t computed = 0;
   for (std::size_t a = 0; a < hn_grid.size(); ++a) {
-    const std::size_t k = static_cast<std::size_t>(std::find(normal_grid.begin(), normal_grid.end(), hn_grid[a]) - normal_grid.begin());
-    const std::string state_path = normal_point_path(normal_dir, k);
-    if (!std::filesystem::exists(state_path))
-      throw InputError(fmt::format("{}: missing normal state for delta_n = {} (run the normal stage of this scene and seed first)",
-                                   state_path, hn_grid[a]));
+    const std::string state_path = normal_state_path(c, normal_dir, hn_grid[a]);
     std::optional<SimulationState> normal_state;  // read when a point has to be computed
     for (std::size_t b = 0; b < alphas.size(); ++b) {
       const std::string path = tangential_point_path(c.checkpoint_dir, a, b);

@@ -11,6 +11,13 @@
 // pi Rs alpha / 180 and the force on the second body is split into parallel (+y) and
 // perpendicular (z) parts.
 //
+// Sliding (issue 16): from the saved normal state at each of `sliding.delta_n`, the second body
+// is moved parallel to the contact to each ht = ht_over_Rs Rs of the grid in turn, each point
+// from the previous one, at `sliding.speed`, then released and relaxed; the grains are dragged
+// until the contact slides. The wall is moved along +y; the second soft-particle (its shell and
+// spheres, rigidly) orbits the first's centre about +z by the angle ht / Rs, recorded as
+// alpha_deg: the contact keeps its depth hn and its normal turns by that angle.
+//
 // Every point is written to its own file in the checkpoint directory as soon as it is done
 // (atomically). A sweep started again reuses every point whose file holds the same
 // configuration and continues from the last state: an interrupted sweep recomputes nothing
@@ -43,7 +50,11 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c);
 /// `normal_dir` holds the normal stage's point files of the same scene and seed.
 std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::string& normal_dir);
 
+/// `normal_dir` as for the tangential sweep.
+std::vector<PointResult> run_sliding_sweep(const SweepContext& c, const std::string& normal_dir);
+
 std::string normal_point_path(const std::string& dir, std::size_t k);
+std::string sliding_point_path(const std::string& dir, std::size_t hn_index, std::size_t ht_index);
 std::string tangential_point_path(const std::string& dir, std::size_t hn_index, std::size_t alpha_index);
 
 }  // namespace softpack

@@ -81,7 +81,9 @@ struct RotateGroupDef {
   std::optional<double> duration;  ///< or after this time [s]
   AfterDrive after = AfterDrive::release;
   /// Turn the body's shell with its spheres (a rigid rotation of the whole soft-particle, no
-  /// slip at the shell); needs a body group and `centre` at that shell's centre.
+  /// slip at the shell); needs a body group. About the shell's own centre the shell only spins;
+  /// about another point its centre also moves on the arc (the sliding stage's orbit of the
+  /// second soft-particle about the first).
   bool with_shell = false;
 };
 

@@ -175,8 +175,6 @@ void check_drivers(const SceneDef& s, const std::vector<DriverDef>& drivers) {
               for (const auto& sh : s.shells)
                 if (d.group.kind == GroupDef::Kind::body && sh.body == d.group.body) shell = &sh;
               if (!shell) fail(key + ".with_shell", "needs a group that is a body with a shell");
-              if ((shell->centre - d.centre).norm() > 1e-12 * shell->radius)
-                fail(key + ".centre", fmt::format("must be the centre of shell '{}' to turn it with its spheres", shell->name));
             }
           } else if constexpr (std::is_same_v<D, TranslateGroupDef>) {
             check_group(s, d.group, key + ".group");

@@ -34,6 +34,20 @@ changed() {  # changed SED STAGES...: the stages whose stamps change when SED ed
 [ "$(changed 's/^seeds: .*/seeds: [1, 3]/')" = "4 " ] || fail "the seeds must change the average stamp only"
 [ "$("$cfg" "$quick" stamp normal --release 9.9.9)" != "$("$cfg" "$quick" stamp normal)" ] || fail "the release is not in the stamp"
 
+# A sliding section (issue 16): a stage of its own at the end of the list, which changes no
+# other stage's stamp, and whose stamp follows its own keys and the normal ones.
+{ cat "$quick"; printf 'sliding: {delta_n: [0.5], ht_over_Rs: [0.01, 0.1], speed: 0.01}\n'; } > "$tmp/p.yaml"
+[ "$("$cfg" "$tmp/p.yaml" stages)" = "packing normal tangential average sliding" ] || fail "stages with sliding: $("$cfg" "$tmp/p.yaml" stages)"
+[ "$(stamps)" = "$before" ] || fail "a sliding section changed another stage's stamp"
+slide=$("$cfg" "$tmp/p.yaml" stamp sliding)
+sed -i 's/speed: 0.01}/speed: 0.02}/' "$tmp/p.yaml"
+[ "$("$cfg" "$tmp/p.yaml" stamp sliding)" != "$slide" ] || fail "sliding.speed does not change the sliding stamp"
+sed -i 's/^  speed: .*/  speed: 0.025/' "$tmp/p.yaml"
+[ "$("$cfg" "$tmp/p.yaml" stamp sliding)" != "$slide" ] || fail "normal.speed does not change the sliding stamp"
+{ cat "$quick"; printf 'sliding: {delta_n: [0.42], ht_over_Rs: [0.01], speed: 0.01}\n'; } > "$tmp/p.yaml"
+"$cfg" "$tmp/p.yaml" stages > /dev/null 2> "$tmp/err.txt" && fail "a sliding delta_n outside the normal grid is accepted"
+grep -q "sliding.delta_n.*0.42 is not in normal.delta_n" "$tmp/err.txt" || fail "sliding.delta_n refusal: $(cat "$tmp/err.txt")"
+
 # The sections a stamp covers are those the stage records with its results.
 "$bin/softpack-pack" --config "$quick" --seed 1 --out "$tmp/p1.h5" --quiet
 h5dump -d /provenance/config -y "$tmp/p1.h5" > "$tmp/recorded.txt"

@@ -1,0 +1,6 @@
+// softpack-sliding: the sliding measurement of one contact scene and one seed (issue 16, the
+// soft-particle's friction coefficient); see measure/sweeps.hpp for what it does and
+// docs/radius.md for the choices.
+#include "apps/stage_cli.hpp"
+
+int main(int argc, char** argv) { return softpack::stage_main(argc, argv, "sliding"); }
