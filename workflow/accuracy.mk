@@ -15,14 +15,15 @@ ACCURACY_DIR ?= $(DATA)/accuracy
 ACCURACY_REPORT := $(ACCURACY_DIR)/report
 ACCURACY_TOOL := $(BUILD)/engine/softpack-accuracy
 
-.PHONY: accuracy accuracy-report calibrate calibrate-report radius
+.PHONY: accuracy accuracy-report calibrate calibrate-report radius radius-report
 accuracy: | $(TOOLS)  ## the fidelity study: every knob's error against its CPU time (DATA/accuracy/report/)
 	+@$(call run_study,$(ACCURACY_STUDY),$(ACCURACY_DIR),$(ACCURACY_SETTINGS))
 	@$(MAKE) --no-print-directory accuracy-report
 
 # run_study STUDY DIR SETTINGS: the profile of the reference and of every setting of STUDY
 # (softpack-accuracy profiles), then each one's packings and sweeps by the profile DAG in DIR
-# (SETTINGS: only those, and the reference). A setting whose run fails is recorded as failed.
+# (SETTINGS: only those, and the reference; the goals STUDY_GOALS, by default the tangential
+# sweeps and what they need). A setting whose run fails is recorded as failed.
 define run_study
 mkdir -p $(2)/profiles; \
 settings=$$($(ACCURACY_TOOL) profiles --study $(1) --out-dir $(2)/profiles) || exit 2; \
@@ -36,7 +37,7 @@ for s in $$settings; do n=$$((n + 1)); \
     grep -h -m1 -e 'numerical error' -e 'error:' $(2)/$$s/*/*.log $(2)/$$s/make.log 2>/dev/null | head -1 \
       > $(2)/$$s/failed.txt; \
     echo "study $(1): setting $$s FAILED, reported as such: $$(cat $(2)/$$s/failed.txt)"; fi; \
-  grep -E '^(pack|normal|tangential):' $(2)/$$s/make.log || true; \
+  grep -E '^(pack|normal|tangential|sliding):' $(2)/$$s/make.log || true; \
 done
 endef
 
@@ -87,5 +88,18 @@ fast-check: | $(TOOLS)  ## the fast profile against the paper profile on the pap
 # setting run as above. RADIUS_SETTINGS=name... runs only those (and the reference).
 RADIUS_STUDY ?= experiments/radius-study.yaml
 RADIUS_DIR ?= data/radius
-radius: | $(TOOLS)  ## the radius study: the laws against the soft-particle's radius (RADIUS_DIR/report/)
+radius: STUDY_GOALS := tangential sliding
+radius: | $(TOOLS)  ## the radius study: the laws against the soft-particle's radius, its friction (RADIUS_DIR/report/)
 	+@$(call run_study,$(RADIUS_STUDY),$(RADIUS_DIR),$(RADIUS_SETTINGS))
+	@$(MAKE) --no-print-directory radius-report
+
+# The report, the figures and the law file (RADIUS_DIR/report/laws.json) from what has run.
+radius-report: | $(TOOLS)  ## the radius study's table, figures and law file from the settings run so far
+	@mkdir -p $(RADIUS_DIR)/report
+	@$(ACCURACY_TOOL) radius --study $(RADIUS_STUDY) --data $(RADIUS_DIR) --out-dir $(RADIUS_DIR)/report \
+	  --title "Radius and friction ($(RADIUS_STUDY), release $(VERSION))" > /dev/null
+	@for fig in scaling friction; do for ext in pdf png; do \
+	  gnuplot -e "data='$(RADIUS_DIR)/report/$$fig.dat'; out='$(RADIUS_DIR)/report/$$fig.tmp.$$ext'" \
+	  figures/radius_$$fig.gp && mv $(RADIUS_DIR)/report/$$fig.tmp.$$ext $(RADIUS_DIR)/report/$$fig.$$ext \
+	  || { echo "radius: FAILED to draw the figure $$fig"; exit 1; }; done; done
+	@echo "radius: $(RADIUS_DIR)/report/table.md, scaling.pdf, friction.pdf, laws.json"

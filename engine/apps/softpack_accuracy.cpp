@@ -8,6 +8,9 @@
 //   softpack-accuracy calibrate --study experiments/calibrate.yaml --data DIR --out-dir DIR/report
 //       the calibration study's report (report/calibration_report.hpp): every setting's laws and
 //       packings with their seed-to-seed errors, and their change against the base
+//   softpack-accuracy radius --study experiments/radius-study.yaml --data DIR --out-dir DIR/report
+//       the radius study's report (report/radius_report.hpp): the laws per radius, their scaling,
+//       the friction coefficient, the contact of two radii, and the law file laws.json
 //   softpack-accuracy check --data DIR --reference experiments/paper.yaml --candidate experiments/fast.yaml --out-dir DIR
 //       the candidate profile against the reference profile on the seeds of both (the fast
 //       profile's confirmation, report/fast_check.hpp): table.md, check.json
@@ -25,7 +28,10 @@
 #include "report/accuracy_report.hpp"
 #include "report/accuracy_study.hpp"
 #include "report/calibration_report.hpp"
+#include "core/version.hpp"
+#include "formats/law_file.hpp"
 #include "report/fast_check.hpp"
+#include "report/radius_report.hpp"
 
 int main(int argc, char** argv) {
   using namespace softpack;
@@ -46,6 +52,12 @@ int main(int argc, char** argv) {
   calibrate->add_option("--data", data_dir, "folder holding <setting>/{packings,normal,tangential}/ of every setting")->required();
   calibrate->add_option("--out-dir", out_dir, "folder of table.md, onset.dat, calibration.json")->required();
   calibrate->add_option("--title", title, "first line of the table");
+  CLI::App* radius = app.add_subcommand("radius", "the radius study's report: the laws per radius, their scaling, the friction "
+                                                  "coefficient, two radii (table.md, radius.json, scaling.dat, friction.dat, laws.json)");
+  radius->add_option("--study", study_path, "study file, e.g. experiments/radius-study.yaml")->required();
+  radius->add_option("--data", data_dir, "folder holding <setting>/{packings,normal,tangential,sliding}/ of every setting")->required();
+  radius->add_option("--out-dir", out_dir, "folder of the report and the law file")->required();
+  radius->add_option("--title", title, "first line of the table");
   std::string reference_file, candidate_file;
   std::vector<double> Fn_at{0.3, 0.4, 0.5}, kt_at{0.4, 0.5};
   CLI::App* check = app.add_subcommand("check", "a profile against another on their seeds (the fast profile's confirmation)");
@@ -80,6 +92,13 @@ int main(int argc, char** argv) {
         if (read_text_file(path) != text) write_file_atomically(path, text);
         fmt::print("{}\n", s->name);
       }
+      return 0;
+    }
+    if (radius->parsed()) {
+      const RadiusReport r = radius_report(study, data_dir);
+      const std::string table = write_radius_report(r, study, out_dir, title);
+      write_law_file(out_dir + "/laws.json", radius_law_file(r, study, code_version()));
+      fmt::print("{}", table);
       return 0;
     }
     if (calibrate->parsed()) {

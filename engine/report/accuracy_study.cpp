@@ -73,6 +73,12 @@ void replace(YAML::Node root, const std::string& key, const YAML::Node& value, c
   }
 }
 
+bool settings_named(const ConfigNode& root, const std::string& name) {
+  for (const std::string& k : root.at("settings").keys())
+    if (k == name) return true;
+  return false;
+}
+
 }  // namespace
 
 const StudySetting& AccuracyStudy::setting(const std::string& name) const {
@@ -84,7 +90,7 @@ const StudySetting& AccuracyStudy::setting(const std::string& name) const {
 
 AccuracyStudy read_accuracy_study(const std::string& path) {
   const ConfigNode root = ConfigNode::load_file(path);
-  root.allow_only({"study", "base", "seeds", "common", "compare", "calibrate", "reference", "settings"});
+  root.allow_only({"study", "base", "seeds", "common", "compare", "calibrate", "radius", "reference", "settings"});
   AccuracyStudy st;
   st.path = path;
   root.at("study").string();
@@ -109,6 +115,19 @@ AccuracyStudy read_accuracy_study(const std::string& path) {
         ranges.at(scene).fail("allowed: [low, high] with 0 <= low < high (a range of delta_n)");
       st.b_range[scene] = {r[0], r[1]};
     }
+  }
+  if (auto radius = root.find("radius")) {
+    radius->allow_only({"self_similar", "fixed", "mixed", "mu_from_ht_over_Rs"});
+    for (const char* variant : {"self_similar", "fixed", "mixed"})
+      if (auto list = radius->find(variant))
+        for (const ConfigNode& name : list->items()) {
+          const std::string n = name.string();
+          if (n != "reference" && !settings_named(root, n)) name.fail(fmt::format("'{}' is not a setting of this study", n));
+          st.radius_variants[variant].push_back(n);
+        }
+    st.mu_from_ht_over_Rs = radius->at("mu_from_ht_over_Rs").number();
+    if (!(st.mu_from_ht_over_Rs > 0.0 && st.mu_from_ht_over_Rs < 1.0))
+      radius->at("mu_from_ht_over_Rs").fail("allowed: 0 < value < 1 (ht / Rs from which the contact slides)");
   }
   if (auto common = root.find("common"))
     for (const std::string& key : common->keys()) st.common.emplace_back(key, YAML::Clone(common->at(key).yaml()));

@@ -31,6 +31,11 @@ struct AccuracyStudy {
   /// calibrate.b_range: per scene, the fixed Δn range of the calibration report's Eq. 7 fit
   /// ("b on a fixed range", report/calibration_report.hpp); empty for an accuracy study.
   std::map<std::string, std::pair<double, double>> b_range;
+  /// radius (the radius study, report/radius_report.hpp): the settings of each variant
+  /// ("self_similar", "fixed": radii in increasing order, "reference" among them; "mixed":
+  /// soft-soft of two radii), and from which ht / Rs a sliding contact's Ft / Fn is averaged.
+  std::map<std::string, std::vector<std::string>> radius_variants;
+  double mu_from_ht_over_Rs = 0.0;
   StudySetting reference;                      ///< name "reference", its own seeds
   std::vector<StudySetting> settings;
   const StudySetting& setting(const std::string& name) const;  ///< reference or a setting; InputError

@@ -1,0 +1,340 @@
+#include "formats/law_file.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <tuple>
+#include <utility>
+
+#include "core/error.hpp"
+#include "core/suggest.hpp"
+#include "io/atomic_file.hpp"
+
+namespace softpack {
+namespace {
+
+using json = nlohmann::ordered_json;
+using Keys = std::vector<std::string>;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* kFormat = "softpack-laws";
+constexpr const char *kForce = "N", *kStiffness = "N/m", *kOne = "1", *kMetre = "m";
+const Keys kTopKeys = {"format", "version", "reference_radius", "models", "scenes", "mixing", "provenance"};
+const Keys kSceneNames = {"soft-solid", "soft-soft"};
+const Keys kSceneKeys = {"normal", "tangential", "friction", "normal_scaling", "tangential_scaling"};
+const Keys kLawKeys = {"a", "b", "c", "delta", "delta_n_range"};
+const Keys kValueKeys = {"value", "error", "unit"};
+const Keys kQuantityKeys = {"value", "unit"};  // reference_radius, radius_range: no error
+const Keys kFrictionKeys = {"delta_n", "mu"};
+const Keys kScalingKeys = {"exponent", "radius_range", "variant"};
+const Keys kVariants = {"fixed", "self-similar"};
+const Keys kMixingKeys = {"rule", "checked_ratio", "deviation"};
+const Keys kRules = {"reduced-radius"};
+const Keys kProvenanceKeys = {"study", "seeds", "code_version", "created", "notes"};
+
+// ---- writing ----
+
+json num(double x) { return std::isnan(x) ? json(nullptr) : json(x); }  // ±inf stays: the check refuses it
+
+json value_json(const LawValue& v, const char* unit) {
+  return {{"value", num(v.value)}, {"error", num(v.error)}, {"unit", unit}};
+}
+
+json law_json(const LawFit& f, const char* unit) {
+  return {{"a", value_json(f.a, unit)},
+          {"b", value_json(f.b, kOne)},
+          {"c", value_json(f.c, unit)},
+          {"delta", value_json(f.delta, kOne)},
+          {"delta_n_range", json::array({num(f.delta_n_min), num(f.delta_n_max)})}};
+}
+
+json scaling_json(const RadiusScaling& s) {
+  return {{"exponent", value_json(s.exponent, kOne)},
+          {"radius_range", {{"value", json::array({num(s.R_min), num(s.R_max)})}, {"unit", kMetre}}},
+          {"variant", s.variant}};
+}
+
+json file_json(const LawFile& f) {
+  json out;
+  out["format"] = kFormat;
+  out["version"] = f.version;
+  out["reference_radius"] = {{"value", num(f.reference_radius)}, {"unit", kMetre}};
+  out["models"] = {
+      {"normal", "Fn = a dn^b + c for dn >= delta, 0 below (Eq. 7); dn = hn / R"},
+      {"tangential", "kt = a dn^b + c for dn >= delta, 0 below (Eq. 8); Ft = kt ht until |Ft| = mu_soft Fn"},
+      {"friction", "mu_soft = |Ft| / Fn while the contact slides, measured at each dn"},
+      {"radius_scaling", "X(R) = X(R0) (R/R0)^exponent at fixed dn"},
+      {"mixing", "radii R1 != R2: the soft-soft law at R_eq = 2 R1 R2 / (R1 + R2)"}};
+  json scenes = json::object();
+  for (const auto& [name, s] : f.scenes) {
+    json j;
+    j["normal"] = law_json(s.normal, kForce);
+    if (s.tangential) j["tangential"] = law_json(*s.tangential, kStiffness);
+    if (s.friction) {
+      json mu = json::array();
+      for (const LawValue& m : s.friction->mu) mu.push_back(value_json(m, kOne));
+      json dn = json::array();
+      for (double x : s.friction->delta_n) dn.push_back(num(x));
+      j["friction"] = {{"delta_n", dn}, {"mu", mu}};
+    }
+    if (s.normal_scaling) j["normal_scaling"] = scaling_json(*s.normal_scaling);
+    if (s.tangential_scaling) j["tangential_scaling"] = scaling_json(*s.tangential_scaling);
+    scenes[name] = j;
+  }
+  out["scenes"] = scenes;
+  if (f.mixing)
+    out["mixing"] = {{"rule", f.mixing->rule},
+                     {"checked_ratio", num(f.mixing->checked_ratio)},
+                     {"deviation", value_json(f.mixing->deviation, kOne)}};
+  const LawFileProvenance& p = f.provenance;
+  out["provenance"] = {{"study", p.study},
+                       {"seeds", p.seeds},
+                       {"code_version", p.code_version},
+                       {"created", p.created},
+                       {"notes", p.notes}};
+  return out;
+}
+
+// ---- reading: every refusal "<file>: <field>: <what was found> ...; allowed: <what is>" ----
+
+std::string shown(const json& j) { return j.is_string() ? fmt::format("'{}'", j.get<std::string>()) : j.dump(); }
+
+std::string quoted(const Keys& keys) {
+  std::vector<std::string> q;
+  for (const std::string& k : keys) q.push_back(fmt::format("'{}'", k));
+  return fmt::format("{}", fmt::join(q, ", "));
+}
+
+std::string child(const std::string& field, const std::string& key) { return field.empty() ? key : field + "." + key; }
+std::string item(const std::string& field, std::size_t i) { return fmt::format("{}[{}]", field, i); }
+
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    throw InputError(field.empty() ? fmt::format("{}: {}", file_, what) : fmt::format("{}: {}: {}", file_, field, what));
+  }
+  [[noreturn]] void refuse(const std::string& field, const json& found, const std::string& allowed) const {
+    fail(field, fmt::format("{} is not allowed; allowed: {}", shown(found), allowed));
+  }
+
+  /// `j` as an object whose keys are all among `keys`.
+  const json& object(const json& j, const std::string& field, const Keys& keys) const {
+    if (!j.is_object()) refuse(field, j, fmt::format("an object with {}", fmt::join(keys, ", ")));
+    for (const auto& [key, v] : j.items()) {
+      if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
+      const std::string near = closest_match(key, keys);
+      fail(child(field, key), fmt::format("unknown key; allowed: {}{}", fmt::join(keys, ", "),
+                                          near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near)));
+    }
+    return j;
+  }
+  /// The member `key` of the object `j`: nullptr when it is absent or null (an optional part).
+  const json* find(const json& j, const std::string& key) const {
+    const auto it = j.find(key);
+    return it == j.end() || it->is_null() ? nullptr : &*it;
+  }
+  const json& need(const json& j, const std::string& field, const std::string& key, const std::string& allowed) const {
+    const auto it = j.find(key);
+    if (it == j.end()) fail(child(field, key), "missing; allowed: " + allowed);
+    return *it;
+  }
+
+  /// A finite number; null is NaN when `null_ok`.
+  double number(const json& j, const std::string& field, bool null_ok) const {
+    const std::string allowed = null_ok ? "a finite number or null" : "a finite number";
+    if (j.is_null() && null_ok) return kNaN;
+    if (!j.is_number() || !std::isfinite(j.get<double>())) refuse(field, j, allowed);
+    return j.get<double>();
+  }
+  std::string text(const json& j, const std::string& field) const {
+    if (!j.is_string()) refuse(field, j, "a string");
+    return j.get<std::string>();
+  }
+  std::string literal(const json& j, const std::string& field, const Keys& allowed) const {
+    if (!j.is_string() || std::find(allowed.begin(), allowed.end(), j.get<std::string>()) == allowed.end())
+      refuse(field, j, quoted(allowed));
+    return j.get<std::string>();
+  }
+  void check_unit(const json& j, const std::string& field, const char* unit) const {
+    const std::string f = child(field, "unit");
+    const json& u = need(j, field, "unit", quoted({unit}));
+    if (!u.is_string() || u.get<std::string>() != unit) refuse(f, u, quoted({unit}));
+  }
+
+  LawValue value(const json& j, const std::string& field, const char* unit, bool value_null_ok) const {
+    object(j, field, kValueKeys);
+    LawValue v;
+    v.value = number(need(j, field, "value", value_null_ok ? "a finite number or null" : "a finite number"),
+                     child(field, "value"), value_null_ok);
+    if (const json* e = find(j, "error")) v.error = number(*e, child(field, "error"), true);
+    check_unit(j, field, unit);
+    return v;
+  }
+
+  /// [lo, hi] with `lo_min <= lo < hi` (`closed`) or `0 < lo <= hi`; `allowed` says which.
+  std::pair<double, double> range(const json& j, const std::string& field, bool closed, const std::string& allowed) const {
+    if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) refuse(field, j, allowed);
+    const double lo = number(j[0], item(field, 0), false), hi = number(j[1], item(field, 1), false);
+    if (closed ? !(lo >= 0.0 && lo < hi) : !(lo > 0.0 && lo <= hi)) refuse(field, j, allowed);
+    return {lo, hi};
+  }
+
+  LawFit law(const json& j, const std::string& field, const char* unit) const {
+    object(j, field, kLawKeys);
+    const std::string dimensional = fmt::format("{{\"value\", \"error\", \"unit\": '{}'}}", unit);
+    const std::string dimensionless = "{\"value\", \"error\", \"unit\": '1'}";
+    LawFit f;
+    f.a = value(need(j, field, "a", dimensional), child(field, "a"), unit, false);
+    f.b = value(need(j, field, "b", dimensionless), child(field, "b"), kOne, false);
+    f.c = value(need(j, field, "c", dimensional), child(field, "c"), unit, true);
+    f.delta = value(need(j, field, "delta", dimensionless), child(field, "delta"), kOne, true);
+    const std::string allowed = "[lo, hi] with 0 <= lo < hi";
+    std::tie(f.delta_n_min, f.delta_n_max) =
+        range(need(j, field, "delta_n_range", allowed), child(field, "delta_n_range"), true, allowed);
+    return f;
+  }
+
+  FrictionLaw friction(const json& j, const std::string& field) const {
+    object(j, field, kFrictionKeys);
+    const std::string dn_field = child(field, "delta_n"), mu_field = child(field, "mu");
+    const json& dn = need(j, field, "delta_n", "an array of increasing numbers");
+    const json& mu = need(j, field, "mu", "an array of {\"value\", \"error\", \"unit\": '1'}");
+    if (!dn.is_array() || dn.empty()) refuse(dn_field, dn, "a non-empty array of increasing numbers");
+    if (!mu.is_array()) refuse(mu_field, mu, "an array of {\"value\", \"error\", \"unit\": '1'}");
+    FrictionLaw f;
+    for (std::size_t i = 0; i < dn.size(); ++i) {
+      f.delta_n.push_back(number(dn[i], item(dn_field, i), false));
+      if (i > 0 && !(f.delta_n[i] > f.delta_n[i - 1]))
+        refuse(item(dn_field, i), dn[i], fmt::format("a number > {} (delta_n increasing)", f.delta_n[i - 1]));
+    }
+    if (mu.size() != dn.size())
+      fail(mu_field, fmt::format("{} values for {} delta_n is not allowed; allowed: one per delta_n ({})", mu.size(),
+                                 dn.size(), dn.size()));
+    for (std::size_t i = 0; i < mu.size(); ++i) f.mu.push_back(value(mu[i], item(mu_field, i), kOne, false));
+    return f;
+  }
+
+  RadiusScaling scaling(const json& j, const std::string& field) const {
+    object(j, field, kScalingKeys);
+    RadiusScaling s;
+    s.exponent = value(need(j, field, "exponent", "{\"value\", \"error\", \"unit\": '1'}"), child(field, "exponent"),
+                       kOne, true);
+    const std::string rr = child(field, "radius_range");
+    const std::string allowed = "[R_min, R_max] with 0 < R_min <= R_max";
+    const json& r = object(need(j, field, "radius_range", "{\"value\": " + allowed + ", \"unit\": 'm'}"), rr,
+                           kQuantityKeys);
+    std::tie(s.R_min, s.R_max) = range(need(r, rr, "value", allowed), child(rr, "value"), false, allowed);
+    check_unit(r, rr, kMetre);
+    s.variant = literal(need(j, field, "variant", quoted(kVariants)), child(field, "variant"), kVariants);
+    return s;
+  }
+
+  SceneLaws scene(const json& j, const std::string& field) const {
+    object(j, field, kSceneKeys);
+    SceneLaws s;
+    s.normal = law(need(j, field, "normal", "the Eq. 7 law {a, b, c, delta, delta_n_range}"), child(field, "normal"),
+                   kForce);
+    if (const json* t = find(j, "tangential")) s.tangential = law(*t, child(field, "tangential"), kStiffness);
+    if (const json* fr = find(j, "friction")) s.friction = friction(*fr, child(field, "friction"));
+    if (const json* n = find(j, "normal_scaling")) s.normal_scaling = scaling(*n, child(field, "normal_scaling"));
+    if (const json* t = find(j, "tangential_scaling"))
+      s.tangential_scaling = scaling(*t, child(field, "tangential_scaling"));
+    return s;
+  }
+
+  MixingRule mixing(const json& j, const std::string& field) const {
+    object(j, field, kMixingKeys);
+    MixingRule m;
+    m.rule = literal(need(j, field, "rule", quoted(kRules)), child(field, "rule"), kRules);
+    if (const json* r = find(j, "checked_ratio")) {
+      m.checked_ratio = number(*r, child(field, "checked_ratio"), true);
+      if (!(m.checked_ratio > 0.0)) refuse(child(field, "checked_ratio"), *r, "a number > 0 (R2/R1) or null");
+    }
+    if (const json* d = find(j, "deviation")) m.deviation = value(*d, child(field, "deviation"), kOne, true);
+    return m;
+  }
+
+  LawFileProvenance provenance(const json& j, const std::string& field) const {
+    object(j, field, kProvenanceKeys);
+    LawFileProvenance p;
+    for (auto [key, out] : {std::pair{"study", &p.study}, std::pair{"code_version", &p.code_version},
+                            std::pair{"created", &p.created}, std::pair{"notes", &p.notes}})
+      if (const json* s = find(j, key)) *out = text(*s, child(field, key));
+    if (const json* seeds = find(j, "seeds")) {
+      const std::string sf = child(field, "seeds");
+      if (!seeds->is_array()) refuse(sf, *seeds, "an array of integers >= 0");
+      for (std::size_t i = 0; i < seeds->size(); ++i) {
+        if (!(*seeds)[i].is_number_unsigned()) refuse(item(sf, i), (*seeds)[i], "an integer >= 0");
+        p.seeds.push_back((*seeds)[i].get<std::uint64_t>());
+      }
+    }
+    return p;
+  }
+
+  LawFile file(const json& j) const {
+    if (!j.is_object()) fail("", fmt::format("{} is not allowed; allowed: a JSON object (a {} file)", shown(j), kFormat));
+    const json& format = need(j, "", "format", quoted({kFormat}));
+    if (!format.is_string() || format.get<std::string>() != kFormat) refuse("format", format, quoted({kFormat}));
+    const json& version = need(j, "", "version", std::to_string(kLawFileVersion));
+    const bool above = version.is_number_unsigned() ? version.get<std::uint64_t>() > kLawFileVersion
+                                                    : version.is_number_integer() && version.get<std::int64_t>() > kLawFileVersion;
+    if (above)
+      fail("version", fmt::format("{} is newer than this build reads; allowed: {} (this build reads version {})",
+                                  version.dump(), kLawFileVersion, kLawFileVersion));
+    if (!version.is_number_integer() || version.get<std::int64_t>() != kLawFileVersion)
+      refuse("version", version, std::to_string(kLawFileVersion));
+    object(j, "", kTopKeys);
+    LawFile f;
+    f.version = kLawFileVersion;
+    const std::string allowed = "{\"value\": a number > 0, \"unit\": 'm'}";
+    const json& r = object(need(j, "", "reference_radius", allowed), "reference_radius", kQuantityKeys);
+    const json& rv = need(r, "reference_radius", "value", "a finite number > 0");
+    f.reference_radius = number(rv, "reference_radius.value", false);
+    if (!(f.reference_radius > 0.0)) refuse("reference_radius.value", rv, "a finite number > 0");
+    check_unit(r, "reference_radius", kMetre);
+    if (const json* m = find(j, "models"); m && !m->is_object()) refuse("models", *m, "an object of texts");
+    const json& scenes = need(j, "", "scenes", "an object with " + fmt::format("{}", fmt::join(kSceneNames, ", ")));
+    if (!scenes.is_object() || scenes.empty())
+      refuse("scenes", scenes, fmt::format("an object with at least one of {}", fmt::join(kSceneNames, ", ")));
+    for (const auto& [name, s] : scenes.items()) {
+      if (std::find(kSceneNames.begin(), kSceneNames.end(), name) == kSceneNames.end())
+        fail(child("scenes", name), fmt::format("unknown scene; allowed: {}", fmt::join(kSceneNames, ", ")));
+      f.scenes[name] = scene(s, child("scenes", name));
+    }
+    if (const json* m = find(j, "mixing")) f.mixing = mixing(*m, "mixing");
+    if (const json* p = find(j, "provenance")) f.provenance = provenance(*p, "provenance");
+    return f;
+  }
+
+ private:
+  std::string file_;
+};
+
+}  // namespace
+
+void write_law_file(const std::string& path, const LawFile& f) {
+  const json j = file_json(f);
+  Reader(path).file(j);  // what would not be read back is refused before anything is written
+  write_file_atomically(path, j.dump(2) + "\n");
+}
+
+LawFile read_law_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot open the file", path));
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::exception& e) {  // parse_error; out_of_range for a number beyond a double (1e999)
+    throw InputError(fmt::format("{}: not a JSON file: {}", path, e.what()));
+  }
+  return Reader(path).file(j);
+}
+
+}  // namespace softpack

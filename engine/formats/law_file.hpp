@@ -1,0 +1,108 @@
+// The law file: the measured soft-particle contact laws in one versioned JSON file that a
+// simulation can read (a soft-particle as one sphere with these laws), JSON:
+//
+//   {"format": "softpack-laws", "version": 1,
+//    "reference_radius": {"value": R0, "unit": "m"},
+//    "models": {"normal", "tangential", "friction", "radius_scaling", "mixing"}  (texts; not read),
+//    "scenes": {"soft-solid": {                       (and/or "soft-soft"; at least one)
+//        "normal": {"a": {"value", "error", "unit": "N"}, "b": {…, "unit": "1"},
+//                   "c": {…, "unit": "N"}, "delta": {…, "unit": "1"}, "delta_n_range": [lo, hi]},
+//        "tangential": {"a": {…, "unit": "N/m"}, "b": {…, "unit": "1"}, "c": {…, "unit": "N/m"},
+//                       "delta": {…, "unit": "1"}, "delta_n_range": [lo, hi]},       (optional)
+//        "friction": {"delta_n": [...], "mu": [{"value", "error", "unit": "1"}, ...]}, (optional)
+//        "normal_scaling": {"exponent": {…, "unit": "1"},
+//                           "radius_range": {"value": [R_min, R_max], "unit": "m"},
+//                           "variant": "fixed" | "self-similar"},                      (optional)
+//        "tangential_scaling": {the same}},                                           (optional)
+//      "soft-soft": {…}},
+//    "mixing": {"rule": "reduced-radius", "checked_ratio", "deviation": {…, "unit": "1"}} (optional),
+//    "provenance": {"study", "seeds": [...], "code_version", "created", "notes"}}
+//
+// NaN is written as null and read back as NaN: an "error" may always be null (not known), a
+// "value" may be null except for a law's a and b and a friction mu. The reader refuses, with an
+// InputError naming the file, the field (e.g. `scenes.soft-solid.normal.a.unit`), what it found
+// and what is allowed: another format or version, a missing required field, a key it does not
+// know (in any object but "models"), a unit other than the one above, a non-finite number,
+// reference_radius <= 0, a delta_n_range not 0 <= lo < hi, friction delta_n not increasing or of
+// another length than mu (or empty), a variant or rule not listed above, a radius_range not
+// 0 < R_min <= R_max, a checked_ratio <= 0.
+#pragma once
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace softpack {
+
+/// The version of the law file this build writes and reads.
+inline constexpr int kLawFileVersion = 1;
+
+/// A measured value and its standard error (NaN: not known).
+struct LawValue {
+  double value = std::numeric_limits<double>::quiet_NaN();
+  double error = std::numeric_limits<double>::quiet_NaN();  ///< NaN = not known
+};
+
+/// Eq. 7 (normal: Fn = a dn^b + c for dn >= delta, 0 below, c = -a delta^b) or Eq. 8
+/// (tangential stiffness kt, the same form), with dn = hn / R.
+struct LawFit {
+  LawValue a, b, c, delta;
+  double delta_n_min = std::numeric_limits<double>::quiet_NaN();  ///< the delta_n range the law
+  double delta_n_max = std::numeric_limits<double>::quiet_NaN();  ///< was measured on
+};
+
+/// The soft-particle friction coefficient mu_soft = Ft/Fn while the contact slides, per delta_n
+/// (delta_n increasing, one mu each).
+struct FrictionLaw {
+  std::vector<double> delta_n;
+  std::vector<LawValue> mu;
+};
+
+/// X(R) = X(R0) (R/R0)^exponent at fixed delta_n.
+struct RadiusScaling {
+  LawValue exponent;
+  double R_min = std::numeric_limits<double>::quiet_NaN();  ///< [m], the radii it was measured at
+  double R_max = std::numeric_limits<double>::quiet_NaN();  ///< [m]
+  std::string variant;  ///< "fixed" (same grains, more of them) or "self-similar"
+};
+
+/// The laws of one scene ("soft-solid" or "soft-soft").
+struct SceneLaws {
+  LawFit normal;                     ///< Eq. 7; a, c in N
+  std::optional<LawFit> tangential;  ///< Eq. 8; a, c in N/m (kt per metre of displacement ht)
+  std::optional<FrictionLaw> friction;
+  std::optional<RadiusScaling> normal_scaling, tangential_scaling;
+};
+
+/// Two soft-particles of radii R1 != R2.
+struct MixingRule {
+  /// The only allowed value: the soft-soft law at R_eq = 2 R1 R2 / (R1 + R2).
+  std::string rule = "reduced-radius";
+  double checked_ratio = std::numeric_limits<double>::quiet_NaN();  ///< R2/R1 at which it was checked
+  LawValue deviation;  ///< mean relative deviation measured/predicted of Fn over the checked points
+};
+
+struct LawFileProvenance {
+  std::string study, code_version, created;
+  std::vector<std::uint64_t> seeds;
+  std::string notes;
+};
+
+struct LawFile {
+  int version = kLawFileVersion;
+  double reference_radius = std::numeric_limits<double>::quiet_NaN();  ///< R0 [m]: the shell radius a, c were measured at
+  std::map<std::string, SceneLaws> scenes;  ///< keys "soft-solid", "soft-soft" (at least one)
+  std::optional<MixingRule> mixing;
+  LawFileProvenance provenance;
+};
+
+/// Writes the law file atomically. Throws InputError (the same messages as read_law_file, naming
+/// `path`) and writes nothing when `f` would not be read back: the file is always readable.
+void write_law_file(const std::string& path, const LawFile& f);
+
+/// Reads a law file; InputError naming the file and the field on every rule above.
+LawFile read_law_file(const std::string& path);
+
+}  // namespace softpack
