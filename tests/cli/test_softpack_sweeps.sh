@@ -48,4 +48,20 @@ expect_error "--second-packing: required for soft-soft" "$tmp/z.h5" \
   "$bin/softpack-normal" --config "$profile" --scene soft-soft --seed 1 --packing "$tmp/p1.h5" --checkpoints "$tmp/z" --out "$tmp/z.h5"
 expect_error "scene 'hard-soft' is not allowed" "$tmp/z.h5" \
   "$bin/softpack-normal" --config "$profile" --scene hard-soft --seed 1 --packing "$tmp/p1.h5" --checkpoints "$tmp/z" --out "$tmp/z.h5"
+
+# The sliding stage (issue 16): from the normal states, the second body moved parallel to the
+# contact; a profile without a sliding section, or a sliding delta_n the normal grid lacks, is
+# refused with one message naming it.
+"$bin/softpack-sliding" --help | grep -q -- "--normal-checkpoints" || fail "softpack-sliding --help"
+{ cat "$profile"; printf 'sliding: {delta_n: [0.5], ht_over_Rs: [0.01, 0.05], speed: 0.02}\n'; } > "$tmp/slide.yaml"
+sliding() { "$bin/softpack-sliding" --config "$1" --scene soft-solid --seed 1 --packing "$tmp/p1.h5" --normal-checkpoints "$tmp/a" "${@:2}"; }
+sliding "$tmp/slide.yaml" --checkpoints "$tmp/sa" --out "$tmp/sa.h5" 2> "$tmp/progress-s"
+grep -q "point 2/2 delta_n 0.5000 ht" "$tmp/progress-s" || fail "no sliding progress lines: $(cat "$tmp/progress-s")"
+[ "$(h5dump -d /provenance/stage "$tmp/sa.h5" | grep -c '"sliding"')" = 1 ] || fail "the sliding results are not marked as such"
+sliding "$tmp/slide.yaml" --checkpoints "$tmp/sa" --out "$tmp/sb.h5" 2> "$tmp/progress-s2"
+[ "$(grep -c '(checkpoint)' "$tmp/progress-s2")" = 2 ] || fail "a rerun of the sliding stage recomputed points: $(cat "$tmp/progress-s2")"
+[ "$(numbers "$tmp/sa.h5")" = "$(numbers "$tmp/sb.h5")" ] || fail "the rerun's sliding results differ"
+expect_error "no \`sliding\` section: this profile has no sliding measurement" "$tmp/sc.h5" sliding "$profile" --checkpoints "$tmp/sc" --out "$tmp/sc.h5"
+sed 's/sliding: {delta_n: \[0.5\]/sliding: {delta_n: [0.45]/' "$tmp/slide.yaml" > "$tmp/slide-bad.yaml"
+expect_error "0.45 is not in normal.delta_n: the sliding stage starts from the saved normal states" "$tmp/sc.h5" sliding "$tmp/slide-bad.yaml" --checkpoints "$tmp/sc" --out "$tmp/sc.h5"
 echo ok
