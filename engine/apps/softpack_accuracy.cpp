@@ -96,6 +96,7 @@ int main(int argc, char** argv) {
     }
     if (radius->parsed()) {
       const RadiusReport r = radius_report(study, data_dir);
+      if (radius->count("--title") == 0) title = "Radius and friction (" + study_path + ")";
       const std::string table = write_radius_report(r, study, out_dir, title);
       write_law_file(out_dir + "/laws.json", radius_law_file(r, study, code_version()));
       fmt::print("{}", table);

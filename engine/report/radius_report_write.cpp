@@ -116,10 +116,14 @@ std::string write_radius_report(const RadiusReport& r, const AccuracyStudy& stud
     for (std::size_t k = 0; k < row.mu.size(); ++k)
       t += fmt::format("| {} | {} | {} | {} | {} | {} |\n", row.setting, row.scene, row.Rs, row.mu_delta_n[k], pm(row.mu[k]),
                        pm(row.mu_peak[k]));
-  t += "\n## Scaling with the radius, X(R) = X(R0) (R/R0)^n\n\n| variant | scene | quantity | n | χ²/dof | radii | R [m] |\n|---|---|---|---|---|---|---|\n";
-  for (const RadiusScalingRow& s : r.scaling)
-    t += fmt::format("| {} | {} | {} | {} | {:.3g} | {} | {} – {} |\n", s.variant, s.scene, s.quantity, pm(s.exponent),
-                     s.chi2_per_dof, s.radii, s.R_min, s.R_max);
+  t += "\n## Scaling with the radius, X(R) = X(R0) (R/R0)^n\n\nHertz: the exponent of a self-similar packing of Hertz "
+       "grains (and of a solid sphere) in the quasi-static limit, 2 for Fn and a, 1 for kt [N/m]; z = (n − Hertz) / σ.\n\n"
+       "| variant | scene | quantity | n | Hertz | z | χ²/dof | radii | R [m] |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const RadiusScalingRow& s : r.scaling) {
+    const double hertz = s.quantity == "kt" ? 1.0 : 2.0;
+    t += fmt::format("| {} | {} | {} | {} | {} | {:+.1f} | {:.3g} | {} | {} – {} |\n", s.variant, s.scene, s.quantity, pm(s.exponent),
+                     hertz, (s.exponent.value - hertz) / s.exponent.error, s.chi2_per_dof, s.radii, s.R_min, s.R_max);
+  }
   if (!r.mixed.empty()) {
     t += "\n## Two radii: soft-soft of R1 = Rs and R2 = k Rs against rules for the equal-size law\n\n"
          "| setting | k | rule | mean of measured / predicted − 1 (± over the loaded points) |\n|---|---|---|---|\n";
