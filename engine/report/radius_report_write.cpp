@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -116,6 +117,31 @@ std::string write_radius_report(const RadiusReport& r, const AccuracyStudy& stud
     for (std::size_t k = 0; k < row.mu.size(); ++k)
       t += fmt::format("| {} | {} | {} | {} | {} | {} |\n", row.setting, row.scene, row.Rs, row.mu_delta_n[k], pm(row.mu[k]),
                        pm(row.mu_peak[k]));
+  // μ_soft is dimensionless: self-similar soft-particles must have one μ_soft at every radius.
+  // Their radii are the same seeds' packings scaled, so not independent samples: the mean over
+  // the radii keeps the error of one radius (the rms of theirs), beside the largest deviation.
+  if (const auto it = study.radius_variants.find("self_similar"); it != study.radius_variants.end()) {
+    t += "\nOver the self-similar radii (the same packings scaled, so not independent: the error is one radius's, "
+         "the rms of theirs; the largest deviation of a radius from the mean in its own errors):\n\n"
+         "| scene | Δn | μ_soft | largest |dev| / σ | radii |\n|---|---|---|---|---|\n";
+    for (const char* scene : {"soft-solid", "soft-soft"}) {
+      const RadiusRow* ref = row_of(r, "reference", scene);
+      if (!ref) continue;
+      for (std::size_t k = 0; k < ref->mu_delta_n.size(); ++k) {
+        std::vector<RadiusValue> v;
+        for (const std::string& n : it->second)
+          if (const RadiusRow* row = row_of(r, n, scene); row && k < row->mu.size() && row->mu[k].error > 0.0)
+            v.push_back(row->mu[k]);
+        if (v.size() < 2) continue;
+        double mean = 0.0, e2 = 0.0, worst = 0.0;
+        for (const RadiusValue& x : v) mean += x.value, e2 += x.error * x.error;
+        mean /= static_cast<double>(v.size());
+        for (const RadiusValue& x : v) worst = std::max(worst, std::abs(x.value - mean) / x.error);
+        t += fmt::format("| {} | {} | {} | {:.2f} | {} |\n", scene, ref->mu_delta_n[k],
+                         pm({mean, std::sqrt(e2 / static_cast<double>(v.size()))}), worst, v.size());
+      }
+    }
+  }
   t += "\n## Scaling with the radius, X(R) = X(R0) (R/R0)^n\n\nHertz: the exponent of a self-similar packing of Hertz "
        "grains (and of a solid sphere) in the quasi-static limit, 2 for Fn and a, 1 for kt [N/m]; z = (n − Hertz) / σ.\n\n"
        "| variant | scene | quantity | n | Hertz | z | χ²/dof | radii | R [m] |\n|---|---|---|---|---|---|---|---|---|\n";
