@@ -25,7 +25,7 @@ set output out
 set xlabel "{/Symbol D}_n"
 set ylabel "{/Symbol m}_{soft} = F_t / F_n while sliding"
 set grid
-set key outside right font ",6"
+set key outside right
 set offsets graph 0.05, graph 0.05, graph 0.1, graph 0.1
 settings = system("awk '!/^#/ { print $1 }' '".data."' | awk '!seen[$0]++'")
 sel(s, c) = (strcol(1) eq s && strcol(2) eq c) ? 1 : NaN

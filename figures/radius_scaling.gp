@@ -25,13 +25,13 @@ if (out[strlen(out)-3:] eq ".pdf") {
 }
 set output out
 header = system("head -1 '".data."'")
-set title "F_n at fixed {/Symbol D}_n against the radius (pair ".k." of: ".header[strstrt(header, "delta_n ="):].")" font ",6"
+set title "F_n at fixed {/Symbol D}_n against the radius (pair ".k." of: ".header[strstrt(header, "delta_n ="):].")"
 set xlabel "R / R_0"
 set ylabel "F_n(R) / F_n(R_0)"
 set logscale xy
 set grid
 set key top left
-set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
+set xrange [0.35:5.5]
 y = 2*k + 2
 sel(v, s) = (strcol(1) eq v && strcol(2) eq s) ? 1 : NaN
 stats data using 3 nooutput
