@@ -47,14 +47,12 @@ std::vector<std::string> scenes_of(const SettingInfo& i) {
   return s;
 }
 
-bool complete(const std::string& dir, const std::string& name, const SettingInfo& i) {
+// Whether every seed of every scene has the stage's results (the packings too for "normal").
+bool has_stage(const std::string& dir, const std::string& name, const SettingInfo& i, const std::string& stage) {
   for (std::uint64_t seed : i.setting->seeds) {
-    if (!std::filesystem::exists(packing_path(dir, name, seed))) return false;
+    if (stage == "normal" && !std::filesystem::exists(packing_path(dir, name, seed))) return false;
     for (const std::string& scene : scenes_of(i))
-      for (const char* stage : {"normal", "tangential", "sliding"}) {
-        if (std::string(stage) == "sliding" && !i.measure.has_sliding) continue;
-        if (!std::filesystem::exists(sweep_path(dir, name, stage, scene, seed))) return false;
-      }
+      if (!std::filesystem::exists(sweep_path(dir, name, stage, scene, seed))) return false;
   }
   return true;
 }
@@ -155,29 +153,41 @@ RadiusRow measure_row(const AccuracyStudy& st, StudyRuns& runs, const std::strin
   std::vector<SweepColumns> normal, tangential;
   std::vector<SweepResults> sliding;
   double grains = 0.0;
+  // A setting still running is reported from what it has: the normal stage first.
+  const bool with_tangential = has_stage(runs.dir(), name, info, "tangential");
+  const bool with_sliding = info.measure.has_sliding && has_stage(runs.dir(), name, info, "sliding");
+  if (!with_tangential) row.note = "no tangential results yet";
+  if (info.measure.has_sliding && !with_sliding) row.note += std::string(row.note.empty() ? "" : "; ") + "no sliding results yet";
   for (std::uint64_t s : seeds) {
     normal.push_back(runs.results(name, "normal", scene, s));
-    tangential.push_back(runs.results(name, "tangential", scene, s));
-    if (info.measure.has_sliding) sliding.push_back(runs.results(name, "sliding", scene, s));
+    if (with_tangential) tangential.push_back(runs.results(name, "tangential", scene, s));
+    if (with_sliding) sliding.push_back(runs.results(name, "sliding", scene, s));
     grains += static_cast<double>(runs.packing(name, s).radii.size());
   }
   row.grains = grains / static_cast<double>(seeds.size());
   const fit::FitOptions options = info.fit.options_for(scene);
   std::vector<std::size_t> all(seeds.size());
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
-  const Fits f = fit_laws(normal, tangential, all, options, &row.note);
+  std::string why;
+  const Fits f = fit_laws(normal, with_tangential ? tangential : normal, all, options, &why);
+  if (!why.empty()) row.note += std::string(row.note.empty() ? "" : "; ") + why;
   row.delta.value = f.has_normal ? f.normal.delta : kNaN;
   row.a.value = f.has_normal ? f.normal.a : kNaN;
   row.b.value = f.has_normal ? f.normal.b : kNaN;
   row.c.value = f.has_normal ? f.normal.c : kNaN;
-  row.kt_a.value = f.has_tangential ? f.tangential.a : kNaN;
-  row.kt_b.value = f.has_tangential ? f.tangential.b : kNaN;
-  jackknife(normal, tangential, options, row);
+  row.kt_a.value = f.has_tangential && with_tangential ? f.tangential.a : kNaN;
+  row.kt_b.value = f.has_tangential && with_tangential ? f.tangential.b : kNaN;
+  jackknife(normal, with_tangential ? tangential : normal, options, row);
+  if (!with_tangential) row.kt_a.error = row.kt_b.error = kNaN;
   const NormalAverage na = average_normal(normal);
-  const TangentialAverage ta = average_tangential(tangential);
   for (double d : st.Fn_delta_n) row.Fn.push_back(at(na.delta_n, na.Fn, d));
-  for (double d : st.kt_delta_n) row.kt.push_back(at(ta.kt_delta_n, ta.kt, d));
-  if (info.measure.has_sliding) friction(sliding, info.measure, info.Rs, st.mu_from_ht_over_Rs, row);
+  if (with_tangential) {
+    const TangentialAverage ta = average_tangential(tangential);
+    for (double d : st.kt_delta_n) row.kt.push_back(at(ta.kt_delta_n, ta.kt, d));
+  } else {
+    row.kt.assign(st.kt_delta_n.size(), RadiusValue{kNaN, kNaN});
+  }
+  if (with_sliding) friction(sliding, info.measure, info.Rs, st.mu_from_ht_over_Rs, row);
   return row;
 }
 
@@ -302,11 +312,12 @@ RadiusReport radius_report(const AccuracyStudy& st, const std::string& dir) {
       if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
   const SettingInfo reference = setting_info(st, "reference");
   r.R0 = reference.Rs;
-  if (!complete(dir, "reference", reference))
-    throw InputError(fmt::format("{}/reference: the reference of the radius study has not run completely (make radius)", dir));
+  for (const char* stage : {"normal", "tangential", "sliding"})
+    if (!has_stage(dir, "reference", reference, stage))
+      throw InputError(fmt::format("{}/reference: the reference of the radius study has no {} results yet (make radius)", dir, stage));
   for (const std::string& n : names) {
     const SettingInfo info = setting_info(st, n);
-    if (!complete(dir, n, info)) {
+    if (!has_stage(dir, n, info, "normal")) {
       r.missing.push_back(n);
       continue;
     }

@@ -67,10 +67,12 @@ struct RadiusReport {
   std::vector<RadiusRow> rows;
   std::vector<RadiusScalingRow> scaling;
   std::vector<MixedRow> mixed;
-  std::vector<std::string> missing;  ///< settings not (completely) run
+  std::vector<std::string> missing;  ///< settings without normal results (a setting with some is reported, noted)
 };
 
-/// Reads the results under `dir` (<dir>/<setting>/...); settings not complete are listed as missing.
+/// Reads the results under `dir` (<dir>/<setting>/...): a setting is reported from the stages it
+/// has run (normal first; what is missing is noted), one without normal results is listed as
+/// missing. InputError when the reference lacks a stage.
 RadiusReport radius_report(const AccuracyStudy& study, const std::string& dir);
 
 /// A common slope n of log y against log x over several groups (one intercept each), weighted by

@@ -112,6 +112,8 @@ std::string write_radius_report(const RadiusReport& r, const AccuracyStudy& stud
     for (const RadiusValue& v : row.kt) t += fmt::format(" {} |", pm(v));
     t += "\n";
   }
+  for (const RadiusRow& row : r.rows)
+    if (!row.note.empty()) t += fmt::format("\n- {} {}: {}", row.setting, row.scene, row.note);
   t += "\n## Friction coefficient μ_soft (grain friction μ = 0.3)\n\n| setting | scene | Rs [m] | Δn | μ_soft (plateau) | largest Ft/Fn |\n|---|---|---|---|---|---|\n";
   for (const RadiusRow& row : r.rows)
     for (std::size_t k = 0; k < row.mu.size(); ++k)
@@ -157,7 +159,7 @@ std::string write_radius_report(const RadiusReport& r, const AccuracyStudy& stud
       for (std::size_t k = 0; k < m.rules.size(); ++k)
         t += fmt::format("| {} | {} | {} | {} |\n", m.setting, m.ratio, m.rules[k], pm(m.deviation[k]));
   }
-  if (!r.missing.empty()) t += fmt::format("\nNot (completely) run: {}.\n", fmt::join(r.missing, ", "));
+  if (!r.missing.empty()) t += fmt::format("\nNo normal results yet: {}.\n", fmt::join(r.missing, ", "));
 
   nlohmann::json j;
   j["R0"] = r.R0;
