@@ -65,14 +65,19 @@ struct Fits {
 Fits fit_laws(const std::vector<SweepColumns>& normal, const std::vector<SweepColumns>& tangential, const std::vector<std::size_t>& use,
               const fit::FitOptions& options, std::string* why) {
   std::vector<SweepColumns> n, t;
-  for (std::size_t k : use) n.push_back(normal[k]), t.push_back(tangential[k]);
+  for (std::size_t k : use) {
+    n.push_back(normal[k]);
+    if (!tangential.empty()) t.push_back(tangential[k]);
+  }
   Fits f;
+  if (n.empty()) return f;
   const NormalAverage na = average_normal(n);
   std::vector<double> mean, error;
   for (const auto& m : na.Fn) mean.push_back(m.mean), error.push_back(m.error);
   try {
     f.normal = fit::fit_normal_law(na.delta_n, mean, error, options);
     f.has_normal = true;
+    if (t.empty()) return f;  // no tangential results (yet)
     const TangentialAverage ta = average_tangential(t);
     std::vector<double> kt, kt_error;
     for (const auto& m : ta.kt) kt.push_back(m.mean), kt_error.push_back(m.error);
@@ -169,7 +174,7 @@ RadiusRow measure_row(const AccuracyStudy& st, StudyRuns& runs, const std::strin
   std::vector<std::size_t> all(seeds.size());
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
   std::string why;
-  const Fits f = fit_laws(normal, with_tangential ? tangential : normal, all, options, &why);
+  const Fits f = fit_laws(normal, tangential, all, options, &why);
   if (!why.empty()) row.note += std::string(row.note.empty() ? "" : "; ") + why;
   row.delta.value = f.has_normal ? f.normal.delta : kNaN;
   row.a.value = f.has_normal ? f.normal.a : kNaN;
@@ -177,8 +182,7 @@ RadiusRow measure_row(const AccuracyStudy& st, StudyRuns& runs, const std::strin
   row.c.value = f.has_normal ? f.normal.c : kNaN;
   row.kt_a.value = f.has_tangential && with_tangential ? f.tangential.a : kNaN;
   row.kt_b.value = f.has_tangential && with_tangential ? f.tangential.b : kNaN;
-  jackknife(normal, with_tangential ? tangential : normal, options, row);
-  if (!with_tangential) row.kt_a.error = row.kt_b.error = kNaN;
+  jackknife(normal, tangential, options, row);
   const NormalAverage na = average_normal(normal);
   for (double d : st.Fn_delta_n) row.Fn.push_back(at(na.delta_n, na.Fn, d));
   if (with_tangential) {
@@ -218,6 +222,15 @@ void add_scaling(RadiusReport& r, const std::string& variant, const std::vector<
       r.scaling.push_back(s);
     };
     scaling("Fn", r.Fn_delta_n.size(), [](const RadiusRow& row, std::size_t g) { return row.Fn[g]; });
+    // The local exponent of Fn between neighbouring radii (a curved log-log line shows here).
+    if (rows.size() > 2) {
+      const std::vector<const RadiusRow*> all = rows;
+      for (std::size_t i = 0; i + 1 < all.size(); ++i) {
+        rows = {all[i], all[i + 1]};
+        scaling("Fn, neighbouring radii", r.Fn_delta_n.size(), [](const RadiusRow& row, std::size_t g) { return row.Fn[g]; });
+      }
+      rows = all;
+    }
     scaling("kt", r.kt_delta_n.size(), [](const RadiusRow& row, std::size_t g) { return row.kt[g]; });
     scaling("a", 1, [](const RadiusRow& row, std::size_t) { return row.a; });
   }
