@@ -222,12 +222,13 @@ void add_scaling(RadiusReport& r, const std::string& variant, const std::vector<
       r.scaling.push_back(s);
     };
     scaling("Fn", r.Fn_delta_n.size(), [](const RadiusRow& row, std::size_t g) { return row.Fn[g]; });
-    // The local exponent of Fn between neighbouring radii (a curved log-log line shows here).
+    // The local exponents of Fn and kt between neighbouring radii (a curved log-log line shows here).
     if (rows.size() > 2) {
       const std::vector<const RadiusRow*> all = rows;
       for (std::size_t i = 0; i + 1 < all.size(); ++i) {
         rows = {all[i], all[i + 1]};
         scaling("Fn, neighbouring radii", r.Fn_delta_n.size(), [](const RadiusRow& row, std::size_t g) { return row.Fn[g]; });
+        scaling("kt, neighbouring radii", r.kt_delta_n.size(), [](const RadiusRow& row, std::size_t g) { return row.kt[g]; });
       }
       rows = all;
     }

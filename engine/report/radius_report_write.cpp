@@ -148,7 +148,7 @@ std::string write_radius_report(const RadiusReport& r, const AccuracyStudy& stud
        "grains (and of a solid sphere) in the quasi-static limit, 2 for Fn and a, 1 for kt [N/m]; z = (n − Hertz) / σ.\n\n"
        "| variant | scene | quantity | n | Hertz | z | χ²/dof | radii | R [m] |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const RadiusScalingRow& s : r.scaling) {
-    const double hertz = s.quantity == "kt" ? 1.0 : 2.0;
+    const double hertz = s.quantity.rfind("kt", 0) == 0 ? 1.0 : 2.0;
     t += fmt::format("| {} | {} | {} | {} | {} | {:+.1f} | {:.3g} | {} | {} – {} |\n", s.variant, s.scene, s.quantity, pm(s.exponent),
                      hertz, (s.exponent.value - hertz) / s.exponent.error, s.chi2_per_dof, s.radii, s.R_min, s.R_max);
   }
