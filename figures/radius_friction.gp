@@ -34,9 +34,9 @@ if (STATS_records == 0) {
   set label 1 "no setting run yet" at graph 0.5, graph 0.5 center
   plot 1/0 notitle
 } else {
-  plot for [i=1:words(settings)] data using 4:($5*sel(word(settings,i),"soft-solid")):6 with yerrorlines pt 7 lc i \
+  plot for [i=1:words(settings)] data using 4:($5*sel(word(settings,i),"soft-solid")):6 with yerrorlines pt 7 ps 1.5 lc i \
          title word(settings,i)." soft-solid", \
-       for [i=1:words(settings)] data using 4:($5*sel(word(settings,i),"soft-soft")):6 with yerrorlines pt 5 dt 2 lc i \
+       for [i=1:words(settings)] data using 4:($5*sel(word(settings,i),"soft-soft")):6 with yerrorlines pt 5 ps 1.5 dt 2 lc i \
          title word(settings,i)." soft-soft", \
        0.3 with lines dt 3 lw 2 lc rgb "black" title "grains' {/Symbol m} = 0.3"
 }
