@@ -196,7 +196,10 @@ double Drivers::work(const World& world, double dt) const {
         w -= p.F[i].dot(p.v[i]);
         if (p.rotates()) w -= p.T[i].dot(p.w[i]);
       }
-      if (d.shell >= 0) w -= world.shell_loads[d.shell].torque.dot(world.shells[d.shell].spin);  // turned with its spheres
+      if (d.shell >= 0) {  // turned with its spheres (and carried on the arc about another point)
+        const SphericalShell& shell = world.shells[d.shell];
+        w -= world.shell_loads[d.shell].force.dot(shell.velocity) + world.shell_loads[d.shell].torque.dot(shell.spin);
+      }
     }
     total += std::max(0.0, w * dt);
   }

@@ -118,7 +118,8 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
     m.sliding.delta_n = increasing_list(sl->at("delta_n"), 0.0, 1.0);
     subset_of_normal(sl->at("delta_n"), m.sliding.delta_n, "sliding");
     m.sliding.ht_over_Rs = increasing_list(sl->at("ht_over_Rs"), 0.0, 1.0);
-    if (m.sliding.ht_over_Rs.front() == 0.0) sl->at("ht_over_Rs").items()[0].fail("0 is not allowed; allowed: 0 < value < 1 (the normal state is ht = 0)");
+    if (m.sliding.ht_over_Rs.front() == 0.0)
+      sl->at("ht_over_Rs").items()[0].fail("0 is not allowed; allowed: 0 < value < 1 (the normal state is ht = 0)");
     m.sliding.speed = sl->at("speed").number();
     if (const std::string why = limits::refusal(m.sliding.speed, kSpeed); !why.empty()) sl->at("speed").fail(why);
   }

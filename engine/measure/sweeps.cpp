@@ -104,6 +104,17 @@ PointProvenance provenance(const SweepContext& c, const char* stage) {
   return PointProvenance{stage, scene_name(c.setup.kind), c.config, c.code_version};
 }
 
+// The normal state at delta_n (a point of the normal grid), from the normal stage's point files.
+std::string normal_state_path(const SweepContext& c, const std::string& normal_dir, double delta_n) {
+  const auto& grid = c.settings.normal.delta_n;
+  const std::size_t k = static_cast<std::size_t>(std::find(grid.begin(), grid.end(), delta_n) - grid.begin());
+  const std::string path = normal_point_path(normal_dir, k);
+  if (!std::filesystem::exists(path))
+    throw InputError(fmt::format("{}: missing normal state for delta_n = {} (run the normal stage of this scene and seed first)",
+                                 path, delta_n));
+  return path;
+}
+
 }  // namespace
 
 std::string normal_point_path(const std::string& dir, std::size_t k) {
@@ -118,18 +129,6 @@ std::string sliding_point_path(const std::string& dir, std::size_t hn_index, std
   return tangential_point_path(dir, hn_index, ht_index);
 }
 
-// The normal state at delta_n (a point of the normal grid), from the normal stage's point files.
-namespace {
-std::string normal_state_path(const SweepContext& c, const std::string& normal_dir, double delta_n) {
-  const auto& grid = c.settings.normal.delta_n;
-  const std::size_t k = static_cast<std::size_t>(std::find(grid.begin(), grid.end(), delta_n) - grid.begin());
-  const std::string path = normal_point_path(normal_dir, k);
-  if (!std::filesystem::exists(path))
-    throw InputError(fmt::format("{}: missing normal state for delta_n = {} (run the normal stage of this scene and seed first)",
-                                 path, delta_n));
-  return path;
-}
-}  // namespace
 
 std::vector<PointResult> run_sliding_sweep(const SweepContext& c, const std::string& normal_dir) {
   const auto& hn_grid = c.settings.sliding.delta_n;

@@ -182,6 +182,8 @@ RadiusRow measure_row(const AccuracyStudy& st, StudyRuns& runs, const std::strin
   row.c.value = f.has_normal ? f.normal.c : kNaN;
   row.kt_a.value = f.has_tangential && with_tangential ? f.tangential.a : kNaN;
   row.kt_b.value = f.has_tangential && with_tangential ? f.tangential.b : kNaN;
+  if (f.has_normal) row.dn_min = f.normal.dn_min, row.dn_max = f.normal.dn_max;
+  if (f.has_tangential) row.kt_dn_min = f.tangential.dn_min, row.kt_dn_max = f.tangential.dn_max;
   jackknife(normal, tangential, options, row);
   const NormalAverage na = average_normal(normal);
   for (double d : st.Fn_delta_n) row.Fn.push_back(at(na.delta_n, na.Fn, d));

@@ -38,6 +38,8 @@ struct RadiusRow {
   std::size_t seeds = 0;
   RadiusValue delta, a, b, c;         ///< Eq. 7 (a, c in N)
   RadiusValue kt_a, kt_b;             ///< Eq. 8 (a in N/m)
+  double dn_min = 0.0, dn_max = 0.0;  ///< the Δn range Eq. 7 was fitted on
+  double kt_dn_min = 0.0, kt_dn_max = 0.0;  ///< and Eq. 8
   std::vector<RadiusValue> Fn, kt;    ///< at the study's compare Δn
   std::vector<double> mu_delta_n;     ///< the sliding Δn
   std::vector<RadiusValue> mu, mu_peak;  ///< μ_soft on the plateau, and the largest Ft / Fn

@@ -52,10 +52,10 @@ LawFile radius_law_file(const RadiusReport& r, const AccuracyStudy& study, const
     const RadiusRow* row = row_of(r, "reference", scene);
     if (!row || !std::isfinite(row->a.value)) continue;
     SceneLaws s;
-    s.normal = LawFit{law(row->a), law(row->b), law(row->c), law(row->delta), row->delta.value, 0.5};
+    s.normal = LawFit{law(row->a), law(row->b), law(row->c), law(row->delta), row->dn_min, row->dn_max};
     if (std::isfinite(row->kt_a.value)) {
       const double c = -row->kt_a.value * std::pow(row->delta.value, row->kt_b.value);  // Eq. 8: c = −a δ^b
-      s.tangential = LawFit{law(row->kt_a), law(row->kt_b), LawValue{c, kNaN}, law(row->delta), row->delta.value, 0.5};
+      s.tangential = LawFit{law(row->kt_a), law(row->kt_b), LawValue{c, kNaN}, law(row->delta), row->kt_dn_min, row->kt_dn_max};
     }
     if (!row->mu.empty()) {
       FrictionLaw fr;

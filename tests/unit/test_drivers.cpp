@@ -165,5 +165,33 @@ TEST(Drivers, RotationWithTheShellDoesNotSlideAlongIt) {
   }
 }
 
+// About a point other than its centre (the sliding stage's orbit) the shell is carried on the
+// arc with its spheres: the motion stays rigid (no shell spring loaded) and the centre ends at
+// R(angle) applied about that point.
+TEST(Drivers, AnOrbitCarriesTheShellOnTheArc) {
+  SceneDef s = body_in_shell();
+  s.effects.friction = true;
+  s.effects.rotation = true;
+  for (auto& p : s.particles) p.r *= 1.25;  // press the spheres on the shell
+  const Vec3 c0 = s.shells[0].centre, pivot = c0 - Vec3(2.0 * s.shells[0].radius, 0, 0);
+  Simulation run(s);
+  RotateGroupDef r;
+  r.group = GroupDef{GroupDef::Kind::body, 0};
+  r.centre = pivot;
+  r.axis = Vec3::UnitZ();
+  r.rate = 1.0;
+  r.angle = 0.1;
+  r.after = AfterDrive::hold;
+  r.with_shell = true;
+  run.add_driver(r);
+  while (run.drivers_moving()) run.step();
+  double spring = 0.0;
+  for (const Vec3& xi : run.shell_lists()[0].spring) spring = std::max(spring, xi.norm());
+  ASSERT_GT(run.residuals().contacts, 0u);
+  EXPECT_LT(spring, 1e-9);  // (rounding only)
+  const Vec3 expected = pivot + Eigen::AngleAxisd(0.1, Vec3::UnitZ()).toRotationMatrix() * (c0 - pivot);
+  EXPECT_LT((run.state().shell_centres[0] - expected).norm(), 1e-10 * s.shells[0].radius);  // rounding over the steps
+}
+
 }  // namespace
 }  // namespace softpack
