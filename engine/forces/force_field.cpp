@@ -11,6 +11,7 @@ ForceField::ForceField(const SceneDef& scene) {
   fx_ = Effects{e.friction, e.damping(), e.rotation, scene.integration.history_update == HistoryUpdate::synchronized};
   if (e.normal.empty()) return;
   law_ = &normal_law(e.normal);
+  if (e.soft_particles) soft_.emplace(scene);
   loops_ = law_->loops(fx_);
   if (e.damping()) zeta_ = law_->damping_coefficient(*e.restitution);
   tangential_ratio_ = e.tangential_damping_ratio;
@@ -28,6 +29,7 @@ ForceField::ForceField(const SceneDef& scene) {
 
 void ForceField::add_contact_forces(World& world, ContactLists& lists, double spring_dt) {
   if (loops_) loops_->run(world, lists, spring_dt, closed_);
+  if (soft_ && lists.soft) soft_->add_forces(world, *lists.soft, spring_dt);
 }
 
 void ForceField::add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T) {
@@ -77,6 +79,7 @@ void ForceField::set_constants(const World& world, ContactLists& lists, const Ne
       l.k.set(k, wall_constants(p, i, shell.material, R12));
     }
   }
+  if (soft_ && added.soft) soft_->set_constants(world, *lists.soft);
 }
 
 }  // namespace softpack

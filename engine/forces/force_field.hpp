@@ -5,11 +5,13 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "contact/contact_law.hpp"
 #include "contact/effects.hpp"
 #include "forces/normal_law.hpp"
+#include "forces/soft_contacts.hpp"
 #include "neighbor/contact_list.hpp"
 #include "neighbor/neighbours.hpp"
 #include "scene/scene_def.hpp"
@@ -26,6 +28,8 @@ class ForceField {
   bool active() const { return law_ != nullptr; }
   const NormalLaw& law() const { return *law_; }
   const Effects& effects() const { return fx_; }
+  /// The soft-particle contacts (forces/soft_contacts.hpp), or null when the scene has none.
+  const SoftContacts* soft() const { return soft_ ? &*soft_ : nullptr; }
 
   /// Adds the force (and torque) of every touching contact to the spheres and the wall loads,
   /// advances the springs of touching contacts by `spring_dt` and clears those of open ones.
@@ -50,6 +54,7 @@ class ForceField {
   std::size_t materials_ = 0;
   std::vector<double> D_, Dt_, mu_;  ///< material pair constants, index a * materials + b
   std::vector<std::int32_t> closed_;  ///< scratch of the loops
+  std::optional<SoftContacts> soft_;  ///< effects.soft_particles only
 };
 
 }  // namespace softpack

@@ -34,6 +34,8 @@
 #include <string>
 #include <vector>
 
+#include "contact/soft_particle_law.hpp"
+
 namespace softpack {
 
 /// The version of the law file this build writes and reads.
@@ -104,5 +106,12 @@ void write_law_file(const std::string& path, const LawFile& f);
 
 /// Reads a law file; InputError naming the file and the field on every rule above.
 LawFile read_law_file(const std::string& path);
+
+/// What a simulation's soft-particle contacts run on (contact/soft_particle_law.hpp): the laws'
+/// values (their errors are not used), δ where the file has none from (-c/a)^(1/b) (0 for
+/// c >= 0), the radius exponents with their measured radii, μ_soft per Δn. `source` names the
+/// file in messages. The scaling is used whatever its variant: with "fixed" a larger
+/// soft-particle holds more grains of the same size, with "self-similar" larger grains.
+SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source);
 
 }  // namespace softpack

@@ -8,9 +8,11 @@
 // is cleared the moment the contact opens (forces/contact_loop.hpp).
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "contact/contact_law.hpp"
+#include "contact/soft_particle_law.hpp"
 #include "core/types.hpp"
 
 namespace softpack {
@@ -62,10 +64,23 @@ struct WallList {
   std::vector<std::size_t> replace(const std::vector<std::int32_t>& fresh, bool keep_springs);
 };
 
-/// Every list of a scene: sphere pairs, and the candidates of each plane and each shell.
+/// The contacts of soft-particles (effects.soft_particles, contact/soft_particle_law.hpp): pairs
+/// with at least one soft-particle, and soft-particles near each plane. Their constants are
+/// computed again at every rebuild (they have no history); their springs are carried over.
+/// The lists' ConstantArrays stay unused.
+struct SoftLists {
+  PairList pairs;
+  std::vector<WallList> planes;
+  std::vector<SoftContactConstants> pair_k;               ///< per entry of `pairs`
+  std::vector<std::vector<SoftContactConstants>> plane_k;  ///< per plane, per entry
+};
+
+/// Every list of a scene: sphere pairs, and the candidates of each plane and each shell; the
+/// soft-particles' contacts apart, only when the scene has soft-particles.
 struct ContactLists {
   PairList pairs;
   std::vector<WallList> planes, shells;
+  std::optional<SoftLists> soft;
 };
 
 }  // namespace softpack

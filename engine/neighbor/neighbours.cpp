@@ -14,6 +14,10 @@ Neighbours::Neighbours(const NeighborDef& def, const World& world, bool normal, 
   skin_ = def.skin * r_min;
   lists_.planes.resize(world.planes.size());
   lists_.shells.resize(world.shells.size());
+  if (!world.p.soft.empty()) {
+    lists_.soft.emplace();
+    lists_.soft->planes.resize(world.planes.size());
+  }
 }
 
 bool Neighbours::need_rebuild(const World& world) const {
@@ -47,13 +51,23 @@ NewContacts Neighbours::rebuild(const World& world) {
     for (std::size_t i = 0, begin = 0; i < n; begin = first_[i++])
       std::sort(fresh.begin() + static_cast<std::ptrdiff_t>(begin), fresh.begin() + static_cast<std::ptrdiff_t>(first_[i]),
                 [](const PairEntry& a, const PairEntry& b) { return a.j < b.j; });
+    if (lists_.soft) {
+      // A pair with a soft-particle goes to the soft lists; the order (i, j) is kept in both.
+      std::vector<PairEntry> solid_pairs, soft_pairs;
+      for (const PairEntry& e : fresh)
+        (p.is_soft(static_cast<std::size_t>(e.i)) || p.is_soft(static_cast<std::size_t>(e.j)) ? soft_pairs : solid_pairs).push_back(e);
+      fresh = std::move(solid_pairs);
+      lists_.soft->pairs.replace(soft_pairs, friction_);
+      added.soft = true;
+    }
     added.pairs = lists_.pairs.replace(fresh, friction_);
 
     for (std::size_t w = 0; w < world.planes.size(); ++w) {
-      std::vector<std::int32_t> near;
+      std::vector<std::int32_t> near, near_soft;
       for (std::size_t i = 0; i < n; ++i)
-        if (world.planes[w].distance(p.x[i]) - p.r[i] < skin_) near.push_back(static_cast<std::int32_t>(i));
+        if (world.planes[w].distance(p.x[i]) - p.r[i] < skin_) (p.is_soft(i) ? near_soft : near).push_back(static_cast<std::int32_t>(i));
       added.planes.push_back(lists_.planes[w].replace(near, friction_));
+      if (lists_.soft) lists_.soft->planes[w].replace(near_soft, friction_);
     }
     for (std::size_t w = 0; w < world.shells.size(); ++w) {
       const SphericalShell& s = world.shells[w];

@@ -21,12 +21,15 @@ namespace softpack {
 struct NewContacts {
   std::vector<std::size_t> pairs;
   std::vector<std::vector<std::size_t>> planes, shells;
+  /// Soft-particle contacts (ContactLists::soft): all of theirs need constants after a rebuild.
+  bool soft = false;
 };
 
 class Neighbours {
  public:
   /// `normal`: the scene has a contact law (without one nothing is listed); `friction`: the lists
-  /// carry springs. `shell_members[k]`: the spheres shell k confines.
+  /// carry springs. `shell_members[k]`: the spheres shell k confines. With soft-particles
+  /// (world.p.soft) their contacts go to lists of their own (ContactLists::soft).
   Neighbours(const NeighborDef& def, const World& world, bool normal, bool friction,
              std::vector<std::vector<int>> shell_members);
 

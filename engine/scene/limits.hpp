@@ -95,6 +95,9 @@ inline constexpr Range kFriction{0.0, 100.0, false, false, "mu", ""};
 // Density: 1e-3 kg/m^3 is lighter than any solid (aerogels: ~1); 1e9 is 4e4 times osmium, room
 // for the density scaling that slows a simulation down (the quick profile uses 2.5e5).
 inline constexpr Range kDensity{1e-3, 1e9, false, false, "density", "kg/m^3"};
+// A sphere's own mass (a soft-particle's, the mass of its grains): from a 1 nm sphere of the
+// lightest density (4e-30 kg) to a 1 km one of the heaviest (4e18 kg).
+inline constexpr Range kMass{1e-30, 1e19, false, false, "mass", "kg"};
 
 // --- Motion ------------------------------------------------------------------------------------
 // Speeds of spheres and of driven walls and groups: 1e4 m/s is a hypervelocity impact, far above

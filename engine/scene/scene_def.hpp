@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "contact/soft_particle_law.hpp"
 #include "core/material.hpp"
 #include "core/types.hpp"
 #include "walls/spherical_shell.hpp"
@@ -23,6 +24,11 @@ struct ParticleDef {
   double r = 0.0;
   int material = 0;
   int body = kNoBody;
+  /// A soft-particle (effects.soft_particles): one rigid sphere with the measured contact laws.
+  bool soft = false;
+  /// Its mass [kg] when set (a soft-particle weighs its grains, not a full sphere); otherwise
+  /// 4/3 pi r^3 rho.
+  std::optional<double> mass;
 };
 
 struct ShellDef {
@@ -41,6 +47,14 @@ struct PlaneDef {
   int material = 0;
 };
 
+/// Soft-particle contacts (contact/soft_particle_law.hpp): spheres with `soft` meet walls,
+/// solid spheres and each other through the laws measured on soft-particles.
+struct SoftParticlesDef {
+  SoftParticleLaws laws;  ///< formats/law_file.hpp soft_particle_laws() makes it from a law file
+  GrainContactRule grain_contact = GrainContactRule::wall;
+  enum class BeyondRange { report, stop } beyond_range = BeyondRange::report;
+};
+
 /// Effects a scene may declare. An undeclared effect costs nothing and allocates nothing.
 struct EffectsDef {
   std::string normal;     ///< the normal law, by name (forces/normal_laws.cpp: hertz, Eq. 3-4); empty: none
@@ -49,6 +63,7 @@ struct EffectsDef {
   std::optional<double> restitution;             ///< damping declared: normal restitution e
   double tangential_damping_ratio = 1.0;  ///< scales the tangential damping (contact/viscous_damping.hpp)
   std::optional<Vec3> gravity;                   ///< [m/s^2]
+  std::optional<SoftParticlesDef> soft_particles;  ///< spheres with the soft-particle laws
   bool damping() const { return restitution.has_value(); }
 };
 

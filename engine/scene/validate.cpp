@@ -211,6 +211,7 @@ void validate(const SceneDef& s) {
   check_distinct_centres(s);
 
   validate_effects(s.effects, s.materials);
+  validate_soft_particles(s);
 
   std::set<std::string> wall_names;
   std::set<int> shell_bodies;

@@ -16,6 +16,9 @@ void validate(const SceneDef& scene);
 /// The checks of each part, for a part held elsewhere (a profile's sections): `key` is the part's
 /// key path, which the messages name ("simulation.effects.damping.restitution: ...").
 void validate_material(const Material& m, const std::string& key);
+/// Soft-particle contacts: the laws the scene's contacts need, the radii they were measured at
+/// (scene/validate_soft.cpp).
+void validate_soft_particles(const SceneDef& scene);
 void validate_effects(const EffectsDef& e, const std::vector<Material>& materials, const std::string& key = "effects");
 void validate_integration(const IntegrationDef& in, const std::string& key = "integration");
 void validate_neighbor(const NeighborDef& nb, const std::string& key = "neighbor");

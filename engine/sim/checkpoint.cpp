@@ -34,6 +34,17 @@ void install(std::vector<WallList>& lists, const std::vector<std::vector<Simulat
   }
 }
 
+// Installs saved pair springs; a saved spring whose pair is not listed cannot be: it was touching.
+void install(PairList& pl, const std::vector<SimulationState::PairSpring>& saved) {
+  std::size_t a = 0;
+  for (const auto& sp : saved) {
+    while (a < pl.size() && std::pair(pl.i[a], pl.j[a]) < std::pair(sp.i, sp.j)) ++a;
+    if (a == pl.size() || pl.i[a] != sp.i || pl.j[a] != sp.j)
+      throw InputError(fmt::format("the saved state has a spring for spheres {} and {}, which are apart", sp.i, sp.j));
+    pl.spring[a] = sp.xi;
+  }
+}
+
 }  // namespace
 
 SimulationState Simulation::state() const {
@@ -50,6 +61,12 @@ SimulationState Simulation::state() const {
     if (lists.pairs.spring[k] != Vec3::Zero()) s.pair_springs.push_back({lists.pairs.i[k], lists.pairs.j[k], lists.pairs.spring[k]});
   s.plane_springs = wall_springs(lists.planes);
   s.shell_springs = wall_springs(lists.shells);
+  if (lists.soft) {
+    const PairList& sp = lists.soft->pairs;
+    for (std::size_t k = 0; k < sp.spring.size(); ++k)
+      if (sp.spring[k] != Vec3::Zero()) s.soft_pair_springs.push_back({sp.i[k], sp.j[k], sp.spring[k]});
+    s.soft_plane_springs = wall_springs(lists.soft->planes);
+  }
   return s;
 }
 
@@ -72,16 +89,17 @@ void Simulation::restore(const SimulationState& s) {
     std::fill(lists.pairs.spring.begin(), lists.pairs.spring.end(), Vec3::Zero());
     for (auto* walls : {&lists.planes, &lists.shells})
       for (WallList& l : *walls) std::fill(l.spring.begin(), l.spring.end(), Vec3::Zero());
-    std::size_t a = 0;
-    const PairList& pl = lists.pairs;
-    for (const auto& sp : s.pair_springs) {
-      while (a < pl.size() && std::pair(pl.i[a], pl.j[a]) < std::pair(sp.i, sp.j)) ++a;
-      if (a == pl.size() || pl.i[a] != sp.i || pl.j[a] != sp.j)
-        throw InputError(fmt::format("the saved state has a spring for spheres {} and {}, which are apart", sp.i, sp.j));
-      lists.pairs.spring[a] = sp.xi;
-    }
+    install(lists.pairs, s.pair_springs);
     install(lists.planes, s.plane_springs);
     install(lists.shells, s.shell_springs);
+    if (lists.soft) {
+      for (WallList& l : lists.soft->planes) std::fill(l.spring.begin(), l.spring.end(), Vec3::Zero());
+      std::fill(lists.soft->pairs.spring.begin(), lists.soft->pairs.spring.end(), Vec3::Zero());
+      install(lists.soft->pairs, s.soft_pair_springs);
+      install(lists.soft->planes, s.soft_plane_springs);
+    } else if (!s.soft_pair_springs.empty() || !s.soft_plane_springs.empty()) {
+      throw InputError("the saved state has soft-particle springs and this scene has no soft-particles");
+    }
   }
   watchdog_.start(world_, residuals());
   since_check_ = 0;

@@ -8,6 +8,16 @@
 #include "forces/contact_walk.hpp"
 
 namespace softpack {
+namespace {
+
+// The radius an overlap is measured against: the smaller sphere's (a sphere's own against a
+// wall); for a soft-particle's contact its law's R, so that the fraction is its Δn.
+double contact_radius(const Particles& p, const ClosedContact& c) {
+  if (c.soft) return c.soft->R;
+  return c.j >= 0 ? std::min(p.r[c.i], p.r[c.j]) : p.r[c.i];
+}
+
+}  // namespace
 
 double Measurement::force_ratio() const {
   if (max_unbalanced_force == 0.0) return 0.0;
@@ -32,7 +42,7 @@ Measurement residuals(const World& world, const ContactLists& lists, const Force
       if (c.spring) m.elastic_energy += c.spring_energy();
       sum_Fn += c.Fn(law);
       ++m.contacts;
-      const double radius = c.j >= 0 ? std::min(p.r[c.i], p.r[c.j]) : p.r[c.i];
+      const double radius = contact_radius(p, c);
       if (!(c.h / radius > m.deepest.fraction)) return;
       m.deepest = {c.h / radius, c.h, c.i, c.j, c.kind == ClosedContact::Kind::plane ? c.wall : -1,
                    c.kind == ClosedContact::Kind::shell ? c.wall : -1};
@@ -56,7 +66,7 @@ double overlap_quantile(const World& world, const ContactLists& lists, const For
   const Particles& p = world.p;
   std::vector<double> fraction;
   for_each_closed_contact(world, lists, forces.effects().friction, [&](const ClosedContact& c) {
-    fraction.push_back(c.h / (c.j >= 0 ? std::min(p.r[c.i], p.r[c.j]) : p.r[c.i]));
+    fraction.push_back(c.h / contact_radius(p, c));
   });
   if (fraction.empty()) return 0.0;
   // The nearest rank: the smallest value at least a fraction q of the contacts do not exceed.

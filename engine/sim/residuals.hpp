@@ -16,7 +16,8 @@ struct Measurement {
   double max_unbalanced_force = 0.0;  ///< largest |net force| on a free sphere [N]
   double mean_contact_force = 0.0;    ///< mean normal force over closed contacts [N]
   std::size_t contacts = 0;           ///< closed contacts (sphere-sphere and sphere-wall)
-  /// Deepest contact relative to its smaller radius (a sphere's own radius against a wall):
+  /// Deepest contact relative to its smaller radius (a sphere's own radius against a wall; a
+  /// soft-particle's contact relative to its law's R, i.e. its Δn):
   /// spheres i and j, or sphere i and plane `plane` or shell `shell` (j = -1). i = -1: none.
   struct Deepest {
     double fraction = 0.0, overlap = 0.0;  ///< h / radius [-], h [m]

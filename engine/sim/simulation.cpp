@@ -86,6 +86,8 @@ void Simulation::set_active_set(const std::optional<ActiveSetDef>& def) {
   active_.reset();
   if (!def) return;
   validate_active_set(*def, "active_set");
+  if (scene_.effects.soft_particles)
+    throw InputError("active_set: not available with soft-particle contacts (effects.soft_particles); drop one of them");
   sleep_interval_ = steps_for(def->check_interval);
   since_sleep_check_ = 0;
   active_.emplace(*def, world_.p.size());
@@ -177,7 +179,7 @@ Vec3 Simulation::force_between(int from, int on) const {
     const Vec3 d = p.x[c.i] - p.x[c.j];
     const Vec3 n = d / d.norm();
     Vec3 F = c.Fn(forces_.law()) * n;  // on sphere i
-    if (c.spring) F -= c.kt0 * std::sqrt(c.h) * *c.spring;
+    if (c.spring) F -= c.kt() * *c.spring;
     total += bi == on ? F : Vec3(-F);
   });
   return total;

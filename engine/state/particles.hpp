@@ -27,9 +27,13 @@ struct Particles {
   // Drivers only: 1 while a kinematic driver prescribes the sphere's motion.
   std::vector<std::uint8_t> driven;
 
+  // Soft-particle contacts only (effects.soft_particles): 1 for a soft-particle.
+  std::vector<std::uint8_t> soft;
+
   std::size_t size() const { return x.size(); }
   bool rotates() const { return !w.empty(); }
   bool is_driven(std::size_t i) const { return !driven.empty() && driven[i] != 0; }
+  bool is_soft(std::size_t i) const { return !soft.empty() && soft[i] != 0; }
 };
 
 }  // namespace softpack

@@ -24,6 +24,9 @@ struct SimulationState {
   };
   std::vector<PairSpring> pair_springs;
   std::vector<std::vector<WallSpring>> plane_springs, shell_springs;
+  /// Soft-particles' contacts (effects.soft_particles only; empty otherwise).
+  std::vector<PairSpring> soft_pair_springs;
+  std::vector<std::vector<WallSpring>> soft_plane_springs;
 };
 
 }  // namespace softpack

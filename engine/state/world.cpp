@@ -17,6 +17,7 @@ World make_world(const SceneDef& scene) {
   p.inv_m.resize(n);
   p.body.resize(n);
   p.material.resize(n);
+  if (scene.effects.soft_particles) p.soft.resize(n);
   if (rotation) {
     p.w.resize(n);
     p.T.assign(n, Vec3::Zero());
@@ -28,10 +29,11 @@ World make_world(const SceneDef& scene) {
     p.x[i] = d.x;
     p.v[i] = d.v;
     p.r[i] = d.r;
-    p.m[i] = rho * 4.0 / 3.0 * std::numbers::pi * d.r * d.r * d.r;
+    p.m[i] = d.mass ? *d.mass : rho * 4.0 / 3.0 * std::numbers::pi * d.r * d.r * d.r;
     p.inv_m[i] = 1.0 / p.m[i];
     p.body[i] = d.body;
     p.material[i] = d.material;
+    if (!p.soft.empty()) p.soft[i] = d.soft ? 1 : 0;
     if (rotation) {
       p.w[i] = d.w;
       p.inv_I[i] = 1.0 / (0.4 * p.m[i] * d.r * d.r);  // solid sphere, I = 2/5 m r^2

@@ -82,7 +82,7 @@ std::vector<Vec3> full_forces(const Simulation& sim, ForceField& field) {
   const double half = 0.5 * sim.dt();
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!p.is_driven(i) && !(sim.active_set() && sim.active_set()->asleep(i))) p.v[i] -= (half * p.inv_m[i]) * p.F[i];
-  ContactLists lists{sim.pair_list(), sim.plane_lists(), sim.shell_lists()};
+  ContactLists lists{sim.pair_list(), sim.plane_lists(), sim.shell_lists(), std::nullopt};
   lists.pairs.masked = false;
   std::fill(p.F.begin(), p.F.end(), Vec3::Zero());
   field.add_contact_forces(w, lists, 0.0);
@@ -170,8 +170,8 @@ TEST(ActiveSet, ConvergedRelaxationReachesTheSameRestAsWithout) {
 TEST(ActiveSet, ASleepersDisplacementStillCountsTowardsTheSkin) {
   SceneDef s = testing::basic_scene();
   const double r = 1e-3, skin = s.neighbor.skin * r, gap = 1.5 * skin;
-  s.particles = {ParticleDef{Vec3::Zero(), Vec3(0.01, 0, 0), Vec3::Zero(), r, 0, 0},
-                 ParticleDef{Vec3(2 * r + gap, 0, 0), Vec3::Zero(), Vec3::Zero(), r, 0, 1}};
+  s.particles = {ParticleDef{Vec3::Zero(), Vec3(0.01, 0, 0), Vec3::Zero(), r, 0, 0, false, std::nullopt},
+                 ParticleDef{Vec3(2 * r + gap, 0, 0), Vec3::Zero(), Vec3::Zero(), r, 0, 1, false, std::nullopt}};
   Simulation sim(s);
   sim.set_active_set(active_set(1e-3, 1e-2));
   const long rebuilds = sim.neighbour_rebuilds();

@@ -1,0 +1,85 @@
+// The rules of soft-particle contacts (scene key effects.soft_particles, particles[i].soft and
+// .mass; contact/soft_particle_law.hpp): which laws a scene needs for the contacts it can have,
+// and the radii those laws were measured at.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "scene/validate.hpp"
+#include "scene/validate_detail.hpp"
+
+namespace softpack {
+
+using validation::fail;
+
+namespace {
+
+void check_law(const SoftSceneLaw& law, const std::string& key, bool friction) {
+  const SoftPowerLaw& n = law.normal;
+  if (!(std::isfinite(n.a) && n.a > 0.0 && std::isfinite(n.b) && n.b > 0.0 && std::isfinite(n.c) && std::isfinite(n.delta) &&
+        n.delta >= 0.0))
+    fail(key + ".normal", "needs finite a > 0, b > 0, c and delta >= 0");
+  if (!friction) return;
+  if (!law.tangential) fail(key + ".tangential", "friction is declared: the law file must give the tangential law (Eq. 8)");
+  if (law.mu.empty() || law.mu.size() != law.mu_dn.size())
+    fail(key + ".friction", "friction is declared: the law file must give mu_soft at one delta_n at least");
+  for (double mu : law.mu)
+    if (!(std::isfinite(mu) && mu >= 0.0)) fail(key + ".friction.mu", fmt::format("{} is not allowed; allowed: a finite mu >= 0", mu));
+}
+
+// A soft-particle of radius r on `law`: r = R0 without a radius scaling, in its measured range with one.
+void check_radius(const SoftParticleLaws& laws, const SoftSceneLaw& law, const std::string& law_key, double r, const std::string& key,
+                  bool friction) {
+  const bool scaled = law.normal_exponent.has_value() && (!friction || law.tangential_exponent.has_value());
+  if (!scaled && std::abs(r / laws.R0 - 1.0) > 1e-9)
+    fail(key + ".r", fmt::format("{:.6g} m differs from the law file's reference radius {:.6g} m and {} has no radius scaling "
+                                 "of the laws the scene runs ({}); allowed: r = {:.6g} m",
+                                 r, laws.R0, law_key, laws.source, laws.R0));
+  if (scaled && (r < law.R_min * (1.0 - 1e-9) || r > law.R_max * (1.0 + 1e-9)))
+    fail(key + ".r", fmt::format("{:.6g} m is outside the radii {} was measured at ({}); allowed: {:.6g} to {:.6g} m", r, law_key,
+                                 laws.source, law.R_min, law.R_max));
+}
+
+}  // namespace
+
+void validate_soft_particles(const SceneDef& s) {
+  std::size_t soft = 0, solid = 0;
+  for (std::size_t i = 0; i < s.particles.size(); ++i) {
+    const ParticleDef& p = s.particles[i];
+    const std::string key = fmt::format("particles[{}]", i);
+    if (p.mass) validation::check(key + ".mass", *p.mass, limits::kMass);
+    if (!p.soft) {
+      ++solid;
+      continue;
+    }
+    ++soft;
+    if (!s.effects.soft_particles)
+      fail(key + ".soft", "a soft-particle needs effects.soft_particles (the law file its contacts follow)");
+    if (p.body != kNoBody)
+      fail(key + ".body", "a soft-particle is one sphere, not a grain of a shell's body: give it no body");
+  }
+  if (!s.effects.soft_particles) return;
+  const SoftParticlesDef& def = *s.effects.soft_particles;
+  const std::string key = "effects.soft_particles";
+  if (s.effects.normal.empty()) fail(key, "soft-particle contacts run with the solid spheres' law: declare effects.normal");
+  if (soft == 0) fail(key, "declared, but no sphere is soft (particles[i].soft: true)");
+  if (!(std::isfinite(def.laws.R0) && def.laws.R0 > 0.0)) fail(key + ".laws", "the law file's reference radius must be > 0");
+  const bool friction = s.effects.friction;
+  const bool need_solid = !s.planes.empty() || solid > 0, need_soft = soft > 1;
+  if (need_solid && !def.laws.soft_solid)
+    fail(key + ".laws", fmt::format("the scene has {} the soft-particles can touch, but {} has no soft-solid law",
+                                    s.planes.empty() ? "solid spheres" : "planes", def.laws.source));
+  if (need_soft && !def.laws.soft_soft)
+    fail(key + ".laws", fmt::format("the scene has {} soft-particles, but {} has no soft-soft law", soft, def.laws.source));
+  if (def.laws.soft_solid) check_law(*def.laws.soft_solid, key + ".laws.soft-solid", friction);
+  if (def.laws.soft_soft) check_law(*def.laws.soft_soft, key + ".laws.soft-soft", friction);
+  for (std::size_t i = 0; i < s.particles.size(); ++i) {
+    const ParticleDef& p = s.particles[i];
+    if (!p.soft) continue;
+    const std::string pkey = fmt::format("particles[{}]", i);
+    if (need_solid) check_radius(def.laws, *def.laws.soft_solid, "soft-solid", p.r, pkey, friction);
+    if (need_soft) check_radius(def.laws, *def.laws.soft_soft, "soft-soft", p.r, pkey, friction);
+  }
+}
+
+}  // namespace softpack
