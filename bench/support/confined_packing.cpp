@@ -48,7 +48,7 @@ SceneDef bench_scene(const std::vector<Sphere>& spheres, const BenchParameters& 
     d.body = 0;
     s.particles.push_back(d);
   }
-  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), p.Rs, 0, ShellContactRadius::concave}};
+  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), p.Rs, 0, ShellContactRadius::concave, std::nullopt}};
   return s;
 }
 
@@ -65,7 +65,7 @@ std::vector<Sphere> confined_packing(int n, const BenchParameters& p, const std:
   const double start = 0.25;
   s.particles = testing::random_spheres_in_shell(rng, n, p.Rs, start * p.r_max / p.polydispersity, start * p.r_max,
                                                  p.exponent, 1000, 0);
-  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), p.Rs, 0, ShellContactRadius::concave}};
+  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), p.Rs, 0, ShellContactRadius::concave, std::nullopt}};
   testing::compress(s, p.Rs, p.solid_fraction, 0.03);
   std::vector<Sphere> out;
   for (const auto& d : s.particles) out.push_back({d.x, d.r});

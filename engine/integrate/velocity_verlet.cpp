@@ -48,6 +48,20 @@ void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers
   neighbours.set_moved(moved);
 }
 
+void half_kick_shells(std::vector<SphericalShell>& shells, const std::vector<WallLoad>& loads, double dt, bool rotation) {
+  for (std::size_t k = 0; k < shells.size(); ++k) {
+    SphericalShell& s = shells[k];
+    if (!s.free()) continue;
+    s.velocity += (0.5 * dt / s.mass) * loads[k].force;
+    if (rotation) s.spin += (0.5 * dt / (2.0 / 3.0 * s.mass * s.radius * s.radius)) * loads[k].torque;
+  }
+}
+
+void drift_shells(std::vector<SphericalShell>& shells, double dt) {
+  for (SphericalShell& s : shells)
+    if (s.free()) s.centre += dt * s.velocity;
+}
+
 void quench(Particles& p) {
   const std::size_t n = p.size();
   const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();

@@ -13,6 +13,7 @@
 
 #include "neighbor/neighbours.hpp"
 #include "state/particles.hpp"
+#include "state/world.hpp"
 
 namespace softpack {
 
@@ -33,5 +34,11 @@ void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers
 
 /// Per-grain velocity quench of the free spheres (after the second half kick).
 void quench(Particles& p);
+
+/// The free shells (walls/spherical_shell.hpp): velocity += load/m dt/2 and, with `rotation`,
+/// spin += torque/I dt/2 (I = 2/3 m Rs^2); kinematic shells are left to their drivers.
+void half_kick_shells(std::vector<SphericalShell>& shells, const std::vector<WallLoad>& loads, double dt, bool rotation);
+/// centre += velocity dt for the free shells.
+void drift_shells(std::vector<SphericalShell>& shells, double dt);
 
 }  // namespace softpack

@@ -29,7 +29,7 @@ void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Ve
     d.material = kGrain;
     scene.particles.push_back(d);
   }
-  scene.shells.push_back(ShellDef{shell, body, centre, scale * p.Rs, kWall, radius});
+  scene.shells.push_back(ShellDef{shell, body, centre, scale * p.Rs, kWall, radius, std::nullopt});
 }
 
 }  // namespace

@@ -38,6 +38,9 @@ struct ShellDef {
   double radius = 0.0;
   int material = 0;
   ShellContactRadius contact_radius = ShellContactRadius::concave;
+  /// A free shell's mass [kg] (walls/spherical_shell.hpp): it moves under its grains' load.
+  /// Unset: kinematic, it stands still unless a driver moves it.
+  std::optional<double> mass;
 };
 
 struct PlaneDef {

@@ -195,7 +195,7 @@ SceneFile parse_scene(const ConfigNode& root) {
   s.effects = parse_effects(root.at("effects"));
 
   for (const ConfigNode& p : root.at("particles").items()) {
-    p.allow_only({"x", "r", "material", "body", "v", "w"});
+    p.allow_only({"x", "r", "material", "body", "v", "w", "mass"});
     ParticleDef d;
     d.x = p.at("x").vec3();
     d.r = p.at("r").number();
@@ -203,12 +203,13 @@ SceneFile parse_scene(const ConfigNode& root) {
     if (auto b = p.find("body")) d.body = body_id(*b);
     if (auto v = p.find("v")) d.v = v->vec3();
     if (auto w = p.find("w")) d.w = w->vec3();
+    if (auto m = p.find("mass")) d.mass = m->number();
     s.particles.push_back(d);
   }
 
   if (auto shells = root.find("shells"))
     for (const ConfigNode& n : shells->items()) {
-      n.allow_only({"name", "body", "centre", "radius", "material", "contact_radius"});
+      n.allow_only({"name", "body", "centre", "radius", "material", "contact_radius", "mass"});
       ShellDef d;
       d.name = n.at("name").string();
       d.body = body_id(n.at("body"));
@@ -216,6 +217,7 @@ SceneFile parse_scene(const ConfigNode& root) {
       d.radius = n.at("radius").number();
       d.material = material_ref(s, n.at("material"));
       d.contact_radius = parse_contact_radius(n.at("contact_radius"));
+      if (auto m = n.find("mass")) d.mass = m->number();
       s.shells.push_back(d);
     }
 

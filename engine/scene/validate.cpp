@@ -156,6 +156,9 @@ void check_drivers(const SceneDef& s, const std::vector<DriverDef>& drivers) {
           if constexpr (std::is_same_v<D, MoveWallDef>) {
             if (!wall_exists(s, d.wall))
               fail(key + ".wall", fmt::format("no plane or shell is named '{}'", d.wall));
+            for (const auto& sh : s.shells)
+              if (sh.name == d.wall && sh.mass)
+                fail(key + ".wall", fmt::format("shell '{}' is free (it has a mass): it moves under its grains' load, not a driver", d.wall));
             if (!driven_walls.insert(d.wall).second)
               fail(key + ".wall", fmt::format("wall '{}' is already moved by an earlier driver", d.wall));
             if (!finite(d.velocity) || d.velocity.norm() == 0.0)
@@ -175,6 +178,7 @@ void check_drivers(const SceneDef& s, const std::vector<DriverDef>& drivers) {
               for (const auto& sh : s.shells)
                 if (d.group.kind == GroupDef::Kind::body && sh.body == d.group.body) shell = &sh;
               if (!shell) fail(key + ".with_shell", "needs a group that is a body with a shell");
+              if (shell->mass) fail(key + ".with_shell", fmt::format("shell '{}' is free (it has a mass): a driver cannot turn it", shell->name));
             }
           } else if constexpr (std::is_same_v<D, TranslateGroupDef>) {
             check_group(s, d.group, key + ".group");
@@ -228,6 +232,7 @@ void validate(const SceneDef& s) {
     const std::string key = fmt::format("shells[{}]", k);
     if (sh.name.empty() || !wall_names.insert(sh.name).second) fail(key + ".name", fmt::format("'{}' is empty or not unique", sh.name));
     check(key + ".radius", sh.radius, limits::kShellRadius);
+    if (sh.mass) check(key + ".mass", *sh.mass, limits::kMass);
     if (sh.body < 0) fail(key + ".body", "a shell confines the spheres of one body: give a body id >= 0");
     if (!shell_bodies.insert(sh.body).second) fail(key + ".body", fmt::format("body {} already has a shell", sh.body));
     check_point(key + ".centre", sh.centre);

@@ -57,6 +57,11 @@ SimulationState Simulation::state() const {
   s.x = p.x, s.v = p.v, s.w = p.w, s.F = p.F, s.T = p.T;
   for (const auto& pl : world_.planes) s.plane_points.push_back(pl.point);
   for (const auto& sh : world_.shells) s.shell_centres.push_back(sh.centre);
+  if (free_shells_)
+    for (std::size_t k = 0; k < world_.shells.size(); ++k) {
+      s.shell_velocities.push_back(world_.shells[k].velocity), s.shell_spins.push_back(world_.shells[k].spin);
+      s.shell_forces.push_back(world_.shell_loads[k].force), s.shell_torques.push_back(world_.shell_loads[k].torque);
+    }
   for (std::size_t k = 0; k < lists.pairs.spring.size(); ++k)
     if (lists.pairs.spring[k] != Vec3::Zero()) s.pair_springs.push_back({lists.pairs.i[k], lists.pairs.j[k], lists.pairs.spring[k]});
   s.plane_springs = wall_springs(lists.planes);
@@ -74,7 +79,9 @@ void Simulation::restore(const SimulationState& s) {
   Particles& p = world_.p;
   const std::size_t n = p.size();
   if (s.x.size() != n || s.v.size() != n || s.F.size() != n || s.w.size() != p.w.size() || s.T.size() != p.T.size() ||
-      s.plane_points.size() != world_.planes.size() || s.shell_centres.size() != world_.shells.size())
+      s.plane_points.size() != world_.planes.size() || s.shell_centres.size() != world_.shells.size() ||
+      s.shell_velocities.size() != (free_shells_ ? world_.shells.size() : 0) || s.shell_spins.size() != s.shell_velocities.size() ||
+      s.shell_forces.size() != s.shell_velocities.size() || s.shell_torques.size() != s.shell_velocities.size())
     throw InputError(fmt::format("the saved state does not fit this scene ({} spheres saved, {} in the scene)", s.x.size(), n));
   if (active_) active_->wake_all(neighbours_.lists());
   world_.time = s.time;
@@ -82,6 +89,10 @@ void Simulation::restore(const SimulationState& s) {
   p.x = s.x, p.v = s.v, p.w = s.w, p.F = s.F, p.T = s.T;
   for (std::size_t k = 0; k < world_.planes.size(); ++k) world_.planes[k].point = s.plane_points[k];
   for (std::size_t k = 0; k < world_.shells.size(); ++k) world_.shells[k].centre = s.shell_centres[k];
+  for (std::size_t k = 0; k < s.shell_velocities.size(); ++k) {
+    world_.shells[k].velocity = s.shell_velocities[k], world_.shells[k].spin = s.shell_spins[k];
+    world_.shell_loads[k] = WallLoad{s.shell_forces[k], s.shell_torques[k]};
+  }
   rebuild_neighbours();
   // Install the springs; a saved spring whose pair is not listed cannot be: it was touching.
   if (scene_.effects.friction) {

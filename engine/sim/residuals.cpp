@@ -58,6 +58,8 @@ Measurement residuals(const World& world, const ContactLists& lists, const Force
     if (translation + rotation > m.hottest_energy) m.hottest_energy = translation + rotation, m.hottest = static_cast<int>(i);
     m.max_unbalanced_force = std::max(m.max_unbalanced_force, p.F[i].norm());
   }
+  for (const SphericalShell& s : world.shells)  // free shells move as bodies of their own
+    if (s.free()) m.kinetic_energy += 0.5 * s.mass * (s.velocity.squaredNorm() + 2.0 / 3.0 * s.radius * s.radius * s.spin.squaredNorm());
   return m;
 }
 

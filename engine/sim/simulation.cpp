@@ -19,6 +19,17 @@ const SceneDef& validated(const SceneDef& scene) {
   return scene;
 }
 
+// The quench of a free shell, as of a grain: its velocity (spin) is zeroed where it runs against
+// its load (torque).
+void quench_shells(World& w) {
+  for (std::size_t k = 0; k < w.shells.size(); ++k) {
+    SphericalShell& s = w.shells[k];
+    if (!s.free()) continue;
+    if (w.shell_loads[k].force.dot(s.velocity) < 0.0) s.velocity.setZero();
+    if (w.shell_loads[k].torque.dot(s.spin) < 0.0) s.spin.setZero();
+  }
+}
+
 Watchdog::Context watchdog_context(const SceneDef& scene, double dt, const StableLimit& limit) {
   Watchdog::Context c;
   c.dt = dt;
@@ -41,6 +52,7 @@ Simulation::Simulation(const SceneDef& scene)
       drivers_(scene_, world_),
       watchdog_(scene_.watchdog, watchdog_context(scene_, dt_, stable_)) {
   for (std::size_t k = 0; k < scene_.drivers.size(); ++k) validate_steps(scene_.drivers[k], dt_, fmt::format("drivers[{}]", k));
+  for (const SphericalShell& s : world_.shells) free_shells_ = free_shells_ || s.free();
   rebuild_neighbours();
   compute_forces(0.0);  // F(t0); springs start unstretched
   watchdog_.start(world_, residuals());
@@ -52,14 +64,18 @@ Simulation::Simulation(const SceneDef& scene)
 void Simulation::step() {
   const Movers movers = active_ ? active_->movers() : Movers{};
   half_kick(world_.p, dt_, active_ ? &movers : nullptr);
+  if (free_shells_) half_kick_shells(world_.shells, world_.shell_loads, dt_, scene_.effects.rotation);
   drift(world_.p, dt_, neighbours_, active_ ? &movers : nullptr);
+  if (free_shells_) drift_shells(world_.shells, dt_);
   if (!drivers_.empty()) drivers_.advance(world_, dt_, neighbours_);
   update_neighbours();
   compute_forces(dt_);
   if (active_) wake_now();
   const Movers after_wake = active_ ? active_->movers() : Movers{};  // the spheres that woke move from now on
   half_kick(world_.p, dt_, active_ ? &after_wake : nullptr);
+  if (free_shells_) half_kick_shells(world_.shells, world_.shell_loads, dt_, scene_.effects.rotation);
   if (quench_) quench(world_.p);
+  if (quench_ && free_shells_) quench_shells(world_);
   if (!drivers_.empty()) {
     watchdog_.add_driver_work(drivers_.work(world_, dt_));
     drivers_.finish(world_);
@@ -158,6 +174,8 @@ void Simulation::zero_velocities() {
     p.v[i].setZero();
     if (p.rotates()) p.w[i].setZero();
   }
+  for (SphericalShell& s : world_.shells)
+    if (s.free()) s.velocity.setZero(), s.spin.setZero();
 }
 
 const WallLoad& Simulation::wall_load(const std::string& name) const {

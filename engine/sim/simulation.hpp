@@ -128,6 +128,7 @@ class Simulation {
   Watchdog watchdog_;
   long since_check_ = 0;  ///< steps since the last watchdog check
   bool quench_ = false;
+  bool free_shells_ = false;  ///< a shell has a mass (walls/spherical_shell.hpp)
   std::optional<ActiveSet> active_;
   long sleep_interval_ = 0;       ///< steps between sleep checks
   long since_sleep_check_ = 0;

@@ -13,6 +13,9 @@ struct SimulationState {
   long steps = 0;
   std::vector<Vec3> x, v, w, F, T;  ///< w and T empty without rotation
   std::vector<Vec3> plane_points, shell_centres;
+  /// Every shell's velocity, spin and load (force, torque) when one of them is free
+  /// (walls/spherical_shell.hpp); empty otherwise.
+  std::vector<Vec3> shell_velocities, shell_spins, shell_forces, shell_torques;
   /// Non-zero tangential springs: sphere pairs (i < j), and per wall (sphere, spring).
   struct PairSpring {
     int i = 0, j = 0;

@@ -41,7 +41,8 @@ World make_world(const SceneDef& scene) {
   }
   for (const PlaneDef& d : scene.planes) w.planes.push_back(PlaneWall{d.point, d.normal.normalized(), Vec3::Zero(), d.material});
   for (const ShellDef& d : scene.shells)
-    w.shells.push_back(SphericalShell{d.centre, d.radius, d.body, Vec3::Zero(), Vec3::Zero(), d.material, d.contact_radius});
+    w.shells.push_back(
+        SphericalShell{d.centre, d.radius, d.body, Vec3::Zero(), Vec3::Zero(), d.material, d.contact_radius, d.mass.value_or(0.0)});
   w.plane_loads.resize(w.planes.size());
   w.shell_loads.resize(w.shells.size());
   return w;

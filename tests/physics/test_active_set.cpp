@@ -64,7 +64,7 @@ SceneDef squeezed_packing_with_a_wall() {
     const double Rs = 0.016;
     testing::Random rng(11);
     s.particles = testing::random_spheres_in_shell(rng, 300, Rs, 3.0e-4, 1.5e-3, 3.5, 2000, 0);
-    s.shells = {ShellDef{"shell", 0, Vec3::Zero(), Rs, 0, ShellContactRadius::concave}};
+    s.shells = {ShellDef{"shell", 0, Vec3::Zero(), Rs, 0, ShellContactRadius::concave, std::nullopt}};
     testing::compress(s, Rs, 0.62, 0.03);
     for (auto& p : s.particles) p.r *= 1.02;
     s.planes = {PlaneDef{"wall", Vec3(Rs, 0, 0), Vec3(-1, 0, 0), 0}};

@@ -19,7 +19,7 @@ SceneDef compressed_packing() {
     const double Rs = 0.016;
     testing::Random rng(5);
     s.particles = testing::random_spheres_in_shell(rng, 500, Rs, 3.0e-4, 1.5e-3, 3.5, 2000, 0);
-    s.shells = {ShellDef{"shell", 0, Vec3::Zero(), Rs, 0, ShellContactRadius::concave}};
+    s.shells = {ShellDef{"shell", 0, Vec3::Zero(), Rs, 0, ShellContactRadius::concave, std::nullopt}};
     testing::compress(s, Rs, 0.62, 0.03);
     for (auto& p : s.particles) p.r *= 1.03;
     return s;

@@ -38,7 +38,7 @@ SceneDef scene(int variant) {
     if (p.x.x() + p.r < 0.0105 && p.x.norm() + p.r < 0.016) kept.push_back(p);
   }
   s.particles = kept;
-  s.shells.push_back(ShellDef{"shell", 0, Vec3::Zero(), 0.016, 0, ShellContactRadius::concave});
+  s.shells.push_back(ShellDef{"shell", 0, Vec3::Zero(), 0.016, 0, ShellContactRadius::concave, std::nullopt});
   s.planes.push_back(PlaneDef{"wall", Vec3(0.0105, 0, 0), Vec3(-1, 0, 0), 0});
   s.drivers = {MoveWallDef{"wall", Vec3(-0.1, 0, 0), 0.002, std::nullopt}};
   s.effects.gravity = Vec3(0, 0, -9.81);

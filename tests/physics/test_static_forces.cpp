@@ -70,7 +70,7 @@ TEST_P(StaticForce, SphereInsideShellUsesTheConcaveReducedRadius) {
     SceneDef s = two_material_scene();
     const double Rs = 0.016, r = 2.4e-3, h = 4.0e-5;
     const Vec3 c(0.001, 0.002, 0.003), dir = Vec3(-1, 0.5, 2).normalized();
-    s.shells = {ShellDef{"shell", 0, c, Rs, shell_material, choice}};
+    s.shells = {ShellDef{"shell", 0, c, Rs, shell_material, choice, std::nullopt}};
     ParticleDef p;
     p.r = r;
     p.body = 0;
@@ -91,7 +91,7 @@ INSTANTIATE_TEST_SUITE_P(Materials, StaticForce, ::testing::Values(0, 1),
 
 TEST(StaticForce, ShellIgnoresSpheresOfOtherBodies) {
   SceneDef s = testing::basic_scene();
-  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), 0.016, 0, ShellContactRadius::concave}};
+  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), 0.016, 0, ShellContactRadius::concave, std::nullopt}};
   ParticleDef own, other;
   own.r = other.r = 1e-3;
   own.body = 0;
@@ -106,7 +106,7 @@ TEST(StaticForce, ShellIgnoresSpheresOfOtherBodies) {
 
 TEST(StaticForce, ShellTorqueVanishesForRadialForces) {
   SceneDef s = testing::basic_scene();
-  s.shells = {ShellDef{"shell", 0, Vec3(1, 2, 3), 0.016, 0, ShellContactRadius::concave}};
+  s.shells = {ShellDef{"shell", 0, Vec3(1, 2, 3), 0.016, 0, ShellContactRadius::concave, std::nullopt}};
   ParticleDef p;
   p.r = 1e-3;
   p.body = 0;

@@ -142,7 +142,7 @@ TEST(Watchdog, SoundDrivenRunsStayFarFromTheThresholds) {
   s.watchdog.check_interval = 1;
   testing::Random rng(11);
   s.particles = testing::random_spheres_in_shell(rng, 200, 0.01, 5e-4, 1.5e-3, 3.5, 1000, 0);
-  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), 0.01, 0, ShellContactRadius::concave}};
+  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), 0.01, 0, ShellContactRadius::concave, std::nullopt}};
   s.planes = {PlaneDef{"floor", Vec3(0, 0, -0.0105), Vec3::UnitZ(), 0}};
   s.drivers = {MoveWallDef{"floor", Vec3(0, 0, 0.02), 1e-3, std::nullopt},
                RotateGroupDef{GroupDef{GroupDef::Kind::body, 0}, Vec3::Zero(), Vec3::UnitY(), 2.0, 0.3, std::nullopt,

@@ -18,7 +18,7 @@ SceneDef body_in_shell() {
   SceneDef s = testing::basic_scene();
   testing::Random rng(3);
   s.particles = testing::random_spheres_in_shell(rng, 60, 0.016, 0.0008, 0.003, 3.5, 200, 0);
-  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), 0.016, 0, ShellContactRadius::concave}};
+  s.shells = {ShellDef{"shell", 0, Vec3::Zero(), 0.016, 0, ShellContactRadius::concave, std::nullopt}};
   s.planes = {PlaneDef{"wall", Vec3(0, 0, -0.0161), Vec3::UnitZ(), 0}};
   return s;
 }
