@@ -141,6 +141,7 @@ include workflow/analysis.mk
 include workflow/archive.mk
 include workflow/paper.mk
 include workflow/accuracy.mk
+include workflow/coarse.mk
 else ifneq ($(SOFTPACK_TOOLS_BUILT),)
 $(error $(CONFIG_TOOL) is missing: $(if $(findstring n,$(firstword -$(MAKEFLAGS))),make -n needs the tools: run make build first,\
   the build did not make it (see $(BUILD)/build.log)))

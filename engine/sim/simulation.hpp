@@ -105,6 +105,8 @@ class Simulation {
   const PairList& pair_list() const { return neighbours_.lists().pairs; }
   const std::vector<WallList>& plane_lists() const { return neighbours_.lists().planes; }
   const std::vector<WallList>& shell_lists() const { return neighbours_.lists().shells; }
+  /// Every contact list (forces/contact_walk.hpp walks them).
+  const ContactLists& contact_lists() const { return neighbours_.lists(); }
   /// The soft-particles' contacts, or null in a scene without soft-particles.
   const SoftLists* soft_lists() const { return neighbours_.lists().soft ? &*neighbours_.lists().soft : nullptr; }
   long neighbour_rebuilds() const { return neighbours_.rebuilds(); }

@@ -16,7 +16,7 @@ from pathlib import Path
 
 # Bottom to top. A folder may include only folders earlier in this list (and itself).
 LAYERS = ["core", "simd", "contact", "walls", "config", "scene", "state", "neighbor", "forces", "drivers",
-          "integrate", "sim", "relax", "io", "packing", "analysis", "formats", "measure", "report", "apps"]
+          "integrate", "sim", "relax", "io", "packing", "analysis", "formats", "measure", "coarse", "report", "apps"]
 MAX_LINES = 400
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 INTRINSIC = re.compile(r'\b(_mm\d*_\w+|__m(128|256|512)\w*|__mmask\d+)\b|<immintrin\.h>')

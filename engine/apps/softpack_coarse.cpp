@@ -1,0 +1,134 @@
+// softpack-coarse: the coarse-grain validation (issue 17, docs/coarse-grain.md).
+//
+//   softpack-coarse medium --config experiments/coarse-grain.yaml --seed S --out medium-S.h5
+//       builds the medium of seed S: grains, sites and their packings (coarse/medium_file.hpp);
+//   softpack-coarse run --config ... --model resolved|soft --medium medium-S.h5 --out F.h5
+//       runs its oedometric compression with that model and writes the curve
+//       (coarse/result_file.hpp);
+//   softpack-coarse report --config ... --runs DIR --out DIR
+//       compares the two models over the seeds that have both (coarse/report.hpp).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "apps/command_line.hpp"
+#include "apps/exit_codes.hpp"
+#include "coarse/compression.hpp"
+#include "coarse/medium_file.hpp"
+#include "coarse/report.hpp"
+#include "coarse/result_file.hpp"
+#include "core/error.hpp"
+#include "core/version.hpp"
+#include "formats/law_file.hpp"
+
+namespace softpack {
+namespace {
+
+struct RunOptions {
+  std::string config, model, medium, out;
+  std::uint64_t seed = 0;
+  bool quiet = false;
+};
+
+struct Lines {
+  bool tty = ::isatty(STDERR_FILENO) != 0;
+  const char* cr() const { return tty ? "\r\033[K" : ""; }
+  const char* nl() const { return tty ? "" : "\n"; }
+};
+
+int medium(const RunOptions& o, const std::string& program) {
+  const CoarseGrainSettings s = read_coarse_grain_settings(o.config);
+  const Lines l;
+  Stopwatch clock;
+  MediumFile mf;
+  mf.medium = build_medium(s, o.seed, [&](std::size_t k, std::size_t n) {
+    const double t = clock.elapsed().wall;
+    if (!o.quiet)
+      fmt::print(stderr, "{}{} medium seed {}: packing {} of about {} ({:.0f} s, ETA {:.0f} s){}", l.cr(), program, o.seed, k, n, t,
+                 n > k ? t / static_cast<double>(k) * static_cast<double>(n - k) : 0.0, l.nl());
+  });
+  mf.seed = o.seed, mf.settings = s.section_text, mf.code_version = code_version(), mf.time = clock.elapsed();
+  write_medium_file(o.out, mf);
+  const Medium& m = mf.medium;
+  std::size_t packed = 0;
+  for (const Packing& p : m.packings) packed += p.radii.size();
+  if (!o.quiet)
+    fmt::print(stderr, "{}{} medium seed {}: {} grains, {} sites ({} grains in their packings), box {:.4g} x {:.4g} x {:.4g} m, {:.1f} s -> {}\n",
+               l.cr(), program, o.seed, m.grain_x.size(), m.sites.size(), packed, m.L, m.L, m.H, mf.time.wall, o.out);
+  return 0;
+}
+
+int run(const RunOptions& o, const std::string& program) {
+  const CoarseGrainSettings s = read_coarse_grain_settings(o.config);
+  const CoarseModel model = parse_coarse_model(o.model);
+  const Lines l;
+  const MediumFile mf = read_medium_file(o.medium);
+  if (mf.settings != s.section_text)
+    throw InputError(fmt::format("{}: made with other settings than {} (rerun softpack-coarse medium)", o.medium, o.config));
+  const Medium& m = mf.medium;
+  const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
+  const SceneDef scene = medium_scene(s, m, model, laws);
+  if (!o.quiet)
+    fmt::print(stderr, "{} seed {} {}: {} grains, {} sites, {} spheres in a box {:.4g} x {:.4g} x {:.4g} m\n", program, mf.seed, o.model,
+               m.grain_x.size(), m.sites.size(), scene.particles.size(), m.L, m.L, m.H);
+  Stopwatch clock;
+  const CompressionRun r = run_compression(scene, m, model, s, [&](double done, double total, const CurveRow& row) {
+    if (o.quiet) return;
+    const double elapsed = clock.elapsed().wall;
+    fmt::print(stderr, "{}{} seed {} {}: strain {:.4f} ({:.0f}%), sigma_zz {:.4g} Pa, K0 {:.3f}, fraction {:.4f}, Z {:.2f}, ETA {:.0f} s{}",
+               l.cr(), program, mf.seed, o.model, row.strain, 100.0 * done / total, row.sigma_top,
+               row.sigma_top > 0.0 ? row.sigma_lateral / row.sigma_top : 0.0, row.fraction, row.Z,
+               done > 0.0 ? elapsed * (total - done) / done : 0.0, l.nl());
+  });
+  write_coarse_result(o.out, coarse_result(r, m, model, mf.seed, s));
+  if (!o.quiet)
+    fmt::print(stderr, "{}{} seed {} {}: {} steps of {:.3g} s in {:.1f} s (CPU {:.1f} s) -> {}\n", l.cr(), program, mf.seed, o.model,
+               r.steps, r.dt, r.time.wall, r.time.cpu, o.out);
+  return 0;
+}
+
+}  // namespace
+}  // namespace softpack
+
+int main(int argc, char** argv) {
+  using namespace softpack;
+  const std::string program = "softpack-coarse";
+  CLI::App app{"softpack-coarse: the coarse-grain validation: a two-decade medium compressed resolved and with soft-particles"};
+  app.require_subcommand(1);
+  RunOptions o;
+  CLI::App* medium_cmd = app.add_subcommand("medium", "one seed: the medium (grains, sites and their packings), for both models");
+  medium_cmd->add_option("--config", o.config, "settings, e.g. experiments/coarse-grain.yaml")->required();
+  medium_cmd->add_option("--seed", o.seed, "seed of the medium, 0 <= seed <= 2^63 - 1")->required()->check(seed_check());
+  medium_cmd->add_option("--out", o.out, "medium file (HDF5)")->required();
+  medium_cmd->add_flag("--quiet", o.quiet, "no progress lines");
+  CLI::App* run_cmd = app.add_subcommand("run", "one model on one medium: compress it, write the curve");
+  run_cmd->add_option("--config", o.config, "settings, e.g. experiments/coarse-grain.yaml")->required();
+  run_cmd->add_option("--model", o.model, "resolved (every grain of both decades) or soft (soft-particles)")
+      ->required()
+      ->check(CLI::IsMember({"resolved", "soft"}));
+  run_cmd->add_option("--medium", o.medium, "medium file (softpack-coarse medium)")->required();
+  run_cmd->add_option("--out", o.out, "results file (HDF5)")->required();
+  run_cmd->add_flag("--quiet", o.quiet, "no progress lines");
+  std::string seeds_config;
+  CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
+  seeds_cmd->add_option("--config", seeds_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
+  ReportOptions ro;
+  CLI::App* report_cmd = app.add_subcommand("report", "compare the two models over the seeds that ran both");
+  report_cmd->add_option("--config", ro.config, "settings, e.g. experiments/coarse-grain.yaml")->required();
+  report_cmd->add_option("--runs", ro.runs, "directory of the runs' results (<model>-<seed>.h5)")->required();
+  report_cmd->add_option("--out", ro.out, "report directory (coarse-grain.md, .dat for the figure, summary.json)")->required();
+  if (const auto code = parse_command_line(app, argc, argv, program)) return *code;
+  try {
+    if (*seeds_cmd) {
+      for (std::uint64_t seed : read_coarse_grain_settings(seeds_config).seeds) fmt::print("{} ", seed);
+      fmt::print("\n");
+      return 0;
+    }
+    if (*medium_cmd) return medium(o, program);
+    if (*run_cmd) return run(o, program);
+    write_coarse_report(ro);
+    return 0;
+  } catch (...) {
+    return exit_on_error(program);
+  }
+}

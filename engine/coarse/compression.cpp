@@ -1,0 +1,77 @@
+#include "coarse/compression.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "forces/contact_walk.hpp"
+
+namespace softpack {
+
+CurveRow curve_row(const Simulation& sim, const Medium& m, const std::vector<int>& body_of, double H0, int phase) {
+  CurveRow row;
+  const auto& planes = sim.planes();
+  const auto& loads = sim.plane_loads();
+  const double H = planes[1].point.z() - planes[0].point.z();
+  const double area = m.L * m.L;
+  const auto pressure = [&](std::size_t k) { return -loads[k].force.dot(planes[k].normal); };
+  row.strain = (H0 - H) / H0;
+  row.phase = phase;
+  row.sigma_bottom = pressure(0) / area;
+  row.sigma_top = pressure(1) / area;
+  row.sigma_lateral = (pressure(2) + pressure(3) + pressure(4) + pressure(5)) / (4.0 * m.L * H);
+  row.fraction = m.solid_volume() / (area * H);
+  // Bodies in contact: distinct pairs of bodies with a loaded contact between them.
+  const int grains = static_cast<int>(m.grain_x.size());
+  std::vector<std::pair<int, int>> touching;
+  const ForceField& ff = sim.force_field();
+  for_each_closed_contact(sim.world(), sim.contact_lists(), false, [&](const ClosedContact& c) {
+    if (c.kind != ClosedContact::Kind::pair || !(c.Fn(ff.law()) > 0.0)) return;
+    const int a = body_of[static_cast<std::size_t>(c.i)], b = body_of[static_cast<std::size_t>(c.j)];
+    if (a != b) touching.emplace_back(std::min(a, b), std::max(a, b));
+  });
+  std::sort(touching.begin(), touching.end());
+  touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+  for (const auto& [a, b] : touching) {
+    const int soft = (a >= grains) + (b >= grains);
+    (soft == 0 ? row.grain_grain : soft == 1 ? row.grain_soft : row.soft_soft) += 1;
+  }
+  row.Z = 2.0 * static_cast<double>(touching.size()) / static_cast<double>(m.bodies());
+  const Measurement r = sim.residuals();
+  row.kinetic = r.kinetic_energy, row.elastic = r.elastic_energy;
+  return row;
+}
+
+CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseModel model, const CoarseGrainSettings& s,
+                               const std::function<void(double, double, const CurveRow&)>& progress) {
+  Stopwatch clock;
+  CompressionRun run;
+  Simulation sim(scene);
+  run.dt = sim.dt();
+  run.spheres = sim.particles().size();
+  run.bodies = m.bodies();
+  const std::vector<int> body_of = sphere_bodies(m, model);
+  const double H0 = m.H;
+  const long per_row = std::max(1L, std::lround(s.record_strain * H0 / (s.speed * sim.dt())));
+  const double total = s.strain + s.unload_strain;
+  run.rows.push_back(curve_row(sim, m, body_of, H0, 1));
+  const auto phase = [&](double strain, int sign) {
+    if (!(strain > 0.0)) return;
+    sim.add_driver(MoveWallDef{"top", Vec3(0, 0, sign > 0 ? -s.speed : s.speed), strain * H0, std::nullopt});
+    while (sim.drivers_moving()) {
+      sim.run_steps(per_row);
+      run.rows.push_back(curve_row(sim, m, body_of, H0, sign));
+      const double done = sign > 0 ? run.rows.back().strain : s.strain + (s.strain - run.rows.back().strain);
+      if (progress) progress(done, total, run.rows.back());
+    }
+  };
+  phase(s.strain, 1);
+  sim.release_drivers();
+  phase(s.unload_strain, -1);
+  run.steps = sim.step_count();
+  if (const SoftContacts* soft = sim.force_field().soft()) run.soft = soft->stats();
+  run.time = clock.elapsed();
+  return run;
+}
+
+}  // namespace softpack

@@ -1,0 +1,51 @@
+// The uniaxial (oedometric) compression of a medium (coarse/medium.hpp): the top wall moves
+// down at constant speed by `strain` of the initial height, the other five walls stand, then it
+// moves back up by `unload_strain`. A row of the curve every `record_strain`:
+//
+//   strain           (H0 - H) / H0
+//   sigma_top        the top wall's load along its normal / L^2 [Pa]       (the axial stress)
+//   sigma_bottom     the bottom wall's, likewise [Pa]
+//   sigma_lateral    the four side walls' mean load along their normals / (L H) [Pa]
+//   fraction         solid volume (both decades) / L^2 H
+//   bodies in contact: pairs of bodies (a first-decade grain, a soft-particle or a site's
+//                    packing) touching with a normal force > 0, by kind, and Z = 2 pairs / bodies
+//   kinetic, elastic energy [J]
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "coarse/medium.hpp"
+#include "core/stopwatch.hpp"
+#include "forces/soft_contacts.hpp"
+#include "sim/simulation.hpp"
+
+namespace softpack {
+
+struct CurveRow {
+  double strain = 0.0;
+  int phase = 1;  ///< 1 loading, -1 unloading
+  double sigma_top = 0.0, sigma_bottom = 0.0, sigma_lateral = 0.0;
+  double fraction = 0.0;
+  long grain_grain = 0, grain_soft = 0, soft_soft = 0;  ///< bodies in contact, by kind
+  double Z = 0.0;
+  double kinetic = 0.0, elastic = 0.0;
+};
+
+struct CompressionRun {
+  std::vector<CurveRow> rows;
+  long steps = 0;
+  double dt = 0.0;
+  std::size_t spheres = 0, bodies = 0;
+  SoftContactStats soft;  ///< soft model only
+  Elapsed time;           ///< of the simulation (the scene's construction and the steps)
+};
+
+/// The row of the current state.
+CurveRow curve_row(const Simulation& sim, const Medium& m, const std::vector<int>& body_of, double H0, int phase);
+
+/// Runs the compression of `scene` (medium_scene()); progress(strain done, strain in all, row)
+/// after each row.
+CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseModel model, const CoarseGrainSettings& s,
+                               const std::function<void(double, double, const CurveRow&)>& progress = {});
+
+}  // namespace softpack

@@ -1,0 +1,154 @@
+#include "coarse/medium.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "packing/power_law.hpp"
+
+namespace softpack {
+namespace {
+
+double ball(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
+
+// ∫ r^3 r^-b dr from lo to hi (up to the constant of P(r)).
+double volume_moment(double lo, double hi, double b) {
+  if (std::abs(b - 4.0) < 1e-12) return std::log(hi / lo);
+  return (std::pow(hi, 4.0 - b) - std::pow(lo, 4.0 - b)) / (4.0 - b);
+}
+
+}  // namespace
+
+std::uint64_t site_seed(std::uint64_t seed, std::size_t k) { return seed * 1000 + k; }
+
+double packing_mass(const Packing& p, double density) {
+  double m = 0.0;
+  for (double r : p.radii) m += density * ball(r);
+  return m;
+}
+
+Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std::function<void(std::size_t, std::size_t)>& progress) {
+  Medium m;
+  m.Rs = s.packing.Rs;
+  Random rng(seed);
+  const power_law::Law first{s.r_min_over_Rs * m.Rs, s.decade * s.r_min_over_Rs * m.Rs, s.exponent};
+  for (long k = 0; k < s.grains; ++k) {
+    m.grain_r.push_back(power_law::sample(first, rng));
+    m.grains_volume += ball(m.grain_r.back());
+  }
+  // The second decade: the packing's own range, the same P(r) continued below the first decade.
+  const double r2_max = s.packing.r_max, r2_min = s.packing.r_max / s.packing.polydispersity;
+  m.target_volume = m.grains_volume * volume_moment(r2_min, r2_max, s.exponent) / volume_moment(first.r_min, first.r_max, s.exponent);
+  // As many packings as bring the solid volume nearest to the target (one at least).
+  while (true) {
+    const std::size_t k = m.packings.size();
+    Packing p = generate_packing(s.packing, site_seed(seed, k));
+    const double v = std::accumulate(p.radii.begin(), p.radii.end(), 0.0, [](double a, double r) { return a + ball(r); });
+    if (k > 0 && std::abs(m.packings_volume + v - m.target_volume) >= std::abs(m.packings_volume - m.target_volume)) break;
+    m.packings.push_back(std::move(p));
+    m.packing_seeds.push_back(site_seed(seed, k));
+    m.packings_volume += v;
+    if (progress) progress(k + 1, static_cast<std::size_t>(std::ceil(m.target_volume / (m.packings_volume / static_cast<double>(k + 1)))));
+  }
+  m.sites.resize(m.packings.size());
+
+  // Random placement, largest first: bodies are the grains (their radius) and the sites (Rs).
+  struct Body {
+    double r;
+    std::size_t index;  // grain index, or grains + site index
+  };
+  std::vector<Body> bodies;
+  double volume = 0.0;
+  for (std::size_t k = 0; k < m.grain_r.size(); ++k) bodies.push_back({m.grain_r[k], k}), volume += ball(m.grain_r[k]);
+  for (std::size_t k = 0; k < m.sites.size(); ++k) bodies.push_back({m.Rs, m.grain_r.size() + k}), volume += ball(m.Rs);
+  std::stable_sort(bodies.begin(), bodies.end(), [](const Body& a, const Body& b) { return a.r > b.r; });
+  m.L = std::cbrt(volume / (s.initial_fraction * s.aspect));
+  m.H = s.aspect * m.L;
+  std::vector<Vec3> placed_x;
+  std::vector<double> placed_r;
+  m.grain_x.resize(m.grain_r.size());
+  for (const Body& b : bodies) {
+    if (2.0 * b.r >= m.L)
+      throw InputError(fmt::format("medium.initial_fraction: a body of radius {:.4g} m is wider than the box ({:.4g} m); "
+                                   "lower initial_fraction or add grains",
+                                   b.r, m.L));
+    bool done = false;
+    for (long t = 0; t < s.placement_trials && !done; ++t) {
+      const Vec3 x(rng.uniform(b.r, m.L - b.r), rng.uniform(b.r, m.L - b.r), rng.uniform(b.r, m.H - b.r));
+      done = true;
+      for (std::size_t j = 0; j < placed_x.size() && done; ++j) done = (x - placed_x[j]).norm() >= b.r + placed_r[j];
+      if (!done) continue;
+      placed_x.push_back(x), placed_r.push_back(b.r);
+      if (b.index < m.grain_r.size()) m.grain_x[b.index] = x;
+      else m.sites[b.index - m.grain_r.size()] = x;
+    }
+    if (!done)
+      throw InputError(fmt::format("medium.initial_fraction: {} (a body of radius {:.4g} m found no place in {} trials); lower "
+                                   "initial_fraction or raise placement_trials",
+                                   s.initial_fraction, b.r, s.placement_trials));
+  }
+  return m;
+}
+
+SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel model, const SoftParticleLaws& laws) {
+  const SimulationSettings& sim = s.simulation;
+  SceneDef scene;
+  scene.materials = {sim.material, sim.wall_material};
+  scene.effects = sim.effects;
+  scene.integration = sim.integration;
+  scene.neighbor = sim.neighbor;
+  scene.watchdog.max_overlap_fraction = s.max_overlap_fraction;
+  constexpr int kGrain = 0, kWall = 1;
+  for (std::size_t k = 0; k < m.grain_x.size(); ++k) {
+    ParticleDef p;
+    p.x = m.grain_x[k], p.r = m.grain_r[k], p.material = kGrain;
+    scene.particles.push_back(p);
+  }
+  for (std::size_t k = 0; k < m.sites.size(); ++k) {
+    const Packing& pk = m.packings[k];
+    const double grains_mass = packing_mass(pk, sim.material.density);
+    if (model == CoarseModel::resolved) {
+      for (std::size_t i = 0; i < pk.centres.size(); ++i) {
+        ParticleDef p;
+        p.x = m.sites[k] + pk.centres[i], p.r = pk.radii[i], p.material = kGrain, p.body = static_cast<int>(k);
+        scene.particles.push_back(p);
+      }
+      scene.shells.push_back(ShellDef{fmt::format("site{}", k), static_cast<int>(k), m.sites[k], m.Rs, kWall, sim.shell_contact_radius,
+                                      s.shell_mass_fraction * grains_mass});
+    } else {
+      ParticleDef p;
+      p.x = m.sites[k], p.r = m.Rs, p.material = kGrain, p.soft = true;
+      p.mass = (1.0 + s.shell_mass_fraction) * grains_mass;
+      scene.particles.push_back(p);
+    }
+  }
+  if (model == CoarseModel::soft) scene.effects.soft_particles = SoftParticlesDef{laws, s.grain_contact, s.beyond_range};
+  const auto plane = [&](const char* name, const Vec3& point, const Vec3& normal) {
+    scene.planes.push_back(PlaneDef{name, point, normal, kWall});
+  };
+  plane("bottom", Vec3::Zero(), Vec3::UnitZ());
+  plane("top", Vec3(0, 0, m.H), -Vec3::UnitZ());
+  plane("x0", Vec3::Zero(), Vec3::UnitX());
+  plane("x1", Vec3(m.L, 0, 0), -Vec3::UnitX());
+  plane("y0", Vec3::Zero(), Vec3::UnitY());
+  plane("y1", Vec3(0, m.L, 0), -Vec3::UnitY());
+  return scene;
+}
+
+std::vector<int> sphere_bodies(const Medium& m, CoarseModel model) {
+  std::vector<int> out;
+  const int grains = static_cast<int>(m.grain_x.size());
+  for (int k = 0; k < grains; ++k) out.push_back(k);
+  for (std::size_t k = 0; k < m.sites.size(); ++k) {
+    const std::size_t n = model == CoarseModel::resolved ? m.packings[k].centres.size() : 1;
+    out.insert(out.end(), n, grains + static_cast<int>(k));
+  }
+  return out;
+}
+
+}  // namespace softpack

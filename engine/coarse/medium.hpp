@@ -1,0 +1,63 @@
+// The two-decade medium of the coarse-grain validation (docs/coarse-grain.md): solid grains of
+// the first decade and the sites of the local packings of the second, placed at random in a
+// box, and the scene of either model.
+//
+//   first decade   `grains` radii from P(r) ~ r^-b on [r_min, decade r_min]
+//   second decade  local packings made by the soft-particles' own generator (the packing the
+//                  law file was measured on), one per site, each with its own seed, as many as
+//                  make the solid volume the same power law gives one decade below:
+//                  V2 = V1 (r2_max^(4-b) - r2_min^(4-b)) / (r1_max^(4-b) - r1_min^(4-b))
+//   placement      every body (grain, or site as a sphere of radius Rs) in decreasing size, at
+//                  the first of `placement_trials` random positions in the box that overlaps
+//                  nothing; the box (width L, height aspect L) holds the bodies' volume at
+//                  `initial_fraction`
+//
+// The resolved scene puts each site's packing in a free shell (walls/spherical_shell.hpp) of
+// mass shell_mass_fraction times its grains'; the soft scene puts there one soft-particle of
+// radius Rs and the mass of those grains and that shell. Both have the same first-decade grains,
+// the same six walls and the profile's engine settings.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "coarse/settings.hpp"
+#include "packing/generator.hpp"
+#include "scene/scene_def.hpp"
+
+namespace softpack {
+
+struct Medium {
+  double L = 0.0, H = 0.0;            ///< box width and initial height [m]
+  double Rs = 0.0;                    ///< the sites' radius [m]
+  std::vector<Vec3> grain_x;          ///< first-decade grains
+  std::vector<double> grain_r;
+  std::vector<Vec3> sites;            ///< soft-particle centres
+  std::vector<Packing> packings;      ///< one per site, about the origin
+  std::vector<std::uint64_t> packing_seeds;
+  double grains_volume = 0.0;         ///< solid volume of the first decade [m^3]
+  double packings_volume = 0.0;       ///< solid volume of the packings [m^3]
+  double target_volume = 0.0;         ///< V2 the packings stand for [m^3]
+
+  double solid_volume() const { return grains_volume + packings_volume; }
+  std::size_t bodies() const { return grain_x.size() + sites.size(); }
+};
+
+/// The medium of `seed` (the same settings and seed give the same bits); `progress(k, n)` after
+/// each packing generated. InputError naming medium.initial_fraction when a body finds no place.
+Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+/// The packing seed of site k of medium `seed`.
+std::uint64_t site_seed(std::uint64_t seed, std::size_t k);
+
+/// The scene of `model`: spheres in the order first-decade grains, then each site's (resolved:
+/// its packing's grains, body k; soft: one soft-particle). Planes bottom, top, x0, x1, y0, y1.
+/// `laws`: the soft model's (formats/law_file.hpp soft_particle_laws()).
+SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel model, const SoftParticleLaws& laws);
+
+/// The body (first-decade grain k: k; site k: grains + k) of each sphere of medium_scene().
+std::vector<int> sphere_bodies(const Medium& m, CoarseModel model);
+
+/// Mass of a site's grains [kg] at the grains' density.
+double packing_mass(const Packing& p, double density);
+
+}  // namespace softpack

@@ -1,0 +1,59 @@
+// The comparison of the two models of the coarse-grain validation (softpack-coarse report;
+// docs/coarse-grain.md): over the seeds that ran both, on the common strain grid of the settings
+// (each run's curve interpolated linearly in strain, loading and unloading apart),
+//
+//   per model   the mean and standard error over seeds of sigma_zz (top wall), K0 =
+//               sigma_lateral / sigma_zz, the solid fraction and Z;
+//   paired      the difference soft - resolved of each seed, its mean and standard error;
+//   agreement   sigma_zz of the soft model agrees at a strain when the mean difference is within
+//               2 standard errors of the resolved model's seed-to-seed spread of the mean plus
+//               that of the soft model's (2 sqrt(se_a^2 + se_b^2)); the report states the largest
+//               loading strain up to which every point agrees;
+//   speed-up    CPU time of the resolved run / that of the soft run, per seed, and its mean.
+//
+// Written to `out`: coarse-grain.md (the table, with what was compared), curves.dat (the columns
+// the figure draws, a block per phase) and summary.json.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "coarse/result_file.hpp"
+
+namespace softpack {
+
+struct ReportOptions {
+  std::string config, runs, out;
+};
+
+struct MeanError {
+  double mean = 0.0, error = 0.0;
+};
+
+/// One grid point of the comparison.
+struct CoarsePoint {
+  double strain = 0.0;
+  int phase = 1;
+  MeanError sigma[2], K0[2], fraction[2], Z[2];  ///< [0] resolved, [1] soft
+  MeanError sigma_difference;                    ///< soft - resolved, paired by seed
+  bool agrees = false;
+};
+
+struct CoarseComparison {
+  std::vector<std::uint64_t> seeds;
+  std::vector<CoarsePoint> points;
+  double agreement_strain = 0.0;  ///< every loading point up to it agrees
+  std::vector<double> cpu[2];     ///< per seed [s]
+  std::vector<double> speedup;    ///< per seed
+  MeanError mean_speedup;
+  std::int64_t spheres[2] = {0, 0}, bodies = 0, beyond_range = 0;
+  double max_dn = 0.0;
+};
+
+/// The comparison of paired runs (resolved[k] and soft[k] of the same seed).
+CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const std::vector<CoarseResult>& soft, double strain,
+                                double unload_strain, double step);
+
+/// Reads the runs of the settings' seeds (InputError when no seed has both) and writes the report.
+void write_coarse_report(const ReportOptions& o);
+
+}  // namespace softpack

@@ -1,0 +1,115 @@
+#include "coarse/result_file.hpp"
+
+#include "core/error.hpp"
+#include "core/version.hpp"
+#include "formats/h5_fields.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace softpack {
+
+using formats::get;
+using formats::put;
+
+CoarseResult coarse_result(const CompressionRun& run, const Medium& m, CoarseModel model, std::uint64_t seed,
+                           const CoarseGrainSettings& s) {
+  CoarseResult r;
+  r.model = name(model), r.settings = s.section_text, r.laws = s.laws, r.code_version = code_version();
+  r.seed = seed;
+  r.L = m.L, r.H = m.H, r.Rs = m.Rs;
+  r.grains = static_cast<std::int64_t>(m.grain_x.size()), r.sites = static_cast<std::int64_t>(m.sites.size());
+  r.spheres = static_cast<std::int64_t>(run.spheres), r.bodies = static_cast<std::int64_t>(run.bodies);
+  r.grains_volume = m.grains_volume, r.packings_volume = m.packings_volume, r.target_volume = m.target_volume;
+  for (std::uint64_t k : m.packing_seeds) r.packing_seeds.push_back(static_cast<std::int64_t>(k));
+  r.steps = run.steps, r.dt = run.dt, r.seconds = run.time.wall, r.cpu_seconds = run.time.cpu;
+  r.beyond_range = run.soft.beyond_range, r.max_dn = run.soft.max_dn;
+  r.rows = run.rows;
+  return r;
+}
+
+namespace {
+
+// The curve's columns, one member of CurveRow each.
+template <class F>
+void columns(F&& f) {
+  f("strain", &CurveRow::strain);
+  f("sigma_top", &CurveRow::sigma_top);
+  f("sigma_bottom", &CurveRow::sigma_bottom);
+  f("sigma_lateral", &CurveRow::sigma_lateral);
+  f("fraction", &CurveRow::fraction);
+  f("Z", &CurveRow::Z);
+  f("kinetic", &CurveRow::kinetic);
+  f("elastic", &CurveRow::elastic);
+}
+
+template <class F>
+void counts(F&& f) {
+  f("phase", &CurveRow::phase);
+  f("grain_grain", &CurveRow::grain_grain);
+  f("grain_soft", &CurveRow::grain_soft);
+  f("soft_soft", &CurveRow::soft_soft);
+}
+
+}  // namespace
+
+void write_coarse_result(const std::string& path, const CoarseResult& r) {
+  h5::AtomicH5 out(path);
+  h5::File& f = out.file();
+  columns([&](const char* name, auto member) {
+    std::vector<double> v;
+    for (const CurveRow& row : r.rows) v.push_back(row.*member);
+    put(f, std::string("curve/") + name, v);
+  });
+  counts([&](const char* name, auto member) {
+    std::vector<std::int64_t> v;
+    for (const CurveRow& row : r.rows) v.push_back(static_cast<std::int64_t>(row.*member));
+    put(f, std::string("curve/") + name, v);
+  });
+  put(f, "medium/L", r.L), put(f, "medium/H", r.H), put(f, "medium/Rs", r.Rs);
+  put(f, "medium/grains", r.grains), put(f, "medium/sites", r.sites), put(f, "medium/spheres", r.spheres), put(f, "medium/bodies", r.bodies);
+  put(f, "medium/grains_volume", r.grains_volume), put(f, "medium/packings_volume", r.packings_volume);
+  put(f, "medium/target_volume", r.target_volume), put(f, "medium/packing_seeds", r.packing_seeds);
+  put(f, "soft/beyond_range", r.beyond_range), put(f, "soft/max_dn", r.max_dn);
+  put(f, "provenance/model", r.model), put(f, "provenance/seed", static_cast<std::int64_t>(r.seed));
+  put(f, "provenance/settings", r.settings), put(f, "provenance/laws", r.laws), put(f, "provenance/code_version", r.code_version);
+  put(f, "provenance/steps", r.steps), put(f, "provenance/dt", r.dt);
+  put(f, "provenance/seconds", r.seconds), put(f, "provenance/cpu_seconds", r.cpu_seconds);
+  out.commit();
+}
+
+CoarseResult read_coarse_result(const std::string& path) {
+  const h5::File f = h5::File::open(path);
+  CoarseResult r;
+  r.path = path;
+  std::vector<double> strain;
+  get(f, "curve/strain", strain);
+  r.rows.resize(strain.size());
+  columns([&](const char* name, auto member) {
+    std::vector<double> v;
+    get(f, std::string("curve/") + name, v);
+    formats::same_length(f, std::string("curve/") + name, v.size(), "curve/strain", strain.size());
+    formats::check_finite(f, std::string("curve/") + name, v);
+    for (std::size_t k = 0; k < v.size(); ++k) r.rows[k].*member = v[k];
+  });
+  counts([&](const char* name, auto member) {
+    std::vector<std::int64_t> v;
+    get(f, std::string("curve/") + name, v);
+    formats::same_length(f, std::string("curve/") + name, v.size(), "curve/strain", strain.size());
+    for (std::size_t k = 0; k < v.size(); ++k) r.rows[k].*member = static_cast<std::remove_reference_t<decltype(r.rows[k].*member)>>(v[k]);
+  });
+  get(f, "medium/L", r.L), get(f, "medium/H", r.H), get(f, "medium/Rs", r.Rs);
+  get(f, "medium/grains", r.grains), get(f, "medium/sites", r.sites), get(f, "medium/spheres", r.spheres), get(f, "medium/bodies", r.bodies);
+  get(f, "medium/grains_volume", r.grains_volume), get(f, "medium/packings_volume", r.packings_volume);
+  get(f, "medium/target_volume", r.target_volume), get(f, "medium/packing_seeds", r.packing_seeds);
+  get(f, "soft/beyond_range", r.beyond_range), get(f, "soft/max_dn", r.max_dn);
+  std::int64_t seed = 0;
+  get(f, "provenance/model", r.model), get(f, "provenance/seed", seed);
+  r.seed = static_cast<std::uint64_t>(seed);
+  get(f, "provenance/settings", r.settings), get(f, "provenance/laws", r.laws), get(f, "provenance/code_version", r.code_version);
+  get(f, "provenance/steps", r.steps), get(f, "provenance/dt", r.dt);
+  get(f, "provenance/seconds", r.seconds), get(f, "provenance/cpu_seconds", r.cpu_seconds);
+  if (r.model != "resolved" && r.model != "soft")
+    throw InputError(path + ": provenance/model: '" + r.model + "' is not allowed; allowed: resolved, soft");
+  return r;
+}
+
+}  // namespace softpack

@@ -1,0 +1,42 @@
+// The results file of one coarse-grain run (softpack-coarse run; read by softpack-coarse
+// report): the compression curve of one model and one seed, HDF5,
+//
+//   /curve/{strain, phase, sigma_top, sigma_bottom, sigma_lateral, fraction, grain_grain,
+//           grain_soft, soft_soft, Z, kinetic, elastic}          one row per record_strain
+//   /medium/{L, H, Rs, grains, sites, spheres, bodies, grains_volume, packings_volume,
+//            target_volume, packing_seeds}
+//   /soft/{beyond_range, max_dn}                                  (soft model)
+//   /provenance/{model, seed, settings, laws, code_version, steps, dt, seconds, cpu_seconds}
+//
+// `settings` is the coarse_grain section as read, `laws` the law file's path.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "coarse/compression.hpp"
+
+namespace softpack {
+
+struct CoarseResult {
+  std::string path, model, settings, laws, code_version;
+  std::uint64_t seed = 0;
+  double L = 0.0, H = 0.0, Rs = 0.0;
+  std::int64_t grains = 0, sites = 0, spheres = 0, bodies = 0, steps = 0;
+  double grains_volume = 0.0, packings_volume = 0.0, target_volume = 0.0;
+  std::vector<std::int64_t> packing_seeds;
+  double dt = 0.0, seconds = 0.0, cpu_seconds = 0.0;
+  std::int64_t beyond_range = 0;
+  double max_dn = 0.0;
+  std::vector<CurveRow> rows;
+};
+
+/// The result of a run, ready to write.
+CoarseResult coarse_result(const CompressionRun& run, const Medium& m, CoarseModel model, std::uint64_t seed,
+                           const CoarseGrainSettings& s);
+/// Writes atomically.
+void write_coarse_result(const std::string& path, const CoarseResult& r);
+/// Reads and checks; InputError names the file and the dataset.
+CoarseResult read_coarse_result(const std::string& path);
+
+}  // namespace softpack

@@ -1,0 +1,58 @@
+// The coarse-grain validation (issue 17, docs/coarse-grain.md): a two-decade medium simulated
+// (a) resolved, every grain of both decades, the second decade's grains in the local packings
+// of free shells, and (b) with each local packing replaced by one soft-particle that follows the
+// law file. Its settings: experiments/coarse-grain.yaml, section `coarse_grain`.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "measure/settings.hpp"
+#include "packing/generator.hpp"
+#include "scene/scene_def.hpp"
+
+namespace softpack {
+
+enum class CoarseModel { resolved, soft };
+const char* name(CoarseModel m);
+/// "resolved" or "soft"; InputError naming what is allowed otherwise.
+CoarseModel parse_coarse_model(const std::string& text);
+
+struct CoarseGrainSettings {
+  // The soft-particle: the profile its laws were measured with (material, engine settings,
+  // packing with the study's overrides), the law file, and how it meets a solid grain.
+  std::string profile;            ///< e.g. experiments/fast.yaml
+  SimulationSettings simulation;  ///< that profile's material and `simulation`
+  PackingParameters packing;      ///< that profile's packing, with `packing` overrides
+  std::string laws;               ///< law file (formats/law_file.hpp)
+  GrainContactRule grain_contact = GrainContactRule::wall;
+  SoftParticlesDef::BeyondRange beyond_range = SoftParticlesDef::BeyondRange::report;
+  double shell_mass_fraction = 0.0;  ///< resolved: free shell mass / its grains' mass
+
+  // The medium: first-decade grains from P(r) ~ r^-exponent on [r_min, decade r_min], the
+  // local packings' solid volume from the same law one decade below (docs/coarse-grain.md).
+  long grains = 0;
+  double r_min_over_Rs = 0.0;  ///< r_min of the first decade / Rs
+  double decade = 0.0;         ///< r_max / r_min of the first decade
+  double exponent = 0.0;
+  double initial_fraction = 0.0;  ///< bodies' volume / box volume of the random placement
+  double aspect = 0.0;            ///< box height / width
+  long placement_trials = 0;
+
+  // Uniaxial (oedometric) compression by the top wall, then unloading.
+  double speed = 0.0;          ///< [m/s]
+  double strain = 0.0;         ///< loading, of the initial height
+  double unload_strain = 0.0;  ///< unloading after it
+  double record_strain = 0.0;  ///< a row of the curve every this much strain
+  /// The watchdog's overlap limit (scene key watchdog.max_overlap_fraction) of both models.
+  double max_overlap_fraction = WatchdogDef::kMaxOverlapFraction;
+
+  std::vector<std::uint64_t> seeds;
+  std::string section_text;  ///< the `coarse_grain` section as read (provenance)
+};
+
+/// Reads and checks experiments/coarse-grain.yaml; InputError names the file, the key and what
+/// is allowed. `root_dir`: where relative paths (profile, laws) start.
+CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const std::string& root_dir = ".");
+
+}  // namespace softpack

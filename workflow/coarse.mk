@@ -1,0 +1,46 @@
+# The coarse-grain validation (issue 17, docs/coarse-grain.md, paper/coarse-grain.md): for each
+# seed of COARSE_CONFIG the two-decade medium (softpack-coarse medium: its packings are most of
+# the time), then its oedometric compression resolved and with soft-particles (softpack-coarse
+# run: one results file per model and seed), then the comparison, its table and its figure
+# (softpack-coarse report; figures/coarse_grain.gp). A rerun redoes only what is missing or older
+# than the settings, the law file or the tool; every file is written atomically.
+#
+#   make coarse-grain                          # every seed, both models, then the report
+#   make coarse-grain COARSE_SEEDS="301"       # only those seeds
+#   make coarse-grain-report                   # the report from the runs there are
+COARSE_CONFIG ?= experiments/coarse-grain.yaml
+COARSE_DIR ?= data/coarse-grain
+COARSE_TOOL := $(BUILD)/engine/softpack-coarse
+COARSE_LAWS := data/radius/report/laws.json
+
+.PHONY: coarse-grain coarse-grain-runs coarse-grain-report
+coarse-grain: | $(TOOLS)  ## the coarse-grain validation: resolved against soft-particles (COARSE_DIR/report/)
+	+@$(MAKE) --no-print-directory coarse-grain-runs
+	@$(MAKE) --no-print-directory coarse-grain-report
+
+# The seeds (asked of the tool: make reads no YAML), once the tools are built.
+COARSE_SEEDS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --config $(COARSE_CONFIG))
+coarse-grain-runs: $(foreach s,$(COARSE_SEEDS),$(COARSE_DIR)/runs/resolved-$(s).h5 $(COARSE_DIR)/runs/soft-$(s).h5)
+
+$(COARSE_DIR)/media/medium-%.h5: $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOLS)
+	@mkdir -p $(@D)
+	@$(RUN) $(COARSE_TOOL) medium --config $(COARSE_CONFIG) --seed $* --out $@ 2> $(@D)/medium-$*.log \
+	  || { echo "coarse-grain: medium $* FAILED (log: $(@D)/medium-$*.log)"; tail -3 $(@D)/medium-$*.log; exit 1; }
+	@tr '\r' '\n' < $(@D)/medium-$*.log | tail -1
+
+define coarse_run
+$(COARSE_DIR)/runs/$(1)-$(2).h5: $(COARSE_DIR)/media/medium-$(2).h5 $(COARSE_LAWS) $(COARSE_TOOL) | $(TOOLS)
+	@mkdir -p $$(@D)
+	@$(RUN) $(COARSE_TOOL) run --config $(COARSE_CONFIG) --model $(1) --medium $$< --out $$@ 2> $$(@D)/$(1)-$(2).log \
+	  || { echo "coarse-grain: $(1) $(2) FAILED (log: $$(@D)/$(1)-$(2).log)"; tr '\r' '\n' < $$(@D)/$(1)-$(2).log | tail -3; exit 1; }
+	@tr '\r' '\n' < $$(@D)/$(1)-$(2).log | tail -1
+endef
+$(foreach s,$(COARSE_SEEDS),$(foreach m,resolved soft,$(eval $(call coarse_run,$(m),$(s)))))
+
+coarse-grain-report: | $(TOOLS)  ## the coarse-grain validation's table and figure from the runs there are
+	@$(COARSE_TOOL) report --config $(COARSE_CONFIG) --runs $(COARSE_DIR)/runs --out $(COARSE_DIR)/report
+	@for ext in pdf png; do \
+	  gnuplot -e "data='$(COARSE_DIR)/report/curves.dat'; out='$(COARSE_DIR)/report/coarse-grain.tmp.$$ext'" figures/coarse_grain.gp \
+	  && mv $(COARSE_DIR)/report/coarse-grain.tmp.$$ext $(COARSE_DIR)/report/coarse-grain.$$ext \
+	  || { echo "coarse-grain: FAILED to draw the figure"; exit 1; }; done
+	@echo "coarse-grain: $(COARSE_DIR)/report/coarse-grain.md, coarse-grain.pdf, summary.json"
