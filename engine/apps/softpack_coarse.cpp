@@ -47,7 +47,7 @@ int medium(const RunOptions& o, const std::string& program) {
       fmt::print(stderr, "{}{} medium seed {}: packing {} of about {} ({:.0f} s, ETA {:.0f} s){}", l.cr(), program, o.seed, k, n, t,
                  n > k ? t / static_cast<double>(k) * static_cast<double>(n - k) : 0.0, l.nl());
   });
-  mf.seed = o.seed, mf.settings = s.section_text, mf.code_version = code_version(), mf.time = clock.elapsed();
+  mf.seed = o.seed, mf.settings = s.medium_text, mf.code_version = code_version(), mf.time = clock.elapsed();
   write_medium_file(o.out, mf);
   const Medium& m = mf.medium;
   std::size_t packed = 0;
@@ -63,7 +63,7 @@ int run(const RunOptions& o, const std::string& program) {
   const CoarseModel model = parse_coarse_model(o.model);
   const Lines l;
   const MediumFile mf = read_medium_file(o.medium);
-  if (mf.settings != s.section_text)
+  if (mf.settings != s.medium_text)
     throw InputError(fmt::format("{}: made with other settings than {} (rerun softpack-coarse medium)", o.medium, o.config));
   const Medium& m = mf.medium;
   const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
@@ -112,6 +112,8 @@ int main(int argc, char** argv) {
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   seeds_cmd->add_option("--config", seeds_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
+  bool medium_text = false;  // what a medium depends on, as the medium file records it (maintenance)
+  seeds_cmd->add_flag("--medium-text", medium_text)->group("");
   ReportOptions ro;
   CLI::App* report_cmd = app.add_subcommand("report", "compare the two models over the seeds that ran both");
   report_cmd->add_option("--config", ro.config, "settings, e.g. experiments/coarse-grain.yaml")->required();
@@ -120,6 +122,10 @@ int main(int argc, char** argv) {
   if (const auto code = parse_command_line(app, argc, argv, program)) return *code;
   try {
     if (*seeds_cmd) {
+      if (medium_text) {
+        fmt::print("{}", read_coarse_grain_settings(seeds_config).medium_text);
+        return 0;
+      }
       for (std::uint64_t seed : read_coarse_grain_settings(seeds_config).seeds) fmt::print("{} ", seed);
       fmt::print("\n");
       return 0;

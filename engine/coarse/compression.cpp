@@ -52,21 +52,30 @@ CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseMod
   run.bodies = m.bodies();
   const std::vector<int> body_of = sphere_bodies(m, model);
   const double H0 = m.H;
-  const long per_row = std::max(1L, std::lround(s.record_strain * H0 / (s.speed * sim.dt())));
   const double total = s.strain + s.unload_strain;
   run.rows.push_back(curve_row(sim, m, body_of, H0, 1));
+  // Each row: the wall moves by record_strain (the last one by what is left), then, with
+  // `relax`, stands while the medium comes to rest under the quench; then the row is recorded.
   const auto phase = [&](double strain, int sign) {
-    if (!(strain > 0.0)) return;
-    sim.add_driver(MoveWallDef{"top", Vec3(0, 0, sign > 0 ? -s.speed : s.speed), strain * H0, std::nullopt});
-    while (sim.drivers_moving()) {
-      sim.run_steps(per_row);
+    const long rows = std::max(1L, std::lround(strain / s.record_strain));
+    for (long k = 0; k < rows; ++k) {
+      const double d = std::min(s.record_strain, strain - static_cast<double>(k) * s.record_strain) * H0;
+      if (!(d > 0.0)) break;
+      sim.add_driver(MoveWallDef{"top", Vec3(0, 0, sign > 0 ? -s.speed : s.speed), d, std::nullopt});
+      sim.run_steps(std::max(1L, std::lround(d / (s.speed * sim.dt()))));
+      while (sim.drivers_moving()) sim.run_steps(1);
+      sim.release_drivers();
+      if (s.relax > 0.0) {
+        sim.set_quench(true);
+        sim.run_for(s.relax);
+        sim.set_quench(false);
+      }
       run.rows.push_back(curve_row(sim, m, body_of, H0, sign));
       const double done = sign > 0 ? run.rows.back().strain : s.strain + (s.strain - run.rows.back().strain);
       if (progress) progress(done, total, run.rows.back());
     }
   };
   phase(s.strain, 1);
-  sim.release_drivers();
   phase(s.unload_strain, -1);
   run.steps = sim.step_count();
   if (const SoftContacts* soft = sim.force_field().soft()) run.soft = soft->stats();

@@ -9,6 +9,10 @@
 //   /box/{L, H, Rs}                     [m]
 //   /volumes/{grains, packings, target} [m^3] (coarse/medium.hpp)
 //   /provenance/{seed, settings, code_version, seconds, cpu_seconds}
+//
+// `settings` is what the medium depends on: the coarse_grain section's soft_particle.profile and
+// .packing and its medium section (CoarseGrainSettings::medium_text); a run refuses a medium
+// made with others.
 #pragma once
 #include <cstdint>
 #include <string>

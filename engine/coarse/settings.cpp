@@ -50,6 +50,13 @@ CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const st
     std::ostringstream text;
     text << c.yaml();
     s.section_text = text.str();
+    // The packings' generator (profile, packing) and the medium: what build_medium() reads.
+    const ConfigNode sp = c.at("soft_particle");
+    std::ostringstream medium;
+    medium << "profile: " << sp.at("profile").yaml() << "\n";
+    if (auto p = sp.find("packing")) medium << "packing: " << p->yaml() << "\n";
+    medium << c.at("medium").yaml();
+    s.medium_text = medium.str();
   }
 
   const ConfigNode sp = c.at("soft_particle");
@@ -86,7 +93,8 @@ CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const st
   s.placement_trials = count_in(m.at("placement_trials"), 1, 100000000);
 
   const ConfigNode k = c.at("compression");
-  k.allow_only({"speed", "strain", "unload_strain", "record_strain", "max_overlap_fraction"});
+  k.allow_only({"speed", "strain", "unload_strain", "record_strain", "relax", "max_overlap_fraction"});
+  if (auto r = k.find("relax")) s.relax = in_range(*r, 0.0, 1000.0);
   s.speed = in_range(k.at("speed"), 0.0, 10.0, true);
   s.strain = in_range(k.at("strain"), 0.0, 0.9, true);
   s.unload_strain = in_range(k.at("unload_strain"), 0.0, s.strain);

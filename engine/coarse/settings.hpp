@@ -44,11 +44,16 @@ struct CoarseGrainSettings {
   double strain = 0.0;         ///< loading, of the initial height
   double unload_strain = 0.0;  ///< unloading after it
   double record_strain = 0.0;  ///< a row of the curve every this much strain
+  /// After each increment the wall stands while the medium relaxes this long [s] with the
+  /// per-grain velocity quench (scene/relaxation_def.hpp), so that each row is a state at rest
+  /// as the laws were measured; 0: the wall never stops.
+  double relax = 0.0;
   /// The watchdog's overlap limit (scene key watchdog.max_overlap_fraction) of both models.
   double max_overlap_fraction = WatchdogDef::kMaxOverlapFraction;
 
   std::vector<std::uint64_t> seeds;
   std::string section_text;  ///< the `coarse_grain` section as read (provenance)
+  std::string medium_text;   ///< what a medium depends on: soft_particle.profile and .packing, `medium`
 };
 
 /// Reads and checks experiments/coarse-grain.yaml; InputError names the file, the key and what

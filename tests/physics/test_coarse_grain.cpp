@@ -1,0 +1,152 @@
+// The coarse-grain validation's pieces (engine/coarse/): the medium is one medium for both
+// models, its files round-trip, the comparison reads curves as it says.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "coarse/medium_file.hpp"
+#include "coarse/report.hpp"
+#include "coarse/result_file.hpp"
+#include "core/error.hpp"
+#include "formats/law_file.hpp"
+
+namespace softpack {
+namespace {
+
+const std::string kRoot = SOFTPACK_SOURCE_DIR;
+
+const CoarseGrainSettings& tiny() {
+  static const CoarseGrainSettings s = read_coarse_grain_settings(kRoot + "/tests/data/coarse-grain-tiny.yaml", kRoot);
+  return s;
+}
+
+const Medium& medium() {
+  static const Medium m = build_medium(tiny(), 901);
+  return m;
+}
+
+SoftParticleLaws laws() { return soft_particle_laws(read_law_file(tiny().laws), tiny().laws); }
+
+double ball(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
+
+TEST(CoarseGrain, TheMediumRepeatsItsBitsAndNoBodyOverlapsAnother) {
+  const Medium& m = medium();
+  const Medium again = build_medium(tiny(), 901);
+  ASSERT_EQ(m.grain_x.size(), 12u);
+  ASSERT_GE(m.sites.size(), 1u);
+  EXPECT_EQ(again.grain_x, m.grain_x);
+  EXPECT_EQ(again.sites, m.sites);
+  std::vector<std::pair<Vec3, double>> bodies;
+  for (std::size_t k = 0; k < m.grain_x.size(); ++k) bodies.emplace_back(m.grain_x[k], m.grain_r[k]);
+  for (const Vec3& x : m.sites) bodies.emplace_back(x, m.Rs);
+  for (std::size_t a = 0; a < bodies.size(); ++a) {
+    const auto& [x, r] = bodies[a];
+    for (int d = 0; d < 3; ++d) EXPECT_GE(x[d] - r, 0.0);
+    EXPECT_LE(x.x() + r, m.L);
+    EXPECT_LE(x.y() + r, m.L);
+    EXPECT_LE(x.z() + r, m.H);
+    for (std::size_t b = 0; b < a; ++b) EXPECT_GE((x - bodies[b].first).norm(), r + bodies[b].second) << a << " and " << b;
+  }
+}
+
+// The packings stand for the second decade of the same power law: their solid volume is the
+// nearest a whole number of packings comes to it, V2 = V1 (r2max^0.5 - r2min^0.5) / (r1max^0.5 - r1min^0.5).
+TEST(CoarseGrain, ThePackingsHoldTheSecondDecadesSolidVolume) {
+  const Medium& m = medium();
+  const CoarseGrainSettings& s = tiny();
+  const double r1 = s.r_min_over_Rs * m.Rs, r2max = s.packing.r_max, r2min = r2max / s.packing.polydispersity;
+  double V1 = 0.0;
+  for (double r : m.grain_r) V1 += ball(r);
+  EXPECT_NEAR(m.grains_volume, V1, 1e-15);
+  EXPECT_NEAR(m.target_volume, V1 * (std::sqrt(r2max) - std::sqrt(r2min)) / (std::sqrt(10 * r1) - std::sqrt(r1)), 1e-12 * V1);
+  double largest = 0.0, V2 = 0.0;
+  for (const Packing& p : m.packings) {
+    double v = 0.0;
+    for (double r : p.radii) v += ball(r);
+    largest = std::max(largest, v), V2 += v;
+  }
+  EXPECT_NEAR(m.packings_volume, V2, 1e-15);
+  EXPECT_LE(std::abs(V2 - m.target_volume), largest) << "a packing more or fewer would come nearer";
+}
+
+TEST(CoarseGrain, BothModelsHoldTheSameGrainsAndTheSiteMassesAgree) {
+  const Medium& m = medium();
+  const SceneDef a = medium_scene(tiny(), m, CoarseModel::resolved, laws());
+  const SceneDef b = medium_scene(tiny(), m, CoarseModel::soft, laws());
+  std::size_t packed = 0;
+  for (const Packing& p : m.packings) packed += p.radii.size();
+  ASSERT_EQ(a.particles.size(), m.grain_x.size() + packed);
+  ASSERT_EQ(b.particles.size(), m.grain_x.size() + m.sites.size());
+  for (std::size_t k = 0; k < m.grain_x.size(); ++k) {
+    EXPECT_EQ(a.particles[k].x, b.particles[k].x);
+    EXPECT_EQ(a.particles[k].r, b.particles[k].r);
+  }
+  const double rho = tiny().simulation.material.density;
+  ASSERT_EQ(a.shells.size(), m.sites.size());
+  for (std::size_t k = 0; k < m.sites.size(); ++k) {
+    const double grains = packing_mass(m.packings[k], rho);
+    EXPECT_NEAR(*a.shells[k].mass, 0.05 * grains, 1e-15);
+    const ParticleDef& soft = b.particles[m.grain_x.size() + k];
+    EXPECT_TRUE(soft.soft);
+    EXPECT_EQ(soft.x, m.sites[k]);
+    EXPECT_NEAR(*soft.mass, 1.05 * grains, 1e-15);
+  }
+  EXPECT_TRUE(b.effects.soft_particles.has_value());
+  EXPECT_FALSE(a.effects.soft_particles.has_value());
+}
+
+TEST(CoarseGrain, ACompressionOfEitherModelWritesAFileThatReadsBack) {
+  const Medium& m = medium();
+  const std::string dir = ::testing::TempDir() + "/coarse";
+  std::filesystem::create_directories(dir);
+  MediumFile mf{m, 901, tiny().medium_text, "test", {}};
+  write_medium_file(dir + "/medium.h5", mf);
+  const MediumFile back = read_medium_file(dir + "/medium.h5");
+  EXPECT_EQ(back.medium.grain_x, m.grain_x);
+  ASSERT_EQ(back.medium.packings.size(), m.packings.size());
+  EXPECT_EQ(back.medium.packings.back().radii, m.packings.back().radii);
+  for (const CoarseModel model : {CoarseModel::resolved, CoarseModel::soft}) {
+    const CompressionRun run = run_compression(medium_scene(tiny(), back.medium, model, laws()), back.medium, model, tiny());
+    ASSERT_GE(run.rows.size(), 8u);  // 0, six loading rows, one unloading
+    EXPECT_NEAR(run.rows[6].strain, 0.06, 1e-3);
+    EXPECT_EQ(run.rows.back().phase, -1);
+    EXPECT_NEAR(run.rows.back().strain, 0.05, 1e-3);
+    const std::string path = dir + "/" + name(model) + ".h5";
+    write_coarse_result(path, coarse_result(run, back.medium, model, 901, tiny()));
+    const CoarseResult r = read_coarse_result(path);
+    EXPECT_EQ(r.model, name(model));
+    EXPECT_EQ(r.rows.size(), run.rows.size());
+    EXPECT_EQ(r.rows.back().sigma_top, run.rows.back().sigma_top);
+    EXPECT_EQ(r.spheres, static_cast<std::int64_t>(run.spheres));
+  }
+}
+
+// Two seeds, the resolved curve sigma = 1000 strain (+-10 Pa between seeds), the soft one the
+// same up to strain 0.05 and 50 % higher beyond: agreement up to 0.05, the stated speed-up.
+TEST(CoarseGrain, TheComparisonFindsWhereTheCurvesPart) {
+  std::vector<CoarseResult> resolved(2), soft(2);
+  for (int s = 0; s < 2; ++s) {
+    for (int k = 0; k <= 10; ++k) {
+      const double e = 0.01 * k, noise = s ? 10.0 : -10.0;
+      CurveRow row;
+      row.strain = e, row.sigma_top = 1000.0 * e + noise, row.sigma_lateral = 0.3 * row.sigma_top;
+      resolved[s].rows.push_back(row);
+      row.sigma_top = (e > 0.055 ? 1500.0 : 1000.0) * e + noise;
+      soft[s].rows.push_back(row);
+    }
+    resolved[s].seed = soft[s].seed = 900 + s;
+    resolved[s].cpu_seconds = 100.0 * (s + 1), soft[s].cpu_seconds = 2.0;
+  }
+  const CoarseComparison c = compare_coarse(resolved, soft, 0.1, 0.0, 0.01);
+  ASSERT_EQ(c.points.size(), 11u);
+  EXPECT_NEAR(c.agreement_strain, 0.05, 1e-12);
+  EXPECT_NEAR(c.points[3].sigma[0].mean, 30.0, 1e-9);
+  EXPECT_NEAR(c.points[3].sigma[0].error, 10.0, 1e-9);  // two seeds at +-10: standard error 10
+  EXPECT_NEAR(c.points[3].K0[1].mean, 0.3, 1e-12);
+  EXPECT_NEAR(c.mean_speedup.mean, 75.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace softpack
