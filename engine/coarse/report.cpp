@@ -27,10 +27,11 @@ MeanError mean_error(const std::vector<double>& v) {
   return m;
 }
 
-// The value of column `get` of a run's rows of `phase` at `strain`, linear between rows (NaN
-// outside the phase's strains).
+// The value of column `get` of a run's rows of `phase` at `strain`, linear between rows; a row
+// within `tolerance` of it (a phase's last row, a step short of the grid) stands for it; NaN
+// farther outside the phase's strains.
 template <class Get>
-double at_strain(const CoarseResult& r, int phase, double strain, Get get) {
+double at_strain(const CoarseResult& r, int phase, double strain, Get get, double tolerance) {
   const CurveRow* prev = nullptr;
   for (const CurveRow& row : r.rows) {
     if (row.phase != phase && !(phase == -1 && &row == &r.rows.front())) {
@@ -47,6 +48,8 @@ double at_strain(const CoarseResult& r, int phase, double strain, Get get) {
     if (row.strain == strain) return get(row);
     prev = &row;
   }
+  for (const CurveRow& row : r.rows)
+    if (row.phase == phase && std::abs(row.strain - strain) <= tolerance) return get(row);
   return std::nan("");
 }
 
@@ -62,6 +65,7 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
   for (long k = 0; k <= n_load; ++k) grid.emplace_back(std::min(strain, static_cast<double>(k) * step), 1);
   for (long k = 1; k <= n_unload; ++k) grid.emplace_back(strain - std::min(unload_strain, static_cast<double>(k) * step), -1);
   bool agreeing = true;
+  const double tol = 0.25 * step;
   for (const auto& [e, phase] : grid) {
     CoarsePoint p;
     p.strain = e, p.phase = phase;
@@ -69,19 +73,19 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
     for (int m = 0; m < 2; ++m) {
       std::vector<double> sigma, K0, fraction, Z;
       for (const CoarseResult& r : *runs[m]) {
-        const double s = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_top; });
-        const double lat = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_lateral; });
+        const double s = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol);
+        const double lat = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_lateral; }, tol);
         if (!std::isfinite(s)) continue;
         sigma.push_back(s);
         if (s > 0.0) K0.push_back(lat / s);
-        fraction.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.fraction; }));
-        Z.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.Z; }));
+        fraction.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.fraction; }, tol));
+        Z.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.Z; }, tol));
       }
       p.sigma[m] = mean_error(sigma), p.K0[m] = mean_error(K0), p.fraction[m] = mean_error(fraction), p.Z[m] = mean_error(Z);
     }
     for (std::size_t k = 0; k < resolved.size(); ++k)
-      diff.push_back(at_strain(soft[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }) -
-                     at_strain(resolved[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }));
+      diff.push_back(at_strain(soft[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol) -
+                     at_strain(resolved[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol));
     p.sigma_difference = mean_error(diff);
     const double tolerance = 2.0 * std::hypot(p.sigma[0].error, p.sigma[1].error);
     p.agrees = std::abs(p.sigma[1].mean - p.sigma[0].mean) <= tolerance;
