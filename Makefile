@@ -43,7 +43,7 @@ endif
 # The goals that write DATA (the pipeline's, the scenes, clean).
 PIPELINE_GOALS := all tables figures paper archive packings normal tangential sliding sweeps averages fits figure1 figure2 \
   study-packing study-relaxation accuracy accuracy-report fast-check \
-  coarse-grain coarse-grain-runs coarse-grain-report
+  coarse-grain coarse-grain-runs coarse-grain-report coarse-grain-multi-contact
 MAKE_LETTERS := $(firstword -$(MAKEFLAGS))
 
 # One run per data folder: a goal that writes DATA runs make again under DATA's lock

@@ -44,3 +44,14 @@ coarse-grain-report: | $(TOOLS)  ## the coarse-grain validation's table and figu
 	  && mv $(COARSE_DIR)/report/coarse-grain.tmp.$$ext $(COARSE_DIR)/report/coarse-grain.$$ext \
 	  || { echo "coarse-grain: FAILED to draw the figure"; exit 1; }; done
 	@echo "coarse-grain: $(COARSE_DIR)/report/coarse-grain.md, coarse-grain.pdf, summary.json"
+
+# Why the two models part (docs/coarse-grain.md): one resolved soft-particle of the medium's
+# generator pressed by 1, 2 and 6 walls at once, for the packing of site 0 of each seed.
+COARSE_PROBE_DN := 0.1 0.15 0.2 0.25 0.3 0.35
+.PHONY: coarse-grain-multi-contact
+coarse-grain-multi-contact: $(foreach s,$(COARSE_SEEDS),$(COARSE_DIR)/multi-contact/seed-$(s)000.dat)  ## one soft-particle pressed by 1, 2, 6 walls at once (COARSE_DIR/multi-contact/)
+$(COARSE_DIR)/multi-contact/seed-%.dat: $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOLS)
+	@mkdir -p $(@D)
+	@$(RUN) $(COARSE_TOOL) multi-contact --config $(COARSE_CONFIG) --packing-seed $* --walls 1 2 6 --delta-n $(COARSE_PROBE_DN) --out $@ \
+	  2> $(@D)/seed-$*.log || { echo "coarse-grain: multi-contact $* FAILED (log: $(@D)/seed-$*.log)"; tail -2 $(@D)/seed-$*.log; exit 1; }
+	@echo "coarse-grain: $@"

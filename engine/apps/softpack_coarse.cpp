@@ -15,6 +15,8 @@
 #include "apps/exit_codes.hpp"
 #include "coarse/compression.hpp"
 #include "coarse/medium_file.hpp"
+#include "coarse/multi_contact.hpp"
+#include "io/atomic_file.hpp"
 #include "coarse/report.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
@@ -109,6 +111,16 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--medium", o.medium, "medium file (softpack-coarse medium)")->required();
   run_cmd->add_option("--out", o.out, "results file (HDF5)")->required();
   run_cmd->add_flag("--quiet", o.quiet, "no progress lines");
+  std::string probe_config, probe_out;
+  std::uint64_t probe_seed = 0;
+  std::vector<int> probe_walls{1, 2, 6};
+  std::vector<double> probe_dn{0.1, 0.2, 0.3, 0.4};
+  CLI::App* probe_cmd = app.add_subcommand("multi-contact", "one resolved soft-particle pressed by 1, 2 or 6 walls at once (coarse/multi_contact.hpp)");
+  probe_cmd->add_option("--config", probe_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
+  probe_cmd->add_option("--packing-seed", probe_seed, "seed of the packing")->required()->check(seed_check());
+  probe_cmd->add_option("--walls", probe_walls, "numbers of walls (1, 2, 6)");
+  probe_cmd->add_option("--delta-n", probe_dn, "Delta_n of each wall, increasing");
+  probe_cmd->add_option("--out", probe_out, "text file: walls delta_n Fn")->required();
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   seeds_cmd->add_option("--config", seeds_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
@@ -128,6 +140,17 @@ int main(int argc, char** argv) {
       }
       for (std::uint64_t seed : read_coarse_grain_settings(seeds_config).seeds) fmt::print("{} ", seed);
       fmt::print("\n");
+      return 0;
+    }
+    if (*probe_cmd) {
+      const CoarseGrainSettings s = read_coarse_grain_settings(probe_config);
+      std::string text = fmt::format("# softpack-coarse multi-contact: {}, packing seed {}, {}\n# walls delta_n Fn_first_wall[N]\n",
+                                     probe_config, probe_seed, code_version());
+      for (const MultiContactPoint& p : measure_multi_contact(s, probe_seed, probe_walls, probe_dn, [&](const MultiContactPoint& p) {
+             fmt::print(stderr, "{} multi-contact: {} walls, delta_n {:.3f}: Fn {:.5g} N\n", program, p.walls, p.delta_n, p.Fn);
+           }))
+        text += fmt::format("{} {:.4f} {:.6e}\n", p.walls, p.delta_n, p.Fn);
+      write_file_atomically(probe_out, text);
       return 0;
     }
     if (*medium_cmd) return medium(o, program);

@@ -63,7 +63,12 @@ CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const st
   sp.allow_only({"profile", "packing", "laws", "grain_contact", "beyond_range", "shell_mass_fraction"});
   s.profile = sp.at("profile").string();
   const ConfigNode profile = ConfigNode::load_file(resolve(root_dir, s.profile));
-  s.simulation = parse_measurement(profile).simulation;
+  {
+    const MeasurementSettings measurement = parse_measurement(profile);
+    s.simulation = measurement.simulation;
+    s.relaxation = measurement.relaxation;
+    s.normal_speed = measurement.normal.speed;
+  }
   s.packing = parse_packing(profile).parameters;
   if (auto p = sp.find("packing")) {
     p->allow_only({"beta", "trials"});

@@ -23,6 +23,8 @@ struct CoarseGrainSettings {
   // packing with the study's overrides), the law file, and how it meets a solid grain.
   std::string profile;            ///< e.g. experiments/fast.yaml
   SimulationSettings simulation;  ///< that profile's material and `simulation`
+  RelaxationDef relaxation;       ///< that profile's `relaxation` (the multi-contact probe's)
+  double normal_speed = 0.0;      ///< that profile's `normal.speed` [m/s] (the probe's walls)
   PackingParameters packing;      ///< that profile's packing, with `packing` overrides
   std::string laws;               ///< law file (formats/law_file.hpp)
   GrainContactRule grain_contact = GrainContactRule::wall;
