@@ -95,7 +95,7 @@ Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std:
   return m;
 }
 
-SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel model, const SoftParticleLaws& laws) {
+SceneDef engine_scene(const CoarseGrainSettings& s) {
   const SimulationSettings& sim = s.simulation;
   SceneDef scene;
   scene.materials = {sim.material, sim.wall_material};
@@ -103,6 +103,12 @@ SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel
   scene.integration = sim.integration;
   scene.neighbor = sim.neighbor;
   scene.watchdog.max_overlap_fraction = s.max_overlap_fraction;
+  return scene;
+}
+
+SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel model, const SoftParticleLaws& laws) {
+  const SimulationSettings& sim = s.simulation;
+  SceneDef scene = engine_scene(s);
   constexpr int kGrain = 0, kWall = 1;
   for (std::size_t k = 0; k < m.grain_x.size(); ++k) {
     ParticleDef p;

@@ -54,6 +54,10 @@ std::uint64_t site_seed(std::uint64_t seed, std::size_t k);
 /// `laws`: the soft model's (formats/law_file.hpp soft_particle_laws()).
 SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel model, const SoftParticleLaws& laws);
 
+/// A scene of the settings' engine: materials grain (0) and wall (1), the profile's effects,
+/// integration and neighbour search, the watchdog's overlap limit; no sphere, wall or driver.
+SceneDef engine_scene(const CoarseGrainSettings& s);
+
 /// The body (first-decade grain k: k; site k: grains + k) of each sphere of medium_scene().
 std::vector<int> sphere_bodies(const Medium& m, CoarseModel model);
 

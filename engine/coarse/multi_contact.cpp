@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "coarse/medium.hpp"
 #include "core/error.hpp"
 #include "packing/generator.hpp"
 #include "relax/relaxation.hpp"
@@ -18,12 +19,7 @@ std::vector<MultiContactPoint> measure_multi_contact(const CoarseGrainSettings& 
   std::vector<MultiContactPoint> out;
   for (const int k : walls) {
     if (k != 1 && k != 2 && k != 6) throw InputError(fmt::format("walls: {} is not allowed; allowed: 1, 2, 6", k));
-    SceneDef scene;
-    scene.materials = {sim.material, sim.wall_material};
-    scene.effects = sim.effects;
-    scene.integration = sim.integration;
-    scene.neighbor = sim.neighbor;
-    scene.watchdog.max_overlap_fraction = s.max_overlap_fraction;
+    SceneDef scene = engine_scene(s);
     for (std::size_t i = 0; i < packing.radii.size(); ++i) {
       ParticleDef p;
       p.x = packing.centres[i], p.r = packing.radii[i], p.body = 0;
