@@ -19,6 +19,8 @@ CurveRow curve_row(const Simulation& sim, const Medium& m, const std::vector<int
   row.phase = phase;
   row.sigma_bottom = pressure(0) / area;
   row.sigma_top = pressure(1) / area;
+  row.shear = planes[1].point.x() / H0;  // the top plane starts at x = 0
+  row.tau = -loads[1].force.x() / area;
   row.sigma_lateral = (pressure(2) + pressure(3) + pressure(4) + pressure(5)) / (4.0 * m.L * H);
   row.fraction = m.solid_volume() / (area * H);
   // Bodies in contact: distinct pairs of bodies with a loaded contact between them.
@@ -52,16 +54,18 @@ CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseMod
   run.bodies = m.bodies();
   const std::vector<int> body_of = sphere_bodies(m, model);
   const double H0 = m.H;
-  const double total = s.strain + s.unload_strain;
+  const double total = s.strain + s.unload_strain + s.shear;
   run.rows.push_back(curve_row(sim, m, body_of, H0, 1));
   // Each row: the wall moves by record_strain (the last one by what is left), then, with
   // `relax`, stands while the medium comes to rest under the quench; then the row is recorded.
   const auto phase = [&](double strain, int sign) {
-    const long rows = std::max(1L, std::lround(strain / s.record_strain));
+    const double every = sign == 2 ? s.record_shear : s.record_strain;
+    const long rows = std::max(1L, std::lround(strain / every));
+    const Vec3 direction = sign == 2 ? Vec3(Vec3::UnitX()) : Vec3(0.0, 0.0, sign > 0 ? -1.0 : 1.0);
     for (long k = 0; k < rows; ++k) {
-      const double d = std::min(s.record_strain, strain - static_cast<double>(k) * s.record_strain) * H0;
+      const double d = std::min(every, strain - static_cast<double>(k) * every) * H0;
       if (!(d > 0.0)) break;
-      sim.add_driver(MoveWallDef{"top", Vec3(0, 0, sign > 0 ? -s.speed : s.speed), d, std::nullopt});
+      sim.add_driver(MoveWallDef{"top", s.speed * direction, d, std::nullopt});
       sim.run_steps(std::max(1L, std::lround(d / (s.speed * sim.dt()))));
       while (sim.drivers_moving()) sim.run_steps(1);
       sim.release_drivers();
@@ -71,12 +75,15 @@ CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseMod
         sim.set_quench(false);
       }
       run.rows.push_back(curve_row(sim, m, body_of, H0, sign));
-      const double done = sign > 0 ? run.rows.back().strain : s.strain + (s.strain - run.rows.back().strain);
+      const double done = sign == 2 ? s.strain + s.unload_strain + run.rows.back().shear
+                          : sign > 0 ? run.rows.back().strain
+                                     : s.strain + (s.strain - run.rows.back().strain);
       if (progress) progress(done, total, run.rows.back());
     }
   };
   phase(s.strain, 1);
   phase(s.unload_strain, -1);
+  phase(s.shear, 2);
   run.steps = sim.step_count();
   if (const SoftContacts* soft = sim.force_field().soft()) run.soft = soft->stats();
   run.time = clock.elapsed();

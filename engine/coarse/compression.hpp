@@ -10,6 +10,10 @@
 //   bodies in contact: pairs of bodies (a first-decade grain, a soft-particle or a site's
 //                    packing) touching with a normal force > 0, by kind, and Z = 2 pairs / bodies
 //   kinetic, elastic energy [J]
+//
+// Then, with `shear`, the platen shear (phase 2): the top wall moves along +x, the rows add
+//   shear            the top wall's displacement along x / H0
+//   tau              the force the grains put on it along -x / L^2 [Pa] (the shear stress)
 #pragma once
 #include <functional>
 #include <vector>
@@ -23,7 +27,8 @@ namespace softpack {
 
 struct CurveRow {
   double strain = 0.0;
-  int phase = 1;  ///< 1 loading, -1 unloading
+  int phase = 1;  ///< 1 loading, -1 unloading, 2 shear
+  double shear = 0.0, tau = 0.0;
   double sigma_top = 0.0, sigma_bottom = 0.0, sigma_lateral = 0.0;
   double fraction = 0.0;
   long grain_grain = 0, grain_soft = 0, soft_soft = 0;  ///< bodies in contact, by kind

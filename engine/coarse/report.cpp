@@ -32,6 +32,20 @@ MeanError mean_error(const std::vector<double>& v) {
 // farther outside the phase's strains.
 template <class Get>
 double at_strain(const CoarseResult& r, int phase, double strain, Get get, double tolerance) {
+  if (phase == 2) {  // the shear: rows of phase 2 (and the last before it) by the wall's displacement
+    const CurveRow* prev = nullptr;
+    for (const CurveRow& row : r.rows) {
+      if (row.phase != 2) {
+        prev = &row;
+        continue;
+      }
+      const double a = prev ? (prev->phase == 2 ? prev->shear : 0.0) : 0.0, b = row.shear;
+      if (prev && (strain - a) * (strain - b) <= 0.0 && a != b) return get(*prev) + (strain - a) / (b - a) * (get(row) - get(*prev));
+      if (std::abs(row.shear - strain) <= tolerance) return get(row);
+      prev = &row;
+    }
+    return std::nan("");
+  }
   const CurveRow* prev = nullptr;
   for (const CurveRow& row : r.rows) {
     if (row.phase != phase && !(phase == -1 && &row == &r.rows.front())) {
@@ -56,7 +70,7 @@ double at_strain(const CoarseResult& r, int phase, double strain, Get get, doubl
 }  // namespace
 
 CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const std::vector<CoarseResult>& soft, double strain,
-                                double unload_strain, double step) {
+                                double unload_strain, double step, double shear, double shear_step) {
   CoarseComparison c;
   const std::vector<CoarseResult>* runs[2] = {&resolved, &soft};
   for (const CoarseResult& r : resolved) c.seeds.push_back(r.seed);
@@ -64,14 +78,16 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
   const long n_load = std::lround(strain / step), n_unload = std::lround(unload_strain / step);
   for (long k = 0; k <= n_load; ++k) grid.emplace_back(std::min(strain, static_cast<double>(k) * step), 1);
   for (long k = 1; k <= n_unload; ++k) grid.emplace_back(strain - std::min(unload_strain, static_cast<double>(k) * step), -1);
+  const long n_shear = shear_step > 0.0 ? std::lround(shear / shear_step) : 0;
+  for (long k = 1; k <= n_shear; ++k) grid.emplace_back(std::min(shear, static_cast<double>(k) * shear_step), 2);
   bool agreeing = true;
-  const double tol = 0.25 * step;
   for (const auto& [e, phase] : grid) {
     CoarsePoint p;
-    p.strain = e, p.phase = phase;
+    p.strain = phase == 2 ? strain - unload_strain : e, p.phase = phase, p.shear = phase == 2 ? e : 0.0;
+    const double tol = phase == 2 ? 0.25 * shear_step : 0.25 * step;
     std::vector<double> diff;
     for (int m = 0; m < 2; ++m) {
-      std::vector<double> sigma, K0, fraction, Z;
+      std::vector<double> sigma, K0, fraction, Z, tau;
       for (const CoarseResult& r : *runs[m]) {
         const double s = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol);
         const double lat = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_lateral; }, tol);
@@ -80,8 +96,10 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
         if (s > 0.0) K0.push_back(lat / s);
         fraction.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.fraction; }, tol));
         Z.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.Z; }, tol));
+        tau.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.tau; }, tol));
       }
       p.sigma[m] = mean_error(sigma), p.K0[m] = mean_error(K0), p.fraction[m] = mean_error(fraction), p.Z[m] = mean_error(Z);
+      p.tau[m] = mean_error(tau);
     }
     for (std::size_t k = 0; k < resolved.size(); ++k)
       diff.push_back(at_strain(soft[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol) -
@@ -126,21 +144,24 @@ void write_coarse_report(const ReportOptions& o) {
   }
   if (resolved.empty())
     throw InputError(fmt::format("{}: no seed of {} has both runs (resolved-<seed>.h5 and soft-<seed>.h5)", o.runs, o.config));
-  const CoarseComparison c = compare_coarse(resolved, soft, s.strain, s.unload_strain, s.record_strain);
+  const CoarseComparison c = compare_coarse(resolved, soft, s.strain, s.unload_strain, s.record_strain, s.shear, s.record_shear);
   std::filesystem::create_directories(o.out);
 
   std::ostringstream dat;
   dat << "# softpack-coarse report: " << o.config << ", seeds";
   for (auto seed : c.seeds) dat << ' ' << seed;
   dat << "\n# strain phase sigma_res sigma_res_se sigma_soft sigma_soft_se K0_res K0_res_se K0_soft K0_soft_se"
-         " fraction_res fraction_soft Z_res Z_res_se Z_soft Z_soft_se diff diff_se agrees\n";
+         " fraction_res fraction_soft Z_res Z_res_se Z_soft Z_soft_se diff diff_se agrees tau_res tau_res_se tau_soft tau_soft_se\n"
+         "# (the third block, phase 2, is the shear: column 1 is then the top wall's displacement / H0)\n";
   int last_phase = 1;
   for (const CoarsePoint& p : c.points) {
     if (p.phase != last_phase) dat << "\n\n", last_phase = p.phase;
-    dat << fmt::format("{:.6f} {} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6f} {:.6f} {:.4f} {:.4f} {:.4f} {:.4f} {:.6e} {:.6e} {}\n",
-                       p.strain, p.phase, p.sigma[0].mean, p.sigma[0].error, p.sigma[1].mean, p.sigma[1].error, p.K0[0].mean,
+    dat << fmt::format("{:.6f} {} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6f} {:.6f} {:.4f} {:.4f} {:.4f} {:.4f} {:.6e} {:.6e} {} "
+                       "{:.6e} {:.6e} {:.6e} {:.6e}\n",
+                       p.phase == 2 ? p.shear : p.strain, p.phase, p.sigma[0].mean, p.sigma[0].error, p.sigma[1].mean, p.sigma[1].error, p.K0[0].mean,
                        p.K0[0].error, p.K0[1].mean, p.K0[1].error, p.fraction[0].mean, p.fraction[1].mean, p.Z[0].mean, p.Z[0].error,
-                       p.Z[1].mean, p.Z[1].error, p.sigma_difference.mean, p.sigma_difference.error, p.agrees ? 1 : 0);
+                       p.Z[1].mean, p.Z[1].error, p.sigma_difference.mean, p.sigma_difference.error, p.agrees ? 1 : 0,
+                       p.tau[0].mean, p.tau[0].error, p.tau[1].mean, p.tau[1].error);
   }
   write_file_atomically((std::filesystem::path(o.out) / "curves.dat").string(), dat.str());
 
@@ -155,11 +176,23 @@ void write_coarse_report(const ReportOptions& o) {
   const long every = std::max(1L, std::lround(0.01 / s.record_strain));
   for (std::size_t k = 0; k < c.points.size(); ++k) {
     const CoarsePoint& p = c.points[k];
-    if (k % static_cast<std::size_t>(every) != 0 && k + 1 != c.points.size()) continue;
+    if (p.phase == 2) continue;
+    if (k % static_cast<std::size_t>(every) != 0 && k + 1 != c.points.size() && c.points[k + 1].phase != 2) continue;
     md << fmt::format("| {:.3f} | {} | {} | {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {} | {} |\n", p.strain,
                       p.phase > 0 ? "load" : "unload", pm(p.sigma[0]), pm(p.sigma[1]), pm(p.sigma_difference), p.agrees ? "yes" : "no",
                       pm(p.K0[0], "{:.3f}"), pm(p.K0[1], "{:.3f}"), p.fraction[0].mean, p.fraction[1].mean, pm(p.Z[0], "{:.2f}"),
                       pm(p.Z[1], "{:.2f}"));
+  }
+  if (s.shear > 0.0) {
+    md << fmt::format("\nPlaten shear at axial strain {:.3f}: the top wall moved along x by `shear` of the initial height.\n\n",
+                      s.strain - s.unload_strain);
+    md << "| shear | τ resolved [Pa] | τ soft [Pa] | τ/σzz resolved | τ/σzz soft | σzz resolved [Pa] | σzz soft [Pa] |\n";
+    md << "|---|---|---|---|---|---|---|\n";
+    for (const CoarsePoint& p : c.points) {
+      if (p.phase != 2) continue;
+      md << fmt::format("| {:.3f} | {} | {} | {:.3f} | {:.3f} | {} | {} |\n", p.shear, pm(p.tau[0]), pm(p.tau[1]),
+                        p.tau[0].mean / p.sigma[0].mean, p.tau[1].mean / p.sigma[1].mean, pm(p.sigma[0]), pm(p.sigma[1]));
+    }
   }
   md << fmt::format("\nAgreement (|soft − resolved| ≤ 2 √(se² + se²) of the two means) at every loading point up to strain **{:.3f}**.\n",
                     c.agreement_strain);

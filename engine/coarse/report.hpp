@@ -9,7 +9,8 @@
 //               2 standard errors of the resolved model's seed-to-seed spread of the mean plus
 //               that of the soft model's (2 sqrt(se_a^2 + se_b^2)); the report states the largest
 //               loading strain up to which every point agrees;
-//   speed-up    CPU time of the resolved run / that of the soft run, per seed, and its mean.
+//   speed-up    CPU time of the resolved run / that of the soft run, per seed, and its mean;
+//   shear       (phase 2) the same on the grid of the top wall's displacement, with tau.
 //
 // Written to `out`: coarse-grain.md (the table, with what was compared), curves.dat (the columns
 // the figure draws, a block per phase) and summary.json.
@@ -32,8 +33,10 @@ struct MeanError {
 /// One grid point of the comparison.
 struct CoarsePoint {
   double strain = 0.0;
-  int phase = 1;
+  int phase = 1;     ///< 1 loading, -1 unloading, 2 shear (then `shear` is the grid's variable)
+  double shear = 0.0;
   MeanError sigma[2], K0[2], fraction[2], Z[2];  ///< [0] resolved, [1] soft
+  MeanError tau[2];                              ///< the shear stress on the top wall [Pa]
   MeanError sigma_difference;                    ///< soft - resolved, paired by seed
   bool agrees = false;
 };
@@ -51,7 +54,7 @@ struct CoarseComparison {
 
 /// The comparison of paired runs (resolved[k] and soft[k] of the same seed).
 CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const std::vector<CoarseResult>& soft, double strain,
-                                double unload_strain, double step);
+                                double unload_strain, double step, double shear = 0.0, double shear_step = 0.0);
 
 /// Reads the runs of the settings' seeds (InputError when no seed has both) and writes the report.
 void write_coarse_report(const ReportOptions& o);

@@ -39,6 +39,8 @@ void columns(F&& f) {
   f("Z", &CurveRow::Z);
   f("kinetic", &CurveRow::kinetic);
   f("elastic", &CurveRow::elastic);
+  f("shear", &CurveRow::shear);
+  f("tau", &CurveRow::tau);
 }
 
 template <class F>

@@ -2,7 +2,7 @@
 // report): the compression curve of one model and one seed, HDF5,
 //
 //   /curve/{strain, phase, sigma_top, sigma_bottom, sigma_lateral, fraction, grain_grain,
-//           grain_soft, soft_soft, Z, kinetic, elastic}          one row per record_strain
+//           grain_soft, soft_soft, Z, kinetic, elastic, shear, tau} one row per increment
 //   /medium/{L, H, Rs, grains, sites, spheres, bodies, grains_volume, packings_volume,
 //            target_volume, packing_seeds}
 //   /soft/{beyond_range, max_dn}                                  (soft model)

@@ -98,7 +98,11 @@ CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const st
   s.placement_trials = count_in(m.at("placement_trials"), 1, 100000000);
 
   const ConfigNode k = c.at("compression");
-  k.allow_only({"speed", "strain", "unload_strain", "record_strain", "relax", "max_overlap_fraction"});
+  k.allow_only({"speed", "strain", "unload_strain", "record_strain", "relax", "max_overlap_fraction", "shear", "record_shear"});
+  if (auto sh = k.find("shear")) {
+    s.shear = in_range(*sh, 0.0, 1.0);
+    s.record_shear = in_range(k.at("record_shear"), 0.0, std::max(s.shear, 1e-12), true);
+  }
   if (auto r = k.find("relax")) s.relax = in_range(*r, 0.0, 1000.0);
   s.speed = in_range(k.at("speed"), 0.0, 10.0, true);
   s.strain = in_range(k.at("strain"), 0.0, 0.9, true);

@@ -46,6 +46,9 @@ struct CoarseGrainSettings {
   double strain = 0.0;         ///< loading, of the initial height
   double unload_strain = 0.0;  ///< unloading after it
   double record_strain = 0.0;  ///< a row of the curve every this much strain
+  /// Then the platen shear: the top wall moves along +x by `shear` of the initial height (0: none),
+  /// a row every `record_shear`, each at rest as the others.
+  double shear = 0.0, record_shear = 0.0;
   /// After each increment the wall stands while the medium relaxes this long [s] with the
   /// per-grain velocity quench (scene/relaxation_def.hpp), so that each row is a state at rest
   /// as the laws were measured; 0: the wall never stops.

@@ -111,14 +111,19 @@ TEST(CoarseGrain, ACompressionOfEitherModelWritesAFileThatReadsBack) {
     const CompressionRun run = run_compression(medium_scene(tiny(), back.medium, model, laws()), back.medium, model, tiny());
     ASSERT_GE(run.rows.size(), 8u);  // 0, six loading rows, one unloading
     EXPECT_NEAR(run.rows[6].strain, 0.06, 1e-3);
-    EXPECT_EQ(run.rows.back().phase, -1);
-    EXPECT_NEAR(run.rows.back().strain, 0.05, 1e-3);
+    ASSERT_EQ(run.rows.size(), 10u);  // then two rows of shear
+    EXPECT_EQ(run.rows[7].phase, -1);
+    EXPECT_NEAR(run.rows[7].strain, 0.05, 1e-3);
+    EXPECT_EQ(run.rows.back().phase, 2);
+    EXPECT_NEAR(run.rows.back().shear, 0.02, 1e-3);
+    EXPECT_NEAR(run.rows.back().strain, 0.05, 1e-3) << "the shear keeps the axial strain";
     const std::string path = dir + "/" + name(model) + ".h5";
     write_coarse_result(path, coarse_result(run, back.medium, model, 901, tiny()));
     const CoarseResult r = read_coarse_result(path);
     EXPECT_EQ(r.model, name(model));
     EXPECT_EQ(r.rows.size(), run.rows.size());
     EXPECT_EQ(r.rows.back().sigma_top, run.rows.back().sigma_top);
+    EXPECT_EQ(r.rows.back().tau, run.rows.back().tau);
     EXPECT_EQ(r.spheres, static_cast<std::int64_t>(run.spheres));
   }
 }
