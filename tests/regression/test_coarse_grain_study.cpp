@@ -59,7 +59,7 @@ TEST(CoarseGrainStudy, K0AgreesWithinTheSeedsSpreadFromTenPercentStrain) {
 // holds the gap where it was measured; it fails when it closes or widens.
 TEST(CoarseGrainStudy, ExpectedFailureTheSoftMediumCarriesAboutHalfTheAxialStress) {
   for (const auto& r : rows(kDir + "/report/curves.dat")) {
-    if (r[0] < 0.05 - 1e-9) continue;
+    if (r[1] == 2 || r[0] < 0.05 - 1e-9) continue;  // loading and unloading (the shear block apart)
     const double ratio = r[4] / r[2];
     EXPECT_GT(ratio, 0.3) << "strain " << r[0];
     EXPECT_LT(ratio, 0.65) << "strain " << r[0] << ": the gap has closed; update paper/coarse-grain.md";
