@@ -3,17 +3,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 #include "analysis/power_fit.hpp"
 #include "core/error.hpp"
+#include "core/types.hpp"
 
 namespace softpack::table {
-
-namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-}
 
 double metres_per_degree(double Rs) { return std::numbers::pi * Rs / 180.0; }
 

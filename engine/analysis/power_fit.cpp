@@ -11,14 +11,13 @@
 
 #include "analysis/fit_points.hpp"
 #include "core/error.hpp"
+#include "core/types.hpp"
 
 namespace softpack::fit {
 namespace {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 using Data = FitPoints;
 

@@ -15,7 +15,8 @@
 namespace softpack {
 namespace {
 
-MeanError mean_error(const std::vector<double>& v) {
+// Mean and standard error over seeds; NaN where not known (no seed, or one for the error).
+MeanError seeds_mean_error(const std::vector<double>& v) {
   MeanError m;
   if (v.empty()) return {std::nan(""), std::nan("")};
   for (double x : v) m.mean += x;
@@ -98,13 +99,13 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
         Z.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.Z; }, tol));
         tau.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.tau; }, tol));
       }
-      p.sigma[m] = mean_error(sigma), p.K0[m] = mean_error(K0), p.fraction[m] = mean_error(fraction), p.Z[m] = mean_error(Z);
-      p.tau[m] = mean_error(tau);
+      p.sigma[m] = seeds_mean_error(sigma), p.K0[m] = seeds_mean_error(K0), p.fraction[m] = seeds_mean_error(fraction), p.Z[m] = seeds_mean_error(Z);
+      p.tau[m] = seeds_mean_error(tau);
     }
     for (std::size_t k = 0; k < resolved.size(); ++k)
       diff.push_back(at_strain(soft[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol) -
                      at_strain(resolved[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol));
-    p.sigma_difference = mean_error(diff);
+    p.sigma_difference = seeds_mean_error(diff);
     const double tolerance = 2.0 * std::hypot(p.sigma[0].error, p.sigma[1].error);
     p.agrees = std::abs(p.sigma[1].mean - p.sigma[0].mean) <= tolerance;
     if (phase == 1) {
@@ -118,7 +119,7 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
     c.speedup.push_back(resolved[k].cpu_seconds / soft[k].cpu_seconds);
     c.beyond_range += soft[k].beyond_range, c.max_dn = std::max(c.max_dn, soft[k].max_dn);
   }
-  c.mean_speedup = mean_error(c.speedup);
+  c.mean_speedup = seeds_mean_error(c.speedup);
   if (!resolved.empty()) c.spheres[0] = resolved[0].spheres, c.spheres[1] = soft[0].spheres, c.bodies = resolved[0].bodies;
   return c;
 }

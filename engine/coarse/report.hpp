@@ -18,16 +18,13 @@
 #include <string>
 #include <vector>
 
+#include "analysis/average.hpp"  // MeanError
 #include "coarse/result_file.hpp"
 
 namespace softpack {
 
 struct ReportOptions {
   std::string config, runs, out;
-};
-
-struct MeanError {
-  double mean = 0.0, error = 0.0;
 };
 
 /// One grid point of the comparison.

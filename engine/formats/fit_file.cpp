@@ -19,8 +19,8 @@ namespace {
 using fit::PowerLawFit;
 using json = nlohmann::ordered_json;
 
-constexpr const char *kScene = "scene", *kNormal = "normal", *kTangential = "tangential";
-constexpr const char *kProvenance = "provenance", *kCodeVersion = "code_version";
+constexpr const char *kSceneKey = "scene", *kNormal = "normal", *kTangential = "tangential";
+constexpr const char *kProvenance = "provenance", *kCodeVersionKey = "code_version";
 const std::string kError = "_error";  // the key of a coefficient's standard error: "a_error"
 
 // The coefficients of a law with a standard error, as the file names them: Eq. 7 has all four,
@@ -85,7 +85,7 @@ std::map<std::string, table::Estimate> estimates(const nlohmann::json& j, const 
 
 std::string fit_file_text(const FitFile& f) {
   json out;
-  out[kScene] = f.scene;
+  out[kSceneKey] = f.scene;
   out[kNormal] = law(f.normal, true);
   out[kTangential] = f.tangential ? law(*f.tangential, false) : json(nullptr);
   if (!f.tangential) out["tangential_reason"] = f.tangential_reason;
@@ -113,7 +113,7 @@ std::string fit_file_text(const FitFile& f) {
   out["models"] = {{"normal", "Fn = a dn^b + c for dn >= delta, 0 below (Eq. 7); delta = (-c/a)^(1/b)"},
                    {"tangential", "kt = a dn^b + c for dn >= delta, 0 below (Eq. 8); c = -a delta^b, delta from the normal fit"}};
   out[kProvenance] = {{"program", "softpack-fit"},
-                      {kCodeVersion, f.code_version},
+                      {kCodeVersionKey, f.code_version},
                       {"inputs", json::array({{{"path", f.input.path},
                                                {"scene", f.scene},
                                                {"profile", f.input.profile},
@@ -152,16 +152,16 @@ FitEstimates read_fit_file(const std::string& path) {
   }
   if (!j.is_object()) throw InputError(fmt::format("{}: expected a JSON object (a softpack-fit file)", path));
   FitEstimates out;
-  const auto scene = j.find(kScene);
-  if (scene == j.end() || !scene->is_string()) throw InputError(fmt::format("{}: {}: missing or not a string", path, kScene));
+  const auto scene = j.find(kSceneKey);
+  if (scene == j.end() || !scene->is_string()) throw InputError(fmt::format("{}: {}: missing or not a string", path, kSceneKey));
   out.scene = scene->get<std::string>();
   if (!j.contains(kNormal)) throw InputError(fmt::format("{}: {}: missing (the Eq. 7 fit of softpack-fit)", path, kNormal));
   out.normal = estimates(j.at(kNormal), fmt::format("{}: {}", path, kNormal), true);
   const auto tan = j.find(kTangential);
   if (tan != j.end() && !tan->is_null()) out.tangential = estimates(*tan, fmt::format("{}: {}", path, kTangential), false);
   const auto prov = j.find(kProvenance);
-  if (prov != j.end() && prov->is_object() && prov->contains(kCodeVersion) && prov->at(kCodeVersion).is_string())
-    out.code_version = prov->at(kCodeVersion).get<std::string>();
+  if (prov != j.end() && prov->is_object() && prov->contains(kCodeVersionKey) && prov->at(kCodeVersionKey).is_string())
+    out.code_version = prov->at(kCodeVersionKey).get<std::string>();
   if (prov != j.end() && prov->is_object() && prov->contains("seconds") && prov->contains("cpu_seconds") &&
       prov->at("seconds").is_number() && prov->at("cpu_seconds").is_number())
     out.time = Elapsed{prov->at("seconds").get<double>(), prov->at("cpu_seconds").get<double>()};

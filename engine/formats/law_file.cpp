@@ -6,13 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <nlohmann/json.hpp>
 #include <tuple>
 #include <utility>
 
 #include "core/error.hpp"
 #include "core/suggest.hpp"
+#include "core/types.hpp"
 #include "io/atomic_file.hpp"
 
 namespace softpack {
@@ -21,7 +21,6 @@ namespace {
 using json = nlohmann::ordered_json;
 using Keys = std::vector<std::string>;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kFormat = "softpack-laws";
 constexpr const char *kForce = "N", *kStiffness = "N/m", *kOne = "1", *kMetre = "m";
 const Keys kTopKeys = {"format", "version", "reference_radius", "models", "scenes", "mixing", "provenance"};

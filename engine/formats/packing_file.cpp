@@ -37,7 +37,7 @@ void each_parameter(P& p, F&& f) {
 
 // /provenance: f(dataset, member) for each field of the provenance.
 template <class V, class F>
-void each_provenance(V& v, F&& f) {
+void each_packing_provenance(V& v, F&& f) {
   f(kProgram, v.program);
   f("provenance/code_version", v.code_version);
   f("provenance/config_file", v.config_file);
@@ -95,7 +95,7 @@ void write_imported_packing_file(const std::string& path, const ImportRecord& re
   each_import_field(record, writer(f));
   put(f, "stats/inserted", radii.size());
   put_statistics(f, stats);
-  each_provenance(provenance, writer(f));
+  each_packing_provenance(provenance, writer(f));
   out.commit();
 }
 
@@ -114,7 +114,7 @@ void write_packing_file(const std::string& path, const PackingParameters& p, con
   put(f, "stats/grown", packing.grown);
   put_statistics(f, stats);
 
-  each_provenance(provenance, writer(f));
+  each_packing_provenance(provenance, writer(f));
   out.commit();
 }
 
@@ -164,7 +164,7 @@ PackingFile read_packing_file(const std::string& path) {
                                    "(/{} = {} m)",
                                    path, i, kCentres, i, kRadii, i, x.norm() + r, kShellRadius, out.Rs));
   }
-  each_provenance(v, reader(f));
+  each_packing_provenance(v, reader(f));
   return out;
 }
 

@@ -18,11 +18,11 @@ namespace {
 using namespace formats;
 
 // Both files: f(dataset, member) for each field of their PointProvenance.
-constexpr const char *kStage = "provenance/stage", *kScene = "provenance/scene";
+constexpr const char *kPointStage = "provenance/stage", *kPointScene = "provenance/scene";
 template <class P, class F>
 void each_provenance_field(P& p, F&& f) {
-  f(kStage, p.stage);
-  f(kScene, p.scene);
+  f(kPointStage, p.stage);
+  f(kPointScene, p.scene);
   f("provenance/config", p.config);
   f("provenance/code_version", p.code_version);
 }
@@ -30,7 +30,7 @@ void each_provenance_field(P& p, F&& f) {
 // --- The point file ---------------------------------------------------------------------------
 
 constexpr const char* kResult = "result";
-constexpr std::array kPointLayout{kResult, kStage};  // what makes a file a point file
+constexpr std::array kPointLayout{kResult, kPointStage};  // what makes a file a point file
 
 // /result: f(dataset, member) for each field of the PointResult but its checks, in the file's order.
 template <class R, class F>
@@ -165,7 +165,7 @@ std::vector<std::vector<SimulationState::WallSpring>> read_wall_springs(const h5
 // --- The results file -------------------------------------------------------------------------
 
 constexpr const char *kDeltaN = "delta_n", *kFn = "Fn", *kCheckPoint = "relaxation/checks/point";
-constexpr std::array kResultsLayout{kDeltaN, kFn, kStage};  // what makes a file a results file
+constexpr std::array kResultsLayout{kDeltaN, kFn, kPointStage};  // what makes a file a results file
 
 // The phases of a point's time (PointTiming), as columns timing/<phase>/{wall, cpu} [s].
 constexpr std::array<const char*, 3> kPhases{"loading", "relaxation", "output"};
@@ -234,7 +234,7 @@ void each_column(S& s, F&& f) {
 
 // f(dataset, member) for each provenance field of `s`.
 template <class S, class F>
-void each_provenance(S& s, F&& f) {
+void each_sweep_provenance(S& s, F&& f) {
   each_provenance_field(s.provenance, f);
   f("provenance/packings", s.packings);
   f("provenance/seed", s.seed);
@@ -298,7 +298,7 @@ PointFile read_point_file(const std::string& path, bool with_state) {
   each_provenance_field(p.provenance, reader(f));
   if (p.provenance.stage != "normal" && p.provenance.stage != "tangential" && p.provenance.stage != "sliding")
     throw InputError(
-        fmt::format("{}: /{}: '{}' is not allowed; allowed: normal, tangential, sliding", path, kStage, p.provenance.stage));
+        fmt::format("{}: /{}: '{}' is not allowed; allowed: normal, tangential, sliding", path, kPointStage, p.provenance.stage));
   each_result_field(p.result, reader(f));
   each_timing_field(p.result, reader(f));
   p.result.checks = read_checks(f);
@@ -321,7 +321,7 @@ PointFile read_point_file(const std::string& path, bool with_state) {
 }
 
 std::string describe_point_file(const h5::File& f) {
-  return has_layout(f, kPointLayout) ? "a sweep point file (a checkpoint of softpack-" + f.read_string(kStage) + ")" : "";
+  return has_layout(f, kPointLayout) ? "a sweep point file (a checkpoint of softpack-" + f.read_string(kPointStage) + ")" : "";
 }
 
 void write_sweep_results_file(const std::string& path, const std::vector<PointResult>& points, const PointProvenance& prov,
@@ -343,7 +343,7 @@ void write_sweep_results_file(const std::string& path, const std::vector<PointRe
   each_column(s, [&](const Column& c, const auto&) {
     if (c.description) f.set_attribute(c.name, "description", std::string(c.description));
   });
-  each_provenance(s, writer(f));
+  each_sweep_provenance(s, writer(f));
   put(f, kCpuSeconds, s.total_cpu_seconds);
   out.commit();
 }
@@ -353,17 +353,17 @@ SweepResults read_sweep_results_file(const std::string& path, const std::string&
   expect_layout(f, "sweep results", kResultsLayout);
   SweepResults s;
   s.path = path;
-  each_provenance(s, reader(f));
+  each_sweep_provenance(s, reader(f));
   // The timings (release 0.4.0 on): all of them or none.
   s.has_timing = f.exists(kReused);
   if (s.has_timing) get(f, kCpuSeconds, s.total_cpu_seconds);
   s.has_overlap = f.exists(kOverlap);  // release 0.5.0 on
   if (!stage.empty() && s.provenance.stage != stage)
     throw InputError(
-        fmt::format("{}: /{}: these are {} results, {} ones are expected here", path, kStage, s.provenance.stage, stage));
+        fmt::format("{}: /{}: these are {} results, {} ones are expected here", path, kPointStage, s.provenance.stage, stage));
   if (!scene.empty() && s.provenance.scene != scene)
     throw InputError(
-        fmt::format("{}: /{}: these are results of the {} scene, not of {}", path, kScene, s.provenance.scene, scene));
+        fmt::format("{}: /{}: these are results of the {} scene, not of {}", path, kPointScene, s.provenance.scene, scene));
   each_column(s, [&](const Column& c, auto& column) {
     if (c.since == Since::release_0_4 && !s.has_timing) return;
     if (c.since == Since::release_0_5 && !s.has_overlap) return;
@@ -379,7 +379,7 @@ SweepResults read_sweep_results_file(const std::string& path, const std::string&
 
 std::string describe_sweep_results_file(const h5::File& f) {
   if (!has_layout(f, kResultsLayout)) return "";
-  const std::string stage = f.read_string(kStage);
+  const std::string stage = f.read_string(kPointStage);
   return "a " + stage + " sweep results file (softpack-" + stage + ")";
 }
 

@@ -7,13 +7,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <map>
 #include <tuple>
 
 #include "analysis/average.hpp"
 #include "analysis/power_fit.hpp"
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "formats/sweep_file.hpp"
 #include "io/atomic_file.hpp"
 #include "report/stage_timing.hpp"
@@ -21,9 +21,6 @@
 
 namespace softpack {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-const std::vector<std::string> kScenes{"soft-solid", "soft-soft"};
 
 using Seeds = std::vector<std::uint64_t>;
 
@@ -39,7 +36,7 @@ using Runs = StudyRuns;
 
 std::vector<std::string> names(const AccuracyStudy& st) {
   std::vector<std::string> n;
-  for (const auto& scene : kScenes) {
+  for (const auto& scene : kStudyScenes) {
     for (const char* k : {"a", "b", "c", "delta"}) n.push_back(fmt::format("{} normal {}", scene, k));
     for (const char* k : {"a", "b", "c"}) n.push_back(fmt::format("{} tangential {}", scene, k));
     for (double d : st.Fn_delta_n) n.push_back(fmt::format("{} Fn({})", scene, d));
@@ -118,7 +115,7 @@ std::vector<Quantity> measure(const AccuracyStudy& st, Runs& runs, const std::st
 // setting measures.
 double median_residual(Runs& runs, const std::string& folder, const Seeds& seeds) {
   std::vector<double> ratios;
-  for (const auto& scene : kScenes)
+  for (const auto& scene : kStudyScenes)
     for (std::uint64_t s : seeds) {
       const SweepResults& r = runs.results(folder, "normal", scene, s);
       const double top = *std::max_element(r.Fn.begin(), r.Fn.end());

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <span>
 #include <stdexcept>
 
@@ -16,6 +15,7 @@
 #include "analysis/power_fit.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "io/atomic_file.hpp"
 #include "report/stage_timing.hpp"
 #include "report/study_runs.hpp"
@@ -23,8 +23,6 @@
 namespace softpack {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-const std::vector<std::string> kScenes{"soft-solid", "soft-soft"};
 using Seeds = std::vector<std::uint64_t>;
 
 // Two grains (or a grain and its shell) are in contact after growth when their gap is below this
@@ -33,7 +31,7 @@ constexpr double kTouchingGap = 1e-9;
 
 std::vector<std::string> quantity_names(const AccuracyStudy& st) {
   std::vector<std::string> n{"solid fraction", "coordination after growth", "grains"};
-  for (const auto& scene : kScenes) {
+  for (const auto& scene : kStudyScenes) {
     for (const char* k : {"delta", "a", "b", "b fixed range"}) n.push_back(fmt::format("{} {}", scene, k));
     for (double d : st.Fn_delta_n) n.push_back(fmt::format("{} Fn({})", scene, d));
     for (double d : st.kt_delta_n) n.push_back(fmt::format("{} kt({})", scene, d));
@@ -94,7 +92,7 @@ std::vector<double> measure(const AccuracyStudy& st, StudyRuns& runs, const std:
     q.push_back(mean_error(*v).mean);
     note("");
   }
-  for (const auto& scene : kScenes) {
+  for (const auto& scene : kStudyScenes) {
     const fit::FitOptions options = section.options_for(scene);
     std::vector<SweepColumns> normal, tangential;
     std::vector<double> at_zero, at_onset;
@@ -293,10 +291,10 @@ std::string write_calibration_report(const CalibrationReport& r, const std::stri
                                              : "failed: " + row.failed);
   // The columns of each table: packings and onsets; then each scene's law.
   std::vector<std::string> onset{"solid fraction", "coordination after growth", "grains"};
-  for (const auto& scene : kScenes)
+  for (const auto& scene : kStudyScenes)
     for (const char* k : {"delta", "contacts per grain at 0", "contacts per grain at onset"}) onset.push_back(scene + " " + k);
   md += "\n## Packings and onsets\n\n" + table(r, onset);
-  for (const auto& scene : kScenes) {
+  for (const auto& scene : kStudyScenes) {
     std::vector<std::string> cols;
     for (const auto& q : r.quantities)
       if (q.rfind(scene + " ", 0) == 0 && q.find("contacts") == std::string::npos) cols.push_back(q);

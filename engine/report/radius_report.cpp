@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 
 #include "analysis/average.hpp"
 #include "analysis/fit_options.hpp"
 #include "analysis/power_fit.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "measure/settings.hpp"
 #include "packing/packing_profile.hpp"
 #include "report/study_runs.hpp"
@@ -19,7 +19,6 @@
 namespace softpack {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 using Seeds = std::vector<std::uint64_t>;
 
 struct SettingInfo {

@@ -8,15 +8,13 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 
+#include "core/types.hpp"
 #include "io/atomic_file.hpp"
 #include "report/radius_report.hpp"
 
 namespace softpack {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string pm(const RadiusValue& v) {
   if (!std::isfinite(v.value)) return "–";

@@ -19,6 +19,9 @@
 
 namespace softpack {
 
+/// The two scenes of a study's runs.
+inline const std::vector<std::string> kStudyScenes{"soft-solid", "soft-soft"};
+
 inline std::string sweep_path(const std::string& dir, const std::string& setting, const std::string& stage,
                               const std::string& scene, std::uint64_t seed) {
   return fmt::format("{}/{}/{}/{}-seed-{}.h5", dir, setting, stage, scene, seed);
@@ -45,7 +48,7 @@ inline TimingInputs study_files(const std::string& dir, const std::string& setti
   TimingInputs in;
   for (std::uint64_t s : seeds) {
     in.packings.push_back(packing_path(dir, setting, s));
-    for (const char* scene : {"soft-solid", "soft-soft"}) {
+    for (const std::string& scene : kStudyScenes) {
       in.normal.push_back(sweep_path(dir, setting, "normal", scene, s));
       in.tangential.push_back(sweep_path(dir, setting, "tangential", scene, s));
     }

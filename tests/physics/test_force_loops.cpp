@@ -20,7 +20,7 @@
 namespace softpack {
 namespace {
 
-constexpr double kTolerance = 1e-12;  // relative to the largest value; only rounding differs
+constexpr double kLoopTolerance = 1e-12;  // relative to the largest value; only rounding differs
 
 struct Case {
   World world;
@@ -187,11 +187,11 @@ double largest(const std::vector<Vec3>& v) {
   return m;
 }
 
-// |a - b| <= kTolerance max(|a|, floor) element by element.
+// |a - b| <= kLoopTolerance max(|a|, floor) element by element.
 void expect_close(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const std::string& what, double floor = 1e-300) {
   ASSERT_EQ(a.size(), b.size()) << what;
   const double scale = std::max(largest(a), floor);
-  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_LE((a[k] - b[k]).norm(), kTolerance * scale) << what << " " << k;
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_LE((a[k] - b[k]).norm(), kLoopTolerance * scale) << what << " " << k;
 }
 
 class ForceLoops : public ::testing::TestWithParam<std::size_t> {};
@@ -244,7 +244,7 @@ class IsaPaths : public ::testing::TestWithParam<std::size_t> {};
 
 TEST_P(IsaPaths, EveryInstructionSetGivesTheSameBits) {
   const Effects fx = testing::effects_of(GetParam());
-  if (cpu::best_vector_isa() == cpu::VectorIsa::portable) GTEST_SKIP() << "this processor runs the portable loops only";
+  if (cpu::best_vector_isa() == cpu::VectorIsa::portable) GTEST_SKIP() << "this processor (or this build, without SOFTPACK_AVX512) runs the portable loops only";
   const std::vector<cpu::VectorIsa> isas{cpu::VectorIsa::portable, cpu::VectorIsa::avx512};
   std::vector<Case> cases(isas.size(), random_case(fx.friction, fx.rotation));
   const auto loops = normal_law("hertz").loops(fx);

@@ -10,7 +10,7 @@
 namespace softpack {
 namespace {
 
-constexpr double kTolerance = 1e-9;  // relative; only rounding separates code and formula
+constexpr double kFormulaTolerance = 1e-9;  // relative; only rounding separates code and formula
 
 // A sphere held at a fixed overlap h on a plane that is dragged tangentially along x by the
 // path `moves` (signed distances). Returns (wall displacement, tangential force on the wall).
@@ -63,7 +63,7 @@ TEST(TangentialSpring, DragFollowsEquation5ThenSlidesAtCoulombAndUnloadsElastica
       ++sticking;
     }
     const double expected = -kt * spring;
-    EXPECT_NEAR(Ft, expected, kTolerance * m.mu * Fn) << "wall at x = " << x;
+    EXPECT_NEAR(Ft, expected, kFormulaTolerance * m.mu * Fn) << "wall at x = " << x;
     EXPECT_LE(std::abs(Ft), m.mu * Fn * (1 + 1e-12));
   }
   EXPECT_GT(sliding, 50);
@@ -121,8 +121,8 @@ TEST_P(RigidRotation, OfALoadedContactKeepsItsForce) {
     while (sim.drivers_moving()) sim.step();
     sim.step();
     const auto [Fn, Ft] = normal_and_tangential();
-    EXPECT_NEAR(Fn, Fn0, kTolerance * Fn0);
-    EXPECT_NEAR(Ft, Ft0, kTolerance * Ft0) << "axis " << axis.transpose();
+    EXPECT_NEAR(Fn, Fn0, kFormulaTolerance * Fn0);
+    EXPECT_NEAR(Ft, Ft0, kFormulaTolerance * Ft0) << "axis " << axis.transpose();
   }
 }
 

@@ -15,15 +15,13 @@ namespace softpack {
 namespace {
 
 using testing::TempDir;
-const ConfigNode& profile() { return testing::sweep_profile(); }
-SweepContext context(const ContactSetup& setup, const std::string& dir) { return testing::sweep_context(setup, dir); }
 
 // A solid sphere of radius Rs held at the origin, pressed into the wall to delta_n = 0.02, the
 // wall then moved along +y: the Tsuji spring grows until it reaches mu Fn (Eq. 5's cap) and the
 // contact slides there: Ft / Fn = mu = 0.3 (the profile's material) once it slides, below before.
 TEST(SlidingSweep, ASolidSphereOnAWallSlidesAtTheCoulombLimit) {
   TempDir tmp("coulomb");
-  SweepContext c = context(hertz_check_setup(0.016, parse_measurement(profile()).simulation), tmp / "n");
+  SweepContext c = testing::sweep_context(hertz_check_setup(0.016, parse_measurement(testing::sweep_profile()).simulation), tmp / "n");
   c.settings.normal.delta_n = {0.0, 0.01, 0.02};
   ASSERT_EQ(run_normal_sweep(c).size(), 3u);
   SweepContext s = c;
@@ -55,9 +53,9 @@ TEST(SlidingSweep, ASolidSphereOnAWallSlidesAtTheCoulombLimit) {
 // limit (docs/radius.md).
 TEST(NormalSweep, AtFixedDeltaNTheChainScalesASolidSphereAsRSquared) {
   TempDir tmp("scaling");
-  const SimulationSettings sim = parse_measurement(profile()).simulation;
-  SweepContext small = context(hertz_check_setup(0.016, sim), tmp / "small");
-  SweepContext large = context(hertz_check_setup(0.032, sim), tmp / "large");
+  const SimulationSettings sim = parse_measurement(testing::sweep_profile()).simulation;
+  SweepContext small = testing::sweep_context(hertz_check_setup(0.016, sim), tmp / "small");
+  SweepContext large = testing::sweep_context(hertz_check_setup(0.032, sim), tmp / "large");
   const auto f1 = run_normal_sweep(small), f2 = run_normal_sweep(large);
   ASSERT_EQ(f1.size(), f2.size());
   for (std::size_t k = 0; k < f1.size(); ++k) {
@@ -71,8 +69,8 @@ TEST(NormalSweep, AtFixedDeltaNTheChainScalesASolidSphereAsRSquared) {
 // distance 2 Rs - hn (the contact its depth), turned by the recorded angle ht / Rs.
 TEST(SlidingSweep, TheSecondSoftParticleOrbitsAtAFixedDistance) {
   TempDir tmp("orbit");
-  const SimulationSettings sim = parse_measurement(profile()).simulation;
-  SweepContext c = context(soft_soft_setup(testing::sweep_packing(1), testing::sweep_packing(2), sim), tmp / "n");
+  const SimulationSettings sim = parse_measurement(testing::sweep_profile()).simulation;
+  SweepContext c = testing::sweep_context(soft_soft_setup(testing::sweep_packing(1), testing::sweep_packing(2), sim), tmp / "n");
   c.settings.normal.delta_n = {0.0, 0.5};
   ASSERT_EQ(run_normal_sweep(c).size(), 2u);
   SweepContext s = c;
@@ -96,7 +94,7 @@ TEST(SlidingSweep, TheSecondSoftParticleOrbitsAtAFixedDistance) {
 
 // normal.second_radius_ratio: the second packing scaled by k, its shell touching the first.
 TEST(ContactScenes, AMixedSoftSoftSceneScalesTheSecondPacking) {
-  const SimulationSettings sim = parse_measurement(profile()).simulation;
+  const SimulationSettings sim = parse_measurement(testing::sweep_profile()).simulation;
   const PackingFile a = testing::sweep_packing(1), b = testing::sweep_packing(2);
   const ContactSetup s = soft_soft_setup(a, b, sim, 0.5);
   ASSERT_EQ(s.scene.shells.size(), 2u);

@@ -11,16 +11,14 @@ namespace softpack {
 namespace {
 
 using testing::TempDir;
-const ConfigNode& profile() { return testing::sweep_profile(); }
 PackingFile packing(std::uint64_t seed) { return testing::sweep_packing(seed); }
-SweepContext context(const ContactSetup& setup, const std::string& dir) { return testing::sweep_context(setup, dir); }
 
 // With the soft-particle replaced by one solid sphere of radius Rs, the whole chain (loading,
 // relaxation, force measurement) must give Hertz's law for a sphere on a wall, Eq. 3:
 // Fn = sqrt(Rs) hn^(3/2) / D, R12 = Rs.
 TEST(NormalSweep, TheChainMeasuresHertz) {
   TempDir tmp("hertz");
-  SweepContext c = context(hertz_check_setup(0.016, parse_measurement(profile()).simulation), tmp / "n");
+  SweepContext c = testing::sweep_context(hertz_check_setup(0.016, parse_measurement(testing::sweep_profile()).simulation), tmp / "n");
   const auto points = run_normal_sweep(c);
   const Material& m = c.settings.simulation.material;
   const double D = 0.75 * 2.0 * (1 - m.nu * m.nu) / m.E;  // Eq. 4, wall of the same material
@@ -39,10 +37,10 @@ TEST(NormalSweep, TheChainMeasuresHertz) {
 // D = 3/4 ((1 - nu^2) / E + (1 - nu'^2) / E').
 TEST(NormalSweep, TheChainMeasuresHertzOnAWallOfAnotherMaterial) {
   TempDir tmp("hertz-wall");
-  SimulationSettings s = parse_measurement(profile()).simulation;
+  SimulationSettings s = parse_measurement(testing::sweep_profile()).simulation;
   s.wall_material.E = 20.0 * s.material.E;
   s.wall_material.nu = 0.45;
-  SweepContext c = context(hertz_check_setup(0.016, s), tmp / "n");
+  SweepContext c = testing::sweep_context(hertz_check_setup(0.016, s), tmp / "n");
   c.settings.simulation = s;
   const auto points = run_normal_sweep(c);
   const Material &m = s.material, &w = s.wall_material;
@@ -56,9 +54,9 @@ TEST(NormalSweep, TheChainMeasuresHertzOnAWallOfAnotherMaterial) {
 TEST(NormalSweep, NoForceAtContactAndSoftSoftIsBalanced) {
   TempDir tmp("balance");
   const PackingFile a = packing(1), b = packing(2);
-  const auto settings = parse_measurement(profile());
+  const auto settings = parse_measurement(testing::sweep_profile());
   for (const ContactSetup& setup : {soft_solid_setup(a, settings.simulation), soft_soft_setup(a, b, settings.simulation)}) {
-    const auto points = run_normal_sweep(context(setup, tmp / scene_name(setup.kind)));
+    const auto points = run_normal_sweep(testing::sweep_context(setup, tmp / scene_name(setup.kind)));
     EXPECT_LT(points.front().force.norm(), 1e-15) << scene_name(setup.kind) << ": force at hn = 0";
     const PointResult& last = points.back();
     ASSERT_GT(last.force.x(), 0.0) << scene_name(setup.kind) << ": no repulsion at the deepest point";
@@ -80,7 +78,7 @@ TEST(TangentialSweep, OppositeAnglesGiveOppositeForcesOnAMirrorSymmetricScene) {
   one.Rs = 0.016;
   one.centres = {Vec3::Zero()};
   one.radii = {0.9 * one.Rs};
-  SweepContext c = context(soft_solid_setup(one, parse_measurement(profile()).simulation), tmp / "n");
+  SweepContext c = testing::sweep_context(soft_solid_setup(one, parse_measurement(testing::sweep_profile()).simulation), tmp / "n");
   c.settings.normal.delta_n = {0.0, 0.15};
   c.settings.tangential.delta_n = {0.15};
   c.settings.tangential.alpha_deg = {-0.5, 0.0, 0.5};
@@ -114,14 +112,14 @@ bool same_results(const std::vector<PointResult>& a, const std::vector<PointResu
 TEST(Sweeps, ResumeAfterAnInterruptionGivesIdenticalResults) {
   TempDir tmp("resume");
   const PackingFile a = packing(1);
-  const auto settings = parse_measurement(profile());
+  const auto settings = parse_measurement(testing::sweep_profile());
   const ContactSetup setup = soft_solid_setup(a, settings.simulation);
-  const auto straight = run_normal_sweep(context(setup, tmp / "straight"));
-  SweepContext ts = context(setup, tmp / "straight-t");
+  const auto straight = run_normal_sweep(testing::sweep_context(setup, tmp / "straight"));
+  SweepContext ts = testing::sweep_context(setup, tmp / "straight-t");
   const auto straight_t = run_tangential_sweep(ts, tmp / "straight");
   for (std::size_t stop = 1; stop < settings.normal.delta_n.size(); ++stop) {
     const std::string dir = tmp / ("stop-" + std::to_string(stop));
-    SweepContext c = context(setup, dir);
+    SweepContext c = testing::sweep_context(setup, dir);
     c.stop_after = stop;
     EXPECT_TRUE(run_normal_sweep(c).empty());
     c.stop_after = 0;
@@ -143,7 +141,7 @@ TEST(Sweeps, ResumeAfterAnInterruptionGivesIdenticalResults) {
       EXPECT_EQ(f.result.timing.output.wall, r.timing.output.wall) << k;
     }
   }
-  SweepContext t = context(setup, tmp / "t");
+  SweepContext t = testing::sweep_context(setup, tmp / "t");
   t.stop_after = 2;
   EXPECT_TRUE(run_tangential_sweep(t, tmp / "straight").empty());
   t.stop_after = 0;

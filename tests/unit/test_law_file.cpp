@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "formats/law_file.hpp"
 
 namespace {
@@ -22,7 +23,6 @@ namespace {
 using namespace softpack;
 using json = nlohmann::ordered_json;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct TempDir {  // as tests/support/sweep_fixture.hpp
   std::filesystem::path path;

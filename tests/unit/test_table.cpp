@@ -3,17 +3,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 #include "analysis/fit_table.hpp"
 #include "analysis/kt_unit.hpp"
+#include "core/types.hpp"
 
 namespace {
 
 using namespace softpack::table;
+using softpack::kNaN;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 TEST(FitTable, ValueAndErrorShareTheErrorsTwoSignificantDigits) {
   EXPECT_EQ(format_estimate_markdown({73.669, 1.234}), "73.7 ± 1.2");
