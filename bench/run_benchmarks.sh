@@ -22,7 +22,7 @@ repeats="${BENCH_REPEATS:-3}"
 engine="$build/bench/bench_engine"
 scene="$build/bench/softpack-bench-scene"
 packing="$build/bench/confined-5000.txt"
-for exe in "$engine" "$scene"; do [ -x "$exe" ] || die "$exe missing: build first (make build)"; done
+for exe in "$engine" "$scene"; do [ -x "$exe" ] || die "$exe missing: make bench builds it"; done
 
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT

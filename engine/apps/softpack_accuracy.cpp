@@ -33,8 +33,9 @@
 #include "report/fast_check.hpp"
 #include "report/radius_report.hpp"
 
+namespace softpack::apps::accuracy_app {
+
 int main(int argc, char** argv) {
-  using namespace softpack;
   CLI::App app{"softpack-accuracy: the fidelity study, what each knob of a measurement buys and costs (docs/accuracy.md)"};
   app.require_subcommand(1);
   std::string study_path, out_dir, data_dir, title = "Accuracy against cost";
@@ -112,3 +113,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-accuracy");
   }
 }
+
+}  // namespace softpack::apps::accuracy_app

@@ -15,9 +15,8 @@
 #include "io/atomic_file.hpp"
 #include "packing/apollonian.hpp"
 
+namespace softpack::apps::apollonian_app {
 namespace {
-
-using namespace softpack;
 using Clock = std::chrono::steady_clock;
 
 std::string header(const ApollonianOptions& o, const ApollonianPacking& p, double seconds) {
@@ -80,3 +79,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-apollonian");
   }
 }
+
+}  // namespace softpack::apps::apollonian_app

@@ -15,8 +15,9 @@
 #include "formats/average_file.hpp"
 #include "formats/sweep_file.hpp"
 
+namespace softpack::apps::average_app {
+
 int main(int argc, char** argv) {
-  using namespace softpack;
   CLI::App app{"softpack-average: average the sweep results of one scene over the seeds"};
   AverageProvenance p;
   std::string out_dir;
@@ -61,3 +62,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-average");
   }
 }
+
+}  // namespace softpack::apps::average_app

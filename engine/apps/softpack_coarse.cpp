@@ -23,7 +23,7 @@
 #include "core/version.hpp"
 #include "formats/law_file.hpp"
 
-namespace softpack {
+namespace softpack::apps::coarse_app {
 namespace {
 
 struct RunOptions {
@@ -90,10 +90,8 @@ int run(const RunOptions& o, const std::string& program) {
 }
 
 }  // namespace
-}  // namespace softpack
 
 int main(int argc, char** argv) {
-  using namespace softpack;
   const std::string program = "softpack-coarse";
   CLI::App app{"softpack-coarse: the coarse-grain validation: a two-decade medium compressed resolved and with soft-particles"};
   app.require_subcommand(1);
@@ -161,3 +159,5 @@ int main(int argc, char** argv) {
     return exit_on_error(program);
   }
 }
+
+}  // namespace softpack::apps::coarse_app

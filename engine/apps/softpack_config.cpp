@@ -24,8 +24,9 @@
 #include "measure/settings.hpp"
 #include "packing/packing_profile.hpp"
 
+namespace softpack::apps::config_app {
+
 int main(int argc, char** argv) {
-  using namespace softpack;
   CLI::App app{"softpack-config: the seeds, scenes, sections and stamps of a profile, as the stages read it"};
   app.require_subcommand(1);
   std::string profile, stage, release = release_version();
@@ -74,3 +75,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-config");
   }
 }
+
+}  // namespace softpack::apps::config_app

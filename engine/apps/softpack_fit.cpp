@@ -20,8 +20,9 @@
 #include "formats/average_file.hpp"
 #include "formats/fit_file.hpp"
 
+namespace softpack::apps::fit_app {
+
 int main(int argc, char** argv) {
-  using namespace softpack;
   CLI::App app{"softpack-fit: fit Eq. 7 to the normal force and Eq. 8 to the tangential spring constant of one scene"};
   std::string average_path, out_path, gnuplot_path, config_path;
   bool quiet = false;
@@ -106,3 +107,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-fit");
   }
 }
+
+}  // namespace softpack::apps::fit_app

@@ -19,8 +19,9 @@
 #include "packing/packing_profile.hpp"
 #include "packing/statistics.hpp"
 
+namespace softpack::apps::import_app {
+
 int main(int argc, char** argv) {
-  using namespace softpack;
   CLI::App app{
       "softpack-import: import the packing of one seed from another program (LAMMPS data file with atom_style sphere, "
       "extended XYZ, or x y z r text), as the profile's packing.import section says (docs/import.md)"};
@@ -85,3 +86,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-import");
   }
 }
+
+}  // namespace softpack::apps::import_app

@@ -2,4 +2,8 @@
 // measure/sweeps.hpp for what it does and docs/measurement.md for the choices.
 #include "apps/stage_cli.hpp"
 
+namespace softpack::apps::normal_app {
+
 int main(int argc, char** argv) { return softpack::stage_main(argc, argv, "normal"); }
+
+}  // namespace softpack::apps::normal_app

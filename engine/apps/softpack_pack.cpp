@@ -18,8 +18,9 @@
 #include "io/particle_export.hpp"
 #include "packing/statistics.hpp"
 
+namespace softpack::apps::pack_app {
+
 int main(int argc, char** argv) {
-  using namespace softpack;
   CLI::App app{"softpack-pack: generate the soft-particle packing of one seed (paper §3)"};
   std::string config_path, out_path, vtp_path, xyz_path;
   long long seed = -1;
@@ -87,3 +88,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-pack");
   }
 }
+
+}  // namespace softpack::apps::pack_app

@@ -19,9 +19,8 @@
 #include "io/atomic_file.hpp"
 #include "packing/statistics.hpp"
 
+namespace softpack::apps::packing_study_app {
 namespace {
-
-using namespace softpack;
 
 struct Row {
   std::string parameter;
@@ -135,3 +134,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-packing-study");
   }
 }
+
+}  // namespace softpack::apps::packing_study_app

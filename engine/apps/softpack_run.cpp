@@ -20,9 +20,8 @@
 #include "scene/validate.hpp"
 #include "sim/simulation.hpp"
 
+namespace softpack::apps::run_app {
 namespace {
-
-using namespace softpack;
 using Clock = std::chrono::steady_clock;
 using json = nlohmann::json;
 
@@ -142,3 +141,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-run");
   }
 }
+
+}  // namespace softpack::apps::run_app

@@ -13,8 +13,9 @@
 #include "formats/packing_file.hpp"
 #include "io/atomic_file.hpp"
 
+namespace softpack::apps::section_app {
+
 int main(int argc, char** argv) {
-  using namespace softpack;
   CLI::App app{"softpack-section: circles cut from a packing by the plane z = offset (Figure 2)"};
   std::string packing_path, out_path;
   double offset = 0.0;
@@ -46,3 +47,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-section");
   }
 }
+
+}  // namespace softpack::apps::section_app

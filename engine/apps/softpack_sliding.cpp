@@ -3,4 +3,8 @@
 // docs/radius.md for the choices.
 #include "apps/stage_cli.hpp"
 
+namespace softpack::apps::sliding_app {
+
 int main(int argc, char** argv) { return softpack::stage_main(argc, argv, "sliding"); }
+
+}  // namespace softpack::apps::sliding_app

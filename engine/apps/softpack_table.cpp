@@ -21,9 +21,8 @@
 #include "formats/fit_file.hpp"
 #include "io/atomic_file.hpp"
 
+namespace softpack::apps::table_app {
 namespace {
-
-using namespace softpack;
 
 /// The published coefficients of one scene in `table` ("table1" or "table2") into `column`,
 /// with their digits as written in the file.
@@ -157,3 +156,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-table");
   }
 }
+
+}  // namespace softpack::apps::table_app

@@ -9,8 +9,9 @@
 #include "apps/exit_codes.hpp"
 #include "io/atomic_file.hpp"
 
+namespace softpack::apps::timing_app {
+
 int main(int argc, char** argv) {
-  using namespace softpack;
   CLI::App app{"softpack-timing: the wall-clock and CPU time of a profile's outputs, per stage and phase"};
   TimingInputs in;
   std::string title = "Time of the run", json_path;
@@ -33,3 +34,5 @@ int main(int argc, char** argv) {
     return exit_on_error("softpack-timing");
   }
 }
+
+}  // namespace softpack::apps::timing_app

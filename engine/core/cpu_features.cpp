@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <atomic>
 
+#include "softpack_build.hpp"
+
 namespace softpack::cpu {
 namespace {
 
 std::atomic<int> limit{static_cast<int>(VectorIsa::avx512)};
 
 VectorIsa detect() {
+  if constexpr (!build::kAvx512Loops) return VectorIsa::portable;  // the build has no AVX-512 loops
   __builtin_cpu_init();  // may run before the library's own initialisation
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
       __builtin_cpu_supports("avx512dq"))

@@ -8,11 +8,11 @@ namespace softpack::cpu {
 
 enum class VectorIsa { portable = 0, avx512 = 1 };
 
-/// The best the processor offers, within the limit set by limit_vector_isa().
+/// The best the processor and the build offer, within the limit set by limit_vector_isa().
 VectorIsa vector_isa();
 /// Runs the loops with at most `isa` (tests); VectorIsa::avx512 restores what the processor offers.
 void limit_vector_isa(VectorIsa isa);
-/// What the processor offers.
+/// What the processor offers (portable in a build without AVX-512 loops, CMakeLists.txt).
 VectorIsa best_vector_isa();
 const char* name(VectorIsa isa);
 

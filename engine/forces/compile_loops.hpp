@@ -5,7 +5,8 @@
 //   AVX-512 (x86-64-v4)   simd::Avx512 data movement, eight lanes in one register
 //   baseline              portable data movement, the release flags' x86-64-v2
 //
-// chosen at run time (core/cpu_features.hpp); both give the same bits. One step of a world is:
+// chosen at run time (core/cpu_features.hpp); both give the same bits. A build without
+// SOFTPACK_AVX512 (the sanitizer's, CMakeLists.txt) compiles the baseline only. One step of a world is:
 // sphere pairs, then each plane, then each shell, each through forces/contact_loop.hpp.
 #pragma once
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "forces/normal_law.hpp"
 #include "forces/pair_contacts.hpp"
 #include "forces/wall_contacts.hpp"
+#include "softpack_build.hpp"
 
 namespace softpack {
 namespace loops {
@@ -68,12 +70,14 @@ template <class Law, Effects Fx>
 class LoopsOf final : public ForceLoops {
  public:
   void run(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) const override {
-    if (cpu::vector_isa() == cpu::VectorIsa::avx512) return all_contacts_avx512<Law, Fx>(world, lists, dt, closed);
+    if constexpr (build::kAvx512Loops)
+      if (cpu::vector_isa() == cpu::VectorIsa::avx512) return all_contacts_avx512<Law, Fx>(world, lists, dt, closed);
     all_contacts_portable<Law, Fx>(world, lists, dt, closed);
   }
   void add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T,
                        std::vector<std::int32_t>& closed) const override {
-    if (cpu::vector_isa() == cpu::VectorIsa::avx512) return masked_pairs_avx512<Law, Fx>(world, pairs, mask, sign, F, T, closed);
+    if constexpr (build::kAvx512Loops)
+      if (cpu::vector_isa() == cpu::VectorIsa::avx512) return masked_pairs_avx512<Law, Fx>(world, pairs, mask, sign, F, T, closed);
     masked_pairs<Law, Fx>(simd::Portable{}, world, pairs, mask, sign, F, T, closed);
   }
 };
