@@ -114,7 +114,11 @@ test-sanitize:  ## the tests of our C++ under AddressSanitizer + UndefinedBehavi
 	  -DSOFTPACK_SANITIZE=ON -DSOFTPACK_BENCH=OFF -DSOFTPACK_AVX512=OFF \
 	  $(if $(filter true,$(CI)),-DSOFTPACK_WERROR=ON)
 	cmake --build $(BUILD_SANITIZE) -j $(JOBS)
-	cd $(BUILD_SANITIZE) && ctest --output-on-failure -j $(JOBS) -LE "$(SANITIZE_SKIPS)"
+	cd $(BUILD_SANITIZE) && ctest --output-on-failure -j $(JOBS) $(if $(SANITIZE_SKIPS),-LE "$(SANITIZE_SKIPS)")
+
+.PHONY: test-all
+test-all: test  ## on demand: make test, then every label under the sanitizers too (tests/README.md)
+	@$(MAKE) --no-print-directory test-sanitize SANITIZE_SKIPS=
 
 bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side by side
 	@MAKEFLAGS= cmake --build $(BUILD) -j $(JOBS) --target softpack_bench >> $(BUILD)/build.log 2>&1 \
@@ -138,7 +142,7 @@ verify:  ## check every archived file against MANIFEST.sha256 (ARCHIVES=dir... f
 CONFIG_TOOL := $(BUILD)/engine/softpack-config
 # Goals that need no profile: they must work with tools of an older checkout, which may refuse
 # the current profile (make build is what updates them).
-NO_PROFILE_GOALS := build build-tools setup help clean test test-sanitize bench verify
+NO_PROFILE_GOALS := build build-tools setup help clean test test-sanitize test-all bench verify
 PROFILE_GOALS := $(if $(MAKECMDGOALS),$(filter-out $(NO_PROFILE_GOALS),$(MAKECMDGOALS)),help)
 ifeq ($(PROFILE_GOALS),)
 # build, setup, test... only: the pipeline's rules are not read.

@@ -30,31 +30,46 @@ damaged() {
   exit 2
 }
 
-sum_of() { sha256sum -- "$1" | cut -c1-64; }
-
-# listed_sum ARCHIVE PATH: the manifest's sum of PATH ("" when it is not listed).
-listed_sum() {
-  awk -v p="$2" 'substr($0, 67) == p { print substr($0, 1, 64); exit }' "$1/MANIFEST.sha256"
+# The manifest of the archive being checked, read once (load_manifest ARCHIVE): listed[PATH] is
+# its SHA-256 of PATH. Sums are taken in one sha256sum call for all the files a check needs
+# (sums_of FILE...: sum[FILE]), which keeps `make tables` from an archive quick (a call per file
+# and per lookup made it several seconds).
+declare -A listed=() sum=()
+load_manifest() {
+  listed=()
+  local line
+  while IFS= read -r line || [[ -n $line ]]; do
+    [[ ${#line} -gt 66 && -z ${listed[${line:66}]+x} ]] && listed[${line:66}]=${line:0:64}
+  done < "$1/MANIFEST.sha256"
+}
+sums_of() {
+  sum=()
+  local existing=() f line
+  for f in "$@"; do [[ -f $f ]] && existing+=("$f"); done
+  [[ ${#existing[@]} -gt 0 ]] || return 0
+  while IFS= read -r line; do sum[${line:66}]=${line:0:64}; done < <(sha256sum -- "${existing[@]}")
 }
 
-# check_manifest ARCHIVE: the manifest is the one dataset.bib (the citation) names.
+# check_manifest ARCHIVE: the manifest is the one dataset.bib (the citation) names (its sum in
+# sum[], sums_of).
 check_manifest() {
-  local archive=$1 cited actual
+  local archive=$1 cited= bib= pattern='MANIFEST\.sha256 SHA-256 \{([0-9a-f]{64})\}'
   [[ -f $archive/dataset.bib ]] || { problem "$archive" "$archive/dataset.bib is missing (it cites the SHA-256 of MANIFEST.sha256)"; return; }
-  cited=$(sed -n 's/.*MANIFEST.sha256 SHA-256 {\([0-9a-f]\{64\}\)}.*/\1/p' "$archive/dataset.bib")
+  IFS= read -r -d '' bib < "$archive/dataset.bib" || true
+  [[ $bib =~ $pattern ]] && cited=${BASH_REMATCH[1]}
   [[ -n $cited ]] || { problem "$archive" "$archive/dataset.bib cites no SHA-256 of MANIFEST.sha256"; return; }
-  actual=$(sum_of "$archive/MANIFEST.sha256")
+  local actual=${sum[$archive/MANIFEST.sha256]:-}
   [[ $cited == "$actual" ]] ||
     problem "$archive" "$archive/MANIFEST.sha256 does not match $archive/dataset.bib: the citation says $cited, the file's SHA-256 is $actual"
 }
 
-# check_file ARCHIVE PATH: ARCHIVE/PATH is listed and matches its sum.
+# check_file ARCHIVE PATH: ARCHIVE/PATH is listed and matches its sum (in sum[], sums_of).
 check_file() {
   local archive=$1 path=$2 expected actual
-  expected=$(listed_sum "$archive" "$path")
+  expected=${listed[$path]:-}
   [[ -n $expected ]] || { problem "$archive" "$archive/$path is not listed in $archive/MANIFEST.sha256"; return; }
   [[ -f $archive/$path ]] || { problem "$archive" "$archive/$path is missing (MANIFEST.sha256 lists it with SHA-256 $expected)"; return; }
-  actual=$(sum_of "$archive/$path")
+  actual=${sum[$archive/$path]:-}
   [[ $expected == "$actual" ]] ||
     problem "$archive" "$archive/$path does not match $archive/MANIFEST.sha256: the manifest says $expected, the file's SHA-256 is $actual"
 }
@@ -65,16 +80,20 @@ case $1 in
     archive=$2 stamp=$3
     shift 3
     [[ -f $archive/MANIFEST.sha256 ]] || exit 1  # no archive of this release and profile
-    check_manifest "$archive" || damaged "$archive"
-    stamp_path=stamps/$(basename "$stamp")
-    check_file "$archive" "$stamp_path" || damaged "$archive"
-    cmp -s "$archive/$stamp_path" "$stamp" || exit 1  # archived under another configuration
+    load_manifest "$archive"
+    stamp_path=stamps/${stamp##*/}
     # FILE is DATA/PROFILE/<sub>/<name>: its archived path is <sub>/<name>.
     paths=()
     for f in "$@"; do
-      path=$(basename "$(dirname "$f")")/$(basename "$f")
-      paths+=("$path")
-      if [[ -z $(listed_sum "$archive" "$path") ]]; then
+      sub=${f%/*}
+      paths+=("${sub##*/}/${f##*/}")
+    done
+    sums_of "$archive/MANIFEST.sha256" "$archive/$stamp_path" "${paths[@]/#/$archive/}"
+    check_manifest "$archive" || damaged "$archive"
+    check_file "$archive" "$stamp_path" || damaged "$archive"
+    cmp -s "$archive/$stamp_path" "$stamp" || exit 1  # archived under another configuration
+    for path in "${paths[@]}"; do
+      if [[ -z ${listed[$path]+x} ]]; then
         [[ ! -e $archive/$path ]] || { problem "$archive" "$archive/$path is not listed in $archive/MANIFEST.sha256"; damaged "$archive"; }
         exit 1  # not archived (a seed the archive does not hold): computed
       fi
@@ -99,13 +118,17 @@ case $1 in
       if [[ ! -f $archive/MANIFEST.sha256 ]]; then
         problem "$archive" "$archive/MANIFEST.sha256 is missing" || bad=1
       else
+        load_manifest "$archive"
+        files=("$archive/MANIFEST.sha256")
+        while IFS= read -r line; do files+=("$archive/${line:66}"); done < "$archive/MANIFEST.sha256"
+        sums_of "${files[@]}"
         check_manifest "$archive" || bad=1
         while IFS= read -r line; do
           check_file "$archive" "${line:66}" || bad=$((bad + 1))
           n=$((n + 1))
         done < "$archive/MANIFEST.sha256"
         while IFS= read -r path; do
-          [[ -n $(listed_sum "$archive" "$path") ]] ||
+          [[ -n ${listed[$path]+x} ]] ||
             { problem "$archive" "$archive/$path is not listed in $archive/MANIFEST.sha256"; bad=$((bad + 1)); }
         done < <(cd "$archive" && find . -type f ! -name MANIFEST.sha256 ! -name dataset.bib -printf '%P\n' | LC_ALL=C sort)
       fi

@@ -4,9 +4,7 @@
 #      a Velocities section), an extended XYZ file (our own --xyz export) and "x y z r" text, each
 #      written from a generated packing, import to the generated spheres (to 1e-12 of Rs), with
 #      the source's SHA-256 and the options as provenance; the stamps follow the source's bytes.
-#   2. make tables figures on a normal-only profile of imported packings, whose grid does not
-#      start at 0: both scenes swept, averaged and fitted (Table 1, Figure 3), the packings made
-#      by softpack-import; make tangential refused with a message.
+#   2. (make tables figures on a normal-only profile of imported packings: workflow.import_dag)
 #   3. The direct path on a grid that does not start at 0: each point is what a one-point sweep
 #      at its Delta_n gives, bit for bit (every point starts from the scene as built).
 #   4. Bad input: overlapping grains, a grain beyond the shell, a missing seed, another atom
@@ -20,42 +18,10 @@ root=$2
 py=/usr/bin/python3
 $py -c "import h5py" 2> /dev/null || { echo "skipped: python3-h5py is not installed (make setup)"; exit 77; }
 "$bin/softpack-import" --help | grep -q -- "--seed" || fail "softpack-import --help"
+source "$(dirname "$0")/import_inputs.sh"
 
 # --- 1. three formats, one generated packing --------------------------------------------------------
-base=$root/tests/data/sweep-profile.yaml
-for s in 1 2; do "$bin/softpack-pack" --config "$base" --seed $s --out "$tmp/gen-$s.h5" --xyz "$tmp/gen-$s.xyz" --quiet; done
-$py - "$tmp" <<'PY'
-import sys, h5py
-d = sys.argv[1]
-for s in (1, 2):
-    f = h5py.File(f"{d}/gen-{s}.h5", "r")
-    x, r, R = f["centres"][()] * 1e3, f["radii"][()] * 1e3, f["shell/radius"][()] * 1e3  # millimetres
-    c = (2.5, -1.0, 7.0)  # the shell's centre, off the origin
-    with open(f"{d}/run-{s}.data", "w") as o:
-        o.write("LAMMPS data file via write_data, version 2Aug2023, timestep = 0, units = si (in mm here)\n\n")
-        o.write(f"{len(r)} atoms\n1 atom types\n\n")
-        for k, a in enumerate("xyz"):
-            o.write(f"{c[k] - R!r} {c[k] + R!r} {a}lo {a}hi\n")
-        o.write("\nMasses\n\n1 1.0\n\nAtoms # sphere\n\n")
-        for i in range(len(r)):
-            o.write(f"{i + 1} 1 {2 * r[i]!r} 2500 {x[i, 0] + c[0]!r} {x[i, 1] + c[1]!r} {x[i, 2] + c[2]!r} 0 0 0\n")
-        o.write("\nVelocities\n\n" + "".join(f"{i + 1} 0 0 0 0 0 0\n" for i in range(len(r))))
-    with open(f"{d}/run-{s}.txt", "w") as o:
-        o.write("# x y z r [m]\n" + "".join(f"{p[0] / 1e3!r} {p[1] / 1e3!r} {p[2] / 1e3!r} {q / 1e3!r}\n" for p, q in zip(x, r)))
-PY
-# profile FILE PACKING_YAML [DELTA_N]: the sweep test profile with another packing section, no
-# tangential section, and the normal grid DELTA_N; named `imported`.
-profile() {
-  awk -v packing="$2" -v grid="${3:-[0.1, 0.2, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65]}" '
-    /^profile:/ {print "profile: imported"; next}
-    /^packing:/ {print packing; skip = 1; next}
-    /^tangential:/ {skip = 1; next}
-    skip && /^  / {next}
-    {skip = 0}
-    /^  delta_n:/ {print "  delta_n: " grid; next}
-    {print}' "$base" > "$1"
-}
-import_section() { printf 'packing:\n  import:\n    files: {1: %s, 2: %s}\n%s' "$1" "$2" "$3"; }
+import_inputs
 profile "$tmp/lammps.yaml" "$(import_section "$tmp/run-1.data" "$tmp/run-2.data" $'    length_unit: 1.0e-3\n    shell: read\n')"
 profile "$tmp/xyz.yaml" "$(import_section "$tmp/gen-1.xyz" "$tmp/gen-2.xyz" $'    shell: read\n')"
 profile "$tmp/text.yaml" "$(import_section "$tmp/run-1.txt" "$tmp/run-2.txt" $'    shell: {radius: 0.016, centre: [0, 0, 0]}\n')"
@@ -109,30 +75,11 @@ print("ok")
 PY
 echo "ok: enclosing shells share the larger radius across seeds"
 
-# --- 2. the DAG of a normal-only profile on the imported packings -------------------------------------
-mk() { (cd "$root" && make --no-print-directory PROFILE=imported PROFILE_FILE="$tmp/lammps.yaml" DATA="$tmp/data" \
-          FIGURES_OUT="$tmp/figures" BUILD="$(dirname "$bin")" TOOLS= "$@"); }
-mk -j2 tables figures > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; fail "make tables figures (normal-only, imported)"; }
-for s in 1 2; do
-  h5dump -d /provenance/program "$tmp/data/imported/packings/seed-$s.h5" | grep -q softpack-import || fail "seed $s was not imported"
-  for scene in soft-solid soft-soft; do
-    h5dump -d /delta_n "$tmp/data/imported/normal/$scene-seed-$s.h5" | grep -q "0.1, 0.2, 0.3, 0.35" || fail "$scene seed $s: not the profile's grid"
-  done
-done
-grep -q "^| a \[N\] | [0-9]" "$tmp/data/imported/tables/table1.md" || fail "Table 1 has no fitted a: $(cat "$tmp/data/imported/tables/table1.md")"
-[[ -s $tmp/figures/fig3_normal.png && ! -e $tmp/figures/fig4_tangential_soft_solid.png ]] || fail "Figure 3 (and only the normal figures) expected"
-[[ ! -e $tmp/data/imported/tangential && ! -e $tmp/data/imported/averages/kt-soft-solid.dat ]] || fail "tangential outputs on a normal-only profile"
-$py "$root/tests/readers/check_hdf5.py" "$tmp/data/imported" --normal-only > "$tmp/check.log" ||
-  { cat "$tmp/check.log"; fail "the imported packings, sweeps and averages do not read as docs/reading-files.md says"; }
-mk tangential > "$tmp/make2.log" 2>&1 && fail "make tangential on a normal-only profile did not stop"
-grep -q "normal-only profile" "$tmp/make2.log" || fail "make tangential on a normal-only profile: $(cat "$tmp/make2.log")"
-echo "ok: make tables figures on a normal-only profile of imported packings (grid from 0.1): both scenes swept, averaged, fitted; Table 1 and Figure 3; h5py reads it all as the guide says; make tangential says why not"
-
 # --- 3. the direct path from a grid that does not start at 0 -------------------------------------------
 profile "$tmp/direct.yaml" "$(import_section "$tmp/run-1.data" "$tmp/run-2.data" $'    length_unit: 1.0e-3\n    shell: read\n')" "[0.2, 0.4]"
 sed -i 's/path: incremental/path: direct/' "$tmp/direct.yaml"
 sed 's/delta_n: \[0.2, 0.4\]/delta_n: [0.4]/' "$tmp/direct.yaml" > "$tmp/direct-one.yaml"
-pk=$tmp/data/imported/packings/seed-1.h5
+pk=$tmp/lammps-1.h5  # seed 1 imported from the LAMMPS file (section 1)
 for p in direct direct-one; do
   "$bin/softpack-normal" --config "$tmp/$p.yaml" --scene soft-solid --seed 1 --packing "$pk" --checkpoints "$tmp/ck-$p" \
     --out "$tmp/$p.h5" --quiet

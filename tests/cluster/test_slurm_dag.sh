@@ -3,7 +3,8 @@
 # tests/cluster/slurm_cluster.sh and stopped whatever happens:
 #   1. make -j2 RUN="srun -N1 -n1" tables figures runs every engine invocation as a Slurm job
 #      (counted in the cluster's job record against the invocations make -n lists), and gives
-#      the same averages, fits, tables and sweep results as a local make (same_results.py:
+#      the same averages, fits, tables and sweep results as a local make (the fixture quick_run's
+#      make -j2 tables figures; same_results.py:
 #      byte for byte, provenance and timing aside);
 #   2. a sweep job cancelled mid-way (scancel) fails make, and the next make resumes it from its
 #      checkpoint (points marked reused) and ends with the same results.
@@ -31,12 +32,10 @@ export MAKEFLAGS=
 jobs_done() { [[ -f $cluster/jobcomp.txt ]] && wc -l < "$cluster/jobcomp.txt" || echo 0; }
 
 # --- 1. the whole DAG through srun = locally -------------------------------------------------------
-copy_tree "$work/local"
+quick_fixture_copy "$work/local"  # the local run: the fixture quick_run's make -j2 tables figures
 copy_tree "$work/slurm"
 # TOOLS= : run the built executables, never rebuild them (the build is the suite's).
 mk() { make --no-print-directory PROFILE=quick BUILD="$build" DATA=data TOOLS= "$@"; }
-(cd "$work/local" && mk -j2 FROM_SCRATCH=1 tables figures) > "$work/local.log" 2>&1 ||
-  { tail -30 "$work/local.log"; fail "local make -j2 tables figures"; }
 cd "$work/slurm"
 expected=$(mk -n FROM_SCRATCH=1 RUN=__RUN__ tables figures 2> /dev/null | grep -o '__RUN__ [^ ]*' | sort | uniq -c)
 [[ -n $expected ]] || fail "make -n lists no engine invocation"

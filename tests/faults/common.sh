@@ -27,7 +27,8 @@ average() {  # average NORMAL1 NORMAL2 TANGENTIAL1 TANGENTIAL2 OUT_DIR
 fit() { "$bin/softpack-fit" --average "$1" --out "$2" --gnuplot "$3"; }
 
 # make_samples DIR: packings, checkpoints, normal and tangential results of seeds 1 and 2, the
-# average and the fit, as the workflow makes them.
+# average and the fit, as the workflow makes them (the fixture faults_samples makes them once per
+# suite: tests/faults/samples.sh; the tests take a copy with copy_samples DIR).
 make_samples() {
   local d=$1 s
   mkdir -p "$d"
@@ -52,3 +53,12 @@ same_results() {
 
 # no_temporaries DIR: nothing named *.tmp.* left under DIR.
 no_temporaries() { ! find "$1" -name '*.tmp.*' | grep -q .; }
+
+# The fixture faults_samples (tests/faults/samples.sh): the samples of make_samples, made once.
+samples_fixture=$(dirname "$bin")/test-fixtures/faults-samples
+# copy_samples DIR: a copy of them in DIR.
+copy_samples() {
+  [[ -f $samples_fixture/done ]] || fail "no samples in $samples_fixture: the fixture faults_samples (faults.samples) failed or did not run"
+  mkdir -p "$(dirname "$1")"
+  cp -a "$samples_fixture/s" "$1"
+}

@@ -18,7 +18,7 @@ if [[ -z ${SOFTPACK_IN_NAMESPACE:-} ]]; then
 fi
 bin=$1 root=$2
 source "$(dirname "$0")/common.sh"
-make_samples "$tmp/s"
+copy_samples "$tmp/s"
 s=$tmp/s
 disk=$tmp/disk
 mkdir -p "$disk"

@@ -6,7 +6,7 @@
 #   test_paths.sh BIN_DIR SOURCE_DIR
 bin=$1 root=$2
 source "$(dirname "$0")/common.sh"
-make_samples "$tmp/s"
+copy_samples "$tmp/s"
 s=$tmp/s
 
 long=$tmp

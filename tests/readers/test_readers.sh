@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The readers users open our files with, on the quick profile's results (docs/reading-files.md),
-# in a copy of the source tree (the build is reused, never rebuilt):
+# in a copy of the fixture quick_run's tree (the quick profile's tables made with make -j2):
 #   1. every HDF5 file of the quick profile (packings, sweeps, averages, checkpoints) and every
 #      fit, then every archive under data/archive, read with h5py alone against the guide's
 #      tables (check_hdf5.py): datasets, shapes, types, units, counts across files;
@@ -39,14 +39,8 @@ refuse() {
   pass "$1 is refused: $(grep -m 1 -E "^FAIL: .*$2" <<< "$out" | cut -c 7-160)"
 }
 
-copy_tree "$work/tree"
+quick_fixture_copy "$work/tree"  # the quick profile's results (the fixture quick_run)
 cd "$work/tree"
-export MAKEFLAGS=
-# TOOLS= : the stages' order-only prerequisite build-tools would run cmake --build on BUILD_DIR.
-start=$SECONDS
-make --no-print-directory PROFILE=quick BUILD="$build" DATA=data FROM_SCRATCH=1 TOOLS= -j2 tables > "$work/make.log" 2>&1 ||
-  { cat "$work/make.log"; fail "make tables (quick profile)"; }
-pass "make tables: the quick profile's results in $((SECONDS - start)) s"
 data=data/quick
 readers=tests/readers
 
