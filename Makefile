@@ -36,21 +36,32 @@ endif
 ifneq ($(findstring :,$(DATA))$(findstring %,$(DATA)),)
 $(error DATA='$(DATA)' holds ':' or '%': make cannot use such a path in its rules; choose another data folder)
 endif
+# ... and a path holding a character make or the shell reads as syntax (; * ? # $ quotes, a
+# backtick, a backslash, brackets, braces, parentheses, < > | & !, a control character) would run
+# another command or take another folder's lock: refused likewise. Allowed: letters, digits and
+# . _ - + = , @ / ~ (docs/architecture.md, "Everything a run writes lives under its DATA").
+DATA_SYNTAX := $(shell printf '%s' '$(subst ','"'"',$(value DATA))' | LC_ALL=C tr -d 'A-Za-z0-9._+=,@/~-')
+ifneq ($(DATA_SYNTAX),)
+$(error DATA holds '$(DATA_SYNTAX)': characters make or the shell would read as syntax; choose a data folder of letters, digits and . _ - + = , @ / ~)
+endif
 ifneq ($(words $(BUILD) $(CURDIR)),2)
 $(error the build folder '$(BUILD)' or the source folder '$(CURDIR)' holds a space: make cannot use such a path)
 endif
 
-# The goals that write DATA (the pipeline's, the scenes, clean).
+# The goals that need the tools and a profile (the pipeline's and the studies').
 PIPELINE_GOALS := all tables figures paper archive packings normal tangential sliding sweeps averages fits figure1 figure2 \
-  study-packing study-relaxation accuracy accuracy-report fast-check \
+  study-packing study-relaxation accuracy accuracy-report fast-check timing calibrate calibrate-report radius radius-report \
   coarse-grain coarse-grain-runs coarse-grain-report coarse-grain-multi-contact
+# The goals that write nothing under DATA; every other goal (a file named on the command line too)
+# writes there and takes its lock.
+NO_DATA_GOALS := help setup build build-tools test test-sanitize test-all bench verify fuzz-build fuzz fuzz-corpus
 MAKE_LETTERS := $(firstword -$(MAKEFLAGS))
 
 # One run per data folder: a goal that writes DATA runs make again under DATA's lock
 # (workflow/with_lock.sh; a second run waits for the first, or refuses with LOCK_WAIT=0).
 # make -n and make -q write nothing and take no lock.
-LOCKED_GOALS := $(if $(SOFTPACK_LOCK)$(findstring n,$(MAKE_LETTERS))$(findstring q,$(MAKE_LETTERS)),,$(filter \
-  $(PIPELINE_GOALS) scenes clean,$(MAKECMDGOALS)))
+LOCKED_GOALS := $(if $(SOFTPACK_LOCK)$(findstring n,$(MAKE_LETTERS))$(findstring q,$(MAKE_LETTERS)),,$(filter-out \
+  $(NO_DATA_GOALS),$(MAKECMDGOALS)))
 ifneq ($(LOCKED_GOALS),)
 .PHONY: $(MAKECMDGOALS)
 $(firstword $(MAKECMDGOALS)):
@@ -88,13 +99,13 @@ build-tools: $(BUILD)/CMakeCache.txt
 	@echo "build: $(BUILD) is up to date (log $(BUILD)/build.log)"
 
 ifneq ($(wildcard $(BUILD)/engine/softpack-config),)
-all: build tables figures paper scenes  ## the main job: Tables 1-2, Figures 1-6, paper/paper.pdf, the example scenes
+all: build tables figures paper scenes  ## the main job: Tables 1-2, Figures 1-6, DATA/PROFILE/paper/paper.pdf, the example scenes
 endif
 
 .PHONY: scenes
-scenes: | build-tools  ## run the example scenes of experiments/scenes/ (data/scenes/*.json)
+scenes: | build-tools  ## run the example scenes of experiments/scenes/ (DATA/scenes/*.json)
 	@for scene in experiments/scenes/*.yaml; do \
-	  out=data/scenes/$$(basename $$scene .yaml).json; \
+	  out=$(DATA)/scenes/$$(basename $$scene .yaml).json; \
 	  echo "softpack-run $$scene -> $$out"; \
 	  $(RUN) $(BUILD)/engine/softpack-run --scene $$scene --out $$out --quiet || exit 1; \
 	done
@@ -126,7 +137,7 @@ bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side b
 	bench/run_benchmarks.sh $(BUILD)
 
 clean:  ## remove the builds and the profile's generated data and figures (keeps data/archive)
-	rm -rf $(BUILD) $(BUILD_SANITIZE) $(FUZZ_BUILD) data/scenes $(DATA)/$(PROFILE) $(DATA)/studies figures/generated $(PAPER_PDF)
+	rm -rf $(BUILD) $(BUILD_SANITIZE) $(FUZZ_BUILD) $(DATA)/scenes $(DATA)/$(PROFILE) $(DATA)/studies
 
 # make verify needs no build: every archive under data/archive (or ARCHIVES=dir...) against its
 # MANIFEST.sha256, and each manifest against the SHA-256 its dataset.bib cites.

@@ -1,7 +1,7 @@
 # Figure 3: the normal contact law Fn(Δn), Δn = hn/Rs, of the soft-solid and soft-soft contacts,
 # against Hertz's law for one solid sphere of radius Rs on a wall (the paper's top curve).
 #
-#   gnuplot -e "avg='data/paper/average'; out='figures/generated/fig3_normal.pdf'" \
+#   gnuplot -e "avg='data/paper/average'; out='data/paper/figures/fig3_normal.pdf'" \
 #           -e "a_solid=113.2; b_solid=4.41; c_solid=-0.052; delta_solid=0.173" \
 #           -e "a_soft=30.1; b_soft=8.02; c_soft=-0.0197; delta_soft=0.401" figures/fig3_normal.gp
 #

@@ -3,8 +3,8 @@
 # perpendicular one (paper §5: it averages to zero). scene=soft-solid gives Figure 4,
 # scene=soft-soft Figure 5.
 #
-#   gnuplot -e "avg='data/paper/average'; scene='soft-solid'; out='figures/generated/fig4_tangential_soft_solid.pdf'" figures/fig45_tangential.gp
-#   gnuplot -e "avg='data/paper/average'; scene='soft-soft'; out='figures/generated/fig5_tangential_soft_soft.pdf'" figures/fig45_tangential.gp
+#   gnuplot -e "avg='data/paper/average'; scene='soft-solid'; out='data/paper/figures/fig4_tangential_soft_solid.pdf'" figures/fig45_tangential.gp
+#   gnuplot -e "avg='data/paper/average'; scene='soft-soft'; out='data/paper/figures/fig5_tangential_soft_soft.pdf'" figures/fig45_tangential.gp
 #
 # Required: avg (the folder with tangential-<scene>.dat, written by softpack-average: one data
 # block per Δn, columns 1 delta_n, 2 alpha_deg, 3 ht [m], 4 Ft_parallel_mean [N],

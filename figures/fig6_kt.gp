@@ -1,7 +1,7 @@
 # Figure 6: the tangential spring constant kt (slope of Ft,parallel against ht around ht = 0)
 # against the normal deformation Δn, both scenes, with the fits of Eq. 8.
 #
-#   gnuplot -e "avg='data/paper/average'; out='figures/generated/fig6_kt.pdf'" \
+#   gnuplot -e "avg='data/paper/average'; out='data/paper/figures/fig6_kt.pdf'" \
 #           -e "kt_a_solid=160; kt_b_solid=2.6; kt_c_solid=-1.7; kt_delta_solid=0.173" \
 #           -e "kt_a_soft=60; kt_b_soft=6.0; kt_c_soft=-0.25; kt_delta_soft=0.401" figures/fig6_kt.gp
 #

@@ -17,8 +17,14 @@ ACCURACY_TOOL := $(BUILD)/engine/softpack-accuracy
 
 .PHONY: accuracy accuracy-report calibrate calibrate-report radius radius-report
 accuracy: | $(TOOLS)  ## the fidelity study: every knob's error against its CPU time (DATA/accuracy/report/)
-	+@$(call run_study,$(ACCURACY_STUDY),$(ACCURACY_DIR),$(ACCURACY_SETTINGS))
+	$(call study,$(ACCURACY_STUDY),$(ACCURACY_DIR),$(ACCURACY_SETTINGS))
 	@$(MAKE) --no-print-directory accuracy-report
+
+# study STUDY DIR SETTINGS: the recipe line that runs a study (run_study). Under make -n it says
+# what it would run and runs nothing: a line that calls $(MAKE), or starts with +, runs even under
+# -n, and the study's would write its profiles, logs and records.
+study = $(if $(findstring n,$(MAKE_LETTERS)),@echo "study $(1): would write the profiles of its settings into $(2)/profiles \
+  (softpack-accuracy profiles) and run make $(or $(STUDY_GOALS),tangential) for each setting in $(2)",+@$(call run_study,$(1),$(2),$(3)))
 
 # run_study STUDY DIR SETTINGS: the profile of the reference and of every setting of STUDY
 # (softpack-accuracy profiles), then each one's packings and sweeps by the profile DAG in DIR
@@ -46,9 +52,9 @@ endef
 # every setting's laws and packings with their seed-to-seed errors and their change against the
 # base. CALIBRATE_SETTINGS=name... runs only those (and the base).
 CALIBRATE_STUDY ?= experiments/calibrate.yaml
-CALIBRATE_DIR ?= data/calibrate
+CALIBRATE_DIR ?= $(DATA)/calibrate
 calibrate: | $(TOOLS)  ## the calibration study: each open parameter's effect on the laws (CALIBRATE_DIR/report/)
-	+@$(call run_study,$(CALIBRATE_STUDY),$(CALIBRATE_DIR),$(CALIBRATE_SETTINGS))
+	$(call study,$(CALIBRATE_STUDY),$(CALIBRATE_DIR),$(CALIBRATE_SETTINGS))
 	@$(MAKE) --no-print-directory calibrate-report
 
 calibrate-report: | $(TOOLS)  ## the calibration table and figure from the settings run so far
@@ -87,10 +93,10 @@ fast-check: | $(TOOLS)  ## the fast profile against the paper profile on the pap
 # scaled with the shell (self-similar) or not (fixed), and soft-soft contacts of two radii, each
 # setting run as above. RADIUS_SETTINGS=name... runs only those (and the reference).
 RADIUS_STUDY ?= experiments/radius-study.yaml
-RADIUS_DIR ?= data/radius
+RADIUS_DIR ?= $(DATA)/radius
 radius: STUDY_GOALS := tangential sliding
 radius: | $(TOOLS)  ## the radius study: the laws against the soft-particle's radius, its friction (RADIUS_DIR/report/)
-	+@$(call run_study,$(RADIUS_STUDY),$(RADIUS_DIR),$(RADIUS_SETTINGS))
+	$(call study,$(RADIUS_STUDY),$(RADIUS_DIR),$(RADIUS_SETTINGS))
 	@$(MAKE) --no-print-directory radius-report
 
 # The report, the figures and the law file (RADIUS_DIR/report/laws.json) from what has run.

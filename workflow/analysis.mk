@@ -18,7 +18,7 @@ $(call average_outputs,$(1)) &: $(AVERAGE_STAMP) $(call NORMAL_RESULTS,$(1)) $(i
 	@mkdir -p $(AVERAGE_DIR) && $(call clear_stale,$(call average_outputs,$(1)))
 	@$$(call from_archive,$(call average_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "average: $(PROFILE) $(1) over seeds $(SEEDS) -> $(AVERAGE_DIR)/$(1).h5 (log $(AVERAGE_DIR)/$(1).log)"; \
-	  $(RUN) $(BUILD)/engine/softpack-average --scene $(1) --profile $(PROFILE) --normal $(call NORMAL_RESULTS,$(1)) \
+	  $(RUN) $(BUILD)/engine/softpack-average --scene $(1) --profile $(PROFILE) --config $(PROFILE_FILE) --normal $(call NORMAL_RESULTS,$(1)) \
 	    $(if $(NORMAL_ONLY),,--tangential $(call TANGENTIAL_RESULTS,$(1))) --out-dir $(AVERAGE_DIR) 2> $(AVERAGE_DIR)/$(1).log \
 	  || { echo "average: FAILED for $(PROFILE) $(1); see $(AVERAGE_DIR)/$(1).log"; tail -5 $(AVERAGE_DIR)/$(1).log; exit 1; }; }
 $(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 | $(TOOLS)
@@ -46,7 +46,7 @@ tables: $(TABLES)  ## Tables 1 and 2: ours beside the paper's (DATA/PROFILE/tabl
 # kt_unit.md: the readings of Table 2's unit tested on kt/Fn (analysis/kt_unit.hpp), from the averages.
 $(TABLES) &: $(filter %.json,$(FITS)) $(filter %.h5,$(AVERAGES)) $(PUBLISHED) | $(TOOLS)
 	@mkdir -p $(TABLE_DIR) && $(call clear_stale,$(TABLES))
-	@$(RUN) $(BUILD)/engine/softpack-table --fits $(filter %.json,$(FITS)) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
+	@$(RUN) $(BUILD)/engine/softpack-table --fits $(filter %.json,$(FITS)) --config $(PROFILE_FILE) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
 	  --gnuplot $(TABLE_DIR)/published.gp $(if $(NORMAL_ONLY),,--averages $(filter %.h5,$(AVERAGES)) \
 	  --Rs $$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot | sed 's/^Rs=\([^;]*\);.*/\1/')) > /dev/null 2> $(TABLE_DIR)/tables.log \
 	  || { echo "tables: FAILED for $(PROFILE); see $(TABLE_DIR)/tables.log"; cat $(TABLE_DIR)/tables.log; exit 1; }
@@ -55,7 +55,7 @@ $(TABLES) &: $(filter %.json,$(FITS)) $(filter %.h5,$(AVERAGES)) $(PUBLISHED) | 
 # and the coefficients (ours, the paper's) as gnuplot variables.
 FIGURE_NAMES := fig3_normal $(if $(NORMAL_ONLY),,fig4_tangential_soft_solid fig5_tangential_soft_soft fig6_kt)
 FIGURES_3_6 := $(foreach f,$(FIGURE_NAMES),$(FIGURES_OUT)/$(f).pdf $(FIGURES_OUT)/$(f).png)
-figures: figure1 figure2 $(FIGURES_3_6)  ## Figures 1-6 (figures/generated/PROFILE/, PDF and PNG)
+figures: figure1 figure2 $(FIGURES_3_6)  ## Figures 1-6 (DATA/PROFILE/figures/, PDF and PNG)
 
 # gnuplot_run SCRIPT OUT VARIABLES: draws via OUT.tmp.EXT, renamed into place.
 gnuplot_run = mkdir -p $(FIGURES_OUT) && gnuplot -e "avg='$(AVERAGE_DIR)'; out='$(2).tmp$(suffix $(2))'; $(3)" \
@@ -82,3 +82,12 @@ timing: | $(TOOLS)  ## wall-clock and CPU time of the profile's last run, per st
 	  --tangential $(foreach scene,$(SCENES),$(call TANGENTIAL_RESULTS,$(scene))) \
 	  --averages $(foreach scene,$(SCENES),$(AVERAGE_DIR)/$(scene).h5) --fits $(filter %.json,$(FITS)) \
 	  --json $(DATA)/$(PROFILE)/timing.json
+
+# One configuration per result, in make's up-to-date check too: a result whose recorded stamp is
+# not its stage's stamp now (computed while the profile was edited, the edit reverted since) is
+# out of date whatever its time (softpack-config PROFILE stale; results from before stamps record
+# none and are judged by the stamp files alone). One call, when make starts, reads them all.
+STAMPED_RESULTS := $(PACKINGS) $(foreach scene,$(SCENES),$(call NORMAL_RESULTS,$(scene)) $(call TANGENTIAL_RESULTS,$(scene)) \
+  $(if $(HAS_SLIDING),$(call SLIDING_RESULTS,$(scene)))) $(filter %.h5 %.json,$(AVERAGES) $(FITS))
+STALE_RESULTS := $(if $(wildcard $(STAMPED_RESULTS)),$(call config,stale $(wildcard $(STAMPED_RESULTS))))
+$(foreach f,$(STALE_RESULTS),$(eval $(f): FORCE))

@@ -12,5 +12,5 @@ archive: $(ARCHIVE_MANIFEST)  ## archive the results with MANIFEST, provenance a
 	@echo "archive: $(ARCHIVE) is up to date; cite it with $(ARCHIVE)/dataset.bib"
 
 $(ARCHIVE_MANIFEST): $(ARCHIVED_INPUTS) $(PROFILE_FILE) workflow/archive.sh
-	@workflow/archive.sh $(DATA) $(PROFILE) $(VERSION) $(ARCHIVE_ROOT)
+	@workflow/archive.sh $(DATA) $(PROFILE) $(VERSION) $(ARCHIVE_ROOT) $(PROFILE_FILE)
 

@@ -2,17 +2,19 @@
 # Archive one profile's results (packings, sweep results, averages, fits) with their configuration
 # stamps, a MANIFEST of SHA-256 sums, the provenance and a BibTeX entry for the dataset.
 #
-#   workflow/archive.sh DATA PROFILE VERSION ARCHIVE_ROOT
+#   workflow/archive.sh DATA PROFILE VERSION ARCHIVE_ROOT [PROFILE_FILE]
 #
+# PROFILE_FILE: the profile the results were made with (default experiments/PROFILE.yaml), archived
+# as profile.yaml.
 # The archive is assembled in a temporary directory next to its destination and moved into place
 # at the end, so an interrupted run leaves the previous archive (if any) untouched.
 set -euo pipefail
 
-if [[ $# -ne 4 || $1 == -h || $1 == --help ]]; then
-  echo "usage: $0 DATA PROFILE VERSION ARCHIVE_ROOT  (e.g. data paper 0.1.0 data/archive)" >&2
+if [[ $# -lt 4 || $# -gt 5 || $1 == -h || $1 == --help ]]; then
+  echo "usage: $0 DATA PROFILE VERSION ARCHIVE_ROOT [PROFILE_FILE]  (e.g. data paper 0.1.0 data/archive)" >&2
   exit 2
 fi
-data=$1 profile=$2 version=$3 root=$4
+data=$1 profile=$2 version=$3 root=$4 profile_file=${5:-experiments/$2.yaml}
 source_dir=$data/$profile
 dest=$root/$version/$profile
 
@@ -39,7 +41,7 @@ copy tangential '*-seed-*[0-9].h5'
 copy averages '*.h5' '*.dat'
 copy fits '*.json' '*.gp'
 copy stamps '*.hash'
-cp "experiments/$profile.yaml" "$staging/profile.yaml"
+cp "$profile_file" "$staging/profile.yaml"
 
 # Nothing to do when the archive already holds exactly these files (a fresh checkout that reused
 # it): keep its provenance and BibTeX (they name the run that made the data), refresh its date.

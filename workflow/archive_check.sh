@@ -69,6 +69,7 @@ check_file() {
   expected=${listed[$path]:-}
   [[ -n $expected ]] || { problem "$archive" "$archive/$path is not listed in $archive/MANIFEST.sha256"; return; }
   [[ -f $archive/$path ]] || { problem "$archive" "$archive/$path is missing (MANIFEST.sha256 lists it with SHA-256 $expected)"; return; }
+  [[ ! -L $archive/$path ]] || { problem "$archive" "$archive/$path is a symlink, not a file: an archive holds none"; return; }
   actual=${sum[$archive/$path]:-}
   [[ $expected == "$actual" ]] ||
     problem "$archive" "$archive/$path does not match $archive/MANIFEST.sha256: the manifest says $expected, the file's SHA-256 is $actual"
@@ -131,6 +132,21 @@ case $1 in
           [[ -n ${listed[$path]+x} ]] ||
             { problem "$archive" "$archive/$path is not listed in $archive/MANIFEST.sha256"; bad=$((bad + 1)); }
         done < <(cd "$archive" && find . -type f ! -name MANIFEST.sha256 ! -name dataset.bib -printf '%P\n' | LC_ALL=C sort)
+        # An archive holds regular files and the folders of listed ones, nothing else: a symlink
+        # (it could point anywhere, and its target is not what the manifest vouches for), a
+        # device or a pipe, and a folder with no listed file in it are damage too.
+        declare -A folders=()
+        for path in "${!listed[@]}"; do while [[ $path == */* ]]; do path=${path%/*}; folders[$path]=1; done; done
+        while IFS= read -r path; do
+          problem "$archive" "$archive/$path is not a regular file ($(stat -c %F "$archive/$path")): an archive holds none" ||
+            true
+          bad=$((bad + 1))
+        done < <(cd "$archive" && find . -mindepth 1 ! -type f ! -type d -printf '%P\n' | LC_ALL=C sort)
+        while IFS= read -r path; do
+          [[ -n ${folders[$path]+x} ]] ||
+            { problem "$archive" "$archive/$path/ is a folder with no file of $archive/MANIFEST.sha256 in it"; bad=$((bad + 1)); }
+        done < <(cd "$archive" && find . -mindepth 1 -type d -printf '%P\n' | LC_ALL=C sort)
+        unset folders
       fi
       if [[ $bad == 0 ]]; then
         echo "verify: $archive: $n files match MANIFEST.sha256, which matches dataset.bib"

@@ -3,7 +3,9 @@
 
 PACKING_DIR := $(DATA)/$(PROFILE)/packings
 PACKINGS := $(foreach s,$(SEEDS),$(PACKING_DIR)/seed-$(s).h5)
-FIGURES_OUT := figures/generated/$(PROFILE)
+# Everything a run writes lives under its DATA (and its lock): the figures too.
+FIGURES_OUT := $(DATA)/$(PROFILE)/figures
+STUDY_FIGURES := $(DATA)/studies/figures
 # Generated packings (softpack-pack), or imported ones when the profile's packing section has
 # `import` (softpack-import; docs/import.md): same options, same packing file.
 PACK := $(BUILD)/engine/softpack-$(if $(filter imported,$(call config,packings)),import,pack)
@@ -19,8 +21,8 @@ $(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | $(TOOLS)
 	@mkdir -p $(@D) && $(call clear_stale,$@ $(@:.h5=.vtp) $(@:.h5=.xyz))
 	@$(call from_archive,$@ $(@:.h5=.vtp) $(@:.h5=.xyz),$(PACK_STAMP)) || { \
 	  echo "pack: $(PROFILE) seed $* -> $@ (log $(@:.h5=.log))"; \
-	  $(RUN) $(PACK) --config $(PROFILE_FILE) --seed $* --out $@ --vtp $(@:.h5=.vtp) --xyz $(@:.h5=.xyz) \
-	    --quiet 2> $(@:.h5=.log) \
+	  $(RUN) $(PACK) --config $(PROFILE_FILE) $(call planned,$(PACK_STAMP)) --seed $* --out $@ --vtp $(@:.h5=.vtp) \
+	    --xyz $(@:.h5=.xyz) --quiet 2> $(@:.h5=.log) \
 	  || { echo "pack: FAILED for $(PROFILE) seed $*; see $(@:.h5=.log)"; cat $(@:.h5=.log); exit 1; }; }
 
 figure1: $(FIGURES_OUT)/fig1_apollonian.png $(FIGURES_OUT)/fig1_apollonian.pdf  ## Figure 1: a 2D Apollonian packing
@@ -40,13 +42,13 @@ $(FIGURES_OUT)/fig2_softparticle.%: $(FIGURES_OUT)/fig2_section.dat figures/fig2
 	  figures/fig2_softparticle.gp && mv $@.tmp.$* $@
 
 STUDY_DIR := $(DATA)/studies/packing-density
-study-packing: $(STUDY_DIR)/packing-density.md figures/generated/studies/packing-density.png  ## the packing density study (beta, I, r_max/Rs)
+study-packing: $(STUDY_DIR)/packing-density.md $(STUDY_FIGURES)/packing-density.png  ## the packing density study (beta, I, r_max/Rs)
 	@cat $(STUDY_DIR)/packing-density.md
 # The study varies its base profile's packing section (experiments/fast.yaml: the packing of
 # releases <= 0.4.0): it depends on that section only.
 STUDY_STAMP := $(call stamp,packing-density,packing,experiments/fast.yaml,$(DATA)/studies/stamps)
 $(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/packing-density.yaml $(STUDY_STAMP) | $(TOOLS)
 	$(RUN) $(BUILD)/engine/softpack-packing-study --config experiments/packing-density.yaml --out $(STUDY_DIR)
-figures/generated/studies/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
+$(STUDY_FIGURES)/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
 	@mkdir -p $(@D)
 	@gnuplot -e "data='$<'; out='$@.tmp.png'" figures/packing_density.gp && mv $@.tmp.png $@

@@ -32,6 +32,12 @@ endef
 .PHONY: FORCE
 FORCE:
 
+# planned STAMP_FILE: the option that gives a stage the stamp make planned it with, read from the
+# stamp file when the stage's recipe runs (after the stamp rule wrote it); the stage refuses to run
+# when the profile's stamp differs by then (the profile was edited during the run: a revert before
+# the run ends would otherwise leave results of the edited profile that look up to date).
+planned = --stamp '$(file < $(1))'
+
 ifeq ($(wildcard $(PROFILE_FILE)),)
 $(error $(PROFILE_FILE): no such profile (PROFILE=$(PROFILE)); profiles: $(notdir $(basename $(wildcard experiments/*.yaml))))
 endif

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <set>
 
+#include "config/profile.hpp"
 #include "core/error.hpp"
 
 namespace softpack {
@@ -22,7 +23,33 @@ void check_distinct_seeds(const std::vector<SeedFile>& files, const std::string&
       if (a.seed == b.seed)
         throw InputError(fmt::format("{}: {} and {} are both results of seed {}; allowed: each seed's results once", option,
                                      a.path, b.path, a.seed));
+      if (!a.packing_sha256.empty() && a.packing_sha256 == b.packing_sha256)
+        throw InputError(fmt::format("{}: {} (seed {}) and {} (seed {}) are measurements of one packing (its content has "
+                                     "SHA-256 {}); allowed: each packing once, whatever its seed number",
+                                     option, a.path, a.seed, b.path, b.seed, a.packing_sha256));
     }
+}
+
+void check_one_configuration(const std::vector<SeedFile>& files, const std::string& option, const std::string& stage,
+                             const std::string& expected_config, const std::string& expected_stamp, const std::string& profile_path) {
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const SeedFile &a = files.front(), &b = files[k];
+    if (b.config != a.config)
+      throw InputError(fmt::format("{}: {} and {} were computed with different configurations ({}); an average never mixes "
+                                   "configurations: make them again with one profile",
+                                   option, a.path, b.path, first_difference(a.config, b.config, a.path, b.path)));
+    if (b.stamp != a.stamp)
+      throw InputError(fmt::format("{}: {} and {} were computed with different configurations (stamps '{}' and '{}': another "
+                                   "release, or other imported sources); an average never mixes configurations: make them "
+                                   "again with one profile",
+                                   option, a.path, b.path, a.stamp, b.stamp));
+    if (expected_config.empty()) continue;
+    if (b.config != expected_config)
+      throw InputError(fmt::format("{}: {} was computed with another configuration than {} holds now ({}); make it again with this "
+                                   "profile (make does)",
+                                   option, b.path, profile_path, first_difference(b.config, expected_config, b.path, profile_path)));
+    check_stamp(b.path, stage, b.stamp, expected_stamp, profile_path);
+  }
 }
 
 void check_same_seeds(const std::vector<SeedFile>& normal, const std::vector<SeedFile>& tangential) {

@@ -16,15 +16,26 @@ struct SweepColumns {
   std::vector<double> delta_n, alpha_deg, ht, Fn, Ft_parallel, Ft_perpendicular;
 };
 
-/// One file of an average and the seed it records.
+/// One file of an average: the seed, the configuration and the packing it records.
 struct SeedFile {
   std::string path;
   std::uint64_t seed = 0;
+  std::string config;          ///< the canonical text of the stage's sections it was computed with
+  std::string stamp;           ///< the stage's configuration stamp ("": a file from before stamps)
+  std::string packing_sha256;  ///< the identity of its own packing by content ("": not recorded)
 };
-/// InputError unless every file is another file, of another seed: the same packing counted twice
-/// would enter the mean twice and shrink its standard error (to 0 for [1, 1]). The message names
-/// `option` and both files ("--normal: a.h5 and b.h5 are the same file").
+/// InputError unless every file is another file, of another seed and of another packing: the same
+/// packing counted twice would enter the mean twice and shrink its standard error (to 0 for
+/// [1, 1]), whatever its files are called and whatever seed numbers they carry (identity by
+/// content). The message names `option` and both files ("--normal: a.h5 and b.h5 are the same file").
 void check_distinct_seeds(const std::vector<SeedFile>& files, const std::string& option);
+/// One configuration per average (docs/measurement.md): InputError unless every file records the
+/// configuration of the first (text and stamp) and, when `expected_config` is given (the profile's
+/// text of `stage`, with `expected_stamp`, from `profile_path`), that one. The message names both
+/// files or the file and the profile, and the first line that differs.
+void check_one_configuration(const std::vector<SeedFile>& files, const std::string& option, const std::string& stage,
+                             const std::string& expected_config = "", const std::string& expected_stamp = "",
+                             const std::string& profile_path = "");
 /// InputError unless the normal and the tangential results are of the same seeds: the two
 /// laws of one table would otherwise describe different soft-particles.
 void check_same_seeds(const std::vector<SeedFile>& normal, const std::vector<SeedFile>& tangential);

@@ -4,27 +4,65 @@
 // <program> --help" on stderr and exit code 2, instead of CLI11's codes (104, 105, 106, ...) and
 // its two lines. --help prints the usage on stdout and exits 0.
 //
+// No output option (--out, --vtp, --xyz, --gnuplot) may name a file another option reads.
+//
 //   if (const auto code = parse_command_line(app, argc, argv, "softpack-pack")) return *code;
 #pragma once
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
 
 #include "apps/exit_codes.hpp"
 #include "core/random.hpp"
 
 namespace softpack {
 
+/// The options that name a file the command writes (--out-dir, a folder, is checked by the
+/// commands that write into one).
+inline bool is_output_option(const CLI::Option& o) {
+  return o.check_lname("out") || o.check_lname("vtp") || o.check_lname("xyz") || o.check_lname("gnuplot");
+}
+
+/// An output never overwrites one of the command's own inputs (`softpack-normal --packing p.h5
+/// --out p.h5` destroyed its packing, exit 0): the exit code 2, with one line naming both options,
+/// when a file an output option names is (by path or by inode) an existing file another option
+/// names; std::nullopt when all are apart. The command's subcommands too.
+inline std::optional<int> check_outputs_apart(const CLI::App& app, std::string_view program) {
+  std::vector<std::pair<const CLI::Option*, std::string>> outputs, inputs;
+  const auto collect = [&](const CLI::App& a, const auto& self) -> void {
+    for (const CLI::Option* o : a.get_options())
+      for (const std::string& value : o->results()) (is_output_option(*o) ? outputs : inputs).emplace_back(o, value);
+    for (const CLI::App* sub : a.get_subcommands()) self(*sub, self);
+  };
+  collect(app, collect);
+  for (const auto& [out, out_path] : outputs)
+    for (const auto& [in, in_path] : inputs) {
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(in_path, ec)) continue;
+      if (in_path == out_path || std::filesystem::equivalent(in_path, out_path, ec)) {
+        fmt::print(stderr, "{}: error: {} {}: the same file as {} {}, which this command reads; an output never overwrites an "
+                   "input: give it another name\n",
+                   program, out->get_name(), out_path, in->get_name(), in_path);
+        return kExitInput;
+      }
+    }
+  return std::nullopt;
+}
+
 /// Parses the command line; the exit code when the program must stop (0 after --help, 2 for
 /// a bad command line), std::nullopt when it may go on.
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, std::string_view program) {
   try {
     app.parse(argc, argv);
-    return std::nullopt;
+    return check_outputs_apart(app, program);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help (and --help-all): the usage, on stdout
     std::string what = e.what();

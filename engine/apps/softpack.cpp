@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
   if (const auto slash = called.rfind('/'); slash != std::string_view::npos) called.remove_prefix(slash + 1);
   constexpr std::string_view prefix = "softpack-";
   if (called.starts_with(prefix)) {
-    if (const Command* c = find(called.substr(prefix.size()))) return c->main(argc, argv);
+    if (const Command* c = find(called.substr(prefix.size()))) return softpack::checked_exit(called, c->main(argc, argv));
     fmt::print(stderr, "softpack: error: '{}' is not a command of softpack; see softpack --help\n", called);
     return softpack::kExitInput;
   }
@@ -44,12 +44,12 @@ int main(int argc, char** argv) {
   const std::string_view name = argv[1];
   if (name == "--help" || name == "-h") {
     list(stdout);
-    return 0;
+    return softpack::checked_exit("softpack", 0);
   }
   if (const Command* c = find(name.starts_with(prefix) ? name.substr(prefix.size()) : name)) {
     std::string called_as = fmt::format("{}{}", prefix, c->name);  // its usage names it softpack-<name>
     argv[1] = called_as.data();
-    return c->main(argc - 1, argv + 1);
+    return softpack::checked_exit(called_as, c->main(argc - 1, argv + 1));
   }
   fmt::print(stderr, "softpack: error: '{}' is not a command of softpack; see softpack --help\n", name);
   return softpack::kExitInput;

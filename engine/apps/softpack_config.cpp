@@ -12,15 +12,21 @@
 //   softpack-config PROFILE stages            the stages it has (a normal-only profile: packing normal;
 //                                             with a `sliding` section, sliding at the end)
 //   softpack-config PROFILE packings          generated or imported (which program makes them)
+//   softpack-config PROFILE stale FILE...      of the result files given, those whose recorded stamp
+//                                             is not their stage's stamp now (Make reruns them)
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include <algorithm>
+#include <map>
 
 #include "analysis/fit_options.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "config/profile.hpp"
 #include "core/version.hpp"
+#include "formats/file_kind.hpp"
 #include "measure/settings.hpp"
 #include "packing/packing_profile.hpp"
 
@@ -39,6 +45,10 @@ int main(int argc, char** argv) {
   auto* gnuplot = app.add_subcommand("gnuplot", "Rs, E and nu as gnuplot variables: Rs=...; E=...; nu=...");
   auto* stages = app.add_subcommand("stages", "the stages the profile has, on one line (a normal-only profile: packing normal)");
   auto* packings = app.add_subcommand("packings", "generated (softpack-pack) or imported (softpack-import, packing.import)");
+  auto* stale = app.add_subcommand(
+      "stale", "of the result files given, those whose recorded stamp is not their stage's stamp now, one per line (make reruns them)");
+  std::vector<std::string> stale_files;
+  stale->add_option("files", stale_files, "packing, sweep results, average and fit files (missing ones are skipped)");
   for (auto* sub : {sections, text, stamp})
     sub->add_option("stage", stage, "packing, normal, tangential, average or sliding")
         ->required()
@@ -60,9 +70,8 @@ int main(int argc, char** argv) {
     }
     if (*sections) fmt::print("{}\n", fmt::join(stage_sections(stage), " "));
     // Imported packings: every stage also depends on the bytes of the source files (their SHA-256).
-    const std::string sources = (*text || *stamp) && packing.import ? import_sources_text(*packing.import) : "";
-    if (*text) fmt::print("{}{}", stage_text(root, stage), sources);
-    if (*stamp) fmt::print("{}\n", stage_stamp(root, stage, release, sources));
+    if (*text) fmt::print("{}{}", stage_text(root, stage), packing.import ? import_sources_text(*packing.import) : "");
+    if (*stamp) fmt::print("{}\n", profile_stamp(root, stage, release));
     if (*gnuplot)
       fmt::print("Rs={}; E={}; nu={}\n", shell_radius(packing, seed_list), settings.simulation.material.E,
                  settings.simulation.material.nu);
@@ -70,6 +79,19 @@ int main(int argc, char** argv) {
       fmt::print("{}{}\n", settings.has_tangential ? "packing normal tangential average" : "packing normal",
                  settings.has_sliding ? " sliding" : "");
     if (*packings) fmt::print("{}\n", packing.import ? "imported" : "generated");
+    if (*stale) {
+      // One configuration per result, also for make's up-to-date check: a result made with
+      // another configuration than the profile's now (an edit during a run, reverted since) is
+      // out of date whatever its time.
+      std::map<std::string, std::string> now;  // stage -> its stamp, computed once
+      for (const std::string& file : stale_files) {
+        const auto r = recorded_stamp(file);
+        const auto& stages = profile_stages();
+        if (!r || std::find(stages.begin(), stages.end(), r->stage) == stages.end()) continue;
+        if (!now.contains(r->stage)) now[r->stage] = profile_stamp(root, r->stage, release);
+        if (r->stamp != now[r->stage]) fmt::print("{}\n", file);
+      }
+    }
     return 0;
   } catch (...) {
     return exit_on_error("softpack-config");

@@ -11,6 +11,7 @@
 
 #include "analysis/fit_options.hpp"
 #include "analysis/power_fit.hpp"
+#include "config/profile.hpp"
 #include "config/yaml_node.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
@@ -19,6 +20,7 @@
 #include "core/version.hpp"
 #include "formats/average_file.hpp"
 #include "formats/fit_file.hpp"
+#include "packing/packing_profile.hpp"
 
 namespace softpack::apps::fit_app {
 
@@ -41,15 +43,24 @@ int main(int argc, char** argv) {
     const Stopwatch watch;
     const AverageFile in = read_average_file(average_path);
     fit::FitSection section;
+    std::string stamp;
     if (!config_path.empty()) {
       const ConfigNode root = ConfigNode::load_file(config_path);
       section = fit::parse_fit_section(root);
       if (const auto name = root.find("profile"); name && name->string() != in.profile)
         throw InputError(fmt::format("{}: profile '{}', but {} was averaged for profile '{}'; give the profile it was made with",
-                                     config_path, name->string(), average_path, in.profile));
+                                     config_path, name->string(), average_path, in.profile));      // One configuration per result: averages that record a stamp must be of this profile as it
+      // is now. A profile of the fit's options alone (no stages) has no stamp to record.
+      try {
+        stamp = profile_stamp(root, "average");
+      } catch (const InputError&) {
+        if (!in.stamp.empty()) throw;
+      }
+      check_stamp(average_path, "average", in.stamp, stamp, config_path);
     }
     FitFile out;
     out.scene = in.scene;
+    out.stamp = stamp;
     out.input = {average_path, in.profile, in.code_version, in.seeds};
     const fit::FitOptions options = section.options_for(in.scene);  // with the scene's delta_n_max
     if (section.given) out.options = options;

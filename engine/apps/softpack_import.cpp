@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
@@ -33,6 +35,10 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_path, "packing file to write (HDF5), e.g. data/<profile>/packings/seed-1.h5")->required();
   app.add_option("--vtp", vtp_path, "also write the spheres for ParaView (VTK PolyData)");
   app.add_option("--xyz", xyz_path, "also write the spheres for OVITO (extended XYZ)");
+  std::string planned_stamp;
+  app.add_option("--stamp", planned_stamp,
+                 "the packing stage's stamp make planned this run with (softpack-config PROFILE stamp packing): refused "
+                 "when the profile has changed since");
   app.add_flag("--quiet", quiet, "no summary line on stderr");
   if (const auto code = parse_command_line(app, argc, argv, "softpack-import")) return *code;
 
@@ -46,9 +52,22 @@ int main(int argc, char** argv) {
     } catch (const InputError& e) {
       throw in_file(config_path, e);
     }
+    // One configuration per result: refused before anything is computed when the profile changed
+    // since make planned this run.
+    const std::string stamp = profile_stamp(root, "packing");
+    check_planned_stamp(config_path, "packing", planned_stamp, stamp);
     if (!profile.import)
       throw InputError(fmt::format("{}: packing: no `import` section; this profile's packings are generated (softpack-pack)", config_path));
     const ImportSpec& spec = *profile.import;
+    // An output never overwrites an input: the source is named by the profile, not the command line.
+    if (const auto source = spec.files.find(static_cast<std::uint64_t>(seed)); source != spec.files.end())
+      for (const std::string& out : {out_path, vtp_path, xyz_path}) {
+        std::error_code ec;
+        if (!out.empty() && (out == source->second || std::filesystem::equivalent(out, source->second, ec)))
+          throw InputError(fmt::format("{}: the same file as the source of seed {} (packing.import.files in {}), which this "
+                                       "command reads; an output never overwrites an input: give it another name",
+                                       out, seed, config_path));
+      }
     const ImportedPacking imported = import_packing(spec, static_cast<std::uint64_t>(seed));
     double r_max = 0.0;
     for (const double r : imported.radii) r_max = std::max(r_max, r);
@@ -68,6 +87,7 @@ int main(int argc, char** argv) {
     prov.code_version = code_version();
     prov.config_file = config_path;
     prov.config = section_text(root, "packing");
+    prov.stamp = stamp;
     prov.seed = static_cast<std::uint64_t>(seed);
     prov.seconds = watch.elapsed().wall;
     prov.cpu_seconds = process_cpu_seconds();

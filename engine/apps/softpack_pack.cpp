@@ -32,6 +32,10 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_path, "packing file to write (HDF5), e.g. data/paper/packings/seed-1.h5")->required();
   app.add_option("--vtp", vtp_path, "also write the spheres for ParaView (VTK PolyData)");
   app.add_option("--xyz", xyz_path, "also write the spheres for OVITO (extended XYZ)");
+  std::string planned_stamp;
+  app.add_option("--stamp", planned_stamp,
+                 "the packing stage's stamp make planned this run with (softpack-config PROFILE stamp packing): refused "
+                 "when the profile has changed since");
   app.add_flag("--quiet", quiet, "no progress lines on stderr");
   if (const auto code = parse_command_line(app, argc, argv, "softpack-pack")) return *code;
 
@@ -45,6 +49,10 @@ int main(int argc, char** argv) {
     } catch (const InputError& e) {
       throw in_file(config_path, e);
     }
+    // One configuration per result: refused before anything is computed when the profile changed
+    // since make planned this run.
+    const std::string stamp = profile_stamp(root, "packing");
+    check_planned_stamp(config_path, "packing", planned_stamp, stamp);
     if (profile.import)
       throw InputError(fmt::format("{}: packing.import: this profile's packings are imported, not generated; make them with "
                                    "softpack-import (make packings does)",
@@ -69,6 +77,7 @@ int main(int argc, char** argv) {
     prov.code_version = code_version();
     prov.config_file = config_path;
     prov.config = section_text(root, "packing");
+    prov.stamp = stamp;
     prov.seed = static_cast<std::uint64_t>(seed);
     prov.seconds = watch.elapsed().wall;
     prov.cpu_seconds = process_cpu_seconds();

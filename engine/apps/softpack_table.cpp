@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include "analysis/fit_table.hpp"
@@ -15,10 +16,12 @@
 #include "formats/average_file.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
+#include "config/profile.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "formats/fit_file.hpp"
+#include "packing/packing_profile.hpp"
 #include "io/atomic_file.hpp"
 
 namespace softpack::apps::table_app {
@@ -60,6 +63,9 @@ int main(int argc, char** argv) {
                                   "seed averages of softpack-average, one per scene (any order): also write kt_unit.md, the "
                                   "readings of Table 2's unit tested on kt/Fn (needs --Rs)");
   app.add_option("--Rs", Rs, "shell radius [m] of the profile (softpack-config PROFILE gnuplot), for kt_unit.md")->needs(averages);
+  std::string config_path;
+  app.add_option("--config", config_path,
+                 "the profile the fits must have been made with (make gives it); without it, they must agree with each other");
   if (const auto code = parse_command_line(app, argc, argv, "softpack-table")) return *code;
 
   try {
@@ -74,8 +80,17 @@ int main(int argc, char** argv) {
                            fmt::format("${}$ [N/deg], per degree of $\\alpha$", k)});
     std::set<std::string> scenes;
     std::vector<std::string> sources;
+    // One configuration per table: every fit of the stamp of the first and, with --config, of the profile's now.
+    const std::string stamp = config_path.empty() ? "" : profile_stamp(ConfigNode::load_file(config_path), "average");
+    std::optional<FitEstimates> first;
     for (const std::string& path : fit_paths) {
       FitEstimates fit = read_fit_file(path);
+      if (!first) first = fit;
+      if (fit.stamp != first->stamp)
+        throw InputError(fmt::format("--fits: {} and {} were made with different configurations (stamps '{}' and '{}'); a table "
+                                     "never mixes configurations: make them again with one profile",
+                                     fit_paths.front(), path, first->stamp, fit.stamp));
+      if (!config_path.empty()) check_stamp(path, "average", fit.stamp, stamp, config_path);
       if (!scenes.insert(fit.scene).second)
         throw InputError(fmt::format("{}: scene '{}' is given twice in --fits; allowed: one fit file per scene", path, fit.scene));
       table::Column c1{fit.scene, std::move(fit.normal), {}, {}};
@@ -108,10 +123,13 @@ int main(int argc, char** argv) {
                                                fmt::join(sources, ", "), published_path, seconds);
     namespace fs = std::filesystem;
     const auto out = [&](const std::string& name) { return (fs::path(out_dir) / name).string(); };
-    write_file_atomically(out("table1.md"), md1 + "\n<!-- " + provenance + " -->\n");
-    write_file_atomically(out("table2.md"), md2 + "\n<!-- " + provenance + " -->\n");
-    write_file_atomically(out("table1.tex"), table::to_latex(t1, t1.title + "\n" + provenance));
-    write_file_atomically(out("table2.tex"), table::to_latex(t2, t2.title + "\n" + provenance));
+    // Every input read and checked before anything is written, then the outputs as one: a refusal
+    // or a full disk leaves no table of this run (nor a mix of this run's and an earlier one's).
+    std::vector<std::pair<std::string, std::string>> outputs{
+        {out("table1.md"), md1 + "\n<!-- " + provenance + " -->\n"},
+        {out("table2.md"), md2 + "\n<!-- " + provenance + " -->\n"},
+        {out("table1.tex"), table::to_latex(t1, t1.title + "\n" + provenance)},
+        {out("table2.tex"), table::to_latex(t2, t2.title + "\n" + provenance)}};
     if (!gnuplot_path.empty()) {
       // Suffix of the figure scripts' variables: soft-solid -> _solid, soft-soft -> _soft. Eq. 8's
       // delta is Table 1's (paper §5).
@@ -127,7 +145,7 @@ int main(int argc, char** argv) {
         for (const char* k : {"a", "b", "c"}) gp += fmt::format("paper_kt_{}_{}={}; ", k, sfx, value(t2.columns[i], k));
         gp += fmt::format("paper_kt_delta_{}={}\n", sfx, value(t1.columns[i], "delta"));
       }
-      write_file_atomically(gnuplot_path, gp);
+      outputs.emplace_back(gnuplot_path, gp);
     }
     if (!average_paths.empty()) {
       if (!(Rs > 0.0)) throw InputError("--averages needs --Rs, the shell radius in metres (> 0)");
@@ -148,8 +166,9 @@ int main(int argc, char** argv) {
         scenes.push_back(table::kt_unit_scene(a.scene, a.delta_n, a.Fn, a.Fn_stderr, a.kt_delta_n, a.kt, a.kt_stderr,
                                               law("table1", {"a", "b", "c"}), law("table2", {"a", "b", "c"}), readings));
       }
-      write_file_atomically(out("kt_unit.md"), table::kt_unit_markdown(scenes, readings) + "\n<!-- " + provenance + " -->\n");
+      outputs.emplace_back(out("kt_unit.md"), table::kt_unit_markdown(scenes, readings) + "\n<!-- " + provenance + " -->\n");
     }
+    write_files_atomically(outputs);
     fmt::print("{}\n{}", md1, md2);
     return 0;
   } catch (...) {

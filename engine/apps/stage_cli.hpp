@@ -38,6 +38,9 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
                                          : "point files of the normal stage (its states are slid)")
         ->required();
   app.add_option("--out", o.out, "results file (HDF5)")->required();
+  app.add_option("--stamp", o.stamp,
+                 "the stage's stamp make planned this run with (softpack-config PROFILE stamp " + stage +
+                     "): refused when the profile has changed since");
   app.add_flag("--quiet", quiet, "no progress lines");
   app.add_option("--stop-after", o.stop_after, "stop after this many new points (tests of the resume)")->group("");
   const std::string program = "softpack-" + stage;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 
 #include "core/error.hpp"
@@ -62,6 +63,47 @@ std::string stage_stamp(const ConfigNode& root, const std::string& stage, const 
   Fnv1a h;
   h.add("softpack " + version + "\n" + stage_text(root, stage) + extra);
   return fmt::format("{:016x}", h.value);
+}
+
+std::string recorded_stage_text(const std::string& config) {
+  std::size_t at = 0;
+  while (config.compare(at, 2, "# ") == 0) {
+    const std::size_t end = config.find('\n', at);
+    if (end == std::string::npos) return "";
+    at = end + 1;
+  }
+  return config.substr(at);
+}
+
+std::string first_difference(const std::string& a, const std::string& b, const std::string& name_a, const std::string& name_b) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    const std::size_t ea = std::min(a.find('\n', i), a.size()), eb = std::min(b.find('\n', j), b.size());
+    const std::string la = i < a.size() ? a.substr(i, ea - i) : "(none)";
+    const std::string lb = j < b.size() ? b.substr(j, eb - j) : "(none)";
+    if (la != lb) {
+      const auto trim = [](std::string t) { return t.erase(0, std::min(t.find_first_not_of(' '), t.size())); };
+      return fmt::format("'{}' in {}, '{}' in {}", trim(la), name_a, trim(lb), name_b);
+    }
+    i = ea + 1, j = eb + 1;
+  }
+  return "";
+}
+
+void check_stamp(const std::string& path, const std::string& stage, const std::string& recorded, const std::string& expected,
+                 const std::string& profile_path) {
+  if (recorded.empty() || recorded == expected) return;
+  throw InputError(fmt::format("{}: made with another configuration of the {} stage (stamp {}) than {} holds now (stamp {}); "
+                               "results of two configurations are never mixed: make it again with this profile (make does)",
+                               path, stage, recorded, profile_path, expected));
+}
+
+void check_planned_stamp(const std::string& profile_path, const std::string& stage, const std::string& planned,
+                         const std::string& now) {
+  if (planned.empty() || planned == now) return;
+  throw InputError(fmt::format("{}: the {} stage's sections changed since make planned this run (stamp {} then, {} now); "
+                               "nothing was computed: run make again, it reruns what the change touches",
+                               profile_path, stage, planned, now));
 }
 
 std::vector<std::uint64_t> parse_seeds(const ConfigNode& root) {

@@ -39,6 +39,30 @@ std::string stage_text(const ConfigNode& root, const std::string& stage);
 std::string stage_stamp(const ConfigNode& root, const std::string& stage, const std::string& version,
                         const std::string& extra = "");
 
+/// The configuration a result records (formats/sweep_file.hpp, provenance/config) without the
+/// comment lines that open it (its stage, scene and packings): the profile's canonical text of the
+/// stage's sections (stage_text), the same for every seed of one configuration.
+std::string recorded_stage_text(const std::string& config);
+
+/// The first line where two configuration texts differ, as "'<line of a>' in A, '<line of b>'
+/// in B" (names_a, name_b; "(none)" past the end of one); "" when they are equal.
+std::string first_difference(const std::string& a, const std::string& b, const std::string& name_a, const std::string& name_b);
+
+/// The consumers' rule (docs/measurement.md, "One configuration per result"): InputError unless
+/// the stamp a file records of the `stage` that made it is `expected`, the stage's stamp of the
+/// profile now. The message names the file, the stage, both stamps and the profile, and says what
+/// to do. A file written before stamps were recorded records none (""): the caller compares the
+/// configuration text it records instead, where it records one.
+void check_stamp(const std::string& path, const std::string& stage, const std::string& recorded, const std::string& expected,
+                 const std::string& profile_path);
+
+/// A stage run by Make is given the stamp Make planned it with (--stamp; workflow/stamps.mk):
+/// InputError when the profile's stamp of that stage now (`now`) differs, the profile having been
+/// edited since make read it (a revert before the run ends would otherwise leave results of the
+/// edited profile that make takes as up to date). `planned` "": run by hand, nothing to compare.
+void check_planned_stamp(const std::string& profile_path, const std::string& stage, const std::string& planned,
+                         const std::string& now);
+
 /// The seeds of the profile (`seeds` list): seeds as parse_seed() (core/random.hpp) reads them, distinct.
 std::vector<std::uint64_t> parse_seeds(const ConfigNode& root);
 

@@ -113,6 +113,7 @@ void write_average_files(const std::string& dir, const NormalAverage& n, const T
   put(f, "provenance/inputs", inputs);
   put(f, "provenance/seconds", p.seconds);
   put(f, "provenance/cpu_seconds", p.cpu_seconds);
+  put(f, kProvenanceStamp, p.stamp);
   out.commit();
 }
 
@@ -126,6 +127,7 @@ AverageFile read_average_file(const std::string& path) {
     throw InputError(fmt::format("{}: /{}: '{}' is not allowed; allowed: soft-solid, soft-soft", path, kScene, a.scene));
   get(in, kProfile, a.profile);
   get(in, kCodeVersion, a.code_version);
+  if (in.exists(kProvenanceStamp)) get(in, kProvenanceStamp, a.stamp);
   a.seeds = in.read_scalar_int64(kSeeds);
   if (a.seeds < 1) throw InputError(fmt::format("{}: /{}: {} is not allowed; allowed: >= 1", path, kSeeds, a.seeds));
   read_columns(in, {{kNormalDeltaN, &a.delta_n}, {kNormalFn + kMean, &a.Fn}, {kNormalFn + kStderr, &a.Fn_stderr}});

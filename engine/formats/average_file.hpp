@@ -7,7 +7,9 @@
 //               /tangential/{delta_n, alpha_deg, ht, the same pairs for Ft_parallel,
 //                            Ft_perpendicular and Fn}        one row per (delta_n, alpha)
 //               /kt/{delta_n, mean, stderr}                  spring constant [N/m] per delta_n
-//               /provenance/{scene, profile, code_version, inputs, seconds, cpu_seconds}
+//               /provenance/{scene, profile, code_version, inputs, seconds, cpu_seconds, stamp}
+//                            (stamp: the average stage's configuration stamp, config/profile.hpp,
+//                            with --config; empty without, absent in files from before stamps)
 //   normal-<scene>.dat, tangential-<scene>.dat (one block per delta_n, gnuplot's index) and
 //   kt-<scene>.dat: the same numbers as columns, under a header that names them.
 // A normal-only profile's averages have no /tangential and /kt, and no tangential and kt .dat.
@@ -28,6 +30,7 @@ struct AverageProvenance {
   std::vector<std::string> normal_inputs, tangential_inputs;  ///< the results files averaged
   double seconds = 0.0;      ///< wall-clock time [s]
   double cpu_seconds = 0.0;  ///< CPU time of the process [s]
+  std::string stamp;         ///< the average stage's stamp of the profile (--config; "" without)
 };
 
 /// Writes the four files into `dir`, each atomically (two without `tangential`: normal only).
@@ -39,6 +42,7 @@ struct AverageFile {
   std::string path;
   std::string scene;  ///< soft-solid or soft-soft
   std::string profile, code_version;
+  std::string stamp;  ///< the average stage's configuration stamp ("": none recorded)
   std::int64_t seeds = 0;
   std::vector<double> delta_n, Fn, Fn_stderr;  ///< /normal
   bool has_kt = false;                         ///< the /kt group is there

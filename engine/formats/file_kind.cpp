@@ -4,6 +4,8 @@
 
 #include "core/error.hpp"
 #include "formats/average_file.hpp"
+#include "formats/fit_file.hpp"
+#include "formats/h5_fields.hpp"
 #include "formats/packing_file.hpp"
 #include "formats/sweep_file.hpp"
 
@@ -35,6 +37,24 @@ void expect_layout(const h5::File& f, const std::string& what, std::span<const c
     kind = "it is " + kind;
   }
   throw InputError(fmt::format("{}: not a softpack {} file ({})", f.path(), what, kind));
+}
+
+std::optional<RecordedStamp> recorded_stamp(const std::string& path) {
+  try {
+    RecordedStamp r;
+    if (path.ends_with(".json")) {
+      r = {"average", read_fit_file(path).stamp};
+    } else {
+      const h5::File f = h5::File::open(path);
+      if (!f.exists(formats::kProvenanceStamp)) return std::nullopt;
+      r.stamp = f.read_string(formats::kProvenanceStamp);
+      r.stage = f.exists("provenance/stage") ? f.read_string("provenance/stage") : f.exists("provenance/program") ? "packing" : "average";
+    }
+    if (r.stamp.empty()) return std::nullopt;
+    return r;
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace softpack

@@ -3,6 +3,7 @@
 // format module knows its own layout and says whether a file has it (describe_*_file, with
 // has_layout); kind_of asks them all.
 #pragma once
+#include <optional>
 #include <span>
 #include <string>
 
@@ -21,5 +22,15 @@ bool has_layout(const h5::File& f, std::span<const char* const> layout);
 /// InputError "<file>: not a softpack <what> file (no /a, /b or /c)", or "(it is <kind_of>)"
 /// for another softpack file, unless `f` has `layout`.
 void expect_layout(const h5::File& f, const std::string& what, std::span<const char* const> layout);
+
+/// The configuration stamp a result file records (config/profile.hpp) and the stage it is of: a
+/// packing (packing), a sweep's point or results file (its stage), an average file or a fit file
+/// (.json; average). nullopt for a file that records none (written before stamps, or by hand
+/// without --config), or that cannot be read (its consumer says why). What `make` reruns besides
+/// what its stamps say (softpack-config PROFILE stale).
+struct RecordedStamp {
+  std::string stage, stamp;
+};
+std::optional<RecordedStamp> recorded_stamp(const std::string& path);
 
 }  // namespace softpack

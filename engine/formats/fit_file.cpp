@@ -21,6 +21,7 @@ using json = nlohmann::ordered_json;
 
 constexpr const char *kSceneKey = "scene", *kNormal = "normal", *kTangential = "tangential";
 constexpr const char *kProvenance = "provenance", *kCodeVersionKey = "code_version";
+constexpr const char* kStampKey = "stamp";  // since stamps (issue 28); absent in older files
 const std::string kError = "_error";  // the key of a coefficient's standard error: "a_error"
 
 // The coefficients of a law with a standard error, as the file names them: Eq. 7 has all four,
@@ -120,7 +121,8 @@ std::string fit_file_text(const FitFile& f) {
                                                {"code_version", f.input.code_version},
                                                {"seeds", f.input.seeds}}})},
                       {"seconds", f.seconds},
-                      {"cpu_seconds", f.cpu_seconds}};
+                      {"cpu_seconds", f.cpu_seconds},
+                      {kStampKey, f.stamp}};
   return out.dump(2) + "\n";
 }
 
@@ -162,6 +164,10 @@ FitEstimates read_fit_file(const std::string& path) {
   const auto prov = j.find(kProvenance);
   if (prov != j.end() && prov->is_object() && prov->contains(kCodeVersionKey) && prov->at(kCodeVersionKey).is_string())
     out.code_version = prov->at(kCodeVersionKey).get<std::string>();
+  if (prov != j.end() && prov->is_object() && prov->contains(kStampKey)) {
+    if (!prov->at(kStampKey).is_string()) throw InputError(fmt::format("{}: {}.{}: expected a string", path, kProvenance, kStampKey));
+    out.stamp = prov->at(kStampKey).get<std::string>();
+  }
   if (prov != j.end() && prov->is_object() && prov->contains("seconds") && prov->contains("cpu_seconds") &&
       prov->at("seconds").is_number() && prov->at("cpu_seconds").is_number())
     out.time = Elapsed{prov->at("seconds").get<double>(), prov->at("cpu_seconds").get<double>()};

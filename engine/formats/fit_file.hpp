@@ -11,7 +11,9 @@
 //                  (only with fit.compare: the same points fitted with each weighting, side by side),
 //    "errors": "…", "models": {…},
 //    "provenance": {"program", "code_version", "inputs": [{"path", "scene", "profile",
-//                   "code_version", "seeds"}], "seconds", "cpu_seconds"}}
+//                   "code_version", "seeds"}], "seconds", "cpu_seconds", "stamp"}}
+//   (stamp: the average stage's configuration stamp, config/profile.hpp, with --config; "" without;
+//   absent in files from before stamps)
 //
 // Undefined errors (NaN, e.g. δ's when c >= 0) are written as null. Beside it, on request, the
 // coefficients as gnuplot variables for figures/*.gp (a_solid=...; kt_a_solid=...; NaN when
@@ -48,6 +50,7 @@ struct FitFile {
   std::string code_version;
   double seconds = 0.0;      ///< wall-clock time [s]
   double cpu_seconds = 0.0;  ///< CPU time of the process [s]
+  std::string stamp;         ///< the average stage's stamp of the profile (--config; "" without)
 };
 
 /// The JSON text of the file (what write_fit_file writes).
@@ -64,6 +67,7 @@ struct FitEstimates {
   std::map<std::string, table::Estimate> normal;                     ///< a, b, c, delta
   std::optional<std::map<std::string, table::Estimate>> tangential;  ///< a, b, c; none when null
   std::string code_version = "?";                                    ///< of softpack-fit ("?": not said)
+  std::string stamp;                                                 ///< the average stage's ("": not said)
   std::optional<Elapsed> time;  ///< of softpack-fit (provenance seconds, cpu_seconds), when the file says
 };
 /// InputError naming the file and the key: not JSON, no scene, a missing or non-numeric

@@ -42,6 +42,10 @@ void get(const h5::File& f, const std::string& name, std::vector<double>& v);
 void get(const h5::File& f, const std::string& name, std::vector<std::int64_t>& v);
 void get(const h5::File& f, const std::string& name, std::vector<Vec3>& v);
 
+/// Where every result file records its configuration stamp (config/profile.hpp; since issue 28,
+/// absent in older files).
+inline constexpr const char* kProvenanceStamp = "provenance/stamp";
+
 /// f(name, member) for a module's field lists: put() or get() each member.
 inline auto writer(h5::File& f) {
   return [&f](const std::string& name, const auto& member) { put(f, name, member); };

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/sha256.hpp"
 #include "formats/file_kind.hpp"
 #include "formats/h5_fields.hpp"
 
@@ -96,6 +97,7 @@ void write_imported_packing_file(const std::string& path, const ImportRecord& re
   put(f, "stats/inserted", radii.size());
   put_statistics(f, stats);
   each_packing_provenance(provenance, writer(f));
+  put(f, kProvenanceStamp, provenance.stamp);
   out.commit();
 }
 
@@ -115,6 +117,7 @@ void write_packing_file(const std::string& path, const PackingParameters& p, con
   put_statistics(f, stats);
 
   each_packing_provenance(provenance, writer(f));
+  put(f, kProvenanceStamp, provenance.stamp);
   out.commit();
 }
 
@@ -165,7 +168,22 @@ PackingFile read_packing_file(const std::string& path) {
                                    path, i, kCentres, i, kRadii, i, x.norm() + r, kShellRadius, out.Rs));
   }
   each_packing_provenance(v, reader(f));
+  if (f.exists(kProvenanceStamp)) get(f, kProvenanceStamp, v.stamp);
   return out;
+}
+
+std::string packing_sha256(const PackingFile& p) {
+  // The spheres sorted (by x, y, z, r): the same packing listed in another order is the same packing.
+  std::vector<std::array<double, 4>> spheres;
+  spheres.reserve(p.radii.size());
+  for (std::size_t i = 0; i < p.radii.size(); ++i) spheres.push_back({p.centres[i].x(), p.centres[i].y(), p.centres[i].z(), p.radii[i]});
+  std::sort(spheres.begin(), spheres.end());
+  std::string bytes;
+  const auto add = [&](double v) { bytes.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  add(p.Rs);
+  for (const auto& sphere : spheres)
+    for (const double v : sphere) add(v);
+  return sha256_of_bytes(bytes);
 }
 
 std::string describe_packing_file(const h5::File& f) {

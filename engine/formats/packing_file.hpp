@@ -11,7 +11,9 @@
 //                       depletion_length, min_shell_gap, exponent, exponent_error,
 //                       exponent_r_min, exponent_r_max, radial_profile/{r_inner,r_outer,solid_fraction}
 //   /provenance/...     program, code_version, config_file, config (the YAML slice read),
-//                       seed, seconds, cpu_seconds (wall-clock and CPU time of the generation)
+//                       seed, seconds, cpu_seconds (wall-clock and CPU time of the generation),
+//                       stamp (the packing stage's configuration stamp, config/profile.hpp;
+//                       files written before stamps were recorded have none)
 //
 // An imported packing (softpack-import, packing/import.hpp) has /centres, /radii, /shell, /stats
 // (solid fraction, bulk fraction, depletion length, min shell gap, exponent, radial profile),
@@ -41,6 +43,7 @@ struct PackingProvenance {
   std::uint64_t seed = 0;
   double seconds = 0.0;      ///< wall-clock time [s]
   double cpu_seconds = 0.0;  ///< CPU time of the process [s]
+  std::string stamp;         ///< the packing stage's configuration stamp ("": a file from before stamps)
 };
 
 /// Writes the file atomically (no file is left behind on failure).
@@ -70,6 +73,11 @@ struct PackingFile {
 
 /// Reads a packing file; InputError names the file and what is missing or wrong.
 PackingFile read_packing_file(const std::string& path);
+
+/// The packing's identity by content: the SHA-256 of its shell radius and of its spheres (x, y, z,
+/// r as IEEE doubles) sorted, so that the order they are listed in does not count. Two seeds whose packings have one identity are one packing
+/// counted twice, whatever their names and seed numbers (analysis/average.hpp).
+std::string packing_sha256(const PackingFile& p);
 
 /// "a packing file (softpack-pack)" (or softpack-import) when `f` has the layout of one, else "" (formats/file_kind.hpp).
 std::string describe_packing_file(const h5::File& f);

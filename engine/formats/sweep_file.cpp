@@ -26,6 +26,8 @@ void each_provenance_field(P& p, F&& f) {
   f("provenance/config", p.config);
   f("provenance/code_version", p.code_version);
 }
+// Since stamps (issue 28): written always, read when there.
+constexpr const char* kPackingSha256 = "provenance/packing_sha256";
 
 // --- The point file ---------------------------------------------------------------------------
 
@@ -286,6 +288,7 @@ void write_point_file(const std::string& path, PointResult& r, const SimulationS
   write_wall_springs(f, kPlaneSprings, s.plane_springs);
   write_wall_springs(f, kShellSprings, s.shell_springs);
   each_provenance_field(prov, writer(f));
+  put(f, kProvenanceStamp, prov.stamp);
   r.timing.output = watch.elapsed();
   each_timing_field(r, writer(f));
   out.commit();
@@ -296,6 +299,7 @@ PointFile read_point_file(const std::string& path, bool with_state) {
   expect_layout(f, "sweep point", kPointLayout);
   PointFile p;
   each_provenance_field(p.provenance, reader(f));
+  if (f.exists(kProvenanceStamp)) get(f, kProvenanceStamp, p.provenance.stamp);
   if (p.provenance.stage != "normal" && p.provenance.stage != "tangential" && p.provenance.stage != "sliding")
     throw InputError(
         fmt::format("{}: /{}: '{}' is not allowed; allowed: normal, tangential, sliding", path, kPointStage, p.provenance.stage));
@@ -325,10 +329,12 @@ std::string describe_point_file(const h5::File& f) {
 }
 
 void write_sweep_results_file(const std::string& path, const std::vector<PointResult>& points, const PointProvenance& prov,
-                              const std::string& packings, std::uint64_t seed, const Elapsed& stage_time) {
+                              const std::string& packings, const std::string& packing_sha256, std::uint64_t seed,
+                              const Elapsed& stage_time) {
   SweepResults s = columns(points);
   s.provenance = prov;
   s.packings = packings;
+  s.packing_sha256 = packing_sha256;
   s.seed = seed;
   s.total_seconds = stage_time.wall;
   s.total_cpu_seconds = stage_time.cpu;
@@ -345,6 +351,8 @@ void write_sweep_results_file(const std::string& path, const std::vector<PointRe
   });
   each_sweep_provenance(s, writer(f));
   put(f, kCpuSeconds, s.total_cpu_seconds);
+  put(f, kProvenanceStamp, s.provenance.stamp);
+  put(f, kPackingSha256, s.packing_sha256);
   out.commit();
 }
 
@@ -354,6 +362,8 @@ SweepResults read_sweep_results_file(const std::string& path, const std::string&
   SweepResults s;
   s.path = path;
   each_sweep_provenance(s, reader(f));
+  if (f.exists(kProvenanceStamp)) get(f, kProvenanceStamp, s.provenance.stamp);
+  if (f.exists(kPackingSha256)) get(f, kPackingSha256, s.packing_sha256);
   // The timings (release 0.4.0 on): all of them or none.
   s.has_timing = f.exists(kReused);
   if (s.has_timing) get(f, kCpuSeconds, s.total_cpu_seconds);

@@ -10,7 +10,8 @@
 //   /state/...       SimulationState: time, steps, x, v, w, F, T, plane_points, shell_centres
 //                    (N, 3), pair_springs/{i, j, xi}, plane_springs/<w>/{i, xi},
 //                    shell_springs/<w>/{i, xi}
-//   /provenance/...  stage, scene, config, code_version
+//   /provenance/...  stage, scene, config, code_version, stamp (the stage's configuration stamp,
+//                    config/profile.hpp; none in files written before stamps were recorded)
 //
 // The results file: the points of one sweep (one stage, scene and seed) as columns, read by
 // softpack-average and the checks of the archive (tests/stability/test_archive.cpp); one value
@@ -27,7 +28,9 @@
 //   /timing/{loading, relaxation, output}/{wall, cpu} [s]   where each point's time went (PointTiming)
 //   /timing/reused                                1: the point was taken from its checkpoint
 //   /provenance/...  stage, scene, config, code_version, packings, seed, seconds and cpu_seconds
-//                    (wall-clock and CPU time of the stage's process)
+//                    (wall-clock and CPU time of the stage's process), stamp, packing_sha256 (the
+//                    identity of the seed's own packing, formats/packing_file.hpp; the last two
+//                    absent in files written before stamps were recorded)
 #pragma once
 #include <array>
 #include <cstdint>
@@ -46,7 +49,9 @@ struct PointProvenance {
   std::string scene;   ///< "soft-solid" or "soft-soft"
   std::string config;  ///< the configuration the point depends on (YAML)
   std::string code_version;
+  std::string stamp;  ///< the stage's configuration stamp ("": a file from before stamps)
 };
+
 
 // --- The point file ---------------------------------------------------------------------------
 
@@ -89,6 +94,7 @@ struct SweepResults : SweepColumns {
   bool has_overlap = false;         ///< the file has overlap_max (release 0.5.0 on; else it is empty)
   PointProvenance provenance;
   std::string packings;
+  std::string packing_sha256;  ///< of the seed's own packing (the first); "" for the Hertz check and older files
   std::uint64_t seed = 0;
   double total_seconds = 0.0;      ///< wall-clock time of the whole stage
   double total_cpu_seconds = 0.0;  ///< CPU time of the stage's process
@@ -97,7 +103,8 @@ struct SweepResults : SweepColumns {
 /// Writes the results of a whole sweep atomically: arrays over the points, the relaxation
 /// checks flattened.
 void write_sweep_results_file(const std::string& path, const std::vector<PointResult>& points, const PointProvenance& prov,
-                              const std::string& packings, std::uint64_t seed, const Elapsed& stage_time);
+                              const std::string& packings, const std::string& packing_sha256, std::uint64_t seed,
+                              const Elapsed& stage_time);
 
 /// Reads a sweep results file. With `stage` or `scene` given, the file must have been made by
 /// that stage (normal, tangential) for that scene. Files of releases before 0.4.0, which have no

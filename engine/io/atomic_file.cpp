@@ -22,9 +22,11 @@ std::string temporary_path_for(const std::string& final_path) {
   return fmt::format("{}.tmp.{}", final_path, ::getpid());
 }
 
-void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string tmp = temporary_path_for(path);
-  // A full disk, a quota or an I/O error: one message, and the temporary goes.
+namespace {
+
+// Writes `content` to the temporary `tmp` of `path`; on failure removes it and throws InputError
+// (a full disk, a quota or an I/O error: one message, naming the final path).
+void write_temporary(const std::string& path, const std::string& tmp, const std::string& content) {
   const auto failed = [&](const char* what, int error) {
     std::remove(tmp.c_str());
     throw InputError(fmt::format("{}: cannot {}: {}", path, what, std::strerror(error)));
@@ -34,7 +36,36 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   const bool written = std::fwrite(content.data(), 1, content.size(), out) == content.size() && std::fflush(out) == 0;
   const int write_error = errno;
   if (std::fclose(out) != 0 || !written) failed("write the file", written ? errno : write_error);
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) failed("rename it into place", errno);
+}
+
+void rename_into_place(const std::string& tmp, const std::string& path) {
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int error = errno;
+    std::remove(tmp.c_str());
+    throw InputError(fmt::format("{}: cannot rename it into place: {}", path, std::strerror(error)));
+  }
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  const std::string tmp = temporary_path_for(path);
+  write_temporary(path, tmp, content);
+  rename_into_place(tmp, path);
+}
+
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::string> temporaries;
+  try {
+    for (const auto& [path, content] : files) {
+      temporaries.push_back(temporary_path_for(path));
+      write_temporary(path, temporaries.back(), content);
+    }
+  } catch (...) {
+    for (const std::string& tmp : temporaries) std::remove(tmp.c_str());
+    throw;
+  }
+  for (std::size_t k = 0; k < files.size(); ++k) rename_into_place(temporaries[k], files[k].first);
 }
 
 std::string read_text_file(const std::string& path) {

@@ -2,6 +2,8 @@
 // an interrupted run never leaves a half-written file that make would trust.
 #pragma once
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace softpack {
 
@@ -12,6 +14,10 @@ std::string temporary_path_for(const std::string& final_path);
 
 /// Writes `content` to `path` via `path.tmp.<pid>` and rename(2). Throws InputError on failure.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+/// Writes several files as one output: every temporary first, then the renames, so that a
+/// failure (a full disk) leaves none of them new, rather than some. InputError names the file.
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
 
 /// The whole text of a file, "" when it does not exist or cannot be read.
 std::string read_text_file(const std::string& path);

@@ -8,6 +8,7 @@
 
 #include "config/profile.hpp"
 #include "core/error.hpp"
+#include "forces/normal_law.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene_yaml.hpp"
 #include "scene/validate.hpp"
@@ -84,6 +85,15 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   } catch (const InputError& e) {
     throw root.locate(e);
   }
+  // The law effects.normal names, from the engine's registry: when the profile is read (so by
+  // softpack-config, before anything runs), not when the first simulation is built.
+  try {
+    (void)normal_law(s.effects.normal);
+  } catch (const InputError& e) {
+    const ConfigNode effects = sim.at("effects");
+    if (const auto n = effects.find("normal")) n->fail(std::string(e.what()).substr(std::string("effects.normal: ").size()));
+    effects.fail(e.what());
+  }
 
   const ConfigNode nn = root.at("normal");
   nn.allow_only({"scenes", "delta_n", "speed", "path", "second_radius_ratio"});
@@ -93,7 +103,11 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
     } catch (const InputError& e) {
       v.fail(e.what());
     }
+    // Each scene once: two columns of one scene would be averaged, fitted and tabled twice.
+    if (std::count(m.normal.scenes.begin(), m.normal.scenes.end(), m.normal.scenes.back()) > 1)
+      v.fail(fmt::format("'{}' is listed twice; allowed: each of soft-solid, soft-soft at most once", v.string()));
   }
+  if (m.normal.scenes.empty()) nn.at("scenes").fail("at least one scene is required; allowed: soft-solid, soft-soft");
   m.normal.delta_n = increasing_list(nn.at("delta_n"), 0.0, 1.0);
   m.normal.speed = nn.at("speed").number();
   if (const std::string why = limits::refusal(m.normal.speed, kSpeed); !why.empty()) nn.at("speed").fail(why);

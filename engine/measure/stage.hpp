@@ -19,6 +19,9 @@ struct StageOptions {
   std::string checkpoints;         ///< point files of this stage
   std::string normal_checkpoints;  ///< tangential, sliding: the normal stage's point files
   std::string out;
+  /// The stamp Make planned this run with (workflow/stamps.mk; "" when run by hand): the stage
+  /// refuses to run when the profile's stamp now differs (the profile was edited since).
+  std::string stamp;
   long long seed = -1;
   bool hertz_check = false;  ///< replace the soft-particle by a solid sphere of radius Rs
   long stop_after = 0;       ///< testing: stop after this many new points

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 
+#include "config/profile.hpp"
 #include "core/error.hpp"
 #include "core/stopwatch.hpp"
 
@@ -84,35 +85,70 @@ void at_point(const std::string& point, Fn&& fn) {
   }
 }
 
-// A point file is reused only when it holds the same configuration and reads whole, its state
-// included (every dataset is checksummed: a flipped bit is an InputError here, not a wrong
-// restart later). Returns what it read, so that nothing is read twice.
-std::optional<PointFile> reusable(const std::string& path, const std::string& config) {
+// The sliding stage's alpha: soft-soft, the orbit's angle, by which the contact's frame has turned
+// about +z; soft-solid, 0.
+double sliding_alpha_deg(const SweepContext& c, double ht) {
+  return c.setup.second_body >= 0 ? ht / c.setup.Rs * 180.0 / std::numbers::pi : 0.0;
+}
+
+// Which point a point file must hold to be taken as point k of a sweep: its stage and its place
+// on the grid (the values the sweep records with it, bit for bit).
+struct PointKey {
+  const char* stage;
+  double delta_n, alpha_deg, ht;
+};
+
+// "" when the point file holds the point `key`, else what it holds instead.
+std::string other_point(const PointFile& f, const PointKey& key) {
+  const PointResult& r = f.result;
+  if (f.provenance.stage != key.stage) return fmt::format("a point of the {} stage, not of the {} stage", f.provenance.stage, key.stage);
+  if (r.delta_n != key.delta_n || r.alpha_deg != key.alpha_deg || r.ht != key.ht)
+    return fmt::format("the point delta_n = {}, alpha = {} deg, ht = {} m, not delta_n = {}, alpha = {} deg, ht = {} m", r.delta_n,
+                       r.alpha_deg, r.ht, key.delta_n, key.alpha_deg, key.ht);
+  return "";
+}
+
+// A point file is reused only when it holds the same configuration (the stage's sections, the
+// scene, the packings by content, so the seed), the point it is filed under, and reads whole,
+// its state included (every dataset is checksummed: a flipped bit is an InputError here, not a
+// wrong restart later). Returns what it read, so that nothing is read twice.
+std::optional<PointFile> reusable(const std::string& path, const std::string& config, const PointKey& key) {
   if (!std::filesystem::exists(path)) return std::nullopt;
   try {
     PointFile f = read_point_file(path, true);
     if (f.provenance.config != config) return std::nullopt;
+    if (const std::string other = other_point(f, key); !other.empty())
+      throw InputError(fmt::format("{}: holds {} (a checkpoint filed under another point)", path, other));
     return f;
   } catch (const InputError& e) {
-    // Unreadable (it cannot be half-written, but may be damaged or foreign): recomputed, said.
+    // Unreadable or misfiled (it cannot be half-written, but may be damaged, foreign or moved): recomputed, said.
     fmt::print(stderr, "warning: checkpoint not used, the point is computed again: {}\n", e.what());
     return std::nullopt;
   }
 }
 
 PointProvenance provenance(const SweepContext& c, const char* stage) {
-  return PointProvenance{stage, scene_name(c.setup.kind), c.config, c.code_version};
+  return PointProvenance{stage, scene_name(c.setup.kind), c.config, c.code_version, c.stamp};
 }
 
-// The normal state at delta_n (a point of the normal grid), from the normal stage's point files.
-std::string normal_state_path(const SweepContext& c, const std::string& normal_dir, double delta_n) {
+// The normal state at delta_n (a point of the normal grid), from the normal stage's point files:
+// InputError unless the file is that point of this configuration (stage, scene, packings, sections).
+SimulationState normal_state(const SweepContext& c, const std::string& normal_dir, double delta_n) {
   const auto& grid = c.settings.normal.delta_n;
   const std::size_t k = static_cast<std::size_t>(std::find(grid.begin(), grid.end(), delta_n) - grid.begin());
   const std::string path = normal_point_path(normal_dir, k);
   if (!std::filesystem::exists(path))
     throw InputError(fmt::format("{}: missing normal state for delta_n = {} (run the normal stage of this scene and seed first)",
                                  path, delta_n));
-  return path;
+  PointFile f = read_point_file(path, true);
+  if (f.provenance.config != c.normal_config)
+    throw InputError(fmt::format("{}: this normal state was computed with another configuration than this sweep's ({}); "
+                                 "run the normal stage of this profile, scene and seed again",
+                                 path, first_difference(f.provenance.config, c.normal_config, "the state", "this sweep")));
+  if (const std::string other = other_point(f, PointKey{"normal", delta_n, 0.0, 0.0}); !other.empty())
+    throw InputError(fmt::format("{}: filed as the normal state of delta_n = {}, it holds {}; run the normal stage again", path,
+                                 delta_n, other));
+  return std::move(f.state);
 }
 
 }  // namespace
@@ -137,13 +173,14 @@ std::vector<PointResult> run_sliding_sweep(const SweepContext& c, const std::str
   std::vector<PointResult> points;
   std::size_t computed = 0;
   for (std::size_t a = 0; a < hn_grid.size(); ++a) {
-    const std::string state_path = normal_state_path(c, normal_dir, hn_grid[a]);
     // Each point continues from the previous one: reuse the finished ones in order, keeping the
     // last state, then compute the rest in one simulation.
     std::size_t done = 0;
     SimulationState last;
     while (done < ht_grid.size()) {
-      std::optional<PointFile> f = reusable(sliding_point_path(c.checkpoint_dir, a, done), c.config);
+      std::optional<PointFile> f = reusable(sliding_point_path(c.checkpoint_dir, a, done), c.config,
+                                            PointKey{"sliding", hn_grid[a], sliding_alpha_deg(c, ht_grid[done] * c.setup.Rs),
+                                                     ht_grid[done] * c.setup.Rs});
       if (!f) break;
       points.push_back(f->result);
       points.back().reused = true;
@@ -153,7 +190,7 @@ std::vector<PointResult> run_sliding_sweep(const SweepContext& c, const std::str
     }
     if (done == ht_grid.size()) continue;
     Simulation sim(c.setup.scene);
-    sim.restore(done == 0 ? read_point_file(state_path, true).state : last);
+    sim.restore(done == 0 ? normal_state(c, normal_dir, hn_grid[a]) : last);
     double ht_now = done == 0 ? 0.0 : ht_grid[done - 1] * c.setup.Rs;
     for (std::size_t b = done; b < ht_grid.size(); ++b) {
       Stopwatch watch;
@@ -173,8 +210,7 @@ std::vector<PointResult> run_sliding_sweep(const SweepContext& c, const std::str
       r.delta_n = hn_grid[a];
       r.hn = hn_grid[a] * c.setup.Rs;
       r.ht = ht;
-      // soft-soft: the orbit's angle, by which the contact's frame has turned about +z
-      if (c.setup.second_body >= 0) r.alpha_deg = ht / c.setup.Rs * 180.0 / std::numbers::pi;
+      r.alpha_deg = sliding_alpha_deg(c, ht);
       r.steps = sim.step_count() - step0;
       r.timing = timing;
       write_point_file(sliding_point_path(c.checkpoint_dir, a, b), r, sim.state(), provenance(c, "sliding"));
@@ -192,7 +228,8 @@ std::vector<PointResult> run_normal_sweep(const SweepContext& c) {
   std::size_t done = 0;  // points 0..done-1 are reusable
   SimulationState undeformed, last;  // the states of points 0 and done-1, when done > 0
   while (done < grid.size()) {
-    std::optional<PointFile> f = reusable(normal_point_path(c.checkpoint_dir, done), c.config);
+    std::optional<PointFile> f =
+        reusable(normal_point_path(c.checkpoint_dir, done), c.config, PointKey{"normal", grid[done], 0.0, 0.0});
     if (!f) break;
     points[done] = f->result;
     points[done].reused = true;
@@ -260,20 +297,20 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
   std::vector<PointResult> points;
   std::size_t computed = 0;
   for (std::size_t a = 0; a < hn_grid.size(); ++a) {
-    const std::string state_path = normal_state_path(c, normal_dir, hn_grid[a]);
-    std::optional<SimulationState> normal_state;  // read when a point has to be computed
+    std::optional<SimulationState> state;  // the normal state, read when a point has to be computed
     for (std::size_t b = 0; b < alphas.size(); ++b) {
       const std::string path = tangential_point_path(c.checkpoint_dir, a, b);
-      if (const std::optional<PointFile> f = reusable(path, c.config)) {
+      const double ht = std::numbers::pi * c.setup.Rs * alphas[b] / 180.0;
+      if (const std::optional<PointFile> f = reusable(path, c.config, PointKey{"tangential", hn_grid[a], alphas[b], ht})) {
         points.push_back(f->result);
         points.back().reused = true;
         if (c.progress) c.progress("tangential", points.size() - 1, total, points.back(), true);
         continue;
       }
       Stopwatch watch;  // loading: reading and restoring the normal state, then the rotation
-      if (!normal_state) normal_state = read_point_file(state_path, true).state;
+      if (!state) state = normal_state(c, normal_dir, hn_grid[a]);
       Simulation sim(c.setup.scene);
-      sim.restore(*normal_state);
+      sim.restore(*state);
       const long step0 = sim.step_count();
       const double alpha = alphas[b] * std::numbers::pi / 180.0;
       RelaxationReport relax;
@@ -301,7 +338,7 @@ std::vector<PointResult> run_tangential_sweep(const SweepContext& c, const std::
       r.delta_n = hn_grid[a];
       r.hn = hn_grid[a] * c.setup.Rs;
       r.alpha_deg = alphas[b];
-      r.ht = std::numbers::pi * c.setup.Rs * alphas[b] / 180.0;
+      r.ht = ht;
       r.steps = sim.step_count() - step0;
       r.timing = timing;
       sim.release_drivers();

@@ -37,6 +37,11 @@ struct SweepContext {
   ContactSetup setup;
   MeasurementSettings settings;
   std::string config;          ///< configuration text recorded with (and checked against) each point
+  std::string stamp;           ///< the stage's configuration stamp, recorded with each point
+  /// Tangential and sliding sweeps: the configuration the normal states they start from must
+  /// record (the normal stage's `config`); a state filed under another point, stage, seed or
+  /// configuration is refused.
+  std::string normal_config;
   std::string checkpoint_dir;  ///< point files of this stage
   std::string code_version;
   /// Progress: the stage of the point ("normal", "tangential"), its index, the number of points,

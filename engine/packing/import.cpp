@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 #include "core/error.hpp"
@@ -211,7 +212,17 @@ ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed) {
 
 std::string import_sources_text(const ImportSpec& spec) {
   std::string text;
-  for (const auto& [seed, path] : spec.files) text += fmt::format("seed {} {} sha256 {}\n", seed, path, sha256_of_file(path));
+  std::map<std::string, std::pair<std::uint64_t, std::string>> first;  // digest -> the first seed with it, its file
+  for (const auto& [seed, path] : spec.files) {
+    const std::string digest = sha256_of_file(path);
+    // Identity by content: two seeds of one packing would enter the average twice and shrink
+    // its standard error (to 0 for two), whatever the files are called.
+    if (const auto [it, fresh] = first.emplace(digest, std::pair{seed, path}); !fresh)
+      throw InputError(fmt::format("packing.import.files: seeds {} ({}) and {} ({}) are one packing (the same bytes, SHA-256 {}); "
+                                   "each seed must be a different packing",
+                                   it->second.first, it->second.second, seed, path, digest));
+    text += fmt::format("seed {} {} sha256 {}\n", seed, path, digest);
+  }
   return text;
 }
 

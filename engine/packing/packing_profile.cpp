@@ -57,4 +57,9 @@ double shell_radius(const PackingProfile& profile, const std::vector<std::uint64
   return import_packing(*profile.import, seeds.at(0)).Rs;
 }
 
+std::string profile_stamp(const ConfigNode& root, const std::string& stage, const std::string& release) {
+  const PackingProfile packing = parse_packing(root);
+  return stage_stamp(root, stage, release, packing.import ? import_sources_text(*packing.import) : "");
+}
+
 }  // namespace softpack

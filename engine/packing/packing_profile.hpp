@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "config/yaml_node.hpp"
+#include "core/version.hpp"
 #include "packing/generator.hpp"
 #include "packing/import.hpp"
 
@@ -19,6 +20,12 @@ struct PackingProfile {
 /// Reads and validates the `packing` section of a profile file; InputError with file, line and
 /// column names the key and what is allowed.
 PackingProfile parse_packing(const ConfigNode& root);
+
+/// The stage's configuration stamp (config/profile.hpp, stage_stamp) as Make takes it from
+/// `softpack-config PROFILE stamp STAGE`: of the release, the stage's sections and, for imported
+/// packings, the SHA-256 of every seed's source file (import_sources_text, which refuses two seeds
+/// of one content). Every stage records it with its results and compares its inputs' with it.
+std::string profile_stamp(const ConfigNode& root, const std::string& stage, const std::string& release = release_version());
 
 /// The shell radius Rs [m] of the profile's packings: the generator's, the given shell's, or (an
 /// imported shell read from the file) that of the first seed's import.

@@ -4,13 +4,21 @@
 # small sweep profile of the command-line tests (about a second).
 source "$(dirname "${BASH_SOURCE[0]}")/../cli/common.sh"
 seed=${FAULT_SEED:-$(( $(date +%s%N) % 1000000 ))}
-RANDOM=$seed
 echo "fault seed $seed (replay: FAULT_SEED=$seed)"
 profile=$root/tests/data/sweep-profile.yaml
 py=/usr/bin/python3  # Debian's, with python3-h5py
 
-# random_below N: a random integer in [0, N), also for N > 32767.
-random_below() { echo $(( ((RANDOM << 15) | RANDOM) % $1 )); }
+# random_below N: a random integer in [0, N), also for N > 32767. The draws follow from the seed
+# alone, also inside $(...): bash reseeds $RANDOM in every subshell, so the generator's state (a
+# 64-bit LCG) is kept in a file of the test's scratch folder instead.
+rng_state=$tmp/.rng-state
+echo "$seed" > "$rng_state"
+random_below() {
+  local s
+  s=$(( ($(< "$rng_state") * 6364136223846793005 + 1442695040888963407) & 0x7fffffffffffffff ))
+  echo "$s" > "$rng_state"
+  echo $(( (s >> 17) % $1 ))
+}
 
 # The stages' commands on the sample files; OUT arguments last so the tests can redirect them.
 pack() { "$bin/softpack-pack" --config "$profile" --seed "$1" --quiet --out "$2" "${@:3}"; }

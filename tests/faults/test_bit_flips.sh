@@ -34,7 +34,7 @@ fi
 # flip FILE: one bit at a random offset of FILE, in place; says where.
 flip() {
   local size offset bit
-  size=$(stat -c %s "$1") offset=$(random_below "$(stat -c %s "$1")") bit=$((RANDOM % 8))
+  size=$(stat -c %s "$1") offset=$(random_below "$(stat -c %s "$1")") bit=$(random_below 8)
   "$py" -c "import sys; p, o, b = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]); d = bytearray(open(p, 'rb').read()); d[o] ^= 1 << b; open(p, 'wb').write(d)" \
     "$1" "$offset" "$bit"
   where="byte $offset bit $bit of $size"
@@ -94,7 +94,7 @@ echo "ok: the stages refused $refused damaged inputs and read $harmless with the
 normal 1 "$s/p1.h5" "$tmp/ck-reference" "$tmp/n1-reference.h5" 2> /dev/null || fail "the normal sweep of the intact samples"
 for _ in 1 2 3; do
   rm -rf "$tmp/ck" && cp -r "$s/ck1" "$tmp/ck"
-  point=$tmp/ck/point-00$((RANDOM % 5)).h5
+  point=$tmp/ck/point-00$(random_below 5).h5
   flip "$point"
   normal 1 "$s/p1.h5" "$tmp/ck" "$tmp/xn.h5" 2> "$tmp/err" || fail "resume with a damaged checkpoint ($where of $point): $(cat "$tmp/err")"
   same_results "$tmp/n1-reference.h5" "$tmp/xn.h5" || fail "resume with a damaged checkpoint ($where of $point): other results"

@@ -7,7 +7,13 @@
 #   2. two `make tables` on the same DATA, the second started after a random delay: the second
 #      waits for the first (LOCK_WAIT=0: refuses, exit 2); both succeed with the tables of a
 #      single run; no NUL bytes in any log, no temporaries;
-#   3. a DATA path with a space or a ':' is refused in one line.
+#   3. a DATA path with a space, a ':' or a character make or the shell reads as syntax (drawn:
+#      ; * ? # $ quotes, a backtick, a backslash, brackets, < > | &) is refused in one line,
+#      before anything runs;
+#   4. everything a run writes lives under its DATA and its lock (issue 28): every goal that
+#      writes there takes the lock (drawn among those outside the pipeline's first list: timing,
+#      the studies' reports); make -n of a study writes nothing; make figures draws into
+#      DATA/PROFILE/figures and nothing outside DATA.
 # The paper profile's tables come from the archive of this release (seconds, no simulation).
 #
 #   test_make.sh BUILD_DIR SOURCE_DIR   (FAULT_SEED=N replays)
@@ -41,7 +47,7 @@ damage() {  # damage KIND: damages the archive; sets $file (relative) and $hint 
       local size offset
       size=$(stat -c %s "$archive/$file") offset=$(random_below "$size")
       "$py" -c "import sys; p, o, b = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]); d = bytearray(open(p, 'rb').read()); d[o] ^= 1 << b; open(p, 'wb').write(d)" \
-        "$archive/$file" "$offset" $((RANDOM % 8))
+        "$archive/$file" "$offset" $(random_below 8)
       hint="does not match" ;;
     truncate)
       file=$(pick)
@@ -49,7 +55,7 @@ damage() {  # damage KIND: damages the archive; sets $file (relative) and $hint 
       hint="does not match" ;;
     edit)  # the issue's case: a digit of a fitted coefficient
       file=fits/soft-solid.json
-      sed -i '0,/"a": [0-9]/s/\("a": \)\([0-9]\)/\1'$((RANDOM % 9 + 1))'\2/' "$archive/$file"
+      sed -i '0,/"a": [0-9]/s/\("a": \)\([0-9]\)/\1'$(( $(random_below 9) + 1 ))'\2/' "$archive/$file"
       hint="does not match" ;;
     delete)
       file=$(pick)
@@ -57,7 +63,7 @@ damage() {  # damage KIND: damages the archive; sets $file (relative) and $hint 
       hint="is missing" ;;
     manifest)  # the manifest itself edited to vouch for another file
       file=MANIFEST.sha256
-      sed -i "1s/^./$(printf '%x' $((RANDOM % 16)))/" "$archive/$file"
+      sed -i "1s/^./$(printf '%x' $(random_below 16))/" "$archive/$file"
       cmp -s "$archive/$file" "$intact/$file" && sed -i '1s/^./f/;1s/^ff/0f/' "$archive/$file"
       hint="does not match $archive/dataset.bib" ;;
   esac
@@ -85,6 +91,24 @@ for kind in flip truncate edit delete manifest flip truncate; do
   [[ $code == 2 ]] || fail "$kind of $file: make verify exit $code"
   grep -qF "$archive/$file" "$tmp/verr" || fail "$kind of $file: make verify does not name the file: $(cat "$tmp/verr")"
   echo "ok: $kind of $file: make tables stops (exit 2) naming it; make verify too"
+done
+# What the manifest does not list but a folder can hold (issue 28): a symlink (unlisted, or in the
+# place of a listed file), a folder with no listed file; drawn where.
+for kind in symlink folder listed-symlink; do
+  fresh_archive
+  dir=$(dirname "$(pick)")
+  case $kind in
+    symlink) file=$dir/extra-$(random_below 100000).h5; ln -s "$intact/$(pick)" "$archive/$file"; hint="is not a regular file" ;;
+    folder) file=$dir/extra-$(random_below 100000); mkdir "$archive/$file"; hint="is a folder with no file" ;;
+    listed-symlink) file=$(pick); mv "$archive/$file" "$tmp/moved"; ln -s "$tmp/moved" "$archive/$file"; hint="is a symlink" ;;
+  esac
+  set +e
+  mk verify ARCHIVES="$archive" > /dev/null 2> "$tmp/verr"
+  code=$?
+  set -e
+  [[ $code == 2 ]] && grep -qF "$archive/$file" "$tmp/verr" && grep -qF "$hint" "$tmp/verr" ||
+    fail "$kind $file in the archive: make verify exit $code: $(cat "$tmp/verr")"
+  echo "ok: $kind $file in the archive: make verify says so (exit 2)"
 done
 fresh_archive
 echo "stray" > "$archive/fits/extra.json"
@@ -128,4 +152,42 @@ for bad in "$tmp/with space" "$tmp/with:colon"; do
   [[ $code == 2 && $(grep -c . "$tmp/out") == 1 ]] || fail "DATA='$bad': exit $code, $(grep -c . "$tmp/out") lines: $(head -3 "$tmp/out")"
   [[ ! -e $bad ]] || fail "DATA='$bad': the folder was created"
 done
-echo "ok: a DATA path with a space or a ':' is refused in one line"
+syntax=(';' '*' '?' '#' '$' "'" '"' '`' '\\' '[' ']' '{' '}' '(' ')' '<' '>' '|' '&' '!')
+for round in 1 2 3; do
+  c=${syntax[$(random_below ${#syntax[@]})]}
+  bad="$tmp/x${c}true"
+  set +e; mk DATA="$bad" tables > "$tmp/out" 2>&1; code=$?; set -e
+  [[ $code == 2 && $(grep -c . "$tmp/out") == 1 ]] && grep -q "characters make or the shell would read as syntax" "$tmp/out" ||
+    fail "DATA='$bad': exit $code: $(head -3 "$tmp/out")"
+  [[ -z $(find "$tmp" -maxdepth 1 -name 'x*') ]] || fail "DATA='$bad': something was created: $(find "$tmp" -maxdepth 1 -name 'x*')"
+done
+echo "ok: a DATA path with a space, a ':' or a character of make's or the shell's syntax is refused in one line"
+
+# --- 4. everything under DATA and its lock ----------------------------------------------------------
+held=$tmp/held
+mkdir -p "$held"
+exec 218>> "$held/.softpack.lock"
+flock -n 218 || fail "cannot take the lock of $held"
+goals=(timing accuracy-report calibrate-report radius-report coarse-grain-report figures)
+for round in 1 2; do
+  goal=${goals[$(random_below ${#goals[@]})]}
+  set +e; LOCK_WAIT=0 mk DATA="$held" "$goal" > /dev/null 2> "$tmp/err"; code=$?; set -e
+  [[ $code == 2 ]] && grep -q "is in use by another run" "$tmp/err" || fail "make $goal on a folder in use: exit $code: $(cat "$tmp/err")"
+done
+exec 218>&-
+echo "ok: make timing and the studies' reports take DATA's lock like the pipeline's goals"
+touch "$tmp/marker"
+for goal in accuracy calibrate radius; do
+  mk -n DATA="$tmp/dry" "$goal" > "$tmp/dry.log" 2>&1 || { cat "$tmp/dry.log"; fail "make -n $goal"; }
+done
+[[ ! -e $tmp/dry ]] || fail "make -n of a study wrote: $(find "$tmp/dry" | head -5)"
+[[ -z $(find "$root/data" "$root/figures" "$root/paper" -newer "$tmp/marker" -not -path "$root/data/archive/*" 2> /dev/null) ]] ||
+  fail "make -n of a study wrote into the source tree: $(find "$root/data" -newer "$tmp/marker" | head -5)"
+echo "ok: make -n accuracy, calibrate and radius write nothing (DATA=$tmp/dry)"
+mk DATA="$tmp/d0" figures > "$tmp/figures.log" 2>&1 || { cat "$tmp/figures.log"; fail "make figures"; }
+for f in fig{1_apollonian,2_softparticle,3_normal,4_tangential_soft_solid,5_tangential_soft_soft,6_kt}.{pdf,png}; do
+  [[ -s $tmp/d0/paper/figures/$f ]] || fail "make figures DATA=$tmp/d0: no $tmp/d0/paper/figures/$f"
+done
+outside=$(find "$root/data" "$root/figures" "$root/paper" -newer "$tmp/marker" -type f -not -path "$root/data/archive/*" 2> /dev/null | head -5)
+[[ -z $outside ]] || fail "make figures DATA=$tmp/d0 wrote outside it: $outside"
+echo "ok: make figures draws into DATA/PROFILE/figures and writes nothing outside DATA"

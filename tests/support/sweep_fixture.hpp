@@ -45,6 +45,7 @@ inline SweepContext sweep_context(const ContactSetup& setup, const std::string& 
   c.setup = setup;
   c.settings = parse_measurement(sweep_profile());
   c.config = "test";
+  c.normal_config = c.config;  // one context for the normal sweep and the sweeps from its states
   c.checkpoint_dir = dir;
   c.code_version = "test";
   return c;

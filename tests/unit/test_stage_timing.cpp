@@ -27,7 +27,8 @@ TEST(StageTiming, SweepsCostTheSumOfTheirPointsPhasesAndMissingFilesAreListed) {
   const std::string a = (dir / "soft-solid-seed-1.h5").string(), b = (dir / "soft-solid-seed-2.h5").string();
   write_sweep_results_file(a,
                            {point(0.0, {1, 0.5}, {2, 1.5}, {0.25, 0.125}, false), point(0.1, {1, 1}, {4, 3}, {0.5, 0.25}, true)},
-                           PointProvenance{"normal", "soft-solid", "cfg", "test"}, "p", 1, Elapsed{10, 2.5});
+                           PointProvenance{"normal", "soft-solid", "cfg", "test", "0123456789abcdef"}, "p", "", 1,
+                           Elapsed{10, 2.5});
   TimingInputs in;
   in.normal = {a, b};  // b is not there
   const ProfileTiming t = collect_timing(in);

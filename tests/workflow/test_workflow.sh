@@ -19,7 +19,6 @@ export MAKEFLAGS=
 mk() { make --no-print-directory PROFILE=quick BUILD="$build" "$@"; }
 
 # --- 1. -j1 and -j2 agree ------------------------------------------------------------------------
-rm -rf figures/generated/quick  # the fixture's: this run draws its own
 mk -j1 DATA=data-j1 FROM_SCRATCH=1 tables figures > "$work/j1.log" 2>&1 || { cat "$work/j1.log"; fail "make -j1 tables figures"; }
 numbers() {  # the numeric results of a data tree, without provenance (comments, code versions)
   for f in "$1"/quick/averages/*.dat "$1"/quick/fits/*.gp "$1"/quick/tables/*.md; do
@@ -32,7 +31,7 @@ diff <(files data-j1) <(files data) > /dev/null || { diff <(files data-j1) <(fil
 compared=$(same_results data-j1 data) || { echo "$compared"; fail "-j1 and -j2 differ"; }
 pass "make -j1 and make -j2 (the fixture's run) give the same results: ${compared}, every HDF5 dataset exact"
 for f in data-j1/quick/tables/table{1,2}.{md,tex} \
-         figures/generated/quick/fig{1_apollonian,2_softparticle,3_normal,4_tangential_soft_solid,5_tangential_soft_soft,6_kt}.{pdf,png}; do
+         data-j1/quick/figures/fig{1_apollonian,2_softparticle,3_normal,4_tangential_soft_solid,5_tangential_soft_soft,6_kt}.{pdf,png}; do
   [[ -s $f ]] || fail "$f is missing or empty"
 done
 grep -q 'soft-solid ours' data-j1/quick/tables/table1.md || fail "table1.md has no soft-solid column"

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Defects of the hostile probe (issue 28), one case each; each failed on release 0.5.0:
+#   defect 5: an output naming one of the command's own inputs (by name, or a hard link of it) is
+#             refused, exit 2, the input intact: softpack-normal --packing p.h5 --out p.h5,
+#             softpack-fit --average a.h5 --out a.h5, softpack-run --scene s.yaml --out s.yaml,
+#             softpack-import --out <its source>, softpack-pack --config P --vtp P;
+#   defect 7: a full disk behind stdout (softpack-run > /dev/full) is exit 2 with a message, not
+#             exit 0 with an empty report; behind stderr (an error to report), exit 2, not 134;
+#   defect 8: softpack-table refusing its input (damaged averages, --Rs 0) writes no table;
+#   defect 12: softpack-config refuses what only a later stage refused: normal.scenes listing a
+#             scene twice, scenes: [], effects.normal: bogus (exit 2, file:line).
+#
+#   test_outputs_and_refusals.sh BIN_DIR SOURCE_DIR
+bin=$1 root=$2
+source "$root/tests/faults/common.sh"
+copy_samples "$tmp/s"
+s=$tmp/s
+
+# --- defect 5 -------------------------------------------------------------------------------------------
+# same_after NAME FILE COMMAND...: COMMAND refuses (exit 2, "an output never overwrites an input") and FILE is unchanged.
+same_after() {
+  local name=$1 file=$2 before
+  shift 2
+  before=$(sha256sum < "$file")
+  set +e; "$@" > /dev/null 2> "$tmp/err"; local code=$?; set -e
+  [[ $code == 2 ]] && grep -q "an output never overwrites an input" "$tmp/err" || fail "defect 5: $name: exit $code: $(cat "$tmp/err")"
+  [[ $(sha256sum < "$file") == "$before" ]] || fail "defect 5: $name: the input was changed"
+}
+same_after "normal --out its packing" "$s/p1.h5" "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 1 \
+  --packing "$s/p1.h5" --checkpoints "$tmp/ck" --out "$s/p1.h5"
+ln "$s/p1.h5" "$tmp/link.h5"
+same_after "normal --out a hard link of its packing" "$s/p1.h5" "$bin/softpack-normal" --config "$profile" --scene soft-solid \
+  --seed 1 --packing "$s/p1.h5" --checkpoints "$tmp/ck" --out "$tmp/link.h5"
+same_after "fit --out its average" "$s/avg/soft-solid.h5" "$bin/softpack-fit" --average "$s/avg/soft-solid.h5" --out "$s/avg/soft-solid.h5"
+cp "$root/experiments/scenes/sphere-on-wall.yaml" "$tmp/scene.yaml"
+same_after "run --out its scene" "$tmp/scene.yaml" "$bin/softpack-run" --scene "$tmp/scene.yaml" --out "$tmp/scene.yaml" --quiet
+cp "$profile" "$tmp/profile.yaml"
+same_after "pack --vtp its profile" "$tmp/profile.yaml" "$bin/softpack-pack" --config "$tmp/profile.yaml" --seed 1 --out "$tmp/x.h5" \
+  --vtp "$tmp/profile.yaml"
+printf '# x y z r\n0 0 0 0.004\n0.008 0 0 0.003\n' > "$tmp/source.txt"
+printf '# x y z r\n0 0 0 0.005\n-0.009 0 0 0.003\n' > "$tmp/source2.txt"
+awk '/^packing:/ {print "packing:\n  import:\n    files: {1: '"$tmp"'/source.txt, 2: '"$tmp"'/source2.txt}\n    shell: {radius: 0.016, centre: [0, 0, 0]}"; skip = 1; next}
+     skip && /^  / {next} {skip = 0; print}' "$profile" > "$tmp/import.yaml"
+same_after "import --out its source" "$tmp/source.txt" "$bin/softpack-import" --config "$tmp/import.yaml" --seed 1 --out "$tmp/source.txt"
+echo "ok: defect 5: no command overwrites its own input (by name or hard link)"
+
+# --- defect 7 -------------------------------------------------------------------------------------------
+set +e; "$bin/softpack-run" --scene "$root/experiments/scenes/sphere-on-wall.yaml" --quiet > /dev/full 2> "$tmp/err"; code=$?; set -e
+[[ $code == 2 ]] && grep -q "standard output: cannot write" "$tmp/err" || fail "defect 7: softpack-run > /dev/full: exit $code: $(cat "$tmp/err")"
+set +e; "$bin/softpack-fit" --average "$tmp/missing.h5" --out "$tmp/f.json" 2> /dev/full; code=$?; set -e
+[[ $code == 2 ]] || fail "defect 7: an error reported on a full stderr: exit $code (expected 2)"
+echo "ok: defect 7: a full disk behind stdout or stderr is exit 2, not 0 or 134"
+
+# --- defect 8 -------------------------------------------------------------------------------------------
+table=("$bin/softpack-table" --fits "$s/fit.json" --published "$root/experiments/published.yaml" --out-dir "$tmp/tables")
+set +e; "${table[@]}" --averages "$s/avg/soft-solid.h5" --Rs 0 > /dev/null 2> "$tmp/err"; code=$?; set -e
+[[ $code == 2 && ! -e $tmp/tables ]] || fail "defect 8: --Rs 0: exit $code, wrote: $(ls "$tmp/tables" 2> /dev/null)"
+"$py" -c "import h5py, sys; f = h5py.File(sys.argv[1], 'a'); del f['kt']" "$s/avg/soft-solid.h5" 2> /dev/null ||
+  cp "$s/p1.h5" "$s/avg/soft-solid.h5"  # an average that cannot serve: the table's kt_unit.md needs /kt
+set +e; "${table[@]}" --averages "$s/avg/soft-solid.h5" --Rs 0.016 > /dev/null 2> "$tmp/err"; code=$?; set -e
+[[ $code == 2 && ! -e $tmp/tables ]] || fail "defect 8: a damaged average: exit $code, wrote: $(ls "$tmp/tables" 2> /dev/null)"
+echo "ok: defect 8: softpack-table refusing its input writes no table"
+
+# --- defect 12 ------------------------------------------------------------------------------------------
+refused() {  # refused WHAT SED_EXPRESSION MESSAGE
+  sed "$2" "$profile" > "$tmp/bad.yaml"
+  cmp -s "$profile" "$tmp/bad.yaml" && fail "defect 12: $1: the edit changed nothing"
+  set +e; "$bin/softpack-config" "$tmp/bad.yaml" stamp packing > /dev/null 2> "$tmp/err"; code=$?; set -e
+  [[ $code == 2 ]] && grep -q "bad.yaml:[0-9]*:[0-9]*: .*$3" "$tmp/err" || fail "defect 12: $1: exit $code: $(cat "$tmp/err")"
+}
+refused "a scene twice" 's/scenes: \[soft-solid, soft-soft\]/scenes: [soft-solid, soft-solid]/' "listed twice"
+refused "no scene" 's/scenes: \[soft-solid, soft-soft\]/scenes: []/' "at least one scene"
+refused "an unknown normal law" 's/normal: hertz/normal: bogus/' "'bogus' is not a normal law"
+echo "ok: defect 12: softpack-config refuses a scene twice, no scene, an unknown law (exit 2, file:line)"
