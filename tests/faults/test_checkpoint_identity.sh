@@ -2,8 +2,9 @@
 # A checkpoint is taken only as what it is (issue 28, class 4; docs/measurement.md): a point file
 # names its stage, its scene and packings (so its seed), its point (delta_n, alpha, ht) and its
 # configuration, and the sweeps check all of them before they reuse it or start from its state.
-# Each round (FAULT_SEED=N replays) copies a valid point file of the samples (either seed, either
-# stage) over another point of seed 1 and runs the stage that point belongs to again: the results
+# Each round (FAULT_SEED=N replays) copies a valid point file of the samples (odd rounds: of the
+# same folder, so of the same configuration; even rounds: of either seed and stage) over another
+# point of seed 1 and runs the stage that point belongs to again: the results
 # are those of the intact checkpoints, and a misfiled point of the same configuration is named
 # in a warning.
 #
@@ -22,8 +23,12 @@ mapfile -t targets < <(cd "$s" && ls ck1/point-*.h5 tk1/point-*.h5)
 
 for round in 1 2 3 4 5 6; do
   target=${targets[$(random_below ${#targets[@]})]}
+  # Odd rounds: a point of the target's own folder (its configuration: only the point differs);
+  # even rounds: any point file of either seed and stage.
   source_=$target
-  while [[ $source_ == "$target" ]]; do source_=${points[$(random_below ${#points[@]})]}; done
+  while [[ $source_ == "$target" || ($((round % 2)) == 1 && ${source_%%/*} != "${target%%/*}") ]]; do
+    source_=${points[$(random_below ${#points[@]})]}
+  done
   rm -rf "$tmp/r" && mkdir "$tmp/r" && cp -r "$s/ck1" "$s/tk1" "$tmp/r/"
   cp "$s/$source_" "$tmp/r/$target"
   # A misfiled normal point is found by the normal stage and by the tangential one, which first
