@@ -19,7 +19,21 @@ std::string temporary_path_for(const std::string& final_path) {
   std::error_code ec;
   if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path(), ec);
   if (ec) throw InputError(fmt::format("{}: cannot create its folder: {}", final_path, ec.message()));
-  return fmt::format("{}.tmp.{}", final_path, ::getpid());
+  // "<name>.tmp.<pid>", with <name> cut (at a UTF-8 character's start) so that the temporary's
+  // name fits where the final one does: a legal name of 246-255 bytes was refused ("File name too
+  // long") for its temporary's suffix. Still matched by *.tmp.* (the recipes' clean-up).
+  const std::string suffix = fmt::format(".tmp.{}", ::getpid());
+  std::string name = target.filename().string();
+  constexpr std::size_t kNameMax = 255;  // bytes of one name on Linux's file systems (NAME_MAX)
+  if (name.size() > kNameMax)  // refused before anything is computed, as the system would at the end
+    throw InputError(fmt::format("{}: File name too long (its last part has {} bytes; allowed: at most {})", final_path,
+                                 name.size(), kNameMax));
+  if (name.size() + suffix.size() > kNameMax) {
+    std::size_t keep = kNameMax > suffix.size() ? kNameMax - suffix.size() : 0;
+    while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;
+    name.resize(keep);
+  }
+  return (target.parent_path() / (name + suffix)).string();
 }
 
 namespace {

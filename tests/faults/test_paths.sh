@@ -25,6 +25,15 @@ while [[ ${#deep} -le 4200 ]]; do deep=$deep/$(printf 'z%.0s' {1..200}); done
 expect_error "File name too long" "$deep/n.h5" normal 1 "$s/p1.h5" "$tmp/ck" "$deep/n.h5"
 expect_error "File name too long" "$deep/fit.json" fit "$s/avg/soft-solid.h5" "$deep/fit.json" "$deep/fit.gp"
 echo "ok: a name over 255 bytes, a path over 4096: one message, exit 2"
+# defect 16 (issue 28): legal names of 246-255 bytes were refused for their temporary's suffix.
+for n in 246 250 255; do
+  name=$(printf 'l%.0s' $(seq $((n - 3))))
+  pack 1 "$tmp/$name.h5" 2> "$tmp/err" || fail "a name of $n bytes: $(cat "$tmp/err")"
+  h5dump -d /radii "$tmp/$name.h5" > /dev/null || fail "the packing named with $n bytes does not read"
+  no_temporaries "$tmp" || fail "a name of $n bytes: a temporary was left"
+  rm "$tmp/$name.h5"
+done
+echo "ok: names of 246, 250 and 255 bytes are written (defect 16)"
 
 touch "$tmp/a-file"
 expect_error "Not a directory" "$tmp/a-file/sub/p.h5" pack 1 "$tmp/a-file/sub/p.h5"
