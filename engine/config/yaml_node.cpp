@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <regex>
 #include <stdexcept>
 
 #include "config/yaml_text.hpp"
@@ -82,8 +83,25 @@ std::vector<ConfigNode> ConfigNode::items() const {
 double ConfigNode::number() const {
   if (!node_.IsScalar()) fail("expected a number");
   const std::string text = node_.Scalar();
+  // One reading of a number for every reader (YAML 1.1 and 1.2, Python's and ours): decimal
+  // digits, an optional point and exponent; no leading zero (YAML 1.1 reads 0175 as octal), no
+  // hexadecimal, no value the file itself calls text.
+  const std::string& tag = node_.Tag();
+  if (tag == "tag:yaml.org,2002:str" || tag == "!!str")
+    fail(fmt::format("'{}' is tagged !!str, a text, where a number is expected; remove the tag", text));
+  static const std::regex decimal(R"([-+]?(0|[1-9][0-9]*)(\.[0-9]*)?([eE][-+]?[0-9]+)?|[-+]?\.[0-9]+([eE][-+]?[0-9]+)?)");
+  if (!std::regex_match(text, decimal)) {
+    static const std::regex leading_zero(R"([-+]?0[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?)");
+    if (std::regex_match(text, leading_zero))
+      fail(fmt::format("'{}': a number with a leading zero is not allowed (YAML 1.1 readers read it as octal); write it "
+                       "without the zero",
+                       text));
+    if (text.find_first_of("xX") != std::string::npos && text.find_first_of("0123456789") != std::string::npos)
+      fail(fmt::format("'{}': only decimal numbers are allowed, like 1.5e6 (no hexadecimal)", text));
+  }
   try {
     std::size_t used = 0;
+    if (!std::regex_match(text, decimal)) throw std::invalid_argument(text);
     const double v = std::stod(text, &used);
     if (used != text.size()) throw std::invalid_argument(text);
     if (!std::isfinite(v)) fail(fmt::format("'{}' is not a finite number", text));

@@ -8,7 +8,9 @@
 #             exit 0 with an empty report; behind stderr (an error to report), exit 2, not 134;
 #   defect 8: softpack-table refusing its input (damaged averages, --Rs 0) writes no table;
 #   defect 12: softpack-config refuses what only a later stage refused: normal.scenes listing a
-#             scene twice, scenes: [], effects.normal: bogus (exit 2, file:line).
+#             scene twice, scenes: [], effects.normal: bogus (exit 2, file:line);
+#   defect 18: numbers read one way by every reader: E: 0500000 (octal to YAML 1.1), !!str 5.0e5,
+#             0x1p19 refused (exit 2, file:line).
 #
 #   test_outputs_and_refusals.sh BIN_DIR SOURCE_DIR
 bin=$1 root=$2
@@ -72,3 +74,9 @@ refused "a scene twice" 's/scenes: \[soft-solid, soft-soft\]/scenes: [soft-solid
 refused "no scene" 's/scenes: \[soft-solid, soft-soft\]/scenes: []/' "at least one scene"
 refused "an unknown normal law" 's/normal: hertz/normal: bogus/' "'bogus' is not a normal law"
 echo "ok: defect 12: softpack-config refuses a scene twice, no scene, an unknown law (exit 2, file:line)"
+
+# --- defect 18 ------------------------------------------------------------------------------------------
+refused "a leading zero" 's/E: 5.0e5/E: 0500000/' "leading zero is not allowed"
+refused "a number tagged as text" 's/E: 5.0e5/E: !!str 5.0e5/' "tagged !!str"
+refused "a hexadecimal float" 's/E: 5.0e5/E: 0x1p19/' "only decimal numbers"
+echo "ok: defect 18: a leading zero, !!str and a hexadecimal number are refused where a number is expected"

@@ -206,7 +206,7 @@ TEST(SceneFile, IntegerKeysAreReadExactly) {
   EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: 6e0")), "run.relaxation.stops: expected an integer, got '6e0'");
   EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: +6")), "run.relaxation.stops: expected an integer, got '+6'");
   EXPECT_CONTAINS(error_of(replace(kValid, "body: 0}\n  - {x: [0, 0, 0.0025]", "body: 00}\n  - {x: [0, 0, 0.0025]")),
-                  "particles[0].body: expected an integer, got '00'");
+                  "particles[0].body: '00': a number with a leading zero is not allowed");
   EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: 9223372036854775808")),
                   "run.relaxation.stops: '9223372036854775808' is out of the range of integers");
   EXPECT_CONTAINS(error_of(replace(kValid, "stops: 6", "stops: many")), "run.relaxation.stops: expected a number, got 'many'");
