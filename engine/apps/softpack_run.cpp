@@ -13,6 +13,7 @@
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
+#include "core/text_input.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
 #include "relax/relaxation.hpp"
@@ -132,7 +133,7 @@ int main(int argc, char** argv) {
         {"walls", walls},
         {"relaxation", relaxation},
         {"final", residuals(sim.residuals())},
-        {"provenance", {{"code_version", code_version()}, {"config", read_text_file(scene_path)}, {"seconds", seconds}}},
+        {"provenance", {{"code_version", code_version()}, {"config", read_text_input(scene_path, "a scene file (YAML)")}, {"seconds", seconds}}},
     };
     if (out_path.empty()) std::cout << report.dump(2) << "\n";
     else write_file_atomically(out_path, report.dump(2) + "\n");

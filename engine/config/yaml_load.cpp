@@ -17,6 +17,7 @@
 #include "config/yaml_node.hpp"
 #include "config/yaml_text.hpp"
 #include "core/error.hpp"
+#include "core/text_input.hpp"
 
 namespace softpack {
 namespace yaml_text {
@@ -240,14 +241,7 @@ ConfigNode ConfigNode::load_string(const std::string& text, const std::string& n
 }
 
 ConfigNode ConfigNode::load_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: is a directory, expected a YAML file", path));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open the file ({})", path, std::strerror(errno)));
-  std::stringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(fmt::format("{}: cannot read the file ({})", path, std::strerror(errno)));
-  return load_string(text.str(), path);
+  return load_string(read_text_input(path, "a YAML file"), path);
 }
 
 }  // namespace softpack

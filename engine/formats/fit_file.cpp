@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "formats/json_input.hpp"
 #include "io/atomic_file.hpp"
 
 namespace softpack {
@@ -144,14 +145,7 @@ void write_fit_gnuplot_file(const std::string& path, const FitFile& f) {
 }
 
 FitEstimates read_fit_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("{}: cannot open the file", path));
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(fmt::format("{}: not a JSON file: {}", path, e.what()));
-  }
+  const nlohmann::json j = read_json_input(path, "a fit file (JSON)");
   if (!j.is_object()) throw InputError(fmt::format("{}: expected a JSON object (a softpack-fit file)", path));
   FitEstimates out;
   const auto scene = j.find(kSceneKey);

@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "formats/json_input.hpp"
 #include "core/suggest.hpp"
 #include "core/types.hpp"
 #include "io/atomic_file.hpp"
@@ -197,6 +199,17 @@ class Reader {
     const std::string allowed = "[lo, hi] with 0 <= lo < hi";
     std::tie(f.delta_n_min, f.delta_n_max) =
         range(need(j, field, "delta_n_range", allowed), child(field, "delta_n_range"), true, allowed);
+    // What the law gives over its range must be a number the simulation can add and multiply:
+    // a = 1e308 was read, then overflowed in a later stage that blamed another key.
+    constexpr double kLargest = 1e15;  // [N] or [N/m], far beyond any soft-particle's contact
+    for (const double dn : {f.delta_n_min, f.delta_n_max}) {
+      const double v = f.a.value * std::pow(dn, f.b.value) + (std::isnan(f.c.value) ? 0.0 : f.c.value);  // c may be left out (null)
+      if (!(std::abs(v) <= kLargest))
+        refuse(child(field, "a"), j.at("a"),
+               fmt::format("a law whose value a dn^b + c stays within {:g} {} over its delta_n_range (it is {:g} at delta_n = "
+                           "{})",
+                           kLargest, unit, v, dn));
+    }
     return f;
   }
 
@@ -307,6 +320,16 @@ class Reader {
         fail(child("scenes", name), fmt::format("unknown scene; allowed: {}", fmt::join(kSceneNames, ", ")));
       f.scenes[name] = scene(s, child("scenes", name));
     }
+    // The laws are measured at reference_radius; a scaling carries them to other radii within the
+    // range it was measured over, which must hold R0 itself (else every law would be rescaled).
+    using Scaling = std::pair<const char*, const std::optional<RadiusScaling>*>;
+    for (const auto& [name, laws] : f.scenes)
+      for (const auto& [which, scaling] :
+           std::array<Scaling, 2>{Scaling{"normal_scaling", &laws.normal_scaling}, Scaling{"tangential_scaling", &laws.tangential_scaling}})
+        if (*scaling && !(f.reference_radius >= (*scaling)->R_min && f.reference_radius <= (*scaling)->R_max))
+          refuse("reference_radius.value", rv,
+                 fmt::format("a radius within scenes.{}.{}.radius_range [{}, {}] m (the laws are measured at it)", name, which,
+                             (*scaling)->R_min, (*scaling)->R_max));
     if (const json* m = find(j, "mixing")) f.mixing = mixing(*m, "mixing");
     if (const json* p = find(j, "provenance")) f.provenance = provenance(*p, "provenance");
     return f;
@@ -325,15 +348,7 @@ void write_law_file(const std::string& path, const LawFile& f) {
 }
 
 LawFile read_law_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("{}: cannot open the file", path));
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {  // parse_error; out_of_range for a number beyond a double (1e999)
-    throw InputError(fmt::format("{}: not a JSON file: {}", path, e.what()));
-  }
-  return Reader(path).file(j);
+  return Reader(path).file(read_json_input(path, "a law file (JSON)"));
 }
 
 namespace {

@@ -1,5 +1,7 @@
 #include "packing/statistics.hpp"
 
+#include "core/types.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -66,7 +68,12 @@ PackingStatistics packing_statistics(std::span<const Vec3> centres, std::span<co
     if (hi <= edge) continue;
     s.depletion_length += (1.0 - s.profile.solid_fraction[k] / s.bulk_fraction) * (hi - std::max(lo, edge));
   }
-  if (radii.size() >= 2) s.exponent = power_law::fit(radii);
+  // A power law's exponent needs radii of different sizes: a packing of one size (an imported one
+  // may be) has none, NaN, with r_min = r_max (it was an internal error, issue 28).
+  if (radii.size() >= 2) {
+    const auto [lo, hi] = std::minmax_element(radii.begin(), radii.end());
+    s.exponent = *hi > *lo ? power_law::fit(radii) : power_law::Fit{kNaN, kNaN, *lo, *hi};
+  }
   return s;
 }
 

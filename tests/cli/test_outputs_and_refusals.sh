@@ -9,6 +9,10 @@
 #   defect 8: softpack-table refusing its input (damaged averages, --Rs 0) writes no table;
 #   defect 12: softpack-config refuses what only a later stage refused: normal.scenes listing a
 #             scene twice, scenes: [], effects.normal: bogus (exit 2, file:line);
+#   defect 13: (law file: unit tests LawFile.*, test_law_file.cpp);
+#   defect 14: a packing of one radius imports (exit 0, not an internal error); a folder, a symlink
+#             loop or /dev/zero given as a YAML or JSON input is exit 2 with a message, read
+#             without bound no more;
 #   defect 18: numbers read one way by every reader: E: 0500000 (octal to YAML 1.1), !!str 5.0e5,
 #             0x1p19 refused (exit 2, file:line).
 #
@@ -80,3 +84,19 @@ refused "a leading zero" 's/E: 5.0e5/E: 0500000/' "leading zero is not allowed"
 refused "a number tagged as text" 's/E: 5.0e5/E: !!str 5.0e5/' "tagged !!str"
 refused "a hexadecimal float" 's/E: 5.0e5/E: 0x1p19/' "only decimal numbers"
 echo "ok: defect 18: a leading zero, !!str and a hexadecimal number are refused where a number is expected"
+
+# --- defect 14 ------------------------------------------------------------------------------------------
+printf '# x y z r\n0 0 0 0.004\n0.009 0 0 0.004\n' > "$tmp/mono.txt"
+sed "s|$tmp/source.txt|$tmp/mono.txt|" "$tmp/import.yaml" > "$tmp/mono.yaml"
+"$bin/softpack-import" --config "$tmp/mono.yaml" --seed 1 --out "$tmp/mono.h5" --quiet 2> "$tmp/err" ||
+  fail "defect 14: a packing of one radius: $(cat "$tmp/err")"
+mkdir "$tmp/folder.yaml"
+ln -s "$tmp/loop.yaml" "$tmp/loop.yaml"
+for input in "$tmp/folder.yaml" "$tmp/loop.yaml" /dev/zero; do
+  for cmd in "softpack-config $input seeds" "softpack-run --scene $input --quiet" "softpack-table --fits $input --published $root/experiments/published.yaml --out-dir $tmp/t14"; do
+    set +e; timeout 20 "$bin"/$cmd > /dev/null 2> "$tmp/err"; code=$?; set -e
+    [[ $code == 2 ]] && grep -qE "is a folder|symlink loop|not a regular file" "$tmp/err" ||
+      fail "defect 14: $cmd: exit $code: $(head -c 300 "$tmp/err")"
+  done
+done
+echo "ok: defect 14: a packing of one radius imports; a folder, a symlink loop, /dev/zero as an input: exit 2"

@@ -299,6 +299,43 @@ TEST(LawFile, NonFiniteNumberOrNotJsonIsRefused) {
   expect_refused(path, {"not a JSON file"});
 }
 
+// Issue 28, defect 13: what release 0.5.0 read as valid or blamed on another key.
+TEST(LawFile, ReferenceRadiusOutsideItsScalingRangeIsRefused) {
+  const TempDir dir("law-file-r0");
+  const std::string path = dir / "law.json";
+  write_law_file(path, full_file());
+  json j = load(path);
+  j["reference_radius"]["value"] = 0.1;  // beyond the soft-solid normal scaling's [0.008, 0.032] m
+  save(path, j.dump(2));
+  expect_refused(path, {"reference_radius.value", "radius_range [0.008, 0.032]"});
+}
+
+TEST(LawFile, AKeyTwiceInOneObjectIsRefused) {
+  const TempDir dir("law-file-twice");
+  const std::string path = dir / "law.json";
+  write_law_file(path, full_file());
+  std::string text = load(path).dump(2);
+  text.replace(text.find("\"reference_radius\""), 0, "\"format\": \"x\",\n  ");  // "format" given twice
+  save(path, text);
+  expect_refused(path, {"the key \"format\" is given twice in one object"});
+}
+
+TEST(LawFile, ALawTooLargeForTheSimulationIsRefusedByItsOwnKey) {
+  const TempDir dir("law-file-huge");
+  const std::string path = dir / "law.json";
+  write_law_file(path, full_file());
+  json j = load(path);
+  j["scenes"]["soft-solid"]["normal"]["a"]["value"] = 1e308;
+  save(path, j.dump(2));
+  expect_refused(path, {"scenes.soft-solid.normal.a", "stays within 1e+15 N"});
+}
+
+TEST(LawFile, AFolderIsAnInputError) {
+  const TempDir dir("law-file-folder");
+  std::filesystem::create_directories(dir.path);
+  expect_refused(dir.path.string(), {"is a folder"});
+}
+
 TEST(LawFile, MissingFileIsAnInputError) {
   EXPECT_THROW(read_law_file("/nonexistent/softpack/law.json"), InputError);
 }
