@@ -57,11 +57,33 @@ inline std::optional<int> check_outputs_apart(const CLI::App& app, std::string_v
   return std::nullopt;
 }
 
+/// No value on the command line holds a control character: a path with a line break was written
+/// into the comment lines of the .dat files gnuplot reads, where it began a data row. The exit
+/// code 2 with one line naming the option; std::nullopt when every value is clean.
+inline std::optional<int> check_no_control_characters(const CLI::App& app, std::string_view program) {
+  const auto check = [&](const CLI::App& a, const auto& self) -> std::optional<int> {
+    for (const CLI::Option* o : a.get_options())
+      for (const std::string& value : o->results())
+        for (std::size_t i = 0; i < value.size(); ++i)
+          if (const auto c = static_cast<unsigned char>(value[i]); c < 0x20 || c == 0x7f) {
+            fmt::print(stderr, "{}: error: {}: the value holds a control character (byte {} is 0x{:02x}{}); allowed: paths and names "
+                       "without control characters\n",
+                       program, o->get_name().empty() ? "an argument" : o->get_name(), i + 1, c, c == '\n' ? ", a line break" : "");
+            return kExitInput;
+          }
+    for (const CLI::App* sub : a.get_subcommands())
+      if (const auto code = self(*sub, self)) return code;
+    return std::nullopt;
+  };
+  return check(app, check);
+}
+
 /// Parses the command line; the exit code when the program must stop (0 after --help, 2 for
 /// a bad command line), std::nullopt when it may go on.
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, std::string_view program) {
   try {
     app.parse(argc, argv);
+    if (const auto code = check_no_control_characters(app, program)) return code;
     return check_outputs_apart(app, program);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help (and --help-all): the usage, on stdout

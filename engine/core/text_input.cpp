@@ -18,10 +18,11 @@ std::string read_text_input(const std::string& path, const std::string& what) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
   if (ec) {
-    const std::string why = ec == std::errc::too_many_symbolic_link_levels ? "a symlink loop" : ec.message();
-    throw InputError(fmt::format("{}: cannot read it ({}); expected {}", path, why, what));
+    if (ec == std::errc::too_many_symbolic_link_levels)
+      throw InputError(fmt::format("{}: cannot open the file (a symlink loop); expected {}", path, what));
+    throw InputError(fmt::format("{}: cannot open the file ({})", path, ec.message()));
   }
-  if (fs::is_directory(st)) throw InputError(fmt::format("{}: is a folder; expected {}", path, what));
+  if (fs::is_directory(st)) throw InputError(fmt::format("{}: is a directory, expected {}", path, what));
   if (!fs::is_regular_file(st))
     throw InputError(fmt::format("{}: is not a regular file (a device, a pipe or a socket); expected {}", path, what));
   const auto size = fs::file_size(path, ec);

@@ -13,6 +13,8 @@
 #   defect 14: a packing of one radius imports (exit 0, not an internal error); a folder, a symlink
 #             loop or /dev/zero given as a YAML or JSON input is exit 2 with a message, read
 #             without bound no more;
+#   defect 15: a path with a line break (or another control character) on the command line is
+#             refused (exit 2) before it can reach a .dat file's comment lines;
 #   defect 18: numbers read one way by every reader: E: 0500000 (octal to YAML 1.1), !!str 5.0e5,
 #             0x1p19 refused (exit 2, file:line).
 #
@@ -95,8 +97,15 @@ ln -s "$tmp/loop.yaml" "$tmp/loop.yaml"
 for input in "$tmp/folder.yaml" "$tmp/loop.yaml" /dev/zero; do
   for cmd in "softpack-config $input seeds" "softpack-run --scene $input --quiet" "softpack-table --fits $input --published $root/experiments/published.yaml --out-dir $tmp/t14"; do
     set +e; timeout 20 "$bin"/$cmd > /dev/null 2> "$tmp/err"; code=$?; set -e
-    [[ $code == 2 ]] && grep -qE "is a folder|symlink loop|not a regular file" "$tmp/err" ||
+    [[ $code == 2 ]] && grep -qE "is a directory|symlink loop|not a regular file" "$tmp/err" ||
       fail "defect 14: $cmd: exit $code: $(head -c 300 "$tmp/err")"
   done
 done
 echo "ok: defect 14: a packing of one radius imports; a folder, a symlink loop, /dev/zero as an input: exit 2"
+
+# --- defect 15 ------------------------------------------------------------------------------------------
+odd=$tmp/$'n1\n0.5 99 99'.h5
+cp "$s/n1.h5" "$odd"
+set +e; "$bin/softpack-average" --scene soft-solid --profile sweep --normal "$odd" "$s/n2.h5" --out-dir "$tmp/a15" 2> "$tmp/err"; code=$?; set -e
+[[ $code == 2 && ! -e $tmp/a15 ]] && grep -q "control character" "$tmp/err" || fail "defect 15: a line break in --normal: exit $code: $(cat "$tmp/err")"
+echo "ok: defect 15: a path with a line break is refused before it reaches a .dat file"

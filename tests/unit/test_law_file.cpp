@@ -333,7 +333,7 @@ TEST(LawFile, ALawTooLargeForTheSimulationIsRefusedByItsOwnKey) {
 TEST(LawFile, AFolderIsAnInputError) {
   const TempDir dir("law-file-folder");
   std::filesystem::create_directories(dir.path);
-  expect_refused(dir.path.string(), {"is a folder"});
+  expect_refused(dir.path.string(), {"is a directory"});
 }
 
 TEST(LawFile, MissingFileIsAnInputError) {
