@@ -21,14 +21,20 @@ exec 219>> "$lock" || { echo "make: cannot open the lock $lock (is $data writabl
 if ! flock -n 219; then
   holder=$(cat -- "$lock" 2> /dev/null)
   wait=${LOCK_WAIT:-}
-  [[ -z $wait || $wait =~ ^[0-9]+$ ]] || { echo "make: LOCK_WAIT=$wait: expected a number of seconds" >&2; exit 2; }
+  [[ -z $wait || ($wait =~ ^[0-9]+$ && ${#wait} -le 8 && $wait -le 31536000) ]] ||
+    { echo "make: LOCK_WAIT=$wait is not allowed; allowed: a whole number of seconds from 0 to 31536000 (a year)" >&2; exit 2; }
   if [[ $wait == 0 ]]; then
     echo "make: $data is in use by another run (${holder:-unknown}); not started (LOCK_WAIT=0). Wait for it, or use another DATA=" >&2
     exit 2
   fi
   echo "make: $data is in use by another run (${holder:-unknown}); waiting for it to end${wait:+ (at most $wait s)}" >&2
-  if ! flock ${wait:+-w "$wait"} 219; then
+  flock ${wait:+-w "$wait"} 219
+  rc=$?
+  if [[ $rc == 1 && -n $wait ]]; then  # flock's own code for a timeout
     echo "make: $data is still in use by another run after $wait s (${holder:-unknown}); not started" >&2
+    exit 2
+  elif [[ $rc != 0 ]]; then
+    echo "make: cannot take the lock $lock (flock exit $rc); not started" >&2
     exit 2
   fi
 fi

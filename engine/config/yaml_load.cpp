@@ -13,6 +13,8 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 #include "config/yaml_node.hpp"
 #include "config/yaml_text.hpp"
@@ -221,9 +223,70 @@ class DocumentCheck final : public YAML::EventHandler {
 
 }  // namespace
 
+namespace {
+
+// A '[' or '{' that opens a list or a map and is still open where a line starts at column 0 (a new
+// top-level key) or at the end of the text: the reader would take the next keys into the open
+// list or map and report something else about them ("a key must be text"). Counted: brackets where
+// a value starts (after "key: ", "- ", at a line's start, or inside an open list or map); not
+// brackets inside plain or quoted text, comments and block scalars (| and >).
+void check_brackets_closed(const std::string& text, const std::string& name) {
+  struct Open {
+    char c;
+    std::size_t line, column;
+  };
+  std::vector<Open> open;
+  std::size_t line = 0, start = 0;
+  long block_indent = -1;  // the indentation of the key of a block scalar being skipped
+  while (start < text.size()) {
+    ++line;
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string_view l(text.data() + start, end - start);
+    start = end + 1;
+    const std::size_t indent = std::min(l.find_first_not_of(' '), l.size());
+    if (indent == l.size() || l[indent] == '#' || l[indent] == '\r') continue;  // blank or a comment
+    if (block_indent >= 0 && static_cast<long>(indent) > block_indent) continue;  // inside a block scalar
+    block_indent = -1;
+    if (!open.empty() && indent == 0 && l[0] != ']' && l[0] != '}') {
+      const Open& o = open.back();
+      throw InputError(fmt::format("{}:{}:{}: malformed YAML: this '{}' is not closed before line {}, which starts a new key (a '{}' is missing)",
+                                   name, o.line, o.column, o.c, line, o.c == '[' ? ']' : '}'));
+    }
+    char quote = 0;
+    char prev = '\n';  // the last character that is not a space: '\n' at the line's start
+    std::size_t last = indent;  // where the value of the line's last key starts (block scalars)
+    for (std::size_t i = indent; i < l.size(); ++i) {
+      const char c = l[i];
+      if (quote) {
+        if (c == quote && !(quote == '"' && l[i - 1] == '\\')) quote = 0, prev = c;
+        continue;
+      }
+      if (c == ' ' || c == '\t') continue;
+      if (c == '#' && (i == 0 || l[i - 1] == ' ')) break;  // a comment
+      const bool value_start = prev == '\n' || prev == '[' || prev == '{' || prev == ',' ||
+                               ((prev == ':' || prev == '-') && l[i - 1] == ' ');
+      if (value_start && (c == '"' || c == '\'')) quote = c;
+      else if (value_start && (c == '[' || c == '{')) open.push_back({c, line, i + 1});
+      else if ((c == ']' || c == '}') && !open.empty()) open.pop_back();
+      if (value_start && open.empty()) last = i;
+      prev = c;
+    }
+    if (open.empty() && (l[last] == '|' || l[last] == '>') && l.substr(last).find_first_of("#:") == std::string_view::npos)
+      block_indent = static_cast<long>(indent);
+  }
+  if (!open.empty()) {
+    const Open& o = open.back();
+    throw InputError(fmt::format("{}:{}:{}: malformed YAML: this '{}' is not closed by the end of the file (a '{}' is missing)", name, o.line,
+                                 o.column, o.c, o.c == '[' ? ']' : '}'));
+  }
+}
+
+}  // namespace
+
 ConfigNode ConfigNode::load_string(const std::string& text, const std::string& name) {
   auto file = std::make_shared<const std::string>(name);
   check_text(text, name);
+  check_brackets_closed(text, name);
   try {
     {
       std::istringstream in(text);

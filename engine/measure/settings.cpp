@@ -31,11 +31,13 @@ constexpr limits::Range kSpeed{0.0, limits::kDriveSpeed.hi, true, false, "speed"
 constexpr limits::Range kRate{0.0, limits::kRate.hi, true, false, "rate", "rad/s"};
 
 // Strictly increasing values in [lo, hi).
-std::vector<double> increasing_list(const ConfigNode& n, double lo, double hi) {
+// (lo_included false: lo < value < hi, one rule stated once, in one message.)
+std::vector<double> increasing_list(const ConfigNode& n, double lo, double hi, bool lo_included = true) {
   std::vector<double> out;
   for (const ConfigNode& v : n.items()) {
     const double x = v.number();
-    if (!(x >= lo && x < hi)) v.fail(fmt::format("{} is not allowed; allowed: {} <= value < {}", x, lo, hi));
+    if (!((lo_included ? x >= lo : x > lo) && x < hi))
+      v.fail(fmt::format("{} is not allowed; allowed: {} {} value < {}", x, lo, lo_included ? "<=" : "<", hi));
     if (!out.empty() && !(x > out.back()))
       v.fail(fmt::format("{} does not increase (after {}); the grid must be strictly increasing", x, out.back()));
     out.push_back(x);
@@ -131,9 +133,7 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
     m.has_sliding = true;
     m.sliding.delta_n = increasing_list(sl->at("delta_n"), 0.0, 1.0);
     subset_of_normal(sl->at("delta_n"), m.sliding.delta_n, "sliding");
-    m.sliding.ht_over_Rs = increasing_list(sl->at("ht_over_Rs"), 0.0, 1.0);
-    if (m.sliding.ht_over_Rs.front() == 0.0)
-      sl->at("ht_over_Rs").items()[0].fail("0 is not allowed; allowed: 0 < value < 1 (the normal state is ht = 0)");
+    m.sliding.ht_over_Rs = increasing_list(sl->at("ht_over_Rs"), 0.0, 1.0, false);  // ht = 0: the normal state itself
     m.sliding.speed = sl->at("speed").number();
     if (const std::string why = limits::refusal(m.sliding.speed, kSpeed); !why.empty()) sl->at("speed").fail(why);
   }

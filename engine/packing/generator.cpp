@@ -16,6 +16,9 @@
 
 namespace softpack {
 
+// The most spheres the generator draws for one packing (its lists and grid stay within memory).
+constexpr double kMaxSpheres = 5e7;
+
 const char* name(NearestNeighbour n) { return n == NearestNeighbour::centre ? "centre" : "surface"; }
 
 NearestNeighbour parse_nearest_neighbour(const std::string& text) {
@@ -42,6 +45,11 @@ void validate(const PackingParameters& p) {
   // Rules between values: the grains become the spheres of the sweeps' scenes (radii of at least
   // limits::kMinLength), and the insertion grid numbers its cells of 2 r_min with 21 bits.
   const double r_min = p.r_max / p.polydispersity;
+  if (!(p.r_max >= limits::kMinLength))  // no polydispersity (>= 1) can help: Rs itself is too small
+    throw InputError(fmt::format("packing.Rs: {} m is not allowed with r_max_over_Rs = {}: the largest radius r_max = Rs "
+                                 "r_max_over_Rs would be {} m; allowed: r_max >= {} m (Rs >= {} m at this r_max_over_Rs)",
+                                 limits::number_text(p.Rs), approx_text(p.r_max / p.Rs), approx_text(p.r_max),
+                                 limits::number_text(limits::kMinLength), approx_text(limits::kMinLength * p.Rs / p.r_max)));
   if (!(r_min >= limits::kMinLength))
     throw InputError(fmt::format("packing.polydispersity: {} is not allowed with Rs = {} m and r_max_over_Rs = {}: the "
                                  "smallest radius r_max / Pi would be {} m; allowed: r_max / Pi >= {} m (Pi <= {})",
@@ -55,6 +63,15 @@ void validate(const PackingParameters& p) {
                                  limits::number_text(p.polydispersity), approx_text(p.r_max / p.Rs),
                                  approx_text(p.Rs / (2.0 * r_min)), limits::number_text(limits::kInsertionCells),
                                  approx_text(2.0 * limits::kInsertionCells * p.r_max / p.Rs)));
+  // How many spheres the generator would draw (beta Rs^3 / <r^3>): refused here, at the profile's
+  // keys and lines, rather than when the first packing is made.
+  const double expected = p.beta * p.Rs * p.Rs * p.Rs / power_law::mean_cube(power_law::Law{r_min, p.r_max, p.exponent});
+  if (!(expected <= kMaxSpheres))
+    throw InputError(fmt::format("packing.polydispersity: {} is not allowed with beta = {}, r_max_over_Rs = {} and exponent = {}: "
+                                 "the packing would hold about {:.3g} spheres (beta Rs^3 / <r^3>); allowed: at most {:g} — "
+                                 "reduce packing.polydispersity or packing.beta, or raise packing.r_max_over_Rs",
+                                 limits::number_text(p.polydispersity), limits::number_text(p.beta), approx_text(p.r_max / p.Rs),
+                                 limits::number_text(p.exponent), expected, kMaxSpheres));
 }
 
 namespace {
@@ -64,10 +81,10 @@ std::vector<double> sample_list(const PackingParameters& p, Random& rng) {
   const power_law::Law law{p.r_max / p.polydispersity, p.r_max, p.exponent};
   const double target = p.beta * p.Rs * p.Rs * p.Rs;
   const double expected = target / power_law::mean_cube(law);
-  if (!(expected <= 5e7))  // NaN too
-    throw InputError(fmt::format("packing: these parameters ask for about {:.3g} spheres (beta Rs^3 / <r^3>); "
-                                 "the generator stops at 5e7 — reduce packing.beta or raise packing.r_max",
-                                 expected));
+  if (!(expected <= kMaxSpheres))  // NaN too; validate() says it first, at the profile's keys
+    throw InputError(fmt::format("packing: these parameters ask for about {:.3g} spheres (beta Rs^3 / <r^3>); allowed: at most "
+                                 "{:g} — reduce packing.beta or packing.polydispersity, or raise packing.r_max_over_Rs",
+                                 expected, kMaxSpheres));
   std::vector<double> radii;
   radii.reserve(static_cast<std::size_t>(expected * 1.1) + 16);
   double volume = 0.0;

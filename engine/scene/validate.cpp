@@ -31,11 +31,18 @@ void check_point(const std::string& key, const Vec3& x) {
                             limits::text(limits::kCoordinate)));
 }
 
-// A direction (normalised by the engine): finite, with a length that is neither 0 nor infinite
-// once squared.
-bool direction(const Vec3& v) {
+// Why a direction (normalised by the engine) is refused, "" when it is not: it must be finite,
+// of a length neither 0 nor infinite once squared (the engine's norm); [1e300, 1e300, 0] was
+// called non-finite, which none of its numbers is.
+std::string direction_refusal(const Vec3& v) {
+  if (!v.allFinite()) return "must be a finite, non-zero vector";
   const double n = v.norm();
-  return n > 0.0 && std::isfinite(n);
+  if (n == 0.0) return "must be a non-zero vector (its length is 0)";
+  if (!std::isfinite(n))
+    return fmt::format("[{}, {}, {}] is too long: its length overflows a double; allowed: components of at most 1e150 in "
+                       "magnitude (only the direction counts: scale it down)",
+                       number_text(v.x()), number_text(v.y()), number_text(v.z()));
+  return "";
 }
 
 // The contact grid numbers its cells with 21 bits along each axis (neighbor/hierarchical_grid.hpp):
@@ -168,7 +175,7 @@ void check_drivers(const SceneDef& s, const std::vector<DriverDef>& drivers) {
           } else if constexpr (std::is_same_v<D, RotateGroupDef>) {
             check_group(s, d.group, key + ".group");
             claim(d.group, key + ".group");
-            if (!direction(d.axis)) fail(key + ".axis", "must be a finite, non-zero vector");
+            if (const std::string why = direction_refusal(d.axis); !why.empty()) fail(key + ".axis", why);
             check_point(key + ".centre", d.centre);
             if (!(std::isfinite(d.rate) && d.rate != 0.0)) fail(key + ".rate", "must be finite and non-zero");
             check(key + ".rate", std::abs(d.rate), limits::kRate);
@@ -224,7 +231,7 @@ void validate(const SceneDef& s) {
     const std::string key = fmt::format("planes[{}]", k);
     if (pl.name.empty() || !wall_names.insert(pl.name).second) fail(key + ".name", fmt::format("'{}' is empty or not unique", pl.name));
     check_point(key + ".point", pl.point);
-    if (!direction(pl.normal)) fail(key + ".normal", "must be a finite, non-zero vector");
+    if (const std::string why = direction_refusal(pl.normal); !why.empty()) fail(key + ".normal", why);
     check_material_ref(s, pl.material, key + ".material");
   }
   for (std::size_t k = 0; k < s.shells.size(); ++k) {

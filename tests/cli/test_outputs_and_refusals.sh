@@ -15,6 +15,11 @@
 #             without bound no more;
 #   defect 15: a path with a line break (or another control character) on the command line is
 #             refused (exit 2) before it can reach a .dat file's comment lines;
+#   defect 17: messages that say what is wrong: an unclosed '[[[' (not "a key must be text"); a
+#             direction [1e300, 1e300, 0] (too long, not "non-finite"); Pi = 5e5 (at its file and
+#             line, naming packing.polydispersity, not a key that does not exist); Rs = 1e-9 (Rs is
+#             the problem: no "Pi <= 0.3"); ht_over_Rs: one range in every message; LOCK_WAIT beyond
+#             a year refused (it claimed to have waited 1e20 s);
 #   defect 18: numbers read one way by every reader: E: 0500000 (octal to YAML 1.1), !!str 5.0e5,
 #             0x1p19 refused (exit 2, file:line).
 #
@@ -109,3 +114,26 @@ cp "$s/n1.h5" "$odd"
 set +e; "$bin/softpack-average" --scene soft-solid --profile sweep --normal "$odd" "$s/n2.h5" --out-dir "$tmp/a15" 2> "$tmp/err"; code=$?; set -e
 [[ $code == 2 && ! -e $tmp/a15 ]] && grep -q "control character" "$tmp/err" || fail "defect 15: a line break in --normal: exit $code: $(cat "$tmp/err")"
 echo "ok: defect 15: a path with a line break is refused before it reaches a .dat file"
+
+# --- defect 17 ------------------------------------------------------------------------------------------
+refused "an unclosed bracket" 's/^seeds: \[1, 2\]/seeds: [[[1, 2]/' "this '\[' is not closed before line"
+refused "a polydispersity of 5e5" 's/polydispersity: 3/polydispersity: 5e5/' "packing.polydispersity: 5e5 is not allowed .* about 2.6.e+15 spheres"
+refused "Rs of 1e-9 m" 's/Rs: 0.016/Rs: 1e-9/' "packing.Rs: 1e-9 m is not allowed"
+grep -q "Pi <=" "$tmp/err" && fail "defect 17: Rs = 1e-9 suggests a polydispersity: $(cat "$tmp/err")"
+sed 's/normal: \[0.0, 0.0, 1.0\]/normal: [1e300, 1e300, 0]/' "$root/experiments/scenes/sphere-on-wall.yaml" > "$tmp/long.yaml"
+set +e; "$bin/softpack-run" --scene "$tmp/long.yaml" --quiet > /dev/null 2> "$tmp/err"; code=$?; set -e
+[[ $code == 2 ]] && grep -q "planes\[0\].normal: \[1e300, 1e300, 0\] is too long" "$tmp/err" || fail "defect 17: a long normal: $(cat "$tmp/err")"
+sliding=$(printf 'sliding: {delta_n: [0.5], ht_over_Rs: [%s], speed: 0.01}' "$(echo '0.0|1.5|-0.1' | tr '|' '\n' | sed -n "$(( $(random_below 3) + 1 ))p")")
+{ cat "$profile"; echo "$sliding"; } > "$tmp/sliding.yaml"
+set +e; "$bin/softpack-config" "$tmp/sliding.yaml" seeds > /dev/null 2> "$tmp/err"; code=$?; set -e
+[[ $code == 2 ]] && grep -q "sliding.ht_over_Rs\[0\]: .* is not allowed; allowed: 0 < value < 1" "$tmp/err" ||
+  fail "defect 17: $sliding: exit $code: $(cat "$tmp/err")"
+for wait in 100000000000000000000 1e20 31536001; do
+  set +e; LOCK_WAIT=$wait "$root/workflow/with_lock.sh" "$tmp/lockdata" true 2> "$tmp/err"; set -e  # free lock: runs
+  exec 217>> "$tmp/lockdata/.softpack.lock"; flock -n 217
+  set +e; LOCK_WAIT=$wait "$root/workflow/with_lock.sh" "$tmp/lockdata" true 2> "$tmp/err"; code=$?; set -e
+  exec 217>&-
+  [[ $code == 2 ]] && grep -q "LOCK_WAIT=$wait is not allowed; allowed: a whole number of seconds from 0 to 31536000" "$tmp/err" ||
+    fail "defect 17: LOCK_WAIT=$wait: exit $code: $(cat "$tmp/err")"
+done
+echo "ok: defect 17: an unclosed bracket, a long direction, Pi = 5e5, Rs = 1e-9, ht_over_Rs and LOCK_WAIT say what is wrong"
