@@ -13,7 +13,9 @@
 #   4. everything a run writes lives under its DATA and its lock (issue 28): every goal that
 #      writes there takes the lock (drawn among those outside the pipeline's first list: timing,
 #      the studies' reports); make -n of a study writes nothing; make figures draws into
-#      DATA/PROFILE/figures and nothing outside DATA.
+#      DATA/PROFILE/figures and nothing outside DATA;
+#   5. make archive with PROFILE_FILE archives that profile (issue 28, defect 9; and §1: make
+#      verify sees a symlink or a folder the manifest does not list).
 # The paper profile's tables come from the archive of this release (seconds, no simulation).
 #
 #   test_make.sh BUILD_DIR SOURCE_DIR   (FAULT_SEED=N replays)
@@ -191,3 +193,15 @@ done
 outside=$(find "$root/data" "$root/figures" "$root/paper" -newer "$tmp/marker" -type f -not -path "$root/data/archive/*" 2> /dev/null | head -5)
 [[ -z $outside ]] || fail "make figures DATA=$tmp/d0 wrote outside it: $outside"
 echo "ok: make figures draws into DATA/PROFILE/figures and writes nothing outside DATA"
+
+# make archive with PROFILE_FILE archives that profile, not experiments/PROFILE.yaml (defect 9).
+a=$tmp/arch
+for part in packings normal tangential averages fits stamps; do mkdir -p "$a/data/mine/$part" && echo "$part" > "$a/data/mine/$part/x.h5"; done
+echo "value" > "$a/data/mine/stamps/normal.hash"
+printf 'profile: mine\n# the profile used, not experiments/mine.yaml (there is none)\n' > "$a/mine.yaml"
+(cd "$root" && workflow/archive.sh "$a/data" mine 0.0.0 "$a/archive" "$a/mine.yaml") > /dev/null ||
+  fail "workflow/archive.sh with a PROFILE_FILE"
+cmp -s "$a/archive/0.0.0/mine/profile.yaml" "$a/mine.yaml" || fail "make archive did not archive its PROFILE_FILE"
+grep -q 'archive.sh $(DATA) $(PROFILE) $(VERSION) $(ARCHIVE_ROOT) $(PROFILE_FILE)' "$root/workflow/archive.mk" ||
+  fail "workflow/archive.mk does not give archive.sh the PROFILE_FILE"
+echo "ok: make archive archives the profile it was given (PROFILE_FILE)"
