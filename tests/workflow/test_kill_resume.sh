@@ -31,7 +31,7 @@ for round in $(seq 1 "$rounds"); do
   sleep "$(printf '%d.%03d' $((delay_ms / 1000)) $((delay_ms % 1000)))"
   kill -KILL -- -"$pid" 2> /dev/null && killed=yes || killed="no (it had finished)"
   wait "$pid" 2> /dev/null || true
-  partial=$(find killed -type f -name '*.h5' 2> /dev/null | wc -l)
+  partial=$({ find killed -type f -name '*.h5' 2> /dev/null || true; } | wc -l)  # killed may not exist yet (an early kill)
   mk -j2 DATA=killed tables > "$work/finish-$round.log" 2>&1 || { cat "$work/finish-$round.log"; fail "round $round: make after the kill"; }
   same_results killed "$ref" > /dev/null || fail "round $round: results after a SIGKILL at $delay_ms ms differ (RANDOM_SEED=$seed)"
   leftovers=$(find killed -name '*.tmp*' | head -5)
