@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <regex>
 #include <stdexcept>
 
 #include "config/yaml_text.hpp"
@@ -80,6 +79,37 @@ std::vector<ConfigNode> ConfigNode::items() const {
   return out;
 }
 
+namespace {
+
+// The form of a number's text: decimal ([-+] digits [. digits] [e [-+] digits], or [-+] . digits
+// [e ...]; no leading zero before other digits), or why not.
+enum class NumberText { decimal, leading_zero, hexadecimal, other };
+NumberText number_form(const std::string& t) {
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    return i - from;
+  };
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+  const std::size_t int_start = i;
+  const std::size_t int_digits = digits();
+  if (int_digits >= 1 && i < t.size() && (t[i] == 'x' || t[i] == 'X')) return NumberText::hexadecimal;
+  const bool leading_zero = int_digits > 1 && t[int_start] == '0';
+  std::size_t frac_digits = 0;
+  if (i < t.size() && t[i] == '.') ++i, frac_digits = digits();
+  if (int_digits == 0 && frac_digits == 0) return NumberText::other;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    if (digits() == 0) return NumberText::other;
+  }
+  if (i != t.size()) return NumberText::other;
+  return leading_zero ? NumberText::leading_zero : NumberText::decimal;
+}
+
+}  // namespace
+
 double ConfigNode::number() const {
   if (!node_.IsScalar()) fail("expected a number");
   const std::string text = node_.Scalar();
@@ -89,19 +119,15 @@ double ConfigNode::number() const {
   const std::string& tag = node_.Tag();
   if (tag == "tag:yaml.org,2002:str" || tag == "!!str")
     fail(fmt::format("'{}' is tagged !!str, a text, where a number is expected; remove the tag", text));
-  static const std::regex decimal(R"([-+]?(0|[1-9][0-9]*)(\.[0-9]*)?([eE][-+]?[0-9]+)?|[-+]?\.[0-9]+([eE][-+]?[0-9]+)?)");
-  if (!std::regex_match(text, decimal)) {
-    static const std::regex leading_zero(R"([-+]?0[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?)");
-    if (std::regex_match(text, leading_zero))
-      fail(fmt::format("'{}': a number with a leading zero is not allowed (YAML 1.1 readers read it as octal); write it "
-                       "without the zero",
-                       text));
-    if (text.find_first_of("xX") != std::string::npos && text.find_first_of("0123456789") != std::string::npos)
-      fail(fmt::format("'{}': only decimal numbers are allowed, like 1.5e6 (no hexadecimal)", text));
-  }
+  const NumberText form = number_form(text);
+  if (form == NumberText::leading_zero)
+    fail(fmt::format("'{}': a number with a leading zero is not allowed (YAML 1.1 readers read it as octal); write it "
+                     "without the zero",
+                     text));
+  if (form == NumberText::hexadecimal) fail(fmt::format("'{}': only decimal numbers are allowed, like 1.5e6 (no hexadecimal)", text));
   try {
     std::size_t used = 0;
-    if (!std::regex_match(text, decimal)) throw std::invalid_argument(text);
+    if (form != NumberText::decimal) throw std::invalid_argument(text);
     const double v = std::stod(text, &used);
     if (used != text.size()) throw std::invalid_argument(text);
     if (!std::isfinite(v)) fail(fmt::format("'{}' is not a finite number", text));
