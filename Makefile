@@ -50,7 +50,7 @@ endif
 
 # The goals that need the tools and a profile (the pipeline's and the studies').
 PIPELINE_GOALS := all tables figures paper archive packings normal tangential sliding sweeps averages fits figure1 figure2 \
-  study-packing study-relaxation accuracy accuracy-report fast-check timing calibrate calibrate-report radius radius-report \
+  study-packing density-rule study-relaxation accuracy accuracy-report fast-check timing calibrate calibrate-report radius radius-report \
   coarse-grain coarse-grain-runs coarse-grain-report coarse-grain-multi-contact
 # The goals that write nothing under DATA; every other goal (a file named on the command line too)
 # writes there and takes its lock.

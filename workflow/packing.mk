@@ -10,7 +10,7 @@ STUDY_FIGURES := $(DATA)/studies/figures
 # `import` (softpack-import; docs/import.md): same options, same packing file.
 PACK := $(BUILD)/engine/softpack-$(if $(filter imported,$(call config,packings)),import,pack)
 
-.PHONY: packings study-packing figure1 figure2
+.PHONY: packings study-packing density-rule figure1 figure2
 # The executables are brought up to date before any stage runs (an order-only prerequisite);
 # not under make -n or make -q, which must only say what would run.
 TOOLS := $(if $(findstring n,$(MAKE_LETTERS))$(findstring q,$(MAKE_LETTERS)),,build-tools)
@@ -52,3 +52,14 @@ $(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/
 $(STUDY_FIGURES)/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
 	@mkdir -p $(@D)
 	@gnuplot -e "data='$<'; out='$@.tmp.png'" figures/packing_density.gp && mv $@.tmp.png $@
+
+# The preregistered density rule (issue 29: experiments/criteria.yaml, paper/preregistration.md):
+# the criteria's (beta, trials) grid on its select seeds; the chosen setting is the paper
+# profile's. It reads the criteria and the base's packing section (the grid replaces beta and trials).
+DENSITY_RULE_DIR := $(DATA)/studies/density-rule
+density-rule: $(DENSITY_RULE_DIR)/density-rule.md  ## the preregistered packing-density rule on the held-out seeds (DATA/studies/density-rule/)
+	@cat $<
+$(DENSITY_RULE_DIR)/density-rule.md $(DENSITY_RULE_DIR)/density-rule.json &: experiments/density-rule.yaml experiments/criteria.yaml | $(TOOLS)
+	@mkdir -p $(@D) && echo "density-rule: -> $(@D) (log $(@D)/density-rule.log)"
+	@$(RUN) $(BUILD)/engine/softpack-packing-study --config experiments/density-rule.yaml --out $(@D) 2> $(@D)/density-rule.log \
+	  || { echo "density-rule: FAILED; see $(@D)/density-rule.log"; tail -5 $(@D)/density-rule.log; exit 1; }
