@@ -6,6 +6,9 @@ AVERAGE_DIR := $(DATA)/$(PROFILE)/averages
 FIT_DIR := $(DATA)/$(PROFILE)/fits
 TABLE_DIR := $(DATA)/$(PROFILE)/tables
 PUBLISHED := experiments/published.yaml
+# The preregistered rules (issue 29; paper/preregistration.md): the fits judge every candidate by
+# them, the tables apply the selection, Table 2's unit rule and the tolerances (verdict.*).
+CRITERIA := experiments/criteria.yaml
 
 # average_outputs SCENE: the files softpack-average writes for SCENE.
 # (A normal-only profile, NORMAL_ONLY in workflow/stamps.mk: no tangential results to average.)
@@ -21,11 +24,11 @@ $(call average_outputs,$(1)) &: $(AVERAGE_STAMP) $(call NORMAL_RESULTS,$(1)) $(i
 	  $(RUN) $(BUILD)/engine/softpack-average --scene $(1) --profile $(PROFILE) --config $(PROFILE_FILE) --normal $(call NORMAL_RESULTS,$(1)) \
 	    $(if $(NORMAL_ONLY),,--tangential $(call TANGENTIAL_RESULTS,$(1))) --out-dir $(AVERAGE_DIR) 2> $(AVERAGE_DIR)/$(1).log \
 	  || { echo "average: FAILED for $(PROFILE) $(1); see $(AVERAGE_DIR)/$(1).log"; tail -5 $(AVERAGE_DIR)/$(1).log; exit 1; }; }
-$(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 | $(TOOLS)
+$(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 $(CRITERIA) | $(TOOLS)
 	@mkdir -p $(FIT_DIR) && $(call clear_stale,$(call fit_outputs,$(1)))
 	@$$(call from_archive,$(call fit_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "fit: $(PROFILE) $(1) Eqs. 7-8 -> $(FIT_DIR)/$(1).json (log $(FIT_DIR)/$(1).log)"; \
-	  $(RUN) $(BUILD)/engine/softpack-fit --average $(AVERAGE_DIR)/$(1).h5 --config $(PROFILE_FILE) --out $(FIT_DIR)/$(1).json \
+	  $(RUN) $(BUILD)/engine/softpack-fit --average $(AVERAGE_DIR)/$(1).h5 --config $(PROFILE_FILE) --criteria $(CRITERIA) --out $(FIT_DIR)/$(1).json \
 	    --gnuplot $(FIT_DIR)/$(1).gp 2> $(FIT_DIR)/$(1).log \
 	  || { echo "fit: FAILED for $(PROFILE) $(1); see $(FIT_DIR)/$(1).log"; tail -5 $(FIT_DIR)/$(1).log; exit 1; }; }
 endef
@@ -34,7 +37,8 @@ $(foreach scene,$(SCENES),$(eval $(call analysis_rules,$(scene))))
 AVERAGES := $(foreach scene,$(SCENES),$(call average_outputs,$(scene)))
 FITS := $(foreach scene,$(SCENES),$(call fit_outputs,$(scene)))
 TABLES := $(TABLE_DIR)/table1.md $(TABLE_DIR)/table2.md $(TABLE_DIR)/table1.tex $(TABLE_DIR)/table2.tex \
-  $(TABLE_DIR)/published.gp $(if $(NORMAL_ONLY),,$(TABLE_DIR)/kt_unit.md)
+  $(TABLE_DIR)/published.gp $(if $(NORMAL_ONLY),,$(TABLE_DIR)/kt_unit.md $(TABLE_DIR)/verdict.json $(TABLE_DIR)/verdict.md \
+  $(TABLE_DIR)/verdict.tex)
 
 .PHONY: averages fits tables figures
 averages: $(AVERAGES)  ## mean and standard error over the seeds (DATA/PROFILE/averages/)
@@ -43,11 +47,12 @@ fits: $(FITS)  ## Eq. 7 and Eq. 8 fitted to the averages (DATA/PROFILE/fits/*.js
 tables: $(TABLES)  ## Tables 1 and 2: ours beside the paper's (DATA/PROFILE/tables/; printed)
 	@cat $(TABLE_DIR)/table1.md; echo; cat $(TABLE_DIR)/table2.md
 
-# kt_unit.md: the readings of Table 2's unit tested on kt/Fn (analysis/kt_unit.hpp), from the averages.
-$(TABLES) &: $(filter %.json,$(FITS)) $(filter %.h5,$(AVERAGES)) $(PUBLISHED) | $(TOOLS)
+# kt_unit.md: the readings of Table 2's unit tested on kt/Fn (analysis/kt_unit.hpp), from the averages;
+# verdict.*: the preregistered fit selection, Table 2's unit and the verdict (analysis/verdict.hpp).
+$(TABLES) &: $(filter %.json,$(FITS)) $(filter %.h5,$(AVERAGES)) $(PUBLISHED) $(CRITERIA) | $(TOOLS)
 	@mkdir -p $(TABLE_DIR) && $(call clear_stale,$(TABLES))
 	@$(RUN) $(BUILD)/engine/softpack-table --fits $(filter %.json,$(FITS)) --config $(PROFILE_FILE) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
-	  --gnuplot $(TABLE_DIR)/published.gp $(if $(NORMAL_ONLY),,--averages $(filter %.h5,$(AVERAGES)) \
+	  --gnuplot $(TABLE_DIR)/published.gp $(if $(NORMAL_ONLY),,--averages $(filter %.h5,$(AVERAGES)) --criteria $(CRITERIA) \
 	  --Rs $$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot | sed 's/^Rs=\([^;]*\);.*/\1/')) > /dev/null 2> $(TABLE_DIR)/tables.log \
 	  || { echo "tables: FAILED for $(PROFILE); see $(TABLE_DIR)/tables.log"; cat $(TABLE_DIR)/tables.log; exit 1; }
 

@@ -114,6 +114,9 @@ NormalAverage average_normal(const std::vector<SweepColumns>& seeds) {
     a.Fn.push_back(column(seeds, &SweepColumns::Fn, k));
     a.Ft_parallel.push_back(column(seeds, &SweepColumns::Ft_parallel, k));
     a.Ft_perpendicular.push_back(column(seeds, &SweepColumns::Ft_perpendicular, k));
+    std::vector<double> per_seed;
+    for (const SweepColumns& s : seeds) per_seed.push_back(s.Fn[k]);
+    a.Fn_per_seed.push_back(std::move(per_seed));
   }
   return a;
 }
@@ -142,6 +145,7 @@ TangentialAverage average_tangential(const std::vector<SweepColumns>& seeds) {
     }
     a.kt_delta_n.push_back(g.delta_n[k]);
     a.kt.push_back(mean_error(per_seed));
+    a.kt_per_seed.push_back(per_seed);
     k = end;
   }
   return a;

@@ -49,6 +49,7 @@ MeanError mean_error(const std::vector<double>& values);
 struct NormalAverage {
   std::vector<double> delta_n;
   std::vector<MeanError> Fn, Ft_parallel, Ft_perpendicular;
+  std::vector<std::vector<double>> Fn_per_seed;  ///< [Δn][seed]: what the jackknife of the fits re-averages
   std::size_t seeds = 0;
 };
 /// All files must share the Delta_n grid (InputError names the file that differs).
@@ -59,6 +60,7 @@ struct TangentialAverage {
   std::vector<MeanError> Ft_parallel, Ft_perpendicular, Fn;
   std::vector<double> kt_delta_n;  ///< one row per Delta_n
   std::vector<MeanError> kt;       ///< [N/m]
+  std::vector<std::vector<double>> kt_per_seed;  ///< [Δn][seed]
   std::size_t seeds = 0;
 };
 TangentialAverage average_tangential(const std::vector<SweepColumns>& seeds);

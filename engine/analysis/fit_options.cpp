@@ -22,6 +22,26 @@ const char* weighting_name(FitOptions::Weighting w) {
   return "?";
 }
 
+void parse_fit_keys(const ConfigNode& node, FitOptions& o) {
+  if (const auto w = node.find("weighting")) o.weighting = parse_weighting(w->choice({"stderr", "unweighted", "relative"}));
+  if (const auto f = node.find("onset_force")) {
+    const double v = f->number();
+    if (!(v >= 0.0 && v < 1.0))
+      f->fail(fmt::format("{} is not allowed; allowed: 0 <= onset_force < 1 (a fraction of the curve's largest force)", v));
+    o.onset_force = v;
+  }
+  if (const auto f = node.find("form"))
+    o.form = f->choice({"loaded", "clamped"}) == "clamped" ? FitOptions::Form::clamped : FitOptions::Form::loaded;
+  if (const auto f = node.find("sigma_floor")) {
+    const double v = f->number();
+    if (!(v > 0.0 && v < 1.0))
+      f->fail(fmt::format("{} is not allowed; allowed: 0 < sigma_floor < 1 (a fraction of the curve's largest force)", v));
+    o.sigma_floor = v;
+  }
+  if (o.form == FitOptions::Form::clamped && o.weighting == FitOptions::Weighting::relative)
+    node.fail("form clamped with weighting relative is not allowed (a point of zero force has no relative deviation); "
+              "allowed: stderr or unweighted");
+}
 
 FitOptions FitSection::options_for(const std::string& scene) const {
   FitOptions o = options;
@@ -34,15 +54,8 @@ FitSection parse_fit_section(const ConfigNode& root) {
   const std::optional<ConfigNode> section = root.find("fit");
   if (!section) return out;
   out.given = true;
-  section->allow_only({"weighting", "onset_force", "delta_n_max", "compare"});
-  if (const auto w = section->find("weighting"))
-    out.options.weighting = parse_weighting(w->choice({"stderr", "unweighted", "relative"}));
-  if (const auto f = section->find("onset_force")) {
-    const double v = f->number();
-    if (!(v >= 0.0 && v < 1.0))
-      f->fail(fmt::format("{} is not allowed; allowed: 0 <= onset_force < 1 (a fraction of the curve's largest force)", v));
-    out.options.onset_force = v;
-  }
+  section->allow_only({"weighting", "onset_force", "delta_n_max", "compare", "form", "sigma_floor"});
+  parse_fit_keys(*section, out.options);
   if (const auto m = section->find("delta_n_max")) {
     const auto bound = [](const ConfigNode& n) {
       const double v = n.number();

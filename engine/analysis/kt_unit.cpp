@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -13,12 +14,20 @@ namespace softpack::table {
 
 double metres_per_degree(double Rs) { return std::numbers::pi * Rs / 180.0; }
 
-std::vector<KtReading> kt_readings(double Rs) {
+std::vector<KtReading> kt_readings(double Rs, const std::vector<std::string>& keys) {
   if (!(Rs > 0.0)) throw InputError(fmt::format("Rs = {} m is not allowed; allowed: Rs > 0", Rs));
-  return {{"per metre of ht", "N/m", 1.0},
-          {"per millimetre of ht", "N/mm", 1e-3},
-          {"per degree of alpha", "N/deg", metres_per_degree(Rs)},
-          {"per radian of alpha (= per unit of ht/Rs)", "N/rad", Rs}};
+  const std::vector<KtReading> all{{"m", "per metre of ht", "N/m", 1.0},
+                                   {"mm", "per millimetre of ht", "N/mm", 1e-3},
+                                   {"deg", "per degree of alpha", "N/deg", metres_per_degree(Rs)},
+                                   {"rad", "per radian of alpha (= per unit of ht/Rs)", "N/rad", Rs}};
+  if (keys.empty()) return all;
+  std::vector<KtReading> out;
+  for (const std::string& k : keys) {
+    const auto it = std::find_if(all.begin(), all.end(), [&](const KtReading& r) { return r.key == k; });
+    if (it == all.end()) throw InputError(fmt::format("reading '{}' is not allowed; allowed: m, mm, deg, rad", k));
+    out.push_back(*it);
+  }
+  return out;
 }
 
 double PublishedLaw::operator()(double dn) const {
@@ -30,7 +39,7 @@ double PublishedLaw::operator()(double dn) const {
 KtUnitScene kt_unit_scene(const std::string& scene, const std::vector<double>& delta_n, const std::vector<double>& Fn,
                           const std::vector<double>& Fn_error, const std::vector<double>& kt_delta_n,
                           const std::vector<double>& kt, const std::vector<double>& kt_error, const PublishedLaw& normal,
-                          const PublishedLaw& tangential, const std::vector<KtReading>& readings) {
+                          const PublishedLaw& tangential, const std::vector<KtReading>& readings, double established_sigmas) {
   if (delta_n.size() != Fn.size() || Fn.size() != Fn_error.size() || kt_delta_n.size() != kt.size() ||
       kt.size() != kt_error.size())
     throw InputError(fmt::format("{}: the columns of the averages have different lengths", scene));
@@ -48,7 +57,7 @@ KtUnitScene kt_unit_scene(const std::string& scene, const std::vector<double>& d
     p.ours = kt[j] / Fn[i];
     p.ours_error = p.ours * std::hypot(kt_error[j] / kt[j], Fn_error[i] / Fn[i]);
     p.paper = paper_kt / paper_Fn;
-    p.established = p.ours >= 2.0 * p.ours_error;
+    p.established = Fn[i] > established_sigmas * Fn_error[i] && kt[j] > established_sigmas * kt_error[j];
     for (const KtReading& r : readings) p.q.push_back(p.ours * r.metres / p.paper);
     out.points.push_back(p);
   }
@@ -67,7 +76,8 @@ std::string kt_unit_markdown(const std::vector<KtUnitScene>& scenes, const std::
       "# The unit of Table 2\n\nq = (kt/Fn ours, kt converted to the reading's unit) / (kt/Fn of the paper's fits), at the "
       "same Δn: 1 for the reading in which the paper's kt was printed, if the two soft-particles respond alike in shape "
       "(paper/paper.tex, \"The unit of Table 2\"). ours: kt/Fn of the seed averages [1/m of ht] ± standard error; paper: "
-      "kt/Fn of Eqs. 7 and 8 with the published coefficients [paper's unit / N]. Not established: ours within 2 standard "
+      "kt/Fn of Eqs. 7 and 8 with the published coefficients [paper's unit / N]. Not established: our Fn or kt within "
+      "experiments/criteria.yaml's table2_unit.established_sigmas standard "
       "errors of zero, left out of the mean.\n\n";
   for (const KtUnitScene& s : scenes) {
     md += fmt::format("## {}\n\n| Δn | ours kt/Fn [1/m] | paper kt/Fn |", s.scene);

@@ -17,14 +17,16 @@
 namespace softpack::table {
 
 struct KtReading {
+  std::string key;     ///< "m", "mm", "deg", "rad" (experiments/criteria.yaml, table2_unit.readings)
   std::string name;    ///< "per degree of alpha", ...
   std::string unit;    ///< "N/deg", ...
   double metres = 0.0; ///< metres of ht per unit: kt_U = kt[N/m] × metres
 };
 /// Metres of ht in one degree of α, π Rs / 180 (ht = π Rs α / 180, paper §4).
 double metres_per_degree(double Rs);
-/// The candidate readings for a shell of radius Rs [m], in a fixed order.
-std::vector<KtReading> kt_readings(double Rs);
+/// The candidate readings for a shell of radius Rs [m], in a fixed order; with `keys`, those only, in that order
+/// (InputError for an unknown key).
+std::vector<KtReading> kt_readings(double Rs, const std::vector<std::string>& keys = {});
 
 /// Eq. 7 or 8 as published: a Δn^b + c for Δn >= δ, else 0 (fit::evaluate).
 struct PublishedLaw {
@@ -37,7 +39,7 @@ struct KtUnitPoint {
   double ours = 0.0, ours_error = 0.0;  ///< kt/Fn measured [1/m of ht] and its standard error
   double paper = 0.0;                   ///< kt/Fn of the published fits [paper's unit / N]
   std::vector<double> q;                ///< per reading: (ours × metres) / paper
-  bool established = false;             ///< ours >= 2 standard errors: counted in the mean
+  bool established = false;             ///< our Fn and kt both above established_sigmas standard errors: counted in the mean
 };
 
 struct KtUnitScene {
@@ -48,12 +50,13 @@ struct KtUnitScene {
 
 /// kt/Fn of ours (the seed averages: Δn, Fn ± se, kt Δn, kt ± se) against the published fits'
 /// at every Δn of our kt grid where all four are positive. Standard error of ours by first-order
-/// propagation of the two (independent) standard errors; a point where ours is within 2 of them
-/// of zero is listed but not counted in the mean.
+/// propagation of the two (independent) standard errors; a point where our Fn or kt is within
+/// established_sigmas of its standard errors of zero is listed but not counted in the mean
+/// (experiments/criteria.yaml, table2_unit).
 KtUnitScene kt_unit_scene(const std::string& scene, const std::vector<double>& delta_n, const std::vector<double>& Fn,
                           const std::vector<double>& Fn_error, const std::vector<double>& kt_delta_n,
                           const std::vector<double>& kt, const std::vector<double>& kt_error, const PublishedLaw& normal,
-                          const PublishedLaw& tangential, const std::vector<KtReading>& readings);
+                          const PublishedLaw& tangential, const std::vector<KtReading>& readings, double established_sigmas);
 
 /// The Markdown report: per scene the points and q of every reading, then each reading's
 /// geometric-mean q per scene and the reading closest to 1 on the first scene given.

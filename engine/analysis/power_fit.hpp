@@ -33,6 +33,7 @@
 #include <Eigen/Core>
 
 #include "analysis/fit_options.hpp"
+#include "core/types.hpp"
 #include <span>
 #include <string>
 #include <vector>
@@ -74,5 +75,21 @@ PowerLawFit fit_tangential_law(std::span<const double> delta_n, std::span<const 
 
 /// Eq. 7/8 evaluated: a Δn^b + c for Δn >= δ, else 0 (δ as in the fit).
 double evaluate(const PowerLawFit& fit, double delta_n);
+
+/// How well an Eq. 7 fit describes a curve, every form judged alike (experiments/criteria.yaml,
+/// fit.judge): χ² over every point with Δn <= delta_n_max of max(0, law), each residual over
+/// σ_i = max(stderr_i, sigma_floor × the curve's largest |F|), dof = points − 3; and the
+/// Wald-Wolfowitz runs test of the residuals' signs where the law or the force is loaded
+/// (z = (runs − μ)/σ; NaN when every residual has one sign: then no test, and the fit is not
+/// adequate).
+struct Judgement {
+  double chi2_per_dof = kNaN;
+  std::size_t points = 0;         ///< points judged
+  std::size_t signed_points = 0;  ///< points in the runs test
+  std::size_t runs = 0;
+  double runs_z = kNaN;
+};
+Judgement judge_normal_law(const PowerLawFit& fit, std::span<const double> delta_n, std::span<const double> force,
+                           std::span<const double> error, double sigma_floor, double delta_n_max);
 
 }  // namespace softpack::fit

@@ -10,6 +10,7 @@
 
 
 #include "analysis/fit_options.hpp"
+#include "analysis/fit_selection.hpp"
 #include "analysis/power_fit.hpp"
 #include "config/profile.hpp"
 #include "config/yaml_node.hpp"
@@ -26,7 +27,7 @@ namespace softpack::apps::fit_app {
 
 int main(int argc, char** argv) {
   CLI::App app{"softpack-fit: fit Eq. 7 to the normal force and Eq. 8 to the tangential spring constant of one scene"};
-  std::string average_path, out_path, gnuplot_path, config_path;
+  std::string average_path, out_path, gnuplot_path, config_path, criteria_path;
   bool quiet = false;
   app.add_option("--average", average_path, "seed averages of one scene (HDF5), e.g. data/paper/average/soft-solid.h5")
       ->required();
@@ -36,6 +37,9 @@ int main(int argc, char** argv) {
   app.add_option("--config", config_path,
                  "the profile the averages were made with (experiments/<name>.yaml): its `fit` section says how to fit "
                  "(weighting, onset_force, delta_n_max, compare; docs/fit.md)");
+  app.add_option("--criteria", criteria_path,
+                 "the preregistered criteria (experiments/criteria.yaml): also judge the profile's fit and every candidate "
+                 "of its `fit` section (chi2 over every point, runs, leave-one-seed-out jackknife; paper/preregistration.md)");
   app.add_flag("--quiet", quiet, "no summary line on stderr");
   if (const auto code = parse_command_line(app, argc, argv, "softpack-fit")) return *code;
 
@@ -93,6 +97,19 @@ int main(int argc, char** argv) {
         }
         out.weightings.push_back(std::move(alt));
       }
+    if (!criteria_path.empty()) {
+      const fit::FitCriteria criteria = fit::parse_fit_criteria(ConfigNode::load_file(criteria_path));
+      const fit::SceneCurves curves{in.delta_n,    in.Fn, in.Fn_stderr, in.Fn_per_seed,
+                                    in.kt_delta_n, in.kt, in.kt_stderr, in.kt_per_seed};
+      // The profile's own fit, judged alike (and jackknifed with its own options).
+      const fit::CandidateFit own = fit::fit_candidate({"profile", options}, curves, criteria);
+      out.judged = own.judged;
+      out.jackknife = own.jackknife;
+      for (const fit::Candidate& c : criteria.candidates) {
+        if (!quiet) fmt::print(stderr, "softpack-fit {}: candidate {} (jackknife over {} seeds)\n", in.scene, c.name, in.seeds);
+        out.candidates.push_back(fit::fit_candidate(c, curves, criteria));
+      }
+    }
     out.code_version = code_version();
     out.seconds = watch.elapsed().wall;
     out.cpu_seconds = process_cpu_seconds();

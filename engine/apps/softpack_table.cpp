@@ -1,7 +1,9 @@
 // softpack-table: Tables 1 and 2 of the paper with our fitted coefficients beside the published
 // ones (analysis/fit_table.hpp). Reads the fit files of softpack-fit (formats/fit_file.hpp) and
 // experiments/published.yaml, writes table1.md, table1.tex, table2.md, table2.tex and prints the
-// Markdown tables.
+// Markdown tables. With --criteria and --averages, also the verdict by the preregistered rules
+// (verdict.json, verdict.md, verdict.tex; formats/verdict_file.hpp) and kt_unit.md, and Table 2
+// carries a and c in the unit the rule reads the paper's in (when its test passes).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -9,10 +11,14 @@
 #include <chrono>
 #include <filesystem>
 #include <optional>
+#include <algorithm>
 #include <set>
 
+#include "analysis/fit_selection.hpp"
 #include "analysis/fit_table.hpp"
 #include "analysis/kt_unit.hpp"
+#include "analysis/verdict.hpp"
+#include "formats/verdict_file.hpp"
 #include "formats/average_file.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
@@ -63,7 +69,11 @@ int main(int argc, char** argv) {
                                   "seed averages of softpack-average, one per scene (any order): also write kt_unit.md, the "
                                   "readings of Table 2's unit tested on kt/Fn (needs --Rs)");
   app.add_option("--Rs", Rs, "shell radius [m] of the profile (softpack-config PROFILE gnuplot), for kt_unit.md")->needs(averages);
-  std::string config_path;
+  std::string config_path, criteria_path;
+  app.add_option("--criteria", criteria_path,
+                 "the preregistered criteria (experiments/criteria.yaml): the fit selection over the scenes, Table 2's unit and "
+                 "the verdict (verdict.json, .md, .tex; needs --averages and fit files made with softpack-fit --criteria)")
+      ->needs(averages);
   app.add_option("--config", config_path,
                  "the profile the fits must have been made with (make gives it); without it, they must agree with each other");
   if (const auto code = parse_command_line(app, argc, argv, "softpack-table")) return *code;
@@ -74,17 +84,37 @@ int main(int argc, char** argv) {
     root.allow_only({"table1", "table2"});
     table::Table t1{"Table 1 (normal, Eq. 7)", table::table1_rows(), {}};
     table::Table t2{"Table 2 (tangential spring, Eq. 8)", table::table2_rows(), {}};
-    if (Rs > 0.0)  // the paper's "N/m" compared as N per degree of α (kt_unit.md); our N/m stays above
-      for (const char* k : {"a", "c"})
-        t2.rows.push_back({std::string(k) + "_per_degree", fmt::format("{} [N/deg], read per degree of α", k),
-                           fmt::format("${}$ [N/deg], per degree of $\\alpha$", k)});
+    if (!average_paths.empty() && criteria_path.empty())
+      throw InputError("--averages needs --criteria (experiments/criteria.yaml): Table 2's unit is decided by its rule");
+    if (!average_paths.empty() && !(Rs > 0.0)) throw InputError("--averages needs --Rs, the shell radius in metres (> 0)");
+    std::optional<verdict::Criteria> criteria;
+    std::optional<fit::FitCriteria> fit_criteria;
+    if (!criteria_path.empty()) {
+      const ConfigNode c = ConfigNode::load_file(criteria_path);
+      criteria = verdict::parse_criteria(c);
+      fit_criteria = fit::parse_fit_criteria(c);
+    }
+    std::vector<AverageFile> average_files;
+    for (const std::string& path : average_paths) {
+      average_files.push_back(read_average_file(path));
+      if (!average_files.back().has_kt)
+        throw InputError(fmt::format("{}: no /kt group: Table 2's unit needs the tangential averages", path));
+    }
+    const auto published_law = [&](const std::string& scene, const char* which) {
+      const ConfigNode s = root.at(which).at(scene);
+      table::PublishedLaw l{s.at("a").number(), s.at("b").number(), s.at("c").number(),
+                            root.at("table1").at(scene).at("delta").number()};
+      return l;
+    };
     std::set<std::string> scenes;
     std::vector<std::string> sources;
     // One configuration per table: every fit of the stamp of the first and, with --config, of the profile's now.
     const std::string stamp = config_path.empty() ? "" : profile_stamp(ConfigNode::load_file(config_path), "average");
     std::optional<FitEstimates> first;
+    std::vector<FitEstimates> fits;
     for (const std::string& path : fit_paths) {
       FitEstimates fit = read_fit_file(path);
+      fits.push_back(fit);
       if (!first) first = fit;
       if (fit.stamp != first->stamp)
         throw InputError(fmt::format("--fits: {} and {} were made with different configurations (stamps '{}' and '{}'); a table "
@@ -97,24 +127,66 @@ int main(int argc, char** argv) {
       table::Column c2{fit.scene, std::move(fit.tangential), {}, {}};
       add_published(c1, root, "table1", {"a", "b", "c", "delta"});
       add_published(c2, root, "table2", {"a", "b", "c"});
-      if (Rs > 0.0) {
-        // Table 2 read per degree of α, the reading kt_unit.md supports (analysis/kt_unit.hpp):
-        // kt per degree = kt per metre of ht × the metres of ht in one degree.
-        const double per_degree = table::metres_per_degree(Rs);
-        if (c2.ours)
-          for (const char* k : {"a", "c"})
-            if (const auto it = c2.ours->find(k); it != c2.ours->end())
-              (*c2.ours)[std::string(k) + "_per_degree"] = table::Estimate{it->second.value * per_degree, it->second.error * per_degree};
-        for (const char* k : {"a", "c"})
-          if (const auto it = c2.published.find(k); it != c2.published.end()) {
-            c2.published[std::string(k) + "_per_degree"] = it->second;
-            if (const auto t = c2.published_text.find(k); t != c2.published_text.end())
-              c2.published_text[std::string(k) + "_per_degree"] = t->second;
-          }
-      }
       t1.columns.push_back(std::move(c1));
       t2.columns.push_back(std::move(c2));
       sources.push_back(fmt::format("{} ({}, softpack-fit {})", path, fit.scene, fit.code_version));
+    }
+
+    std::optional<VerdictInputs> verdict_inputs;
+    if (criteria) {
+      VerdictInputs vi;
+      vi.criteria_path = criteria_path;
+      vi.fit_criteria = *fit_criteria;
+      std::vector<std::vector<fit::CandidateFit>> per_scene;
+      std::vector<verdict::SceneInput> inputs;
+      for (const FitEstimates& f : fits) {
+        if (f.candidates.empty())
+          throw InputError(fmt::format("--fits: the fit of {} has no candidates: make it with softpack-fit --criteria {}", f.scene,
+                                       criteria_path));
+        per_scene.push_back(f.candidates);
+        const auto a = std::find_if(average_files.begin(), average_files.end(), [&](const AverageFile& x) { return x.scene == f.scene; });
+        if (a == average_files.end()) throw InputError(fmt::format("--averages: no average of scene {}", f.scene));
+        verdict::SceneInput in;
+        in.scene = f.scene;
+        in.normal = f.normal;
+        in.tangential = f.tangential;
+        if (f.jackknife && f.jackknife->done) in.jackknife = f.jackknife->covariance;
+        in.delta_n = a->delta_n, in.Fn = a->Fn, in.Fn_stderr = a->Fn_stderr;
+        in.kt_delta_n = a->kt_delta_n, in.kt = a->kt, in.kt_stderr = a->kt_stderr;
+        in.paper_normal = published_law(f.scene, "table1");
+        in.paper_tangential = published_law(f.scene, "table2");
+        inputs.push_back(std::move(in));
+      }
+      vi.selection = fit::select_fit(per_scene, *fit_criteria);
+      // The profile's fit is the chosen candidate when their coefficients agree (both fitted the same averages).
+      vi.profile_fit_is_chosen = true;
+      for (const FitEstimates& f : fits) {
+        const fit::CandidateFit& c = f.candidates.at(vi.selection.chosen);
+        vi.profile_fit_is_chosen = vi.profile_fit_is_chosen && c.normal && c.normal->a == f.normal.at("a").value &&
+                                   c.normal->b == f.normal.at("b").value && c.normal->c == f.normal.at("c").value;
+      }
+      vi.fits = fits;
+      vi.verdict = verdict::judge(inputs, *criteria, Rs);
+      // Table 2 in the reading the rule settled on, beside our N/m.
+      if (vi.verdict.unit.passed) {
+        const std::string u = vi.verdict.unit.selected;
+        const double m = verdict::metres_per_unit(u, Rs);
+        for (const char* k : {"a", "c"}) t2.rows.push_back({std::string(k) + "_per_" + u, fmt::format("{} [N/{}], the paper's unit read per {}", k, u, u),
+                                                            fmt::format("${}$ [N/{}], the paper's unit read per {}", k, u, u)});
+        for (table::Column& c2 : t2.columns) {
+          if (c2.ours)
+            for (const char* k : {"a", "c"})
+              if (const auto it = c2.ours->find(k); it != c2.ours->end())
+                (*c2.ours)[std::string(k) + "_per_" + u] = table::Estimate{it->second.value * m, it->second.error * m};
+          for (const char* k : {"a", "c"})
+            if (const auto it = c2.published.find(k); it != c2.published.end()) {
+              c2.published[std::string(k) + "_per_" + u] = it->second;
+              if (const auto t = c2.published_text.find(k); t != c2.published_text.end())
+                c2.published_text[std::string(k) + "_per_" + u] = t->second;
+            }
+        }
+      }
+      verdict_inputs = std::move(vi);
     }
 
     const std::string md1 = table::to_markdown(t1), md2 = table::to_markdown(t2);
@@ -147,26 +219,18 @@ int main(int argc, char** argv) {
       }
       outputs.emplace_back(gnuplot_path, gp);
     }
-    if (!average_paths.empty()) {
-      if (!(Rs > 0.0)) throw InputError("--averages needs --Rs, the shell radius in metres (> 0)");
-      const auto readings = table::kt_readings(Rs);
+    if (verdict_inputs) {
+      verdict_inputs->provenance = provenance;
+      const auto readings = table::kt_readings(Rs, criteria->readings);
       std::vector<table::KtUnitScene> scenes;
-      for (const std::string& path : average_paths) {
-        const AverageFile a = read_average_file(path);
-        if (!a.has_kt) throw InputError(fmt::format("{}: no /kt group: kt_unit.md needs the tangential averages", path));
-        const auto law = [&](const char* which, std::initializer_list<const char*> keys) {
-          const ConfigNode s = root.at(which).at(a.scene);
-          table::PublishedLaw l;
-          double* dst[] = {&l.a, &l.b, &l.c};
-          std::size_t k = 0;
-          for (const char* key : keys) *dst[k++] = s.at(key).number();
-          l.delta = root.at("table1").at(a.scene).at("delta").number();
-          return l;
-        };
+      for (const AverageFile& a : average_files)
         scenes.push_back(table::kt_unit_scene(a.scene, a.delta_n, a.Fn, a.Fn_stderr, a.kt_delta_n, a.kt, a.kt_stderr,
-                                              law("table1", {"a", "b", "c"}), law("table2", {"a", "b", "c"}), readings));
-      }
+                                              published_law(a.scene, "table1"), published_law(a.scene, "table2"), readings,
+                                              criteria->established_sigmas));
       outputs.emplace_back(out("kt_unit.md"), table::kt_unit_markdown(scenes, readings) + "\n<!-- " + provenance + " -->\n");
+      outputs.emplace_back(out("verdict.json"), verdict_json_text(*verdict_inputs));
+      outputs.emplace_back(out("verdict.md"), verdict_markdown(*verdict_inputs));
+      outputs.emplace_back(out("verdict.tex"), verdict_latex(*verdict_inputs));
     }
     write_files_atomically(outputs);
     fmt::print("{}\n{}", md1, md2);

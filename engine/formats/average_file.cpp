@@ -17,6 +17,7 @@ namespace {
 using namespace formats;
 
 constexpr const char *kNormalDeltaN = "normal/delta_n", *kNormalFn = "normal/Fn", *kSeeds = "normal/seeds";
+constexpr const char *kNormalFnPerSeed = "normal/Fn_per_seed", *kKtPerSeed = "kt/per_seed";
 constexpr const char *kKt = "kt", *kKtDeltaN = "kt/delta_n", *kKtMean = "kt/mean", *kKtStderr = "kt/stderr";
 constexpr const char *kScene = "provenance/scene", *kProfile = "provenance/profile", *kCodeVersion = "provenance/code_version";
 constexpr std::array kLayout{kNormalDeltaN, kScene};  // what makes a file an average file
@@ -71,6 +72,27 @@ void put_pairs(h5::File& f, const std::string& name, const std::vector<MeanError
   put_pairs(f, v, name + kMean, name + kStderr);
 }
 
+// [point][seed] as one row-major array (points x seeds values).
+void put_per_seed(h5::File& f, const std::string& name, const std::vector<std::vector<double>>& v) {
+  std::vector<double> flat;
+  for (const auto& row : v) flat.insert(flat.end(), row.begin(), row.end());
+  put(f, name, flat);
+}
+std::vector<std::vector<double>> get_per_seed(const h5::File& f, const std::string& name, std::size_t points,
+                                              std::int64_t seeds) {
+  std::vector<double> flat;
+  get(f, name, flat);
+  const std::size_t n = static_cast<std::size_t>(seeds);
+  if (flat.size() != points * n)
+    throw InputError(fmt::format("{}: /{}: {} values; allowed: {} points x {} seeds = {}", f.path(), name, flat.size(), points, n,
+                                 points * n));
+  check_finite(f, name, flat);
+  std::vector<std::vector<double>> v(points);
+  for (std::size_t k = 0; k < points; ++k) v[k].assign(flat.begin() + static_cast<std::ptrdiff_t>(k * n),
+                                                       flat.begin() + static_cast<std::ptrdiff_t>((k + 1) * n));
+  return v;
+}
+
 // Columns of one table: all finite, as long as the first.
 void read_columns(const h5::File& f, std::initializer_list<std::pair<std::string, std::vector<double>*>> columns) {
   for (const auto& [name, v] : columns) get(f, name, *v);
@@ -93,6 +115,7 @@ void write_average_files(const std::string& dir, const NormalAverage& n, const T
   put_pairs(f, "normal/Ft_parallel", n.Ft_parallel);
   put_pairs(f, "normal/Ft_perpendicular", n.Ft_perpendicular);
   put(f, kSeeds, n.seeds);
+  put_per_seed(f, kNormalFnPerSeed, n.Fn_per_seed);
   if (tangential) {
     const TangentialAverage& t = *tangential;
     put(f, "tangential/delta_n", t.delta_n);
@@ -103,6 +126,7 @@ void write_average_files(const std::string& dir, const NormalAverage& n, const T
     put_pairs(f, "tangential/Fn", t.Fn);
     put(f, kKtDeltaN, t.kt_delta_n);
     put_pairs(f, t.kt, kKtMean, kKtStderr);
+    put_per_seed(f, kKtPerSeed, t.kt_per_seed);
   }
   put(f, kScene, p.scene);
   put(f, kProfile, p.profile);
@@ -133,6 +157,8 @@ AverageFile read_average_file(const std::string& path) {
   read_columns(in, {{kNormalDeltaN, &a.delta_n}, {kNormalFn + kMean, &a.Fn}, {kNormalFn + kStderr, &a.Fn_stderr}});
   a.has_kt = in.exists(kKt);
   if (a.has_kt) read_columns(in, {{kKtDeltaN, &a.kt_delta_n}, {kKtMean, &a.kt}, {kKtStderr, &a.kt_stderr}});
+  if (in.exists(kNormalFnPerSeed)) a.Fn_per_seed = get_per_seed(in, kNormalFnPerSeed, a.delta_n.size(), a.seeds);
+  if (a.has_kt && in.exists(kKtPerSeed)) a.kt_per_seed = get_per_seed(in, kKtPerSeed, a.kt_delta_n.size(), a.seeds);
   if (in.exists("provenance/seconds") && in.exists("provenance/cpu_seconds")) {
     Elapsed e;
     get(in, "provenance/seconds", e.wall);

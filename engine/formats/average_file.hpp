@@ -7,6 +7,8 @@
 //               /tangential/{delta_n, alpha_deg, ht, the same pairs for Ft_parallel,
 //                            Ft_perpendicular and Fn}        one row per (delta_n, alpha)
 //               /kt/{delta_n, mean, stderr}                  spring constant [N/m] per delta_n
+//               /normal/Fn_per_seed, /kt/per_seed            every seed's value (since 0.6.0): row-major
+//                            [point][seed], points x seeds values, seeds in the order of /provenance/inputs
 //               /provenance/{scene, profile, code_version, inputs, seconds, cpu_seconds, stamp}
 //                            (stamp: the average stage's configuration stamp, config/profile.hpp,
 //                            with --config; empty without, absent in files from before stamps)
@@ -47,6 +49,8 @@ struct AverageFile {
   std::vector<double> delta_n, Fn, Fn_stderr;  ///< /normal
   bool has_kt = false;                         ///< the /kt group is there
   std::vector<double> kt_delta_n, kt, kt_stderr;
+  /// Every seed's Fn and kt, [point][seed] (empty in files from before 0.6.0): the jackknife of the fits.
+  std::vector<std::vector<double>> Fn_per_seed, kt_per_seed;
   std::optional<Elapsed> time;  ///< of softpack-average (provenance/seconds, cpu_seconds), when the file says
 };
 /// Reads and checks an average file; InputError names the file and the dataset (an unknown

@@ -83,6 +83,88 @@ std::map<std::string, table::Estimate> estimates(const nlohmann::json& j, const 
   return out;
 }
 
+json judged_json(const fit::Judgement& j) {
+  return {{"chi2_per_dof", number_or_null(j.chi2_per_dof)},
+          {"points", j.points},
+          {"signed_points", j.signed_points},
+          {"runs", j.runs},
+          {"runs_z", number_or_null(j.runs_z)}};
+}
+
+json jackknife_json(const fit::Jackknife& k) {
+  json cov = json::array();
+  for (int r = 0; r < 3; ++r) {
+    json row = json::array();
+    for (int c = 0; c < 3; ++c) row.push_back(number_or_null(k.covariance(r, c)));
+    cov.push_back(row);
+  }
+  return {{"done", k.done},        {"reason", k.reason},          {"samples", k.samples},
+          {"a_error", number_or_null(k.a)}, {"b_error", number_or_null(k.b)}, {"c_error", number_or_null(k.c)},
+          {"delta_error", number_or_null(k.delta)}, {"covariance", cov}};
+}
+
+json options_json(const fit::FitOptions& o) {
+  return {{"form", o.form == fit::FitOptions::Form::clamped ? "clamped" : "loaded"},
+          {"weighting", fit::weighting_name(o.weighting)},
+          {"onset_force", o.onset_force},
+          {"sigma_floor", o.sigma_floor},
+          {"delta_n_max", number_or_null(o.delta_n_max)}};
+}
+
+double number_at(const nlohmann::json& j, const char* key, const std::string& where) {
+  const auto v = j.find(key);
+  if (v == j.end()) throw InputError(fmt::format("{}.{}: missing", where, key));
+  if (v->is_null()) return std::numeric_limits<double>::quiet_NaN();
+  if (!v->is_number()) throw InputError(fmt::format("{}.{}: not a number; allowed: a number or null", where, key));
+  return v->get<double>();
+}
+
+fit::Judgement read_judged(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw InputError(fmt::format("{}: expected an object", where));
+  fit::Judgement out;
+  out.chi2_per_dof = number_at(j, "chi2_per_dof", where);
+  out.runs_z = number_at(j, "runs_z", where);
+  out.points = static_cast<std::size_t>(number_at(j, "points", where));
+  out.runs = static_cast<std::size_t>(number_at(j, "runs", where));
+  out.signed_points = static_cast<std::size_t>(number_at(j, "signed_points", where));
+  return out;
+}
+
+fit::Jackknife read_jackknife(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw InputError(fmt::format("{}: expected an object", where));
+  fit::Jackknife out;
+  out.done = j.value("done", false);
+  out.reason = j.value("reason", "");
+  out.samples = static_cast<std::size_t>(number_at(j, "samples", where));
+  out.a = number_at(j, "a_error", where), out.b = number_at(j, "b_error", where);
+  out.c = number_at(j, "c_error", where), out.delta = number_at(j, "delta_error", where);
+  const auto cov = j.find("covariance");
+  if (cov == j.end() || !cov->is_array() || cov->size() != 3)
+    throw InputError(fmt::format("{}.covariance: expected 3 rows of 3", where));
+  for (int r = 0; r < 3; ++r) {
+    const auto& row = (*cov)[static_cast<std::size_t>(r)];
+    if (!row.is_array() || row.size() != 3) throw InputError(fmt::format("{}.covariance: expected 3 rows of 3", where));
+    for (int c = 0; c < 3; ++c) {
+      const auto& v = row[static_cast<std::size_t>(c)];
+      out.covariance(r, c) = v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  return out;
+}
+
+// The coefficients of a law as a PowerLawFit (no notes, no covariance), for the candidates.
+fit::PowerLawFit read_law(const nlohmann::json& j, const std::string& where, bool normal) {
+  const auto e = estimates(j, where, normal);
+  fit::PowerLawFit f;
+  f.a = e.at("a").value, f.a_error = e.at("a").error;
+  f.b = e.at("b").value, f.b_error = e.at("b").error;
+  f.c = e.at("c").value, f.c_error = e.at("c").error;
+  if (normal) f.delta = e.at("delta").value, f.delta_error = e.at("delta").error;
+  else f.delta = number_at(j, "delta_used", where);
+  f.chi2_per_dof = number_at(j, "chi2_per_dof", where);
+  return f;
+}
+
 }  // namespace
 
 std::string fit_file_text(const FitFile& f) {
@@ -93,9 +175,27 @@ std::string fit_file_text(const FitFile& f) {
   if (!f.tangential) out["tangential_reason"] = f.tangential_reason;
   if (f.options) {
     const fit::FitOptions& o = *f.options;
-    out["options"] = {{"weighting", fit::weighting_name(o.weighting)},
-                      {"onset_force", o.onset_force},
-                      {"delta_n_max", number_or_null(o.delta_n_max)}};
+    out["options"] = options_json(o);
+  }
+  if (f.judged) out["judged"] = judged_json(*f.judged);
+  if (f.jackknife) out["jackknife"] = jackknife_json(*f.jackknife);
+  if (!f.candidates.empty()) {
+    json list = json::array();
+    for (const fit::CandidateFit& c : f.candidates) {
+      json j;
+      j["name"] = c.name;
+      j["options"] = options_json(c.options);
+      j[kNormal] = c.normal ? law(*c.normal, true) : json(nullptr);
+      j[kTangential] = c.tangential ? law(*c.tangential, false) : json(nullptr);
+      if (!c.reason.empty()) j["reason"] = c.reason;
+      if (!c.tangential_reason.empty()) j["tangential_reason"] = c.tangential_reason;
+      j["judged"] = judged_json(c.judged);
+      j["jackknife"] = jackknife_json(c.jackknife);
+      j["stable"] = c.stable;
+      j["adequate"] = c.adequate;
+      list.push_back(j);
+    }
+    out["candidates"] = list;
   }
   if (!f.weightings.empty()) {
     json alt;
@@ -165,6 +265,29 @@ FitEstimates read_fit_file(const std::string& path) {
   if (prov != j.end() && prov->is_object() && prov->contains("seconds") && prov->contains("cpu_seconds") &&
       prov->at("seconds").is_number() && prov->at("cpu_seconds").is_number())
     out.time = Elapsed{prov->at("seconds").get<double>(), prov->at("cpu_seconds").get<double>()};
+  if (const auto v = j.find("judged"); v != j.end()) out.judged = read_judged(*v, path + ": judged");
+  if (const auto v = j.find("jackknife"); v != j.end()) out.jackknife = read_jackknife(*v, path + ": jackknife");
+  if (const auto v = j.find("candidates"); v != j.end()) {
+    if (!v->is_array()) throw InputError(fmt::format("{}: candidates: expected a list", path));
+    for (std::size_t k = 0; k < v->size(); ++k) {
+      const auto& c = (*v)[k];
+      const std::string where = fmt::format("{}: candidates[{}]", path, k);
+      if (!c.is_object() || !c.contains("name") || !c.at("name").is_string())
+        throw InputError(fmt::format("{}: expected an object with a name", where));
+      fit::CandidateFit out_c;
+      out_c.name = c.at("name").get<std::string>();
+      if (c.contains(kNormal) && !c.at(kNormal).is_null()) out_c.normal = read_law(c.at(kNormal), where + ".normal", true);
+      if (c.contains(kTangential) && !c.at(kTangential).is_null())
+        out_c.tangential = read_law(c.at(kTangential), where + ".tangential", false);
+      out_c.reason = c.value("reason", "");
+      out_c.tangential_reason = c.value("tangential_reason", "");
+      if (c.contains("judged")) out_c.judged = read_judged(c.at("judged"), where + ".judged");
+      if (c.contains("jackknife")) out_c.jackknife = read_jackknife(c.at("jackknife"), where + ".jackknife");
+      out_c.stable = c.value("stable", false);
+      out_c.adequate = c.value("adequate", false);
+      out.candidates.push_back(std::move(out_c));
+    }
+  }
   return out;
 }
 

@@ -9,6 +9,12 @@
 //    "options": {"weighting", "onset_force", "delta_n_max"}   (only when the profile has a `fit` section),
 //    "weightings": {"stderr": {"normal", "tangential"}, "unweighted": …, "relative": …}
 //                  (only with fit.compare: the same points fitted with each weighting, side by side),
+//    "judged": {"chi2_per_dof", "points", "signed_points", "runs", "runs_z"},
+//    "jackknife": {"done", "reason", "samples", "a_error", "b_error", "c_error", "delta_error", "covariance"},
+//    "candidates": [{"name", "options", "normal", "tangential", "reason", "judged", "jackknife",
+//                    "stable", "adequate"}, …]
+//                  (the last three since 0.6.0, with --criteria: the profile's fit judged and
+//                  jackknifed, and every candidate of experiments/criteria.yaml; analysis/fit_selection.hpp),
 //    "errors": "…", "models": {…},
 //    "provenance": {"program", "code_version", "inputs": [{"path", "scene", "profile",
 //                   "code_version", "seeds"}], "seconds", "cpu_seconds", "stamp"}}
@@ -25,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/fit_selection.hpp"
 #include "analysis/fit_table.hpp"
 #include "analysis/power_fit.hpp"
 #include "core/stopwatch.hpp"
@@ -43,6 +50,9 @@ struct FitFile {
     std::string reason;  ///< why a law could not be fitted
   };
   std::vector<Alternative> weightings;
+  std::optional<fit::Judgement> judged;     ///< the profile's Eq. 7 fit judged (--criteria)
+  std::optional<fit::Jackknife> jackknife;  ///< and jackknifed over the seeds (--criteria)
+  std::vector<fit::CandidateFit> candidates;  ///< every candidate of the criteria (--criteria)
   struct Input {  ///< the average file fitted (formats/average_file.hpp)
     std::string path, profile, code_version;
     std::int64_t seeds = 0;
@@ -69,6 +79,11 @@ struct FitEstimates {
   std::string code_version = "?";                                    ///< of softpack-fit ("?": not said)
   std::string stamp;                                                 ///< the average stage's ("": not said)
   std::optional<Elapsed> time;  ///< of softpack-fit (provenance seconds, cpu_seconds), when the file says
+  std::optional<fit::Judgement> judged;      ///< of the profile's fit (files since 0.6.0 made with --criteria)
+  std::optional<fit::Jackknife> jackknife;   ///< of the profile's fit (idem)
+  /// The candidates (idem): name, normal and tangential (coefficients, errors, δ; no notes),
+  /// judged, jackknife, stable, adequate.
+  std::vector<fit::CandidateFit> candidates;
 };
 /// InputError naming the file and the key: not JSON, no scene, a missing or non-numeric
 /// coefficient, an error that is neither a number nor null.

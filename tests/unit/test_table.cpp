@@ -115,7 +115,7 @@ TEST(KtUnit, AKtPrintedPerDegreeIsRecognisedByItsRatioToFn) {
     kdn.push_back(x), k.push_back(10 * kt(x) / per_degree), ke.push_back(0.01 * kt(x) / per_degree);
   }
   const auto readings = kt_readings(Rs);
-  const KtUnitScene s = kt_unit_scene("soft-solid", dn, F, Fe, kdn, k, ke, Fn, kt, readings);
+  const KtUnitScene s = kt_unit_scene("soft-solid", dn, F, Fe, kdn, k, ke, Fn, kt, readings, 3.0);
   ASSERT_EQ(s.points.size(), 4u);
   std::size_t degree = 0;
   while (readings[degree].unit != "N/deg") ++degree;
@@ -126,9 +126,9 @@ TEST(KtUnit, AKtPrintedPerDegreeIsRecognisedByItsRatioToFn) {
     }
   }
   EXPECT_NE(kt_unit_markdown({s}, readings).find("Closest to 1 on soft-solid: per degree of alpha (N/deg)"), std::string::npos);
-  // A point within two standard errors of zero is listed, not counted.
-  ke[0] = k[0];
-  const KtUnitScene t = kt_unit_scene("soft-solid", dn, F, Fe, kdn, k, ke, Fn, kt, readings);
+  // A point whose kt is within three standard errors of zero is listed, not counted.
+  ke[0] = k[0] / 2.5;
+  const KtUnitScene t = kt_unit_scene("soft-solid", dn, F, Fe, kdn, k, ke, Fn, kt, readings, 3.0);
   EXPECT_FALSE(t.points[0].established);
   EXPECT_TRUE(t.points[1].established);
 }
