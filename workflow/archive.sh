@@ -41,7 +41,9 @@ copy tangential '*-seed-*[0-9].h5'
 copy averages '*.h5' '*.dat'
 copy fits '*.json' '*.gp'
 copy stamps '*.hash'
+copy tables 'verdict.json' 'verdict.md' 'kt_unit.md'
 cp "$profile_file" "$staging/profile.yaml"
+[[ -f experiments/criteria.yaml ]] && cp experiments/criteria.yaml "$staging/criteria.yaml"
 
 # Nothing to do when the archive already holds exactly these files (a fresh checkout that reused
 # it): keep its provenance and BibTeX (they name the run that made the data), refresh its date.
@@ -53,8 +55,20 @@ if [[ -f $dest/MANIFEST.sha256 ]] && diff -q <(data_sums "$staging") <(data_sums
   exit 0
 fi
 
+# Only from a clean tree (issue 29): an archive names a commit, and the commit must be what made
+# it. Every change to a tracked file and every file git does not ignore counts, outside the
+# archive folder itself; the refusal names them.
+if git rev-parse --git-dir > /dev/null 2>&1; then
+  changes=$(git status --porcelain --untracked-files=all 2> /dev/null | awk -v root="${root#./}/" '{ p = substr($0, 4); if (index(p, root) != 1) print "  " $0 }')
+  if [[ -n $changes ]]; then
+    echo "archive: refused: the working tree is not clean, so no commit describes what made these results; commit or" \
+      "remove these files and run make archive again (the results are kept; nothing is recomputed):" >&2
+    echo "$changes" >&2
+    exit 1
+  fi
+fi
 commit=$(git rev-parse --short=12 HEAD 2> /dev/null || echo unknown)
-dirty=$(git status --porcelain --untracked-files=no 2> /dev/null | grep -q . && echo true || echo false)
+dirty=false
 created=$(date -u +%Y-%m-%dT%H:%M:%SZ)
 {
   echo "{"

@@ -199,9 +199,28 @@ a=$tmp/arch
 for part in packings normal tangential averages fits stamps; do mkdir -p "$a/data/mine/$part" && echo "$part" > "$a/data/mine/$part/x.h5"; done
 echo "value" > "$a/data/mine/stamps/normal.hash"
 printf 'profile: mine\n# the profile used, not experiments/mine.yaml (there is none)\n' > "$a/mine.yaml"
-(cd "$root" && workflow/archive.sh "$a/data" mine 0.0.0 "$a/archive" "$a/mine.yaml") > /dev/null ||
+# (run in a clean repository of its own: archive.sh archives only from a clean tree, issue 29)
+mkdir -p "$a/repo" && git -C "$a/repo" init -q && echo one > "$a/repo/tracked" && git -C "$a/repo" add tracked &&
+  git -C "$a/repo" -c user.name=t -c user.email=t@t commit -qm one
+(cd "$a/repo" && "$root/workflow/archive.sh" "$a/data" mine 0.0.0 "$a/archive" "$a/mine.yaml") > /dev/null ||
   fail "workflow/archive.sh with a PROFILE_FILE"
 cmp -s "$a/archive/0.0.0/mine/profile.yaml" "$a/mine.yaml" || fail "make archive did not archive its PROFILE_FILE"
 grep -q 'archive.sh $(DATA) $(PROFILE) $(VERSION) $(ARCHIVE_ROOT) $(PROFILE_FILE)' "$root/workflow/archive.mk" ||
   fail "workflow/archive.mk does not give archive.sh the PROFILE_FILE"
 echo "ok: make archive archives the profile it was given (PROFILE_FILE)"
+
+# Archives only from a clean tree (issue 29): a changed tracked file or a file git does not ignore
+# is refused, named, and no archive is written.
+echo changed > "$a/data/mine/fits/x.h5"  # new results, so the archive would change
+for dirt in modified untracked; do
+  case $dirt in
+    modified) echo two > "$a/repo/tracked"; name=tracked ;;
+    untracked) git -C "$a/repo" checkout -q tracked; echo new > "$a/repo/new-source.cpp"; name=new-source.cpp ;;
+  esac
+  set +e; (cd "$a/repo" && "$root/workflow/archive.sh" "$a/data" mine 0.0.0 "$a/archive" "$a/mine.yaml") > /dev/null 2> "$tmp/err"
+  code=$?; set -e
+  [[ $code == 1 ]] || fail "make archive from a tree with a $dirt file: exit $code, expected 1"
+  grep -q "not clean" "$tmp/err" && grep -qF "$name" "$tmp/err" || fail "the refusal ($dirt) does not name $name: $(cat "$tmp/err")"
+  grep -q "changed" "$a/archive/0.0.0/mine/fits/x.h5" && fail "an archive was written from a tree with a $dirt file"
+done
+echo "ok: make archive refuses a dirty tree and names its files"
