@@ -59,9 +59,58 @@ Criteria parse_criteria(const ConfigNode& root) {
 
 double metres_per_unit(const std::string& reading, double Rs) { return table::kt_readings(Rs, {reading}).front().metres; }
 
-double chi2_3_survival(double x) {
-  if (!(x >= 0.0)) return kNaN;
-  return std::erfc(std::sqrt(x / 2.0)) + std::sqrt(2.0 * x / std::numbers::pi) * std::exp(-x / 2.0);
+double chi2_survival(double x, int dof) {
+  if (!(x >= 0.0) || dof < 1) return kNaN;
+  const double h = x / 2.0;
+  double sum = 0.0, term = 0.0;
+  if (dof % 2 == 0) {  // e^{-h} Σ_{i < dof/2} h^i / i!
+    term = std::exp(-h);
+    for (int i = 0; i < dof / 2; ++i) sum += term, term *= h / (i + 1);
+    return std::min(1.0, sum);
+  }
+  // erfc(√h) + e^{-h} Σ_{i = 1}^{(dof-1)/2} h^{i-1/2} / Γ(i + 1/2)
+  sum = std::erfc(std::sqrt(h));
+  term = std::exp(-h) * std::sqrt(h) / std::tgamma(1.5);
+  for (int i = 1; i <= (dof - 1) / 2; ++i) sum += term, term *= h / (i + 0.5);
+  return std::min(1.0, sum);
+}
+
+double student_t_two_sided_p(double t, int nu) {
+  if (nu < 1 || !std::isfinite(t)) return std::isfinite(t) ? kNaN : 0.0;
+  const double theta = std::atan(std::abs(t) / std::sqrt(static_cast<double>(nu)));
+  const double c = std::cos(theta), s = std::sin(theta);
+  double A = 0.0;
+  if (nu % 2 == 1) {  // (2/π)[θ + sinθ (cosθ + 2/3 cos³θ + … + (2·4…(ν−3))/(1·3…(ν−2)) cos^{ν−2}θ)]
+    double sum = 0.0, term = c;
+    for (int k = 1; k <= (nu - 1) / 2; ++k) sum += term, term *= c * c * (2.0 * k) / (2.0 * k + 1.0);
+    A = 2.0 / std::numbers::pi * (theta + (nu > 1 ? s * sum : 0.0));
+  } else {  // sinθ [1 + 1/2 cos²θ + (1·3)/(2·4) cos⁴θ + … + (1·3…(ν−3))/(2·4…(ν−2)) cos^{ν−2}θ]
+    double sum = 0.0, term = 1.0;
+    for (int k = 0; k < nu / 2; ++k) sum += term, term *= c * c * (2.0 * k + 1.0) / (2.0 * k + 2.0);
+    A = s * sum;
+  }
+  return std::clamp(1.0 - A, 0.0, 1.0);
+}
+
+ZeroMeanTest zero_mean_test(const std::vector<std::vector<double>>& rows) {
+  ZeroMeanTest t;
+  double smallest = 1.0;
+  t.largest_t = 0.0;
+  for (const auto& row : rows) {
+    const double n = static_cast<double>(row.size());
+    if (row.size() < 2) throw InputError("a zero-mean test needs at least two seeds per point");
+    double m = 0.0, v = 0.0;
+    for (double x : row) m += x / n;
+    for (double x : row) v += (x - m) * (x - m);
+    const double se = std::sqrt(v / (n - 1.0) / n);
+    if (!(se > 0.0)) throw InputError("a zero-mean test needs seeds that differ at every point");
+    const double tt = m / se;
+    t.largest_t = std::max(t.largest_t, std::abs(tt));
+    smallest = std::min(smallest, student_t_two_sided_p(tt, static_cast<int>(row.size()) - 1));
+    ++t.points;
+  }
+  t.p = std::min(1.0, smallest * static_cast<double>(t.points));
+  return t;
 }
 
 namespace {
@@ -148,7 +197,7 @@ Verdict judge(const std::vector<SceneInput>& scenes, const Criteria& c, double R
       const Eigen::LDLT<Eigen::Matrix3d> ldlt(s.jackknife);
       if (ldlt.info() == Eigen::Success && ldlt.isPositive()) {
         k.joint_chi2 = d.dot(ldlt.solve(d));
-        k.joint_p = chi2_3_survival(k.joint_chi2);
+        k.joint_p = chi2_survival(k.joint_chi2, 3);
       }
     }
     v.curves.push_back(k);

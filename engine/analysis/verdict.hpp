@@ -89,7 +89,23 @@ double metres_per_unit(const std::string& reading, double Rs);
 
 Verdict judge(const std::vector<SceneInput>& scenes, const Criteria& criteria, double Rs);
 
-/// χ² survival function with 3 degrees of freedom.
-double chi2_3_survival(double x);
+/// The χ² survival function Q(x; dof) = P(χ²_dof > x), for integer dof >= 1 (closed forms).
+double chi2_survival(double x, int dof);
+
+/// P(|T| > t) for Student's t with integer ν >= 1 degrees of freedom (Abramowitz & Stegun 26.7.3-4).
+double student_t_two_sided_p(double t, int nu);
+
+/// The paper's prestrain claim ("this prestrain averages out the more simulations we average
+/// over") as a test that can fail: at each point (rows: points, columns: seeds) the seeds' mean is
+/// zero within its standard error, by Student's t with seeds − 1 degrees of freedom, and the
+/// smallest p over the points, times the number of points (Bonferroni: valid whatever the
+/// correlation between points of one seed), is the test's p. Independent zero-mean values pass;
+/// a common offset (every seed shifted alike) fails once it exceeds a few standard errors.
+struct ZeroMeanTest {
+  double p = kNaN;          ///< min over points of the two-sided p, times the points (at most 1)
+  double largest_t = kNaN;  ///< the largest |mean / standard error|
+  std::size_t points = 0;
+};
+ZeroMeanTest zero_mean_test(const std::vector<std::vector<double>>& per_point_per_seed);
 
 }  // namespace softpack::verdict
