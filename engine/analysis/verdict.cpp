@@ -186,6 +186,11 @@ Verdict judge(const std::vector<SceneInput>& scenes, const Criteria& c, double R
       k.ratio_max = std::isfinite(k.ratio_max) ? std::max(k.ratio_max, r) : r;
     }
     k.points = absz.size();
+    const double top = s.Fn.empty() ? 0.0 : *std::max_element(s.Fn.begin(), s.Fn.end());
+    for (std::size_t i = 0; i < s.delta_n.size(); ++i)
+      if (s.delta_n[i] < s.normal.at("delta").value &&
+          !(std::abs(s.Fn[i]) <= 2.0 * s.Fn_stderr[i] || std::abs(s.Fn[i]) <= 1e-6 * top))
+        k.force_below_delta = std::max(k.force_below_delta, std::abs(s.Fn[i]) / top);
     if (!absz.empty()) {
       std::sort(absz.begin(), absz.end());
       const std::size_t m = absz.size() / 2;

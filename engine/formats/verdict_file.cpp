@@ -76,7 +76,8 @@ std::string verdict_json_text(const VerdictInputs& v) {
   for (const verdict::Curve& c : v.verdict.curves)
     curves.push_back({{"scene", c.scene}, {"points", c.points}, {"within_two", c.within_two},
                       {"median_abs_z", vnum(c.median_abs_z)}, {"ratio_min", vnum(c.ratio_min)}, {"ratio_max", vnum(c.ratio_max)},
-                      {"joint_chi2", vnum(c.joint_chi2)}, {"joint_p", vnum(c.joint_p)}});
+                      {"joint_chi2", vnum(c.joint_chi2)}, {"joint_p", vnum(c.joint_p)},
+                      {"force_below_delta", c.force_below_delta}});
   out["curves"] = curves;
   out["reproduced"] = v.verdict.reproduced;
   out["judged"] = v.verdict.judged;
