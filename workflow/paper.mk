@@ -4,17 +4,36 @@
 
 PAPER_BUILD := $(DATA)/$(PROFILE)/paper
 PAPER_PDF := $(PAPER_BUILD)/paper.pdf
+# Every number of a result reaches the text as a macro (issue 29): paper/variables.py writes them
+# from the result files into DATA/PROFILE/paper/generated/variables.tex. The report also states
+# what the preregistered rules chose on the held-out seeds: the select profile's verdict (its
+# tables, reused from its archive when the stamps match, as the profile's own). The studies'
+# reports are the committed ones (data/studies, data/radius/report, data/coarse-grain/report).
+PAPER_VARIABLES := $(PAPER_BUILD)/generated/variables.tex
+SELECT_VERDICT := $(DATA)/select/tables/verdict.json
+STUDY_REPORTS := data/studies/density-rule/density-rule.json data/radius/report/radius.json \
+  data/coarse-grain/report/summary.json data/coarse-grain/report/curves.dat
+
+.PHONY: select-tables
+select-tables: | $(TOOLS)
+	@$(MAKE) --no-print-directory PROFILE=select PROFILE_FILE=experiments/select.yaml tables > /dev/null
+$(SELECT_VERDICT): select-tables ;
+
+$(PAPER_VARIABLES): paper/variables.py $(TABLES) $(SELECT_VERDICT) $(STUDY_REPORTS)
+	@mkdir -p $(@D) && python3 paper/variables.py --out $@ --profile $(DATA)/$(PROFILE) --select $(DATA)/select \
+	  --density data/studies/density-rule/density-rule.json --radius data/radius/report/radius.json \
+	  --coarse data/coarse-grain/report/summary.json
 
 .PHONY: paper
 paper: $(PAPER_PDF)  ## the reproduction report, DATA/PROFILE/paper/paper.pdf (LaTeX: tables, figures, cited data)
 
-$(PAPER_PDF): paper/paper.tex paper/references.bib $(TABLES) $(FIGURES_3_6) $(FIGURES_OUT)/fig1_apollonian.pdf $(FIGURES_OUT)/fig2_softparticle.pdf \
+$(PAPER_PDF): paper/paper.tex paper/references.bib $(PAPER_VARIABLES) $(TABLES) $(FIGURES_3_6) $(FIGURES_OUT)/fig1_apollonian.pdf $(FIGURES_OUT)/fig2_softparticle.pdf \
     $(STUDY_FIGURES)/packing-density.png $(ARCHIVE_MANIFEST)
 	@mkdir -p $(PAPER_BUILD)
 	@echo "paper: $(PROFILE) -> $@ (log $(PAPER_BUILD)/latex/paper.log)"
 	@cd paper && BIBINPUTS=.:$(abspath $(ARCHIVE)): latexmk -pdf -interaction=nonstopmode -halt-on-error -silent \
 	  -outdir=$(abspath $(PAPER_BUILD)/latex) \
-	  -usepretex='\def\softpackprofile{$(PROFILE)}\def\datadir{$(abspath $(DATA)/$(PROFILE))}\def\figdir{$(abspath $(FIGURES_OUT))}\def\studyfigdir{$(abspath $(STUDY_FIGURES))}\def\softpackversion{$(VERSION)}' \
+	  -usepretex='\def\softpackprofile{$(PROFILE)}\def\datadir{$(abspath $(DATA)/$(PROFILE))}\def\figdir{$(abspath $(FIGURES_OUT))}\def\studyfigdir{$(abspath $(STUDY_FIGURES))}\def\softpackversion{$(VERSION)}\def\gendir{$(abspath $(PAPER_BUILD)/generated)}' \
 	  paper.tex > /dev/null \
 	  || { echo "paper: FAILED for $(PROFILE); see $(PAPER_BUILD)/latex/paper.log"; grep -A3 '^!' $(PAPER_BUILD)/latex/paper.log | head -20; exit 1; }
 	@cp $(PAPER_BUILD)/latex/paper.pdf $@.tmp && mv $@.tmp $@

@@ -16,6 +16,9 @@ std::string vg(double x, const char* f = "{:.4g}") { return std::isfinite(x) ? f
 
 std::string vlabel(const std::string& key) { return key == "delta" ? "δ" : key; }
 
+// A deviation in whole percent, "+12", "-51", "0" (never "-0").
+std::string vpercent(double x) { return std::abs(100.0 * x) < 0.5 ? std::string("0") : fmt::format("{:+.0f}", 100.0 * x); }
+
 }  // namespace
 
 std::string verdict_json_text(const VerdictInputs& v) {
@@ -118,7 +121,7 @@ std::string verdict_markdown(const VerdictInputs& v) {
   md += "\n## The coefficients\n\n| table | scene | | ours | paper | deviation | tolerance | status |\n|---|---|---|---|---|---|---|---|\n";
   for (const verdict::Line& l : v.verdict.lines)
     md += fmt::format("| {} | {} | {} | {} ± {} | {} | {} | {} | {} |\n", l.table, l.scene, vlabel(l.key), vg(l.ours), vg(l.error, "{:.2g}"),
-                      vg(l.paper), std::isfinite(l.deviation) ? fmt::format("{:+.0f} %", 100 * l.deviation) : "—", l.tolerance,
+                      vg(l.paper), std::isfinite(l.deviation) ? fmt::format("{} %", vpercent(l.deviation)) : "—", l.tolerance,
                       l.status);
   md += fmt::format("\n{} of {} judged coefficients reproduced.\n\n## The curves\n\n| scene | points | within 2σ | median |z| | "
                     "ours/paper | joint χ² (3 dof) | p |\n|---|---|---|---|---|---|---|\n",
@@ -140,7 +143,7 @@ std::string verdict_latex(const VerdictInputs& v) {
         l.tolerance.rfind("±", 0) == 0 ? fmt::format("$\\pm${}", l.tolerance.substr(std::string("±").size())) : l.tolerance;
     t += fmt::format("{} & {} & & ${}$ & {} & {} & {} & {} \\\\\n", head == previous ? "" : head, key,
                      std::isfinite(l.ours) ? fmt::format("{:.4g} \\pm {:.2g}", l.ours, l.error) : "\\text{---}", vg(l.paper),
-                     std::isfinite(l.deviation) ? fmt::format("${:+.0f}\\,\\%$", 100 * l.deviation) : "---",
+                     std::isfinite(l.deviation) ? fmt::format("${}\\,\\%$", vpercent(l.deviation)) : "---",
                      tolerance,
                      l.status);
     previous = head;

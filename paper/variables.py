@@ -1,0 +1,245 @@
+#!/usr/bin/env python3
+"""The report's numbers, generated from the results (issue 29; the pattern of showyourwork's
+variables): every result paper.tex states is a macro written here from a result file, so a number
+in the text cannot go stale. tests/paper/check_numbers.py fails when a result-like number appears
+in paper.tex outside a macro.
+
+    paper/variables.py --out FILE.tex --profile DIR [--select DIR] [--density JSON] [--radius JSON]
+                       [--coarse JSON]
+
+  --profile DIR   DATA/paper: tables/verdict.json, fits/*.json, averages/normal-*.dat
+  --select DIR    DATA/select: the same on the held-out seeds where the rules chose
+  --density JSON  the density rule's outcome (make density-rule)
+  --radius JSON   the radius study's report (make radius)
+  --coarse JSON   the coarse-grain study's summary (make coarse-grain)
+
+Macros are \\newcommand{\\vName}{text}; a file that is not given leaves its macros out, and
+LaTeX then stops at the first one the text uses (a missing result is an error, never a stale one).
+"""
+import argparse
+import json
+import math
+import os
+import sys
+
+SCENE = {"soft-solid": "Solid", "soft-soft": "Soft"}
+KEY = {"a": "A", "b": "B", "c": "C", "delta": "Delta"}
+
+
+def fail(msg):
+    print(f"paper/variables.py: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def load(path):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        fail(f"{path}: {e}")
+
+
+def sig(x, digits=3):
+    """x to `digits` significant digits, as LaTeX math text (no trailing exponent noise)."""
+    if x is None or (isinstance(x, float) and not math.isfinite(x)):
+        return r"\text{---}"
+    if x == 0:
+        return "0"
+    e = math.floor(math.log10(abs(x)))
+    if -3 <= e < 5:
+        d = max(0, digits - 1 - e)
+        return f"{x:.{d}f}"
+    m = x / 10**e
+    return rf"{m:.{digits - 1}f}\times10^{{{e}}}"
+
+
+def pm(value, error):
+    """value ± error, the error to two significant digits and the value to the same decimal."""
+    if error is None or not math.isfinite(error) or error <= 0:
+        return sig(value, 4)
+    e = math.floor(math.log10(error)) - 1
+    d = max(0, -e)
+    if abs(value) >= 1e5 or abs(value) < 1e-3:
+        return rf"({sig(value, 3)} \pm {sig(error, 2)})"
+    return f"{value:.{d}f} \\pm {error:.{d}f}"
+
+
+class Macros:
+    def __init__(self):
+        self.lines = []
+        self.names = set()
+
+    def add(self, name, text, source):
+        if not name.isalpha():
+            fail(f"macro name {name!r} is not letters only")
+        if name in self.names:
+            fail(f"macro \\{name} defined twice")
+        self.names.add(name)
+        self.lines.append(f"\\newcommand{{\\{name}}}{{{text}}}  % {source}")
+
+    def math(self, name, text, source):
+        self.add(name, f"\\ensuremath{{{text}}}", source)
+
+
+def percent(x):
+    return rf"{x * 100:+.0f}\,\%" if x is not None and math.isfinite(x) else r"\text{---}"
+
+
+def profile_macros(m, d, prefix):
+    """The verdict, the fit selection and Table 2's unit of one profile's results folder."""
+    vpath = os.path.join(d, "tables", "verdict.json")
+    v = load(vpath)
+    for line in v["lines"]:
+        base = f"v{prefix}{SCENE[line['scene']]}{'One' if line['table'] == 'table1' else 'Two'}{KEY[line['key']]}"
+        m.math(base, pm(line["ours"], line["error"]) if line["ours"] is not None else r"\text{---}", vpath)
+        m.math(base + "Dev", percent(line["deviation"]), vpath)
+        m.add(base + "Status", line["status"], vpath)
+    m.add(f"v{prefix}Reproduced", str(v["reproduced"]), vpath)
+    m.add(f"v{prefix}Judged", str(v["judged"]), vpath)
+    sel = v["selection"]
+    m.add(f"v{prefix}FitChosen", sel["chosen"], vpath)
+    m.add(f"v{prefix}FitIsProfiles", "yes" if sel["profile_fit_is_chosen"] else "no", vpath)
+    for name, scenes in sel["candidates"].items():
+        cname = "".join(ch for ch in name.title() if ch.isalpha())
+        for scene, c in scenes.items():
+            base = f"v{prefix}Cand{cname}{SCENE[scene]}"
+            m.math(base + "Chi", sig(c["chi2_per_dof"], 3), vpath)
+            m.math(base + "Runs", sig(c["runs_z"], 2) if c["runs_z"] is not None else r"\text{---}", vpath)
+            m.math(base + "B", sig(c.get("b"), 3), vpath)
+            m.math(base + "Delta", sig(c.get("delta"), 3), vpath)
+            jb, b = c["jackknife_b"], c.get("b")
+            m.math(base + "JackB", rf"{100 * jb / abs(b):.1f}\,\%" if jb is not None and b else r"\text{---}", vpath)
+            m.add(base + "Stable", "yes" if c["stable"] else "no", vpath)
+            m.add(base + "Adequate", "yes" if c["adequate"] else "no", vpath)
+    u = v["unit"]
+    for scene, qs in u["q"].items():
+        for reading, q in zip(u["readings"], qs):
+            m.math(f"v{prefix}Q{SCENE[scene]}{reading.title()}", sig(q, 3), vpath)
+    m.add(f"v{prefix}UnitSelected", {"m": "N per metre of $h_t$", "mm": "N per millimetre of $h_t$",
+                                     "rad": r"N per radian of $\alpha$", "deg": r"N per degree of $\alpha$"}.get(u["selected"], "none"),
+          vpath)
+    m.math(f"v{prefix}UnitTestQ", sig(u["test_q"], 3), vpath)
+    m.add(f"v{prefix}UnitPassed", "passes" if u["passed"] else "fails", vpath)
+    for c in v["curves"]:
+        base = f"v{prefix}Curve{SCENE[c['scene']]}"
+        m.add(base + "Points", str(c["points"]), vpath)
+        m.add(base + "Within", str(c["within_two"]), vpath)
+        m.math(base + "MedianZ", sig(c["median_abs_z"], 2), vpath)
+        m.math(base + "RatioMin", sig(c["ratio_min"], 2), vpath)
+        m.math(base + "RatioMax", sig(c["ratio_max"], 2), vpath)
+        m.math(base + "JointChi", sig(c["joint_chi2"], 3), vpath)
+        m.math(base + "JointP", sig(c["joint_p"], 2), vpath)
+        m.math(base + "Toe", sig(c["force_below_delta"], 2), vpath)
+    # The profile's own fit, judged.
+    for scene, s in v["profile_fit"].items():
+        if "judged" in s:
+            m.math(f"v{prefix}Own{SCENE[scene]}Chi", sig(s["judged"]["chi2_per_dof"], 3), vpath)
+            m.math(f"v{prefix}Own{SCENE[scene]}Runs", sig(s["judged"]["runs_z"], 2), vpath)
+    # Seeds and the measured forces at a few deformations, from the averages' text columns.
+    for scene in SCENE:
+        path = os.path.join(d, "averages", f"normal-{scene}.dat")
+        if not os.path.exists(path):
+            continue
+        rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
+        for dn in ("0.3", "0.5"):
+            for r in rows:
+                if abs(float(r[0]) - float(dn)) < 1e-9:
+                    m.math(f"v{prefix}{SCENE[scene]}F{'Three' if dn == '0.3' else 'Five'}", pm(float(r[1]), float(r[2])), path)
+    fit = load(os.path.join(d, "fits", "soft-solid.json"))
+    m.add(f"v{prefix}Seeds", str(fit["provenance"]["inputs"][0]["seeds"]), os.path.join(d, "fits", "soft-solid.json"))
+
+
+def density_macros(m, path):
+    j = load(path)
+    m.math("vDensityMargin", sig(j["margin"], 2), path)
+    m.math("vDensityDensest", f"{j['densest_solid_fraction']:.4f}", path)
+    c = j["chosen"]
+    m.math("vDensityBeta", f"{c['beta']:g}", path)
+    m.math("vDensityTrials", sig(c["trials"], 2), path)
+    for s in j["settings"]:
+        if s["beta"] == c["beta"] and s["trials"] == c["trials"]:
+            m.math("vDensityPhi", pm(*s["solid_fraction"]), path)
+            m.math("vDensityGrains", f"{s['spheres'][0]:.0f}", path)
+            m.math("vDensityExponent", pm(*s["exponent"]), path)
+            m.math("vDensitySeconds", f"{s['seconds'][0]:.0f}", path)
+    m.add("vDensitySettings", str(len(j["settings"])), path)
+    m.add("vDensitySeeds", f"{j['seeds'][0]}--{j['seeds'][-1]}", path)
+
+
+def coarse_macros(m, path):
+    j = load(path)
+    # The axial stress the soft-particle medium carries, as a fraction of the resolved one, over the
+    # compression (phase 1) and unloading (phase -1) from a strain of 0.02 on (curves.dat beside).
+    curves = os.path.join(os.path.dirname(path), "curves.dat")
+    ratios = []
+    for line in open(curves):
+        f = line.split()
+        if line.startswith("#") or len(f) < 6 or f[1] == "2":
+            continue
+        strain, res, soft = float(f[0]), float(f[2]), float(f[4])
+        if strain >= 0.02 and res > 0:
+            ratios.append(soft / res)
+    if ratios:
+        m.math("vCoarseStressMin", sig(min(ratios), 2), curves)
+        m.math("vCoarseStressMax", sig(max(ratios), 2), curves)
+        m.add("vCoarseStressPoints", str(len(ratios)), curves)
+    m.math("vCoarseSpeedup", pm(j["speedup"]["mean"], j["speedup"]["error"]), path)
+    m.math("vCoarseResolvedSpheres", f"{j['spheres']['resolved']:,}".replace(",", r"\,"), path)
+    m.math("vCoarseBodies", str(j["bodies"]), path)
+    m.add("vCoarseSeeds", ", ".join(str(s) for s in j["seeds"]), path)
+
+
+def radius_macros(m, path):
+    j = load(path)
+    m.math("vRadiusReference", sig(j["R0"], 2), path)
+    # The exponent of Fn at fixed dn over the whole range of radii, and over the largest doubling
+    # (neighbouring radii), per variant (self-similar: grains scale with the shell; fixed: the
+    # same grains) and scene.
+    variant = {"self_similar": "Scaled", "fixed": "Fixed"}
+    for s in j["scaling"]:
+        if s["quantity"] not in ("Fn", "Fn, neighbouring radii"):
+            continue
+        name = f"vRadius{variant[s['variant']]}{SCENE[s['scene']]}"
+        if s["quantity"] == "Fn":
+            m.math(name, pm(s["exponent"]["value"], s["exponent"]["error"]), path)
+            m.math(name + "Span", sig(s["R_max"] / s["R_min"], 2), path)
+        elif s["R_min"] == min(t["R_min"] for t in j["scaling"] if t["variant"] == s["variant"]):
+            m.math(name + "Small", pm(s["exponent"]["value"], s["exponent"]["error"]), path)
+    for mixed in j.get("mixed", []):
+        rules = {r["rule"].split(",")[0]: r["deviation"] for r in mixed["rules"]}
+        dev = rules.get("reduced radius")
+        if dev:
+            ratio = [x / y for x, y in zip(mixed["measured"], mixed["predicted_reduced_radius"]) if y > 0]
+            m.math("vRadiusMixedMin", sig(min(ratio), 2), path)
+            m.math("vRadiusMixedMax", sig(max(ratio), 2), path)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--out", required=True)
+    p.add_argument("--profile", required=True)
+    p.add_argument("--select")
+    p.add_argument("--density")
+    p.add_argument("--radius")
+    p.add_argument("--coarse")
+    a = p.parse_args()
+    m = Macros()
+    profile_macros(m, a.profile, "")
+    if a.select:
+        profile_macros(m, a.select, "Sel")
+    if a.density:
+        density_macros(m, a.density)
+    if a.radius:
+        radius_macros(m, a.radius)
+    if a.coarse:
+        coarse_macros(m, a.coarse)
+    text = "% Generated by paper/variables.py from the result files named on each line; do not edit.\n" + "\n".join(m.lines) + "\n"
+    tmp = a.out + ".tmp"
+    os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, a.out)
+
+
+if __name__ == "__main__":
+    main()
