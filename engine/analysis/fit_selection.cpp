@@ -144,7 +144,11 @@ Selection select_fit(const std::vector<std::vector<CandidateFit>>& per_scene, co
     if (!fitted[k] || (s.any_stable && !stable[k])) continue;
     if (best == n || worst[k] < worst[best]) best = k;
   }
-  if (best == n) throw InputError("no candidate could be fitted to every scene");
+  if (best == n) {  // reported, not fatal: a profile with too few points for every form still has tables
+    s.chosen = n;
+    s.why = "none: no candidate could be fitted to every scene";
+    return s;
+  }
   s.chosen = best;
   s.why = fmt::format("{}: the least worse-scene chi2/dof ({:.3g}) among the {} candidates{}", criteria.candidates[best].name,
                       worst[best], s.any_stable ? "stable" : "fitted",

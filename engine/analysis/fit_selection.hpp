@@ -69,7 +69,8 @@ struct CandidateFit {
 CandidateFit fit_candidate(const Candidate& c, const SceneCurves& curves, const FitCriteria& criteria);
 
 /// The rule over both scenes: the index of the chosen candidate (candidates[k] of each scene's
-/// list, in the criteria's order), and why, in a sentence.
+/// list, in the criteria's order), and why, in a sentence; chosen = the number of candidates when
+/// none could be fitted to every scene.
 struct Selection {
   std::size_t chosen = 0;
   bool any_stable = false;

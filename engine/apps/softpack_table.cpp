@@ -161,6 +161,10 @@ int main(int argc, char** argv) {
       // The profile's fit is the chosen candidate when their coefficients agree (both fitted the same averages).
       vi.profile_fit_is_chosen = true;
       for (const FitEstimates& f : fits) {
+        if (vi.selection.chosen >= f.candidates.size()) {
+          vi.profile_fit_is_chosen = false;
+          break;
+        }
         const fit::CandidateFit& c = f.candidates.at(vi.selection.chosen);
         vi.profile_fit_is_chosen = vi.profile_fit_is_chosen && c.normal && c.normal->a == f.normal.at("a").value &&
                                    c.normal->b == f.normal.at("b").value && c.normal->c == f.normal.at("c").value;

@@ -54,7 +54,8 @@ std::string verdict_json_text(const VerdictInputs& v) {
     }
     cands[v.fit_criteria.candidates[k].name] = c;
   }
-  out["selection"] = {{"chosen", v.fit_criteria.candidates.at(v.selection.chosen).name},
+  const bool chosen = v.selection.chosen < v.fit_criteria.candidates.size();
+  out["selection"] = {{"chosen", chosen ? v.fit_criteria.candidates[v.selection.chosen].name : std::string("none")},
                       {"why", v.selection.why},
                       {"any_stable", v.selection.any_stable},
                       {"profile_fit_is_chosen", v.profile_fit_is_chosen},
