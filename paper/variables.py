@@ -130,11 +130,17 @@ def profile_macros(m, d, prefix):
         m.math(base + "JointChi", sig(c["joint_chi2"], 3), vpath)
         m.math(base + "JointP", sig(c["joint_p"], 2), vpath)
         m.math(base + "Toe", sig(c["force_below_delta"], 2), vpath)
-    # The profile's own fit, judged.
+        m.add(base + "JointWord", "consistent with" if c["jointly_consistent"] else "distinguishable from", vpath)
+    # The profile's own fit, judged, and whether Eq. 7 then describes the averages within their
+    # errors by the criteria's adequacy thresholds (the chosen candidate's verdict when it is the
+    # profile's fit).
+    adequate = []
     for scene, s in v["profile_fit"].items():
         if "judged" in s:
             m.math(f"v{prefix}Own{SCENE[scene]}Chi", sig(s["judged"]["chi2_per_dof"], 3), vpath)
             m.math(f"v{prefix}Own{SCENE[scene]}Runs", sig(s["judged"]["runs_z"], 2), vpath)
+    adequate = [s["judged"]["adequate"] for s in v["profile_fit"].values() if "judged" in s]
+    m.add(f"v{prefix}AdequateWord", "describes" if adequate and all(adequate) else "does not describe", vpath)
     # Seeds and the measured forces at a few deformations, from the averages' text columns.
     for scene in SCENE:
         path = os.path.join(d, "averages", f"normal-{scene}.dat")

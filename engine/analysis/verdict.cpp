@@ -203,6 +203,7 @@ Verdict judge(const std::vector<SceneInput>& scenes, const Criteria& c, double R
       if (ldlt.info() == Eigen::Success && ldlt.isPositive()) {
         k.joint_chi2 = d.dot(ldlt.solve(d));
         k.joint_p = chi2_survival(k.joint_chi2, 3);
+        k.jointly_consistent = k.joint_p >= c.joint_p_min;
       }
     }
     v.curves.push_back(k);

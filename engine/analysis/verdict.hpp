@@ -66,6 +66,7 @@ struct Curve {  ///< the published curve against our averages
   double median_abs_z = kNaN;
   double ratio_min = kNaN, ratio_max = kNaN;  ///< ours / paper's curve over those points
   double joint_chi2 = kNaN, joint_p = kNaN;   ///< (a, b, c) under the jackknife covariance
+  bool jointly_consistent = false;            ///< joint_p >= the criteria's joint_p_min
   /// The paper's "F = 0 below δ": the largest mean force below our δ that is neither zero within
   /// two standard errors nor below 1e-6 of the largest force, over the largest force (0: none).
   double force_below_delta = 0.0;

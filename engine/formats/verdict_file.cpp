@@ -27,7 +27,11 @@ std::string verdict_json_text(const VerdictInputs& v) {
   vjson pf;
   for (const FitEstimates& f : v.fits) {
     vjson s;
-    if (f.judged) s["judged"] = {{"chi2_per_dof", vnum(f.judged->chi2_per_dof)}, {"runs_z", vnum(f.judged->runs_z)}};
+    if (f.judged)
+      s["judged"] = {{"chi2_per_dof", vnum(f.judged->chi2_per_dof)},
+                     {"runs_z", vnum(f.judged->runs_z)},
+                     {"adequate", f.judged->chi2_per_dof <= v.fit_criteria.chi2_per_dof_max &&
+                                      std::abs(f.judged->runs_z) <= v.fit_criteria.runs_z_max}};
     if (f.jackknife)
       s["jackknife"] = {{"a_error", vnum(f.jackknife->a)}, {"b_error", vnum(f.jackknife->b)},
                         {"c_error", vnum(f.jackknife->c)}, {"delta_error", vnum(f.jackknife->delta)}};
@@ -81,7 +85,7 @@ std::string verdict_json_text(const VerdictInputs& v) {
     curves.push_back({{"scene", c.scene}, {"points", c.points}, {"within_two", c.within_two},
                       {"median_abs_z", vnum(c.median_abs_z)}, {"ratio_min", vnum(c.ratio_min)}, {"ratio_max", vnum(c.ratio_max)},
                       {"joint_chi2", vnum(c.joint_chi2)}, {"joint_p", vnum(c.joint_p)},
-                      {"force_below_delta", c.force_below_delta}});
+                      {"jointly_consistent", c.jointly_consistent}, {"force_below_delta", c.force_below_delta}});
   out["curves"] = curves;
   out["reproduced"] = v.verdict.reproduced;
   out["judged"] = v.verdict.judged;
