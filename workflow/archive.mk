@@ -11,6 +11,6 @@ ARCHIVED_INPUTS := $(PACKINGS) $(foreach scene,$(SCENES),$(call NORMAL_RESULTS,$
 archive: $(ARCHIVE_MANIFEST)  ## archive the results with MANIFEST, provenance and BibTeX (data/archive/VERSION/PROFILE/)
 	@echo "archive: $(ARCHIVE) is up to date; cite it with $(ARCHIVE)/dataset.bib"
 
-$(ARCHIVE_MANIFEST): $(ARCHIVED_INPUTS) $(PROFILE_FILE) workflow/archive.sh
+$(ARCHIVE_MANIFEST): $(ARCHIVED_INPUTS) $(if $(NORMAL_ONLY),,$(TABLE_DIR)/verdict.json) $(PROFILE_FILE) workflow/archive.sh
 	@workflow/archive.sh $(DATA) $(PROFILE) $(VERSION) $(ARCHIVE_ROOT) $(PROFILE_FILE)
 

@@ -47,7 +47,9 @@ cp "$profile_file" "$staging/profile.yaml"
 
 # Nothing to do when the archive already holds exactly these files (a fresh checkout that reused
 # it): keep its provenance and BibTeX (they name the run that made the data), refresh its date.
-data_sums() { (cd "$1" && find . -type f ! -name MANIFEST.sha256 ! -name PROVENANCE.json ! -name dataset.bib -printf '%P\n' |
+# The tables (the verdict) are derived from the fits and averages and carry the code version and time
+# of the run that wrote them: they are archived, not compared (tests/regression recomputes them).
+data_sums() { (cd "$1" && find . -type f ! -name MANIFEST.sha256 ! -name PROVENANCE.json ! -name dataset.bib ! -path './tables/*' -printf '%P\n' |
   LC_ALL=C sort | xargs sha256sum); }
 if [[ -f $dest/MANIFEST.sha256 ]] && diff -q <(data_sums "$staging") <(data_sums "$dest") > /dev/null; then
   touch "$dest/MANIFEST.sha256"
