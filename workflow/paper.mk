@@ -14,10 +14,13 @@ SELECT_VERDICT := $(DATA)/select/tables/verdict.json
 STUDY_REPORTS := data/studies/density-rule/density-rule.json data/radius/report/radius.json \
   data/coarse-grain/report/summary.json data/coarse-grain/report/curves.dat
 
+# (In the select profile itself the file is its own table's, made by the tables rule.)
+ifneq ($(PROFILE),select)
 .PHONY: select-tables
 select-tables: | $(TOOLS)
 	@$(MAKE) --no-print-directory PROFILE=select PROFILE_FILE=experiments/select.yaml tables > /dev/null
 $(SELECT_VERDICT): select-tables ;
+endif
 
 $(PAPER_VARIABLES): paper/variables.py $(TABLES) $(SELECT_VERDICT) $(STUDY_REPORTS)
 	@mkdir -p $(@D) && python3 paper/variables.py --out $@ --profile $(DATA)/$(PROFILE) --select $(DATA)/select \
