@@ -84,6 +84,25 @@ void set_delta(PowerLawFit& fit) {
   }
 }
 
+// The solution of an Eq. 7 fit into `fit`: a > 0 and b > 0 checked, the coefficients, the points,
+// χ²/dof, the covariance and the standard errors (δ is set_delta's).
+template <class Model>
+void take_normal_solution(PowerLawFit& fit, const Data& d, const Model& model, const Solution& best, const char* law) {
+  const VectorXd& p = best.p;
+  if (!(p[0] > 0.0) || !(p[1] > 0.0))
+    throw InputError(fmt::format("{}: fitted a = {:.6g}, b = {:.6g}; allowed: a > 0 and b > 0 (a force growing with delta_n)",
+                                 law, p[0], p[1]));
+  const std::size_t n = d.x.size();
+  fit.a = p[0], fit.b = p[1], fit.c = p[2];
+  fit.points = n;
+  fit.dn_min = d.x.front(), fit.dn_max = d.x.back();
+  fit.chi2_per_dof = best.chi2 / static_cast<double>(n - 3);
+  fit.covariance = covariance(d, model, p, fit.chi2_per_dof, law);
+  fit.a_error = std::sqrt(fit.covariance(0, 0));
+  fit.b_error = std::sqrt(fit.covariance(1, 1));
+  fit.c_error = std::sqrt(fit.covariance(2, 2));
+}
+
 // The largest |F| of the points with Δn <= delta_n_max.
 double largest_force(std::span<const double> delta_n, std::span<const double> force, double delta_n_max) {
   double largest = 0.0;
@@ -138,19 +157,8 @@ PowerLawFit fit_clamped_normal_law(std::span<const double> delta_n, std::span<co
     throw InputError(fmt::format("{}: no start: the loaded fits failed on these points", law));
   if (best.status == static_cast<int>(Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation))
     fit.notes.push_back("Levenberg-Marquardt stopped at its evaluation limit");
-  const VectorXd& p = best.p;
-  if (!(p[0] > 0.0) || !(p[1] > 0.0))
-    throw InputError(fmt::format("{}: fitted a = {:.6g}, b = {:.6g}; allowed: a > 0 and b > 0 (a force growing with delta_n)",
-                                 law, p[0], p[1]));
-  fit.a = p[0], fit.b = p[1], fit.c = p[2];
-  fit.points = n;
-  fit.dn_min = d.x.front(), fit.dn_max = d.x.back();
   fit.onset_force = 0.0;
-  fit.chi2_per_dof = best.chi2 / static_cast<double>(n - 3);
-  fit.covariance = covariance(d, model, p, fit.chi2_per_dof, law);
-  fit.a_error = std::sqrt(fit.covariance(0, 0));
-  fit.b_error = std::sqrt(fit.covariance(1, 1));
-  fit.c_error = std::sqrt(fit.covariance(2, 2));
+  take_normal_solution(fit, d, model, best, law);
   set_delta(fit);
   return fit;
 }
@@ -228,18 +236,7 @@ PowerLawFit fit_normal_law(std::span<const double> delta_n, std::span<const doub
   }
   const Solution best = best_of_two_starts(d, model, VectorXd{{a0, b0, 0.0}}, scan_chi2, scan_start, law, fit);
 
-  const VectorXd& p = best.p;
-  if (!(p[0] > 0.0) || !(p[1] > 0.0))
-    throw InputError(fmt::format("{}: fitted a = {:.6g}, b = {:.6g}; allowed: a > 0 and b > 0 (a force growing with delta_n)",
-                                 law, p[0], p[1]));
-  fit.a = p[0], fit.b = p[1], fit.c = p[2];
-  fit.points = n;
-  fit.dn_min = d.x.front(), fit.dn_max = d.x.back();
-  fit.chi2_per_dof = best.chi2 / static_cast<double>(n - 3);
-  fit.covariance = covariance(d, model, p, fit.chi2_per_dof, law);
-  fit.a_error = std::sqrt(fit.covariance(0, 0));
-  fit.b_error = std::sqrt(fit.covariance(1, 1));
-  fit.c_error = std::sqrt(fit.covariance(2, 2));
+  take_normal_solution(fit, d, model, best, law);
   set_delta(fit);
   if (fit.c < 0.0) {
     const double last_zero = first > 0 ? delta_n[order[first - 1]] : 0.0;
