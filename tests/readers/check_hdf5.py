@@ -76,7 +76,9 @@ def dataset_specs(rows):
     """(name, shape, type, unit, unit_attribute, since) of each dataset of an HDF5 table."""
     specs = []
     for name, shape, type_, unit, meaning in (r[:5] for r in rows):
-        dims = tuple(int(d) if d.isdigit() else d for d in re.findall(r"\w+", shape))
+        # axes separated by ",", an axis "D·S" is one flattened axis of D times S entries
+        dims = tuple(tuple(int(d) if d.isdigit() else d for d in re.findall(r"\w+", axis)) for axis in shape.split(","))
+        dims = tuple(axis[0] if len(axis) == 1 else axis for axis in dims if axis)
         since = re.search(r"since (\d+)\.(\d+)\.(\d+)", meaning)
         specs += [(n, dims, type_, unit.strip("*"), unit.startswith("**"), tuple(map(int, since.groups())) if since else (0, 0, 0))
                   for names in re.findall(r"`([^`]+)`", name) for n in expand(names)]
@@ -99,6 +101,8 @@ def check_layout(f, where, specs):
     present = set()
     f.visititems(lambda name, obj: present.add(name) if isinstance(obj, h5py.Dataset) else None)
     dims, documented, file_release = {}, set(), release(f)
+    if "normal/seeds" in f:  # S, the seeds of an average file (its per-seed datasets are D·S, K·S)
+        dims["S"] = int(f["normal/seeds"][()])
     for name, shape, type_, unit, unit_attribute, since in specs:
         pattern = re.compile(re.escape(name).replace(re.escape("<w>"), r"(\d+)") + "$")
         found = sorted(n for n in present if pattern.match(n))
@@ -119,6 +123,11 @@ def check_layout(f, where, specs):
             for axis, (size, want) in enumerate(zip(ds.shape, shape)):
                 if isinstance(want, int):
                     bound = want
+                elif isinstance(want, tuple):  # a product of counts bound elsewhere in the file
+                    if any(w not in dims for w in want if not isinstance(w, int)):
+                        fail(where, f"/{n}: axis {axis} is {'·'.join(map(str, want))}, a count not bound in the file")
+                        continue
+                    bound = math.prod(w if isinstance(w, int) else dims[w] for w in want)
                 else:  # a count: the first dataset with it binds it (m: per wall group)
                     bound = dims.setdefault(f"m of {name.replace('<w>', wall[0])}" if wall and want == "m" else want, size)
                 if size != bound:
