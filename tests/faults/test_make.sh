@@ -211,7 +211,7 @@ echo "ok: make archive archives the profile it was given (PROFILE_FILE)"
 
 # Archives only from a clean tree (issue 29): a changed tracked file or a file git does not ignore
 # is refused, named, and no archive is written.
-echo changed > "$a/data/mine/fits/x.h5"  # new results, so the archive would change
+echo changed > "$a/data/mine/averages/x.h5"  # new results (a file archive.sh copies), so the archive would change
 for dirt in modified untracked; do
   case $dirt in
     modified) echo two > "$a/repo/tracked"; name=tracked ;;
@@ -221,6 +221,6 @@ for dirt in modified untracked; do
   code=$?; set -e
   [[ $code == 1 ]] || fail "make archive from a tree with a $dirt file: exit $code, expected 1"
   grep -q "not clean" "$tmp/err" && grep -qF "$name" "$tmp/err" || fail "the refusal ($dirt) does not name $name: $(cat "$tmp/err")"
-  grep -q "changed" "$a/archive/0.0.0/mine/fits/x.h5" && fail "an archive was written from a tree with a $dirt file"
+  grep -q "changed" "$a/archive/0.0.0/mine/averages/x.h5" && fail "an archive was written from a tree with a $dirt file"
 done
 echo "ok: make archive refuses a dirty tree and names its files"
