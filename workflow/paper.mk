@@ -22,12 +22,18 @@ select-tables: | $(TOOLS)
 $(SELECT_VERDICT): select-tables ;
 endif
 
-# The studies' committed reports are order-only: a fresh clone's checkout times must not make a
-# study rerun for the report (make density-rule, make radius-report, ... rebuild them on request).
-$(PAPER_VARIABLES): paper/variables.py $(TABLES) $(SELECT_VERDICT) | $(STUDY_REPORTS)
-	@mkdir -p $(@D) && python3 paper/variables.py --out $@ --profile $(DATA)/$(PROFILE) --select $(DATA)/select \
+# The studies' committed reports are read, never made here: as prerequisites (even order-only
+# ones) make would rerun a study whenever its programs are newer than its report, as they are in
+# every fresh clone (make density-rule, make radius-report, ... rebuild them on request). So the
+# macros are recomputed on every build (milliseconds) and the file rewritten only when a number
+# changed; the PDF follows the file's time.
+.PHONY: paper-variables
+paper-variables: $(TABLES) $(SELECT_VERDICT)
+	@for r in $(STUDY_REPORTS); do [ -f $$r ] || { echo "paper: $$r is missing (a committed study report; git checkout it, or rerun its study)" >&2; exit 2; }; done
+	@mkdir -p $(dir $(PAPER_VARIABLES)) && python3 paper/variables.py --out $(PAPER_VARIABLES) --profile $(DATA)/$(PROFILE) --select $(DATA)/select \
 	  --density data/studies/density-rule/density-rule.json --radius data/radius/report/radius.json \
 	  --coarse data/coarse-grain/report/summary.json
+$(PAPER_VARIABLES): paper-variables ;
 
 .PHONY: paper
 paper: $(PAPER_PDF)  ## the reproduction report, DATA/PROFILE/paper/paper.pdf (LaTeX: tables, figures, cited data)
