@@ -98,7 +98,7 @@ build-tools: $(BUILD)/CMakeCache.txt
 	  || { echo "build: FAILED; the end of $(BUILD)/build.log:"; tail -40 $(BUILD)/build.log; exit 1; }
 	@echo "build: $(BUILD) is up to date (log $(BUILD)/build.log)"
 
-ifneq ($(wildcard $(BUILD)/engine/softpack-config),)
+ifneq ($(wildcard $(BUILD)/bin/softpack-config),)
 all: build tables figures paper scenes  ## the main job: Tables 1-2, Figures 1-6, DATA/PROFILE/paper/paper.pdf, the example scenes
 endif
 
@@ -107,7 +107,7 @@ scenes: | build-tools  ## run the example scenes of experiments/scenes/ (DATA/sc
 	@for scene in experiments/scenes/*.yaml; do \
 	  out=$(DATA)/scenes/$$(basename $$scene .yaml).json; \
 	  echo "softpack-run $$scene -> $$out"; \
-	  $(RUN) $(BUILD)/engine/softpack-run --scene $$scene --out $$out --quiet || exit 1; \
+	  $(RUN) $(BUILD)/bin/softpack-run --scene $$scene --out $$out --quiet || exit 1; \
 	done
 
 test: build  ## build and run the test suite (ctest)
@@ -150,7 +150,7 @@ verify:  ## check every archived file against MANIFEST.sha256 (ARCHIVES=dir... f
 # The pipeline's rules come from the profile, which softpack-config reads for Make
 # (workflow/stamps.mk). Before it is built (a fresh clone), the pipeline's goals build the tools,
 # then run make again, which then reads the profile.
-CONFIG_TOOL := $(BUILD)/engine/softpack-config
+CONFIG_TOOL := $(BUILD)/bin/softpack-config
 # Goals that need no profile: they must work with tools of an older checkout, which may refuse
 # the current profile (make build is what updates them).
 NO_PROFILE_GOALS := build build-tools setup help clean test test-sanitize test-all bench verify

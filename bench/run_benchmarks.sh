@@ -103,7 +103,7 @@ awk -v n="$n" -v s="$steps" -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_
 
 # 4. packing generator: a 100 000-sphere packing (Pi = 10), whole run of softpack-pack
 pack_start=$(date +%s.%N)
-run pack "$build/engine/softpack-pack" --config "$here/profiles/packing-100k.yaml" --seed 1 --out "$tmp/packing-100k.h5" --quiet
+run pack "$build/bin/softpack-pack" --config "$here/profiles/packing-100k.yaml" --seed 1 --out "$tmp/packing-100k.h5" --quiet
 pack_s=$(awk -v a="$pack_start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
 pack_n=$(h5dump -d /stats/inserted "$tmp/packing-100k.h5" | awk '/\(0\)/ {print $2}')
 echo

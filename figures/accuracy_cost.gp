@@ -1,5 +1,5 @@
 # The fidelity study's figure: the error of each setting against the CPU time of its measurement
-# (make accuracy; engine/report/accuracy_report.hpp). One point per setting, labelled; the Pareto
+# (make accuracy; studies/report/accuracy_report.hpp). One point per setting, labelled; the Pareto
 # front (no other setting both cheaper and more accurate) joined by a line; the paper's literal
 # protocol (the setting "paper") marked.
 #

@@ -1,4 +1,4 @@
-# The calibration study's onset figure (make calibrate; engine/report/calibration_report.hpp): the
+# The calibration study's onset figure (make calibrate; studies/report/calibration_report.hpp): the
 # onset δ of Eq. 7 of both scenes against the solid fraction of the setting's packings, one point
 # per setting with its seed-to-seed standard errors, labelled; the paper's δ as horizontal lines.
 #

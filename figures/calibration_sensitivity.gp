@@ -1,4 +1,4 @@
-# The calibration study's sensitivity figure (make calibrate; engine/report/calibration_report.hpp):
+# The calibration study's sensitivity figure (make calibrate; studies/report/calibration_report.hpp):
 # the coefficient change per parameter change. One row per setting, one column per quantity;
 # the colour is the change against the base in units of its standard error,
 # z = (setting - base) / sqrt(sigma^2 + sigma_base^2) (clipped at +-10), the label the relative

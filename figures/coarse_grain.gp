@@ -1,4 +1,4 @@
-# The coarse-grain validation's figure (make coarse-grain; engine/coarse/report.hpp): the axial
+# The coarse-grain validation's figure (make coarse-grain; studies/coarse/report.hpp): the axial
 # stress sigma_zz and the lateral stress ratio K0 against the strain of the oedometric
 # compression, the resolved medium (every grain of both decades) and the soft-particle one, mean
 # over the seeds with their standard errors; unloading as a second block.

@@ -1,6 +1,6 @@
 # Figure 1: a 2D Apollonian packing, circles true to scale and shaded by generation.
 #
-#   build/engine/softpack-apollonian --min-radius 1e-3 --out data/fig1/apollonian.dat
+#   build/bin/softpack-apollonian --min-radius 1e-3 --out data/fig1/apollonian.dat
 #   gnuplot -e "data='data/fig1/apollonian.dat'; out='fig1_apollonian.png'" figures/fig1_apollonian.gp
 #   gnuplot -e "data='data/fig1/apollonian.dat'; out='fig1_apollonian.pdf'" figures/fig1_apollonian.gp
 #

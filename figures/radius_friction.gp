@@ -1,4 +1,4 @@
-# The radius study's friction figure (make radius; engine/report/radius_report.hpp): the
+# The radius study's friction figure (make radius; studies/report/radius_report.hpp): the
 # soft-particle's friction coefficient mu_soft = Ft / Fn on the sliding plateau against delta_n,
 # one curve per setting and scene, with the seed-to-seed standard errors; the grains' mu = 0.3
 # dashed (the paper expects mu_soft to be larger).

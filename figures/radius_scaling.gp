@@ -1,4 +1,4 @@
-# The radius study's scaling figure (make radius; engine/report/radius_report.hpp): the normal
+# The radius study's scaling figure (make radius; studies/report/radius_report.hpp): the normal
 # force at fixed delta_n against the shell radius, both relative to the reference (R0 = 16 mm),
 # for the self-similar and the fixed-grain soft-particles of both scenes, with the seed-to-seed
 # standard errors; (R/R0)^2 (Hertz's law of a solid sphere, and any self-similar packing) dashed.

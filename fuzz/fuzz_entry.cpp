@@ -12,7 +12,7 @@
 
 #include "analysis/average.hpp"
 #include "analysis/power_fit.hpp"
-#include "config/profile.hpp"
+#include "profile/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "core/error.hpp"
 #include "formats/average_file.hpp"

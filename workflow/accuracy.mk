@@ -13,7 +13,7 @@
 ACCURACY_STUDY ?= experiments/accuracy-cost.yaml
 ACCURACY_DIR ?= $(DATA)/accuracy
 ACCURACY_REPORT := $(ACCURACY_DIR)/report
-ACCURACY_TOOL := $(BUILD)/engine/softpack-accuracy
+ACCURACY_TOOL := $(BUILD)/bin/softpack-accuracy
 
 .PHONY: accuracy accuracy-report calibrate calibrate-report radius radius-report
 accuracy: | $(TOOLS)  ## the fidelity study: every knob's error against its CPU time (DATA/accuracy/report/)

@@ -21,14 +21,14 @@ $(call average_outputs,$(1)) &: $(AVERAGE_STAMP) $(call NORMAL_RESULTS,$(1)) $(i
 	@mkdir -p $(AVERAGE_DIR) && $(call clear_stale,$(call average_outputs,$(1)))
 	@$$(call from_archive,$(call average_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "average: $(PROFILE) $(1) over seeds $(SEEDS) -> $(AVERAGE_DIR)/$(1).h5 (log $(AVERAGE_DIR)/$(1).log)"; \
-	  $(RUN) $(BUILD)/engine/softpack-average --scene $(1) --profile $(PROFILE) --config $(PROFILE_FILE) --normal $(call NORMAL_RESULTS,$(1)) \
+	  $(RUN) $(BUILD)/bin/softpack-average --scene $(1) --profile $(PROFILE) --config $(PROFILE_FILE) --normal $(call NORMAL_RESULTS,$(1)) \
 	    $(if $(NORMAL_ONLY),,--tangential $(call TANGENTIAL_RESULTS,$(1))) --out-dir $(AVERAGE_DIR) 2> $(AVERAGE_DIR)/$(1).log \
 	  || { echo "average: FAILED for $(PROFILE) $(1); see $(AVERAGE_DIR)/$(1).log"; tail -5 $(AVERAGE_DIR)/$(1).log; exit 1; }; }
 $(call fit_outputs,$(1)) &: $(AVERAGE_STAMP) $(AVERAGE_DIR)/$(1).h5 $(CRITERIA) | $(TOOLS)
 	@mkdir -p $(FIT_DIR) && $(call clear_stale,$(call fit_outputs,$(1)))
 	@$$(call from_archive,$(call fit_outputs,$(1)),$(AVERAGE_STAMP)) || { \
 	  echo "fit: $(PROFILE) $(1) Eqs. 7-8 -> $(FIT_DIR)/$(1).json (log $(FIT_DIR)/$(1).log)"; \
-	  $(RUN) $(BUILD)/engine/softpack-fit --average $(AVERAGE_DIR)/$(1).h5 --config $(PROFILE_FILE) --criteria $(CRITERIA) --out $(FIT_DIR)/$(1).json \
+	  $(RUN) $(BUILD)/bin/softpack-fit --average $(AVERAGE_DIR)/$(1).h5 --config $(PROFILE_FILE) --criteria $(CRITERIA) --out $(FIT_DIR)/$(1).json \
 	    --gnuplot $(FIT_DIR)/$(1).gp 2> $(FIT_DIR)/$(1).log \
 	  || { echo "fit: FAILED for $(PROFILE) $(1); see $(FIT_DIR)/$(1).log"; tail -5 $(FIT_DIR)/$(1).log; exit 1; }; }
 endef
@@ -51,7 +51,7 @@ tables: $(TABLES)  ## Tables 1 and 2: ours beside the paper's (DATA/PROFILE/tabl
 # verdict.*: the preregistered fit selection, Table 2's unit and the verdict (analysis/verdict.hpp).
 $(TABLES) &: $(filter %.json,$(FITS)) $(filter %.h5,$(AVERAGES)) $(PUBLISHED) $(CRITERIA) | $(TOOLS)
 	@mkdir -p $(TABLE_DIR) && $(call clear_stale,$(TABLES))
-	@$(RUN) $(BUILD)/engine/softpack-table --fits $(filter %.json,$(FITS)) --config $(PROFILE_FILE) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
+	@$(RUN) $(BUILD)/bin/softpack-table --fits $(filter %.json,$(FITS)) --config $(PROFILE_FILE) --published $(PUBLISHED) --out-dir $(TABLE_DIR) \
 	  --gnuplot $(TABLE_DIR)/published.gp $(if $(NORMAL_ONLY),,--averages $(filter %.h5,$(AVERAGES)) --criteria $(CRITERIA) \
 	  --Rs $$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot | sed 's/^Rs=\([^;]*\);.*/\1/')) > /dev/null 2> $(TABLE_DIR)/tables.log \
 	  || { echo "tables: FAILED for $(PROFILE); see $(TABLE_DIR)/tables.log"; cat $(TABLE_DIR)/tables.log; exit 1; }
@@ -82,7 +82,7 @@ $(FIGURES_OUT)/fig6_kt.%: figures/fig6_kt.gp $(FIGURE_INPUTS)
 # Files not made yet are listed as missing; nothing is run.
 .PHONY: timing
 timing: | $(TOOLS)  ## wall-clock and CPU time of the profile's last run, per stage and phase (also DATA/PROFILE/timing.json)
-	@mkdir -p $(DATA)/$(PROFILE) && $(BUILD)/engine/softpack-timing --title "Time of the $(PROFILE) profile ($(DATA)/$(PROFILE))" \
+	@mkdir -p $(DATA)/$(PROFILE) && $(BUILD)/bin/softpack-timing --title "Time of the $(PROFILE) profile ($(DATA)/$(PROFILE))" \
 	  --packings $(PACKINGS) --normal $(foreach scene,$(SCENES),$(call NORMAL_RESULTS,$(scene))) \
 	  --tangential $(foreach scene,$(SCENES),$(call TANGENTIAL_RESULTS,$(scene))) \
 	  --averages $(foreach scene,$(SCENES),$(AVERAGE_DIR)/$(scene).h5) --fits $(filter %.json,$(FITS)) \

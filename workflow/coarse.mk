@@ -10,7 +10,7 @@
 #   make coarse-grain-report                   # the report from the runs there are
 COARSE_CONFIG ?= experiments/coarse-grain.yaml
 COARSE_DIR ?= data/coarse-grain
-COARSE_TOOL := $(BUILD)/engine/softpack-coarse
+COARSE_TOOL := $(BUILD)/bin/softpack-coarse
 COARSE_LAWS := data/radius/report/laws.json
 
 .PHONY: coarse-grain coarse-grain-runs coarse-grain-report

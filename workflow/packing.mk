@@ -8,7 +8,7 @@ FIGURES_OUT := $(DATA)/$(PROFILE)/figures
 STUDY_FIGURES := $(DATA)/studies/figures
 # Generated packings (softpack-pack), or imported ones when the profile's packing section has
 # `import` (softpack-import; docs/import.md): same options, same packing file.
-PACK := $(BUILD)/engine/softpack-$(if $(filter imported,$(call config,packings)),import,pack)
+PACK := $(BUILD)/bin/softpack-$(if $(filter imported,$(call config,packings)),import,pack)
 
 .PHONY: packings study-packing density-rule figure1 figure2
 # The executables are brought up to date before any stage runs (an order-only prerequisite);
@@ -30,13 +30,13 @@ figure2: $(FIGURES_OUT)/fig2_softparticle.png $(FIGURES_OUT)/fig2_softparticle.p
 
 $(FIGURES_OUT)/fig1_apollonian.dat: | $(TOOLS)
 	@mkdir -p $(@D)
-	@$(RUN) $(BUILD)/engine/softpack-apollonian --min-radius 1e-3 --out $@
+	@$(RUN) $(BUILD)/bin/softpack-apollonian --min-radius 1e-3 --out $@
 $(FIGURES_OUT)/fig1_apollonian.%: $(FIGURES_OUT)/fig1_apollonian.dat figures/fig1_apollonian.gp
 	@gnuplot -e "data='$<'; out='$@.tmp.$*'" figures/fig1_apollonian.gp && mv $@.tmp.$* $@
 
 $(FIGURES_OUT)/fig2_section.dat: $(PACKING_DIR)/seed-$(firstword $(SEEDS)).h5 | $(TOOLS)
 	@mkdir -p $(@D)
-	@$(RUN) $(BUILD)/engine/softpack-section --packing $< --out $@ 2> /dev/null
+	@$(RUN) $(BUILD)/bin/softpack-section --packing $< --out $@ 2> /dev/null
 $(FIGURES_OUT)/fig2_softparticle.%: $(FIGURES_OUT)/fig2_section.dat figures/fig2_softparticle.gp
 	@gnuplot -e "data='$<'; $$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot); out='$@.tmp.$*'" \
 	  figures/fig2_softparticle.gp && mv $@.tmp.$* $@
@@ -48,7 +48,7 @@ study-packing: $(STUDY_DIR)/packing-density.md $(STUDY_FIGURES)/packing-density.
 # releases <= 0.4.0): it depends on that section only.
 STUDY_STAMP := $(call stamp,packing-density,packing,experiments/fast.yaml,$(DATA)/studies/stamps)
 $(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/packing-density.yaml $(STUDY_STAMP) | $(TOOLS)
-	$(RUN) $(BUILD)/engine/softpack-packing-study --config experiments/packing-density.yaml --out $(STUDY_DIR)
+	$(RUN) $(BUILD)/bin/softpack-packing-study --config experiments/packing-density.yaml --out $(STUDY_DIR)
 $(STUDY_FIGURES)/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
 	@mkdir -p $(@D)
 	@gnuplot -e "data='$<'; out='$@.tmp.png'" figures/packing_density.gp && mv $@.tmp.png $@
@@ -61,5 +61,5 @@ density-rule: $(DENSITY_RULE_DIR)/density-rule.md  ## the preregistered packing-
 	@cat $<
 $(DENSITY_RULE_DIR)/density-rule.md $(DENSITY_RULE_DIR)/density-rule.json &: experiments/density-rule.yaml experiments/criteria.yaml | $(TOOLS)
 	@mkdir -p $(@D) && echo "density-rule: -> $(@D) (log $(@D)/density-rule.log)"
-	@$(RUN) $(BUILD)/engine/softpack-packing-study --config experiments/density-rule.yaml --out $(@D) 2> $(@D)/density-rule.log \
+	@$(RUN) $(BUILD)/bin/softpack-packing-study --config experiments/density-rule.yaml --out $(@D) 2> $(@D)/density-rule.log \
 	  || { echo "density-rule: FAILED; see $(@D)/density-rule.log"; tail -5 $(@D)/density-rule.log; exit 1; }

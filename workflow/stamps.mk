@@ -1,6 +1,6 @@
 # Configuration: Make takes the profile's seeds, scenes and the stages' stamps from
-# softpack-config (engine/apps/softpack_config.cpp), which reads the profile with the stages' own
-# readers and section lists (engine/config/profile.cpp): Make never parses YAML.
+# softpack-config (apps/softpack_config.cpp), which reads the profile with the stages' own
+# readers and section lists (pipeline/profile/profile.cpp): Make never parses YAML.
 #
 # Stamps: each stage depends on a file holding a hash of exactly the profile sections it reads
 # (and of the release), not on the profile's timestamp. The hash is computed while make reads the

@@ -23,14 +23,14 @@ $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5: $(NORMAL_STAMP) $(PACKING_DIR)/seed-$(2).
 	@mkdir -p $$(@D) && $$(call clear_stale,$$@,$(CHECKPOINTS)/normal/$(1)/seed-$(2))
 	@$$(call from_archive,$$@,$(NORMAL_STAMP)) || { \
 	  echo "normal: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"; \
-	  $(RUN) $(BUILD)/engine/softpack-normal $(call sweep_args,$(1),$(2)) $$(call planned,$(NORMAL_STAMP)) \
+	  $(RUN) $(BUILD)/bin/softpack-normal $(call sweep_args,$(1),$(2)) $$(call planned,$(NORMAL_STAMP)) \
 	    --checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) --out $$@ 2> $$(@:.h5=.log) \
 	  || { echo "normal: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }; }
 $(SWEEP_DIR)/tangential/$(1)-seed-$(2).h5: $(TANGENTIAL_STAMP) $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5 | $(TOOLS)
 	@mkdir -p $$(@D) && $$(call clear_stale,$$@,$(CHECKPOINTS)/normal/$(1)/seed-$(2) $(CHECKPOINTS)/tangential/$(1)/seed-$(2))
 	@$$(call from_archive,$$@,$(TANGENTIAL_STAMP)) || { \
 	  echo "tangential: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"; \
-	  $(RUN) $(BUILD)/engine/softpack-tangential $(call sweep_args,$(1),$(2)) $$(call planned,$(TANGENTIAL_STAMP)) \
+	  $(RUN) $(BUILD)/bin/softpack-tangential $(call sweep_args,$(1),$(2)) $$(call planned,$(TANGENTIAL_STAMP)) \
 	    --checkpoints $(CHECKPOINTS)/tangential/$(1)/seed-$(2) --normal-checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) \
 	    --out $$@ 2> $$(@:.h5=.log) \
 	  || { echo "tangential: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }; }
@@ -43,7 +43,7 @@ define sliding_rules
 $(SWEEP_DIR)/sliding/$(1)-seed-$(2).h5: $(SLIDING_STAMP) $(SWEEP_DIR)/normal/$(1)-seed-$(2).h5 | $(TOOLS)
 	@mkdir -p $$(@D) && $$(call clear_stale,$$@,$(CHECKPOINTS)/normal/$(1)/seed-$(2) $(CHECKPOINTS)/sliding/$(1)/seed-$(2))
 	@echo "sliding: $(PROFILE) $(1) seed $(2) -> $$@ (log $$(@:.h5=.log))"; \
-	  $(RUN) $(BUILD)/engine/softpack-sliding $(call sweep_args,$(1),$(2)) $$(call planned,$(SLIDING_STAMP)) \
+	  $(RUN) $(BUILD)/bin/softpack-sliding $(call sweep_args,$(1),$(2)) $$(call planned,$(SLIDING_STAMP)) \
 	    --checkpoints $(CHECKPOINTS)/sliding/$(1)/seed-$(2) --normal-checkpoints $(CHECKPOINTS)/normal/$(1)/seed-$(2) \
 	    --out $$@ 2> $$(@:.h5=.log) \
 	  || { echo "sliding: FAILED for $(PROFILE) $(1) seed $(2); see $$(@:.h5=.log)"; tail -5 $$(@:.h5=.log); exit 1; }

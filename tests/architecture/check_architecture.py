@@ -1,75 +1,129 @@
 #!/usr/bin/env python3
-"""The engine's architecture rules (docs/architecture.md), checked on the sources:
+"""The architecture rules of docs/architecture.md, checked on the sources:
 
-  1. folders form layers: a file includes only files of its own folder or of folders below it in
-     LAYERS, so every dependency points one way (down);
-  2. no include cycle between files;
-  3. intrinsics (immintrin.h, _mm*, __m128/256/512, __mmask) only in engine/simd/;
-  4. no #define in engine/ (no macro that generates functions; headers use #pragma once);
-  5. no source file over 400 lines.
+  1. wings: engine/ (the DEM engine), pipeline/ (files, packings, sweeps, analysis), studies/,
+     apps/, in that order; a file includes only its own wing's files and those of wings before it;
+  2. the other wings reach the engine through its public face only (ENGINE_FACE below, the table
+     of docs/architecture.md): the rest of engine/ is the engine's own business;
+  3. the engine needs the standard library, Eigen, yaml-cpp and fmt only (its other includes:
+     the instruction sets' <immintrin.h> and POSIX <time.h>);
+  4. no include cycle between files, and none between folders: within a wing, the folders form
+     layers by themselves (any order the includes allow);
+  5. a folder name is one wing's (includes are "folder/file.hpp" from the wings' roots);
+  6. intrinsics (immintrin.h, _mm*, __m128/256/512, __mmask) only in engine/simd/;
+  7. no #define in the wings (no macro that generates functions; headers use #pragma once);
+  8. no C++ source file over 400 lines, the tests', benchmarks' and fuzz targets' included.
 
-usage: check_architecture.py ENGINE_DIR   (exit 1 with one line per violation)
+usage: check_architecture.py ROOT   (the project's folder; exit 1 with one line per violation)
 """
 import re
 import sys
 from pathlib import Path
 
-# Bottom to top. A folder may include only folders earlier in this list (and itself).
-LAYERS = ["core", "simd", "contact", "walls", "config", "scene", "state", "neighbor", "forces", "drivers",
-          "integrate", "sim", "relax", "io", "packing", "analysis", "formats", "measure", "coarse", "report", "apps"]
+WINGS = ["engine", "pipeline", "studies", "apps"]
+# The engine's public face: what the pipeline, the studies and the commands may include from it.
+ENGINE_FACE = {
+    "core/error.hpp", "core/types.hpp", "core/version.hpp", "core/stopwatch.hpp", "core/random.hpp",
+    "core/text_input.hpp", "core/suggest.hpp", "core/material.hpp",
+    "config/yaml_node.hpp", "core/fnv1a.hpp",
+    "scene/scene_def.hpp", "scene/scene_yaml.hpp", "scene/validate.hpp",
+    "scene/limits.hpp",
+    "contact/soft_particle_law.hpp", "walls/spherical_shell.hpp",
+    "state/simulation_state.hpp",
+    "forces/normal_law.hpp", "forces/soft_contacts.hpp", "forces/contact_walk.hpp",
+    "integrate/time_step.hpp",
+    "sim/simulation.hpp", "relax/relaxation.hpp",
+}
+ENGINE_SYSTEM = re.compile(r"^(Eigen/|yaml-cpp/|fmt/|immintrin\.h$|time\.h$|[a-z_]+$)")
 MAX_LINES = 400
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+SYSTEM_INCLUDE = re.compile(r'^\s*#\s*include\s+<([^>]+)>', re.M)
 INTRINSIC = re.compile(r'\b(_mm\d*_\w+|__m(128|256|512)\w*|__mmask\d+)\b|<immintrin\.h>')
 DEFINE = re.compile(r'^\s*#\s*define\b', re.M)
+SOURCES = (".hpp", ".cpp")
 
 
-def main(engine: Path) -> int:
-    problems = []
-    files = sorted(p for p in engine.rglob("*") if p.suffix in (".hpp", ".cpp"))
-    rank = {name: k for k, name in enumerate(LAYERS)}
-    graph = {}
-    for f in files:
-        rel = f.relative_to(engine).as_posix()
-        folder = rel.split("/")[0]
-        text = f.read_text()
-        if folder not in rank:
-            problems.append(f"{rel}: folder '{folder}' is not in the layers of {Path(__file__).name}")
-            continue
-        lines = text.count("\n")
-        if lines > MAX_LINES:
-            problems.append(f"{rel}: {lines} lines, more than {MAX_LINES}")
-        if folder != "simd" and INTRINSIC.search(text):
-            problems.append(f"{rel}: intrinsics outside engine/simd/ ({INTRINSIC.search(text).group(0)})")
-        if DEFINE.search(text):
-            problems.append(f"{rel}: #define (macros are not used in engine/)")
-        graph[rel] = []
-        for inc in INCLUDE.findall(text):
-            target_folder = inc.split("/")[0]
-            if not (engine / inc).exists():
-                continue  # generated (softpack_version.hpp) or not ours
-            graph[rel].append(inc)
-            if target_folder != folder and rank.get(target_folder, -1) > rank[folder]:
-                problems.append(f"{rel}: includes {inc}: {folder}/ may not depend on {target_folder}/, a higher layer")
-    # Include cycles (depth-first search; a back edge closes a cycle).
-    state = {}
+def wing_files(root):
+    """{path relative to its wing's root (apps: to the project): (wing, path)} of every source."""
+    files = {}
+    for wing in WINGS:
+        base = root if wing == "apps" else root / wing
+        for p in sorted((root / wing).rglob("*")):
+            if p.suffix in SOURCES:
+                files[p.relative_to(base).as_posix()] = (wing, p)
+    return files
+
+
+def cycles(graph):
+    """Every back edge of a depth-first search, as the cycle it closes."""
+    found, state = [], {}
 
     def visit(node, stack):
         state[node] = 1
         stack.append(node)
-        for nxt in graph.get(node, []):
+        for nxt in sorted(graph.get(node, ())):
             if state.get(nxt) == 1:
-                problems.append("include cycle: " + " -> ".join(stack[stack.index(nxt):] + [nxt]))
+                found.append(" -> ".join(stack[stack.index(nxt):] + [nxt]))
             elif state.get(nxt) is None:
                 visit(nxt, stack)
         stack.pop()
         state[node] = 2
 
-    for node in graph:
+    for node in sorted(graph):
         if state.get(node) is None:
             visit(node, [])
+    return found
+
+
+def main(root: Path) -> int:
+    problems = []
+    files = wing_files(root)
+    rank = {w: k for k, w in enumerate(WINGS)}
+    folder_wing, graph, folders = {}, {}, {}
+    for rel, (wing, _) in files.items():
+        folder = rel.split("/")[0]
+        if folder_wing.setdefault(folder, wing) != wing:
+            problems.append(f"{wing}/{rel}: folder '{folder}' is also a folder of {folder_wing[folder]}/")
+    for face in sorted(ENGINE_FACE - {r for r, (w, _) in files.items() if w == "engine"}):
+        problems.append(f"engine/{face}: on the engine's face (ENGINE_FACE) but no such file")
+    for rel, (wing, path) in files.items():
+        text = path.read_text()
+        shown = path.relative_to(root).as_posix()
+        folder = rel.split("/")[0]
+        if text.count("\n") > MAX_LINES:
+            problems.append(f"{shown}: {text.count(chr(10))} lines, more than {MAX_LINES}")
+        if not shown.startswith("engine/simd/") and INTRINSIC.search(text):
+            problems.append(f"{shown}: intrinsics outside engine/simd/ ({INTRINSIC.search(text).group(0)})")
+        if DEFINE.search(text):
+            problems.append(f"{shown}: #define (macros are not used in the wings)")
+        if wing == "engine":
+            for inc in SYSTEM_INCLUDE.findall(text):
+                if not ENGINE_SYSTEM.match(inc):
+                    problems.append(f"{shown}: includes <{inc}>: the engine needs the standard library, Eigen, "
+                                    f"yaml-cpp and fmt only")
+        graph[rel] = set()
+        for inc in INCLUDE.findall(text):
+            if inc not in files:
+                continue  # generated (softpack_version.hpp, softpack_build.hpp) or not ours
+            to_wing = files[inc][0]
+            to_folder = inc.split("/")[0]
+            graph[rel].add(inc)
+            if to_folder != folder:
+                folders.setdefault(folder, set()).add(to_folder)
+            if rank[to_wing] > rank[wing]:
+                problems.append(f"{shown}: includes {inc}: {wing}/ may not depend on {to_wing}/, a wing above it")
+            elif to_wing == "engine" and wing != "engine" and inc not in ENGINE_FACE:
+                problems.append(f"{shown}: includes engine/{inc}, which is not on the engine's public face "
+                                f"(ENGINE_FACE, docs/architecture.md)")
+    problems += [f"include cycle: {c}" for c in cycles(graph)]
+    problems += [f"folder cycle: {c}" for c in cycles(folders)]
+    for extra in ("tests", "bench", "fuzz"):
+        for p in sorted((root / extra).rglob("*")):
+            if p.suffix in SOURCES and p.read_text().count("\n") > MAX_LINES:
+                problems.append(f"{p.relative_to(root)}: {p.read_text().count(chr(10))} lines, more than {MAX_LINES}")
     for p in problems:
         print(p)
-    print(f"{len(files)} files, {len(problems)} violations of the architecture rules")
+    print(f"{len(files)} files in {len(WINGS)} wings, {len(problems)} violations of the architecture rules")
     return 1 if problems else 0
 
 

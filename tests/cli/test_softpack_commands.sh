@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The commands' executable (engine/apps/softpack.cpp): every command `softpack --help` lists is a
+# The commands' executable (apps/softpack.cpp): every command `softpack --help` lists is a
 # link softpack-<name> in the build, answers --help with its own name and exits 0; `softpack
 # <name>` is the same command; a name that is no command is one line and exit 2.
 #

@@ -20,7 +20,7 @@
 #
 #   test_make.sh BUILD_DIR SOURCE_DIR   (FAULT_SEED=N replays)
 build=$(cd "$1" && pwd) root=$(cd "$2" && pwd)
-bin=$build/engine
+bin=$build/bin
 source "$(dirname "$0")/common.sh"
 cd "$root"
 version=$(awk '/^project/ { print $3; exit }' CMakeLists.txt)

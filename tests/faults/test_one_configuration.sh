@@ -16,14 +16,14 @@
 #
 #   test_one_configuration.sh BUILD_DIR SOURCE_DIR   (FAULT_SEED=N replays)
 build=$(cd "$1" && pwd) root=$(cd "$2" && pwd)
-bin=$build/engine
+bin=$build/bin
 source "$(dirname "$0")/common.sh"
 copy_samples "$tmp/s"
 s=$tmp/s
 
 # edit PROFILE OUT STAGE: OUT is PROFILE with one key of a section STAGE reads set to a new value
 # (drawn; the key is echoed). The keys of the normal stage are also the tangential's and the
-# average's (config/profile.cpp, stage_sections).
+# average's (profile/profile.cpp, stage_sections).
 edit() {
   local in=$1 out=$2 stage=$3 pick
   local -a normal=("E: 5.0e5|E: $(( $(random_below 40) + 55 )).0e4" "nu: 0.3,|nu: 0.$(( $(random_below 9) + 21 )),"

@@ -1,4 +1,4 @@
-// The coarse-grain validation's pieces (engine/coarse/): the medium is one medium for both
+// The coarse-grain validation's pieces (studies/coarse/): the medium is one medium for both
 // models, its files round-trip, the comparison reads curves as it says.
 #include <gtest/gtest.h>
 

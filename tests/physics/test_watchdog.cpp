@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "config/profile.hpp"
+#include "profile/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "core/error.hpp"
 #include "measure/settings.hpp"

@@ -42,7 +42,7 @@
 #include "analysis/kt_unit.hpp"
 #include "analysis/verdict.hpp"
 #include "analysis/power_fit.hpp"
-#include "config/profile.hpp"
+#include "profile/profile.hpp"
 #include "config/yaml_node.hpp"
 #include "core/version.hpp"
 #include "formats/average_file.hpp"

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "config/profile.hpp"
+#include "profile/profile.hpp"
 #include "formats/sweep_file.hpp"
 #include "scene/scene_yaml.hpp"
 #include "stability/stability.hpp"

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <string>
 
-#include "config/profile.hpp"
+#include "profile/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "packing/generator.hpp"
 #include "relax/relaxation.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "config/profile.hpp"
+#include "profile/profile.hpp"
 #include "measure/sweeps.hpp"
 #include "packing/generator.hpp"
 #include "packing/packing_profile.hpp"

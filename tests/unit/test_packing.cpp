@@ -8,7 +8,7 @@
 #include <limits>
 #include <numbers>
 
-#include "config/profile.hpp"
+#include "profile/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"

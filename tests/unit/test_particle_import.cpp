@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 #include "core/error.hpp"
-#include "core/sha256.hpp"
+#include "io/sha256.hpp"
 #include "io/particle_import.hpp"
 #include "packing/import.hpp"
 

@@ -14,7 +14,7 @@ source "$(dirname "$0")/common.sh"
 copy_tree "$work/tree"
 cd "$work/tree"
 export MAKEFLAGS=
-acc="$build/engine/softpack-accuracy"
+acc="$build/bin/softpack-accuracy"
 
 study() {  # study FILE [EXTRA-SETTING-LINES]: a study of the quick profile on seeds 101-102
   cat > "$1" <<YAML

@@ -16,7 +16,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 results=${1:-$root/data/fast-profile/reference}
 work=${2:-$(mktemp -d)}
 [[ -n ${2:-} ]] || trap 'rm -rf "$work"' EXIT
-bin=$root/${BUILD:-build}/engine
+bin=$root/${BUILD:-build}/bin
 options=("stderr|1.0e-9" "stderr|1.0e-3" "stderr|1.0e-2" "relative|1.0e-4" "relative|1.0e-3" "relative|1.0e-2"
          "unweighted|1.0e-4" "unweighted|1.0e-3" "unweighted|1.0e-2")
 mapfile -t seeds < <(ls "$results"/normal/soft-solid-seed-*.h5 | sed 's/.*seed-\([0-9]*\)\.h5/\1/' | sort -n)

@@ -35,7 +35,7 @@ for seed in $seeds; do
   out=$work/soft-soft-seed-$seed.h5
   [ -f "$out" ] && continue
   echo "relaxation_stops: seed $seed ($stops stops) -> $out" >&2
-  build/engine/softpack-normal --config "$config" --scene soft-soft --seed "$seed" \
+  build/bin/softpack-normal --config "$config" --scene soft-soft --seed "$seed" \
     --packing "$data"/paper/packings/seed-$seed.h5 --second-packing "$data"/paper/packings/seed-$next.h5 \
     --checkpoints "$work/seed-$seed" --out "$out" --quiet
 done

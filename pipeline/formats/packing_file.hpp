@@ -1,0 +1,85 @@
+// The packing file (HDF5), written by softpack-pack and read by the sweeps and the figures.
+// Layout (SI units; readable with h5dump or h5py without project code):
+//
+//   /centres            (N, 3)  sphere centres [m], shell centre at the origin
+//   /radii              (N)     radii after growth [m]
+//   /radii_inserted     (N)     radii before growth [m]
+//   /shell/radius, /shell/centre (3)
+//   /parameters/...     the generator's parameters (Rs, r_max, polydispersity, exponent,
+//                       beta, trials, shell_is_neighbour, level_ratio)
+//   /stats/...          sampled, inserted, discarded, grown, solid_fraction, bulk_fraction,
+//                       depletion_length, min_shell_gap, exponent, exponent_error,
+//                       exponent_r_min, exponent_r_max, radial_profile/{r_inner,r_outer,solid_fraction}
+//   /provenance/...     program, code_version, config_file, config (the YAML slice read),
+//                       seed, seconds, cpu_seconds (wall-clock and CPU time of the generation),
+//                       stamp (the packing stage's configuration stamp, profile/profile.hpp;
+//                       files written before stamps were recorded have none)
+//
+// An imported packing (softpack-import, packing/import.hpp) has /centres, /radii, /shell, /stats
+// (solid fraction, bulk fraction, depletion length, min shell gap, exponent, radial profile),
+// /provenance (program softpack-import) and, instead of the generator's parameters,
+//   /parameters/Rs      the shell radius [m]
+//   /imported/...       source_file, source_sha256, format, shell (given|read|enclosing),
+//                       shell_centre_in_file (3, the file's unit), length_unit [m per unit],
+//                       overlap_tolerance, largest_overlap (over the smaller radius)
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "io/hdf5_file.hpp"
+#include "packing/generator.hpp"
+#include "packing/statistics.hpp"
+
+namespace softpack {
+
+struct PackingProvenance {
+  std::string program;
+  std::string code_version;
+  std::string config_file;
+  std::string config;  ///< the configuration slice the packing depends on
+  std::uint64_t seed = 0;
+  double seconds = 0.0;      ///< wall-clock time [s]
+  double cpu_seconds = 0.0;  ///< CPU time of the process [s]
+  std::string stamp;         ///< the packing stage's configuration stamp ("": a file from before stamps)
+};
+
+/// Writes the file atomically (no file is left behind on failure).
+void write_packing_file(const std::string& path, const PackingParameters& p, const Packing& packing,
+                        const PackingStatistics& stats, const PackingProvenance& provenance);
+
+/// What an imported packing records of its source (/imported).
+struct ImportRecord {
+  std::string source_file, source_sha256, format, shell;
+  Vec3 shell_centre_in_file = Vec3::Zero();
+  double length_unit = 1.0, overlap_tolerance = 0.0, largest_overlap = 0.0;
+};
+
+/// Writes an imported packing atomically; `centres` about the shell's centre, SI.
+void write_imported_packing_file(const std::string& path, const ImportRecord& record, const std::vector<Vec3>& centres,
+                                 const std::vector<double>& radii, double Rs, const PackingStatistics& stats,
+                                 const PackingProvenance& provenance);
+
+struct PackingFile {
+  std::vector<Vec3> centres;
+  std::vector<double> radii;
+  double Rs = 0.0;
+  PackingParameters parameters;  ///< imported: Rs, and r_max the largest radius
+  PackingProvenance provenance;
+  std::optional<ImportRecord> imported;  ///< an imported packing's source
+};
+
+/// Reads a packing file; InputError names the file and what is missing or wrong.
+PackingFile read_packing_file(const std::string& path);
+
+/// The packing's identity by content: the SHA-256 of its shell radius and of its spheres (x, y, z,
+/// r as IEEE doubles) sorted, so that the order they are listed in does not count. Two seeds whose packings have one identity are one packing
+/// counted twice, whatever their names and seed numbers (analysis/average.hpp).
+std::string packing_sha256(const PackingFile& p);
+
+/// "a packing file (softpack-pack)" (or softpack-import) when `f` has the layout of one, else "" (formats/file_kind.hpp).
+std::string describe_packing_file(const h5::File& f);
+
+}  // namespace softpack

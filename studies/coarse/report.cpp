@@ -1,0 +1,221 @@
+#include "coarse/report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/version.hpp"
+#include "io/atomic_file.hpp"
+
+namespace softpack {
+namespace {
+
+// Mean and standard error over seeds; NaN where not known (no seed, or one for the error).
+MeanError seeds_mean_error(const std::vector<double>& v) {
+  MeanError m;
+  if (v.empty()) return {std::nan(""), std::nan("")};
+  for (double x : v) m.mean += x;
+  m.mean /= static_cast<double>(v.size());
+  if (v.size() < 2) return {m.mean, std::nan("")};
+  double ss = 0.0;
+  for (double x : v) ss += (x - m.mean) * (x - m.mean);
+  m.error = std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
+  return m;
+}
+
+// The value of column `get` of a run's rows of `phase` at `strain`, linear between rows; a row
+// within `tolerance` of it (a phase's last row, a step short of the grid) stands for it; NaN
+// farther outside the phase's strains.
+template <class Get>
+double at_strain(const CoarseResult& r, int phase, double strain, Get get, double tolerance) {
+  if (phase == 2) {  // the shear: rows of phase 2 (and the last before it) by the wall's displacement
+    const CurveRow* prev = nullptr;
+    for (const CurveRow& row : r.rows) {
+      if (row.phase != 2) {
+        prev = &row;
+        continue;
+      }
+      const double a = prev ? (prev->phase == 2 ? prev->shear : 0.0) : 0.0, b = row.shear;
+      if (prev && (strain - a) * (strain - b) <= 0.0 && a != b) return get(*prev) + (strain - a) / (b - a) * (get(row) - get(*prev));
+      if (std::abs(row.shear - strain) <= tolerance) return get(row);
+      prev = &row;
+    }
+    return std::nan("");
+  }
+  const CurveRow* prev = nullptr;
+  for (const CurveRow& row : r.rows) {
+    if (row.phase != phase && !(phase == -1 && &row == &r.rows.front())) {
+      if (phase == -1 && row.phase == 1) prev = &row;  // unloading starts where loading ended
+      continue;
+    }
+    if (prev) {
+      const double a = prev->strain, b = row.strain;
+      if ((strain - a) * (strain - b) <= 0.0 && a != b) {
+        const double t = (strain - a) / (b - a);
+        return get(*prev) + t * (get(row) - get(*prev));
+      }
+    }
+    if (row.strain == strain) return get(row);
+    prev = &row;
+  }
+  for (const CurveRow& row : r.rows)
+    if (row.phase == phase && std::abs(row.strain - strain) <= tolerance) return get(row);
+  return std::nan("");
+}
+
+}  // namespace
+
+CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const std::vector<CoarseResult>& soft, double strain,
+                                double unload_strain, double step, double shear, double shear_step) {
+  CoarseComparison c;
+  const std::vector<CoarseResult>* runs[2] = {&resolved, &soft};
+  for (const CoarseResult& r : resolved) c.seeds.push_back(r.seed);
+  std::vector<std::pair<double, int>> grid;
+  const long n_load = std::lround(strain / step), n_unload = std::lround(unload_strain / step);
+  for (long k = 0; k <= n_load; ++k) grid.emplace_back(std::min(strain, static_cast<double>(k) * step), 1);
+  for (long k = 1; k <= n_unload; ++k) grid.emplace_back(strain - std::min(unload_strain, static_cast<double>(k) * step), -1);
+  const long n_shear = shear_step > 0.0 ? std::lround(shear / shear_step) : 0;
+  for (long k = 1; k <= n_shear; ++k) grid.emplace_back(std::min(shear, static_cast<double>(k) * shear_step), 2);
+  bool agreeing = true;
+  for (const auto& [e, phase] : grid) {
+    CoarsePoint p;
+    p.strain = phase == 2 ? strain - unload_strain : e, p.phase = phase, p.shear = phase == 2 ? e : 0.0;
+    const double tol = phase == 2 ? 0.25 * shear_step : 0.25 * step;
+    std::vector<double> diff;
+    for (int m = 0; m < 2; ++m) {
+      std::vector<double> sigma, K0, fraction, Z, tau;
+      for (const CoarseResult& r : *runs[m]) {
+        const double s = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol);
+        const double lat = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_lateral; }, tol);
+        if (!std::isfinite(s)) continue;
+        sigma.push_back(s);
+        if (s > 0.0) K0.push_back(lat / s);
+        fraction.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.fraction; }, tol));
+        Z.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.Z; }, tol));
+        tau.push_back(at_strain(r, phase, e, [](const CurveRow& w) { return w.tau; }, tol));
+      }
+      p.sigma[m] = seeds_mean_error(sigma), p.K0[m] = seeds_mean_error(K0), p.fraction[m] = seeds_mean_error(fraction), p.Z[m] = seeds_mean_error(Z);
+      p.tau[m] = seeds_mean_error(tau);
+    }
+    for (std::size_t k = 0; k < resolved.size(); ++k)
+      diff.push_back(at_strain(soft[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol) -
+                     at_strain(resolved[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol));
+    p.sigma_difference = seeds_mean_error(diff);
+    const double tolerance = 2.0 * std::hypot(p.sigma[0].error, p.sigma[1].error);
+    p.agrees = std::abs(p.sigma[1].mean - p.sigma[0].mean) <= tolerance;
+    if (phase == 1) {
+      agreeing = agreeing && p.agrees;
+      if (agreeing) c.agreement_strain = e;
+    }
+    c.points.push_back(p);
+  }
+  for (std::size_t k = 0; k < resolved.size(); ++k) {
+    c.cpu[0].push_back(resolved[k].cpu_seconds), c.cpu[1].push_back(soft[k].cpu_seconds);
+    c.speedup.push_back(resolved[k].cpu_seconds / soft[k].cpu_seconds);
+    c.beyond_range += soft[k].beyond_range, c.max_dn = std::max(c.max_dn, soft[k].max_dn);
+  }
+  c.mean_speedup = seeds_mean_error(c.speedup);
+  if (!resolved.empty()) c.spheres[0] = resolved[0].spheres, c.spheres[1] = soft[0].spheres, c.bodies = resolved[0].bodies;
+  return c;
+}
+
+namespace {
+
+std::string coarse_pm(const MeanError& m, const char* fmt_value = "{:.4g}") {
+  if (!std::isfinite(m.mean)) return "–";
+  const std::string v = fmt::format(fmt::runtime(fmt_value), m.mean);
+  return std::isfinite(m.error) ? v + " ± " + fmt::format("{:.2g}", m.error) : v;
+}
+
+}  // namespace
+
+void write_coarse_report(const ReportOptions& o) {
+  const CoarseGrainSettings s = read_coarse_grain_settings(o.config);
+  std::vector<CoarseResult> resolved, soft;
+  for (std::uint64_t seed : s.seeds) {
+    const auto file = [&](const char* model) { return (std::filesystem::path(o.runs) / fmt::format("{}-{}.h5", model, seed)).string(); };
+    if (!std::filesystem::exists(file("resolved")) || !std::filesystem::exists(file("soft"))) continue;
+    resolved.push_back(read_coarse_result(file("resolved")));
+    soft.push_back(read_coarse_result(file("soft")));
+  }
+  if (resolved.empty())
+    throw InputError(fmt::format("{}: no seed of {} has both runs (resolved-<seed>.h5 and soft-<seed>.h5)", o.runs, o.config));
+  const CoarseComparison c = compare_coarse(resolved, soft, s.strain, s.unload_strain, s.record_strain, s.shear, s.record_shear);
+  std::filesystem::create_directories(o.out);
+
+  std::ostringstream dat;
+  dat << "# softpack-coarse report: " << o.config << ", seeds";
+  for (auto seed : c.seeds) dat << ' ' << seed;
+  dat << "\n# strain phase sigma_res sigma_res_se sigma_soft sigma_soft_se K0_res K0_res_se K0_soft K0_soft_se"
+         " fraction_res fraction_soft Z_res Z_res_se Z_soft Z_soft_se diff diff_se agrees tau_res tau_res_se tau_soft tau_soft_se\n"
+         "# (the third block, phase 2, is the shear: column 1 is then the top wall's displacement / H0)\n";
+  int last_phase = 1;
+  for (const CoarsePoint& p : c.points) {
+    if (p.phase != last_phase) dat << "\n\n", last_phase = p.phase;
+    dat << fmt::format("{:.6f} {} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6f} {:.6f} {:.4f} {:.4f} {:.4f} {:.4f} {:.6e} {:.6e} {} "
+                       "{:.6e} {:.6e} {:.6e} {:.6e}\n",
+                       p.phase == 2 ? p.shear : p.strain, p.phase, p.sigma[0].mean, p.sigma[0].error, p.sigma[1].mean, p.sigma[1].error, p.K0[0].mean,
+                       p.K0[0].error, p.K0[1].mean, p.K0[1].error, p.fraction[0].mean, p.fraction[1].mean, p.Z[0].mean, p.Z[0].error,
+                       p.Z[1].mean, p.Z[1].error, p.sigma_difference.mean, p.sigma_difference.error, p.agrees ? 1 : 0,
+                       p.tau[0].mean, p.tau[0].error, p.tau[1].mean, p.tau[1].error);
+  }
+  write_file_atomically((std::filesystem::path(o.out) / "curves.dat").string(), dat.str());
+
+  std::ostringstream md;
+  md << "# Coarse-grain validation: resolved against soft-particles\n\n";
+  md << fmt::format("Settings `{}`; seeds", o.config);
+  for (auto seed : c.seeds) md << ' ' << seed;
+  md << fmt::format(". Resolved: {} spheres; soft: {} spheres ({} bodies). Code {}.\n\n", c.spheres[0], c.spheres[1], c.bodies,
+                    code_version());
+  md << "| strain | phase | σzz resolved [Pa] | σzz soft [Pa] | soft − resolved [Pa] | agrees | K0 resolved | K0 soft | φ resolved | φ soft | Z resolved | Z soft |\n";
+  md << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  const long every = std::max(1L, std::lround(0.01 / s.record_strain));
+  for (std::size_t k = 0; k < c.points.size(); ++k) {
+    const CoarsePoint& p = c.points[k];
+    if (p.phase == 2) continue;
+    if (k % static_cast<std::size_t>(every) != 0 && k + 1 != c.points.size() && c.points[k + 1].phase != 2) continue;
+    md << fmt::format("| {:.3f} | {} | {} | {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {} | {} |\n", p.strain,
+                      p.phase > 0 ? "load" : "unload", coarse_pm(p.sigma[0]), coarse_pm(p.sigma[1]), coarse_pm(p.sigma_difference), p.agrees ? "yes" : "no",
+                      coarse_pm(p.K0[0], "{:.3f}"), coarse_pm(p.K0[1], "{:.3f}"), p.fraction[0].mean, p.fraction[1].mean, coarse_pm(p.Z[0], "{:.2f}"),
+                      coarse_pm(p.Z[1], "{:.2f}"));
+  }
+  if (s.shear > 0.0) {
+    md << fmt::format("\nPlaten shear at axial strain {:.3f}: the top wall moved along x by `shear` of the initial height.\n\n",
+                      s.strain - s.unload_strain);
+    md << "| shear | τ resolved [Pa] | τ soft [Pa] | τ/σzz resolved | τ/σzz soft | σzz resolved [Pa] | σzz soft [Pa] |\n";
+    md << "|---|---|---|---|---|---|---|\n";
+    for (const CoarsePoint& p : c.points) {
+      if (p.phase != 2) continue;
+      md << fmt::format("| {:.3f} | {} | {} | {:.3f} | {:.3f} | {} | {} |\n", p.shear, coarse_pm(p.tau[0]), coarse_pm(p.tau[1]),
+                        p.tau[0].mean / p.sigma[0].mean, p.tau[1].mean / p.sigma[1].mean, coarse_pm(p.sigma[0]), coarse_pm(p.sigma[1]));
+    }
+  }
+  md << fmt::format("\nAgreement (|soft − resolved| ≤ 2 √(se² + se²) of the two means) at every loading point up to strain **{:.3f}**.\n",
+                    c.agreement_strain);
+  md << fmt::format("Speed-up (CPU time resolved / soft, per seed): **{}**; CPU [s] resolved", coarse_pm(c.mean_speedup, "{:.1f}"));
+  for (double t : c.cpu[0]) md << fmt::format(" {:.1f}", t);
+  md << ", soft";
+  for (double t : c.cpu[1]) md << fmt::format(" {:.2f}", t);
+  md << fmt::format(".\nSoft contacts beyond the laws' measured range: {} evaluations (largest Δn {:.3f}).\n", c.beyond_range, c.max_dn);
+  write_file_atomically((std::filesystem::path(o.out) / "coarse-grain.md").string(), md.str());
+
+  nlohmann::json j;
+  j["settings"] = o.config;
+  j["seeds"] = c.seeds;
+  j["agreement_strain"] = c.agreement_strain;
+  j["speedup"] = {{"mean", c.mean_speedup.mean}, {"error", std::isfinite(c.mean_speedup.error) ? nlohmann::json(c.mean_speedup.error) : nlohmann::json()}, {"per_seed", c.speedup}};
+  j["cpu_seconds"] = {{"resolved", c.cpu[0]}, {"soft", c.cpu[1]}};
+  j["spheres"] = {{"resolved", c.spheres[0]}, {"soft", c.spheres[1]}};
+  j["bodies"] = c.bodies;
+  j["beyond_range"] = c.beyond_range;
+  j["max_dn"] = c.max_dn;
+  j["code_version"] = code_version();
+  write_file_atomically((std::filesystem::path(o.out) / "summary.json").string(), j.dump(1) + "\n");
+}
+
+}  // namespace softpack

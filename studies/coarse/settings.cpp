@@ -1,0 +1,117 @@
+#include "coarse/settings.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "profile/profile.hpp"
+#include "config/yaml_node.hpp"
+#include "core/error.hpp"
+#include "packing/packing_profile.hpp"
+
+namespace softpack {
+
+const char* name(CoarseModel m) { return m == CoarseModel::resolved ? "resolved" : "soft"; }
+
+CoarseModel parse_coarse_model(const std::string& text) {
+  if (text == "resolved") return CoarseModel::resolved;
+  if (text == "soft") return CoarseModel::soft;
+  throw InputError(fmt::format("model: '{}' is not allowed; allowed: resolved, soft", text));
+}
+
+namespace {
+
+double in_range(const ConfigNode& n, double lo, double hi, bool lo_open = false) {
+  const double v = n.number();
+  if (!((lo_open ? v > lo : v >= lo) && v <= hi)) n.fail(fmt::format("{} is not allowed; allowed: {} {} value <= {}", v, lo, lo_open ? "<" : "<=", hi));
+  return v;
+}
+
+long count_in(const ConfigNode& n, long lo, long hi) {
+  const long v = n.integer();
+  if (v < lo || v > hi) n.fail(fmt::format("{} is not allowed; allowed: {} <= value <= {}", v, lo, hi));
+  return v;
+}
+
+std::string resolve(const std::string& root_dir, const std::string& p) {
+  return std::filesystem::path(p).is_absolute() ? p : (std::filesystem::path(root_dir) / p).string();
+}
+
+}  // namespace
+
+CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const std::string& root_dir) {
+  const ConfigNode root = ConfigNode::load_file(path);
+  root.allow_only({"coarse_grain"});
+  const ConfigNode c = root.at("coarse_grain");
+  c.allow_only({"soft_particle", "medium", "compression", "seeds"});
+  CoarseGrainSettings s;
+  {
+    std::ostringstream text;
+    text << c.yaml();
+    s.section_text = text.str();
+    // The packings' generator (profile, packing) and the medium: what build_medium() reads.
+    const ConfigNode sp = c.at("soft_particle");
+    std::ostringstream medium;
+    medium << "profile: " << sp.at("profile").yaml() << "\n";
+    if (auto p = sp.find("packing")) medium << "packing: " << p->yaml() << "\n";
+    medium << c.at("medium").yaml();
+    s.medium_text = medium.str();
+  }
+
+  const ConfigNode sp = c.at("soft_particle");
+  sp.allow_only({"profile", "packing", "laws", "grain_contact", "beyond_range", "shell_mass_fraction"});
+  s.profile = sp.at("profile").string();
+  const ConfigNode profile = ConfigNode::load_file(resolve(root_dir, s.profile));
+  {
+    const MeasurementSettings measurement = parse_measurement(profile);
+    s.simulation = measurement.simulation;
+    s.relaxation = measurement.relaxation;
+    s.normal_speed = measurement.normal.speed;
+  }
+  s.packing = parse_packing(profile).parameters;
+  if (auto p = sp.find("packing")) {
+    p->allow_only({"beta", "trials"});
+    if (auto b = p->find("beta")) s.packing.beta = b->number();
+    if (auto t = p->find("trials")) s.packing.trials = t->integer();
+    try {
+      validate(s.packing);
+    } catch (const InputError& e) {
+      p->fail(e.what());
+    }
+  }
+  s.laws = resolve(root_dir, sp.at("laws").string());
+  s.grain_contact = sp.at("grain_contact").choice({"wall", "reduced-radius"}) == "wall" ? GrainContactRule::wall
+                                                                                       : GrainContactRule::reduced_radius;
+  s.beyond_range = sp.at("beyond_range").choice({"report", "stop"}) == "report" ? SoftParticlesDef::BeyondRange::report
+                                                                               : SoftParticlesDef::BeyondRange::stop;
+  s.shell_mass_fraction = in_range(sp.at("shell_mass_fraction"), 0.0, 10.0, true);
+
+  const ConfigNode m = c.at("medium");
+  m.allow_only({"grains", "r_min_over_Rs", "decade", "exponent", "initial_fraction", "aspect", "placement_trials"});
+  s.grains = count_in(m.at("grains"), 1, 100000);
+  s.r_min_over_Rs = in_range(m.at("r_min_over_Rs"), 0.0, 100.0, true);
+  s.decade = in_range(m.at("decade"), 1.0, 1000.0, true);
+  s.exponent = in_range(m.at("exponent"), 1.0, 20.0);
+  s.initial_fraction = in_range(m.at("initial_fraction"), 0.0, 0.5, true);
+  s.aspect = in_range(m.at("aspect"), 0.1, 10.0);
+  s.placement_trials = count_in(m.at("placement_trials"), 1, 100000000);
+
+  const ConfigNode k = c.at("compression");
+  k.allow_only({"speed", "strain", "unload_strain", "record_strain", "relax", "max_overlap_fraction", "shear", "record_shear"});
+  if (auto sh = k.find("shear")) {
+    s.shear = in_range(*sh, 0.0, 1.0);
+    s.record_shear = in_range(k.at("record_shear"), 0.0, std::max(s.shear, 1e-12), true);
+  }
+  if (auto r = k.find("relax")) s.relax = in_range(*r, 0.0, 1000.0);
+  s.speed = in_range(k.at("speed"), 0.0, 10.0, true);
+  s.strain = in_range(k.at("strain"), 0.0, 0.9, true);
+  s.unload_strain = in_range(k.at("unload_strain"), 0.0, s.strain);
+  s.record_strain = in_range(k.at("record_strain"), 0.0, s.strain, true);
+  if (auto w = k.find("max_overlap_fraction")) s.max_overlap_fraction = in_range(*w, 0.0, 100.0, true);
+
+  s.seeds = parse_seeds(c);
+  return s;
+}
+
+}  // namespace softpack

@@ -1,0 +1,221 @@
+#include "report/accuracy_study.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+#include "analysis/fit_options.hpp"
+#include "profile/profile.hpp"
+#include "config/yaml_node.hpp"
+#include "core/error.hpp"
+#include "measure/settings.hpp"
+#include "packing/packing_profile.hpp"
+
+namespace softpack {
+namespace {
+
+// The smallest seed a study may use: seeds 1-7 are the paper's seven simulations, run only to
+// report; every calibration and comparison runs on held-out seeds.
+constexpr std::uint64_t kFirstHeldOutSeed = 101;
+
+// The `seeds` of `n`, read as a profile's are (profile/profile.hpp), and all of them held out.
+std::vector<std::uint64_t> read_seeds(const ConfigNode& n) {
+  const std::vector<std::uint64_t> seeds = parse_seeds(n);
+  const std::vector<ConfigNode> items = n.at("seeds").items();
+  for (std::size_t k = 0; k < seeds.size(); ++k)
+    if (seeds[k] < kFirstHeldOutSeed)
+      items[k].fail(fmt::format("seed {} is not allowed; allowed: held-out seeds >= {} (1-7 are the paper's, run only to report)",
+                                seeds[k], kFirstHeldOutSeed));
+  return seeds;
+}
+
+std::vector<double> read_numbers(const ConfigNode& n) {
+  std::vector<double> v;
+  for (const ConfigNode& x : n.items()) v.push_back(x.number());
+  if (v.empty()) n.fail("at least one value is required");
+  return v;
+}
+
+StudySetting read_setting(const std::string& name, const ConfigNode& n, const std::vector<std::uint64_t>& study_seeds) {
+  n.allow_only({"set", "of", "seeds"});
+  StudySetting s;
+  s.name = name;
+  if (auto set = n.find("set"))
+    for (const std::string& key : set->keys()) s.set.emplace_back(key, YAML::Clone(set->at(key).yaml()));
+  if (auto of = n.find("of")) {
+    s.of = of->string();
+    if (!s.set.empty()) n.at("set").fail("a setting `of` another one takes its results: it cannot also `set` keys");
+  }
+  s.seeds = n.has("seeds") ? read_seeds(n) : study_seeds;
+  return s;
+}
+
+// Replaces the value at the dotted `key` of `root`; the parent map must exist in the base (a
+// misspelt section is refused, a new key of an existing section is allowed).
+void replace(YAML::Node root, const std::string& key, const YAML::Node& value, const std::string& where) {
+  YAML::Node node = root;
+  std::size_t start = 0;
+  std::string path;
+  for (;;) {
+    const std::size_t dot = key.find('.', start);
+    const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (part.empty()) throw InputError(fmt::format("{}: '{}': an empty part in the dotted key", where, key));
+    if (dot == std::string::npos) {
+      node[part] = YAML::Clone(value);
+      return;
+    }
+    path += (path.empty() ? "" : ".") + part;
+    if (!node.IsMap() || !node[part] || !node[part].IsMap())
+      throw InputError(fmt::format("{}: '{}': the base profile has no section '{}' to change", where, key, path));
+    node.reset(node[part]);  // rebinds (operator= would overwrite the parent's value)
+    start = dot + 1;
+  }
+}
+
+bool settings_named(const ConfigNode& root, const std::string& name) {
+  for (const std::string& k : root.at("settings").keys())
+    if (k == name) return true;
+  return false;
+}
+
+}  // namespace
+
+const StudySetting& AccuracyStudy::setting(const std::string& name) const {
+  if (name == reference.name) return reference;
+  for (const auto& s : settings)
+    if (s.name == name) return s;
+  throw InputError(fmt::format("{}: no setting '{}'", path, name));
+}
+
+AccuracyStudy read_accuracy_study(const std::string& path) {
+  const ConfigNode root = ConfigNode::load_file(path);
+  root.allow_only({"study", "base", "seeds", "common", "compare", "calibrate", "radius", "reference", "settings"});
+  AccuracyStudy st;
+  st.path = path;
+  root.at("study").string();
+  st.base = root.at("base").string();
+  try {
+    st.base_yaml = YAML::Clone(ConfigNode::load_file(st.base).yaml());  // with the project's checks of a YAML file
+  } catch (const InputError& e) {
+    root.at("base").fail(e.what());
+  }
+  st.seeds = read_seeds(root);
+  const ConfigNode cmp = root.at("compare");
+  cmp.allow_only({"Fn_delta_n", "kt_delta_n"});
+  st.Fn_delta_n = read_numbers(cmp.at("Fn_delta_n"));
+  st.kt_delta_n = read_numbers(cmp.at("kt_delta_n"));
+  if (auto cal = root.find("calibrate")) {
+    cal->allow_only({"b_range"});
+    const ConfigNode ranges = cal->at("b_range");
+    ranges.allow_only({"soft-solid", "soft-soft"});
+    for (const std::string& scene : ranges.keys()) {
+      const std::vector<double> r = read_numbers(ranges.at(scene));
+      if (r.size() != 2 || !(r[0] >= 0.0 && r[0] < r[1]))
+        ranges.at(scene).fail("allowed: [low, high] with 0 <= low < high (a range of delta_n)");
+      st.b_range[scene] = {r[0], r[1]};
+    }
+  }
+  if (auto radius = root.find("radius")) {
+    radius->allow_only({"self_similar", "fixed", "mixed", "mu_from_ht_over_Rs"});
+    for (const char* variant : {"self_similar", "fixed", "mixed"})
+      if (auto list = radius->find(variant))
+        for (const ConfigNode& name : list->items()) {
+          const std::string n = name.string();
+          if (n != "reference" && !settings_named(root, n)) name.fail(fmt::format("'{}' is not a setting of this study", n));
+          st.radius_variants[variant].push_back(n);
+        }
+    st.mu_from_ht_over_Rs = radius->at("mu_from_ht_over_Rs").number();
+    if (!(st.mu_from_ht_over_Rs > 0.0 && st.mu_from_ht_over_Rs < 1.0))
+      radius->at("mu_from_ht_over_Rs").fail("allowed: 0 < value < 1 (ht / Rs from which the contact slides)");
+  }
+  if (auto common = root.find("common"))
+    for (const std::string& key : common->keys()) st.common.emplace_back(key, YAML::Clone(common->at(key).yaml()));
+  st.reference = read_setting("reference", root.at("reference"), st.seeds);
+  if (!st.reference.of.empty()) root.at("reference").at("of").fail("the reference runs: it cannot be `of` another setting");
+  for (std::uint64_t s : st.seeds)
+    if (std::find(st.reference.seeds.begin(), st.reference.seeds.end(), s) == st.reference.seeds.end())
+      root.at("reference").at("seeds").fail(fmt::format("the reference must hold every seed of the study; {} is missing", s));
+  const ConfigNode settings = root.at("settings");
+  std::set<std::string> names{"reference"};
+  for (const std::string& name : settings.keys()) {
+    const ConfigNode n = settings.at(name);
+    if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789.-") != std::string::npos)
+      n.fail("a setting's name is its profile's and folder's: lowercase letters, digits, '.', '-'");
+    if (!names.insert(name).second) n.fail(fmt::format("'{}' is a name already used", name));
+    st.settings.push_back(read_setting(name, n, st.seeds));
+  }
+  // A setting that runs: seeds of the reference (compared on the same soft-particles). `of`: a
+  // setting that runs, and a subset of its seeds.
+  for (const auto& s : st.settings) {
+    if (s.runs()) {
+      for (std::uint64_t seed : s.seeds)
+        if (std::find(st.reference.seeds.begin(), st.reference.seeds.end(), seed) == st.reference.seeds.end())
+          settings.at(s.name).at("seeds").fail(fmt::format("seed {} is not a seed of the reference, so nothing to compare it with", seed));
+      continue;
+    }
+    const ConfigNode n = settings.at(s.name);
+    const auto source = std::find_if(st.settings.begin(), st.settings.end(), [&](const StudySetting& o) { return o.name == s.of; });
+    const StudySetting* from = s.of == "reference" ? &st.reference : source != st.settings.end() ? &*source : nullptr;
+    if (!from || !from->runs()) n.at("of").fail(fmt::format("'{}' is not a setting that runs", s.of));
+    for (std::uint64_t seed : s.seeds)
+      if (std::find(from->seeds.begin(), from->seeds.end(), seed) == from->seeds.end())
+        n.at("seeds").fail(fmt::format("seed {} is not one of the seeds of '{}'", seed, s.of));
+  }
+  // Every profile must be one the stages accept: generated, then read as they read it.
+  for (const StudySetting* s : [&] {
+         std::vector<const StudySetting*> all{&st.reference};
+         for (const auto& x : st.settings) all.push_back(&x);
+         return all;
+       }()) {
+    if (!s->runs()) continue;
+    const std::string name = fmt::format("{} (setting {})", path, s->name);
+    try {
+      const ConfigNode p = ConfigNode::load_string(setting_profile_text(st, *s), name);
+      parse_seeds(p);
+      parse_packing(p);
+      parse_measurement(p);
+      fit::parse_fit_section(p);
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      throw InputError(msg.rfind(name, 0) == 0 ? msg : name + ": " + msg);
+    }
+  }
+  return st;
+}
+
+std::string setting_changes(const AccuracyStudy& st, const StudySetting& s) {
+  if (!s.runs()) return fmt::format("{} on {} of its seeds", s.of, s.seeds.size());
+  if (s.set.empty()) return s.name == "reference" ? "the reference" : fmt::format("(the base, {})", st.base);
+  std::string t;
+  for (const auto& [key, value] : s.set) {
+    YAML::Emitter e;
+    e << YAML::Flow << value;
+    t += (t.empty() ? "" : ", ") + key + " = " + e.c_str();
+  }
+  return t;
+}
+
+std::string setting_profile_text(const AccuracyStudy& study, const StudySetting& setting) {
+  YAML::Node base = YAML::Clone(study.base_yaml);
+  for (const auto& [key, value] : study.common) replace(base, key, value, fmt::format("{}: common", study.path));
+  for (const auto& [key, value] : setting.set)
+    replace(base, key, value, fmt::format("{}: settings.{}.set", study.path, setting.name));
+  base["profile"] = setting.name;
+  base["description"] = fmt::format("Accuracy study {}, setting '{}' (generated; do not edit)", study.path, setting.name);
+  YAML::Node seeds(YAML::NodeType::Sequence);
+  for (std::uint64_t s : setting.seeds) seeds.push_back(s);
+  seeds.SetStyle(YAML::EmitterStyle::Flow);
+  base["seeds"] = seeds;
+  YAML::Emitter out;
+  out << base;
+  std::string keys;
+  for (const auto& [key, value] : study.common) keys += " " + key;
+  if (!setting.set.empty()) keys += " (common), then";
+  for (const auto& [key, value] : setting.set) keys += " " + key;
+  return fmt::format("# Generated by softpack-accuracy from {} (setting '{}'): {} with{} replaced.\n", study.path, setting.name,
+                     study.base, keys.empty() ? " nothing" : keys) +
+         out.c_str() + "\n";
+}
+
+}  // namespace softpack
