@@ -18,37 +18,17 @@
 // spheres, rigidly) orbits the first's centre about +z by the angle ht / Rs, recorded as
 // alpha_deg: the contact keeps its depth hn and its normal turns by that angle.
 //
-// Every point is written to its own file in the checkpoint directory as soon as it is done
-// (atomically). A sweep started again reuses every point whose file holds the same
-// configuration and continues from the last state: an interrupted sweep recomputes nothing
-// finished and gives the same bits as an uninterrupted one.
+// Each is a stage of the one sweep skeleton (measure/sweep.hpp), which reuses finished points,
+// restores, relaxes, records, checkpoints every point (atomically) and reports progress: an
+// interrupted sweep recomputes nothing finished and gives the same bits as an uninterrupted one.
 #pragma once
-#include <functional>
+#include <cstddef>
 #include <string>
 #include <vector>
 
-#include "formats/sweep_file.hpp"
-#include "measure/contact_scenes.hpp"
-#include "measure/settings.hpp"
+#include "measure/sweep.hpp"
 
 namespace softpack {
-
-struct SweepContext {
-  ContactSetup setup;
-  MeasurementSettings settings;
-  std::string config;          ///< configuration text recorded with (and checked against) each point
-  std::string stamp;           ///< the stage's configuration stamp, recorded with each point
-  /// Tangential and sliding sweeps: the configuration the normal states they start from must
-  /// record (the normal stage's `config`); a state filed under another point, stage, seed or
-  /// configuration is refused.
-  std::string normal_config;
-  std::string checkpoint_dir;  ///< point files of this stage
-  std::string code_version;
-  /// Progress: the stage of the point ("normal", "tangential"), its index, the number of points,
-  /// the point just finished (or reused).
-  std::function<void(const std::string& stage, std::size_t, std::size_t, const PointResult&, bool reused)> progress;
-  std::size_t stop_after = 0;  ///< for tests: stop after computing this many new points (0: never)
-};
 
 std::vector<PointResult> run_normal_sweep(const SweepContext& c);
 
