@@ -3,8 +3,8 @@
 files that looks like a source path (a name with an extension we keep in git, or a folder ending
 in /) is found from the project's folder, from a wing's root (engine/, pipeline/, studies/: the
 way includes name files) or from the guide's own folder. Paths with a placeholder (a segment in
-capitals: DATA, PROFILE) and the outputs of a run or a build (under data/, tables/, generated/,
-build/) are left out: a fresh clone has none.
+capitals: DATA, PROFILE), the outputs of a run or a build (under data/, tables/, generated/,
+build/) and paths outside the project (../) are left out: a fresh clone has none.
 
 usage: check_doc_paths.py ROOT GUIDE.md...   (exit 1 with one line per missing path)
 """
@@ -14,7 +14,7 @@ from pathlib import Path
 
 WING_ROOTS = ["", "engine/", "pipeline/", "studies/"]
 PATH = re.compile(r"^[\w.-]+(/[\w.-]+)*(\.(hpp|cpp|py|sh|mk|yaml|md|txt|cmake|tex|bib|gp|cff)|/)$")
-OUTPUT = re.compile(r"^(data|tables|generated|build)/|(^|/)[A-Z_]+(/|$)")
+OUTPUT = re.compile(r"^(data|tables|generated|build|\.\.)/|(^|/)[A-Z_]+(/|$)")
 CODE = re.compile(r"`([^`\n]+)`")
 
 
