@@ -48,9 +48,13 @@ ifneq ($(words $(BUILD) $(CURDIR)),2)
 $(error the build folder '$(BUILD)' or the source folder '$(CURDIR)' holds a space: make cannot use such a path)
 endif
 
+# The studies of settings: each file of experiments/studies/ is a goal of its name and NAME-report
+# (workflow/studies.mk), known without the tools (a fresh clone builds them, then runs the goal).
+STUDY_FILES := $(sort $(wildcard experiments/studies/*.yaml))
+STUDY_NAMES := $(basename $(notdir $(STUDY_FILES)))
 # The goals that need the tools and a profile (the pipeline's and the studies').
 PIPELINE_GOALS := all tables figures paper archive packings normal tangential sliding sweeps averages fits figure1 figure2 \
-  study-packing density-rule study-relaxation accuracy accuracy-report fast-check timing calibrate calibrate-report radius radius-report \
+  study-packing density-rule study-relaxation study study-report $(STUDY_NAMES) $(STUDY_NAMES:%=%-report) fast-check timing \
   coarse-grain coarse-grain-runs coarse-grain-report coarse-grain-multi-contact
 # The goals that write nothing under DATA; every other goal (a file named on the command line too)
 # writes there and takes its lock.
@@ -76,6 +80,8 @@ help:  ## list the targets
 	@echo "softpack — reproducible soft-particle contact laws (see README.md)"
 	@echo
 	@grep -hE '^[a-z0-9-]+:.*## ' Makefile workflow/*.mk | sed -E 's/^([a-z0-9-]+):.*## (.*)/  make \1\t\2/' | expand -t 24
+	@echo; echo "the studies of experiments/studies/ (make NAME, make NAME-report; SETTINGS=\"a b\" runs only those):"
+	@for s in $(STUDY_NAMES); do echo "  make $$s"; done
 
 setup:  ## install the Debian packages (apt-get; quick when they are there)
 	@missing=$$(for p in $(APT_PACKAGES) $(APT_LEAN_PACKAGES); do \
@@ -164,7 +170,7 @@ include workflow/sweeps.mk
 include workflow/analysis.mk
 include workflow/archive.mk
 include workflow/paper.mk
-include workflow/accuracy.mk
+include workflow/studies.mk
 include workflow/coarse.mk
 else ifneq ($(SOFTPACK_TOOLS_BUILT),)
 $(error $(CONFIG_TOOL) is missing: $(if $(findstring n,$(firstword -$(MAKEFLAGS))),make -n needs the tools: run make build first,\

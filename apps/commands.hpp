@@ -10,7 +10,7 @@
 
 namespace softpack::apps {
 
-namespace accuracy_app { int main(int argc, char** argv); }
+namespace study_app { int main(int argc, char** argv); }
 namespace apollonian_app { int main(int argc, char** argv); }
 namespace average_app { int main(int argc, char** argv); }
 namespace coarse_app { int main(int argc, char** argv); }
@@ -49,7 +49,7 @@ inline constexpr std::array kCommands{
     Command{"apollonian", apollonian_app::main, "the Apollonian gasket of Figure 1"},
     Command{"packing-study", packing_study_app::main, "packing statistics against beta, I, r_max/Rs and the shell rule"},
     Command{"timing", timing_app::main, "the wall-clock and CPU time of a profile's outputs"},
-    Command{"accuracy", accuracy_app::main, "the studies: accuracy, calibration, radius, fast check"},
+    Command{"study", study_app::main, "a study of settings of a base profile: profiles, plan, report (accuracy, calibration, radius); the fast check"},
     Command{"coarse", coarse_app::main, "the coarse-grain validation"},
     Command{"run", run_app::main, "a scene file, reported as JSON"},
 };

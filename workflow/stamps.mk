@@ -12,7 +12,7 @@
 VERSION := $(shell awk '/^project/ { print $$3; exit }' CMakeLists.txt)
 STAMPS := $(DATA)/$(PROFILE)/stamps
 # A profile is experiments/PROFILE.yaml unless PROFILE_FILE names another file (the accuracy
-# study's generated profiles, workflow/accuracy.mk).
+# study's generated profiles, workflow/studies.mk).
 PROFILE_FILE ?= experiments/$(PROFILE).yaml
 
 # config ARGS [PROFILE]: what softpack-config says of the profile (ARGS: seeds, scenes, stamp STAGE);
@@ -61,7 +61,7 @@ TANGENTIAL_STAMP := $(call stamp,tangential,tangential)
 HAS_SLIDING := $(filter sliding,$(STAGES))
 ifneq ($(filter sliding,$(MAKECMDGOALS)),)
 ifeq ($(HAS_SLIDING),)
-$(error $(PROFILE_FILE) has no sliding section: make sliding measures the friction of a profile that has one (experiments/radius-study.yaml))
+$(error $(PROFILE_FILE) has no sliding section: make sliding measures the friction of a profile that has one (experiments/studies/radius.yaml))
 endif
 endif
 SLIDING_STAMP := $(if $(HAS_SLIDING),$(call stamp,sliding,sliding))

@@ -30,11 +30,11 @@ struct SeedSets {
 };
 
 // The setting whose runs hold a setting's results (itself, or the one it is `of`).
-const StudySetting& source(const AccuracyStudy& st, const StudySetting& s) { return s.runs() ? s : st.setting(s.of); }
+const StudySetting& source(const Study& st, const StudySetting& s) { return s.runs() ? s : st.setting(s.of); }
 
 using Runs = StudyRuns;
 
-std::vector<std::string> names(const AccuracyStudy& st) {
+std::vector<std::string> names(const Study& st) {
   std::vector<std::string> n;
   for (const auto& scene : kStudyScenes) {
     for (const char* k : {"a", "b", "c", "delta"}) n.push_back(fmt::format("{} normal {}", scene, k));
@@ -46,7 +46,7 @@ std::vector<std::string> names(const AccuracyStudy& st) {
 }
 
 // The quantities of one scene from its seeds' results files, appended to `out`.
-void measure_scene(const AccuracyStudy& st, Runs& runs, const std::string& folder, const std::string& scene,
+void measure_scene(const Study& st, Runs& runs, const std::string& folder, const std::string& scene,
                    const Seeds& seeds, std::vector<Quantity>& out) {
   std::vector<SweepColumns> normal, tangential;
   for (std::uint64_t s : seeds) {
@@ -103,7 +103,7 @@ void measure_scene(const AccuracyStudy& st, Runs& runs, const std::string& folde
   }
 }
 
-std::vector<Quantity> measure(const AccuracyStudy& st, Runs& runs, const std::string& folder, const SeedSets& s) {
+std::vector<Quantity> measure(const Study& st, Runs& runs, const std::string& folder, const SeedSets& s) {
   std::vector<Quantity> q;
   measure_scene(st, runs, folder, "soft-solid", s.solid, q);
   measure_scene(st, runs, folder, "soft-soft", s.soft, q);
@@ -129,7 +129,7 @@ double median_residual(Runs& runs, const std::string& folder, const Seeds& seeds
 
 }  // namespace
 
-AccuracyReport accuracy_report(const AccuracyStudy& st, const std::string& dir) {
+AccuracyReport accuracy_report(const Study& st, const std::string& dir) {
   Runs runs(dir);
   AccuracyReport r;
   r.quantities = names(st);

@@ -1,5 +1,5 @@
 // The fidelity study's comparison (docs/accuracy.md): for each setting of the study
-// (report/accuracy_study.hpp) the quantities a user takes from a measurement — a, b, c, δ of
+// (report/study_file.hpp) the quantities a user takes from a measurement — a, b, c, δ of
 // Eq. 7 and a, b, c of Eq. 8 for both scenes, Fn at the study's Δn and kt at its Δn — from its
 // sweep results (averaged over its seeds and fitted here, as softpack-average and softpack-fit
 // do), their error against the reference in units of the reference's seed-to-seed standard
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "report/accuracy_study.hpp"
+#include "report/study_file.hpp"
 
 namespace softpack {
 
@@ -59,7 +59,7 @@ struct AccuracyReport {
 
 /// Reads the sweep results under `dir` (<dir>/<setting>/{normal,tangential,packings}/...).
 /// Settings whose files are missing are reported as incomplete, not refused.
-AccuracyReport accuracy_report(const AccuracyStudy& study, const std::string& dir);
+AccuracyReport accuracy_report(const Study& study, const std::string& dir);
 
 /// table.md (the summary and the error of every quantity), pareto.dat (for gnuplot), report.json;
 /// returns the text of table.md.

@@ -29,7 +29,7 @@ using Seeds = std::vector<std::uint64_t>;
 // fraction of Rs (growth leaves them touching to 1e-12 Rs: docs/packing.md).
 constexpr double kTouchingGap = 1e-9;
 
-std::vector<std::string> quantity_names(const AccuracyStudy& st) {
+std::vector<std::string> quantity_names(const Study& st) {
   std::vector<std::string> n{"solid fraction", "coordination after growth", "grains"};
   for (const auto& scene : kStudyScenes) {
     for (const char* k : {"delta", "a", "b", "b fixed range"}) n.push_back(fmt::format("{} {}", scene, k));
@@ -72,7 +72,7 @@ double value_at(const std::vector<double>& x, const std::vector<MeanError>& y, d
 
 // Every quantity of one setting on `seeds` (soft-soft's seed k stands for its pair); notes of
 // what could not be measured.
-std::vector<double> measure(const AccuracyStudy& st, StudyRuns& runs, const std::string& folder, const Seeds& seeds,
+std::vector<double> measure(const Study& st, StudyRuns& runs, const std::string& folder, const Seeds& seeds,
                             const fit::FitSection& section, std::vector<std::string>* notes) {
   std::vector<double> q;
   const auto note = [&](std::string text) {
@@ -179,14 +179,14 @@ std::vector<double> measure(const AccuracyStudy& st, StudyRuns& runs, const std:
   return q;
 }
 
-fit::FitSection profile_fit_section(const AccuracyStudy& st, const StudySetting& s) {
+fit::FitSection profile_fit_section(const Study& st, const StudySetting& s) {
   const ConfigNode p = ConfigNode::load_string(setting_profile_text(st, s), fmt::format("{} (setting {})", st.path, s.name));
   return fit::parse_fit_section(p);
 }
 
 }  // namespace
 
-CalibrationReport calibration_report(const AccuracyStudy& st, const std::string& dir) {
+CalibrationReport calibration_report(const Study& st, const std::string& dir) {
   StudyRuns runs(dir);
   CalibrationReport r;
   r.quantities = quantity_names(st);

@@ -1,5 +1,5 @@
 // The calibration study's report (issue 14, paper/calibration.md): for each setting of a study
-// (report/accuracy_study.hpp; experiments/calibrate.yaml) what the measured laws and the packings
+// (report/study_file.hpp; experiments/studies/calibrate.yaml) what the measured laws and the packings
 // it measures are, each with its seed-to-seed standard error, and how each changes against the
 // study's base (its `reference` setting).
 //
@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "report/accuracy_study.hpp"
+#include "report/study_file.hpp"
 
 namespace softpack {
 
@@ -38,7 +38,7 @@ struct CalibrationReport {
 };
 
 /// Reads the results under `dir` (<dir>/<setting>/...); settings not complete are listed as such.
-CalibrationReport calibration_report(const AccuracyStudy& study, const std::string& dir);
+CalibrationReport calibration_report(const Study& study, const std::string& dir);
 
 /// table.md, calibration.json and onset.dat (for figures/calibration_onset.gp) in `out_dir`;
 /// returns the text of table.md.

@@ -14,11 +14,11 @@
 namespace softpack {
 namespace {
 
-// A study (report/accuracy_study.hpp) whose reference is profile `reference` and whose one
+// A study (report/study_file.hpp) whose reference is profile `reference` and whose one
 // setting is `candidate`, both on `seeds`: accuracy_report() then measures both from their folders.
-AccuracyStudy pair_study(const std::string& reference, const std::string& candidate, const std::vector<std::uint64_t>& seeds,
+Study pair_study(const std::string& reference, const std::string& candidate, const std::vector<std::uint64_t>& seeds,
                          const std::vector<double>& Fn_delta_n, const std::vector<double>& kt_delta_n) {
-  AccuracyStudy st;
+  Study st;
   st.path = "fast check";
   st.seeds = seeds;
   st.Fn_delta_n = Fn_delta_n;

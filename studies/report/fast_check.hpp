@@ -5,7 +5,7 @@
 // combined standard error, and what each cost in CPU time (the sums its files record).
 //
 // This is a report on seeds both profiles ran, not a calibration: the fast profile is chosen on
-// held-out seeds (experiments/fast-profile.yaml) and only checked here.
+// held-out seeds (experiments/studies/fast-profile.yaml) and only checked here.
 #pragma once
 #include <cstdint>
 #include <string>

@@ -28,7 +28,7 @@ struct SettingInfo {
   fit::FitSection fit;
 };
 
-SettingInfo setting_info(const AccuracyStudy& st, const std::string& name) {
+SettingInfo setting_info(const Study& st, const std::string& name) {
   SettingInfo i;
   i.setting = &st.setting(name);
   const ConfigNode p = ConfigNode::load_string(setting_profile_text(st, *i.setting), fmt::format("{} (setting {})", st.path, name));
@@ -148,7 +148,7 @@ void friction(const std::vector<SweepResults>& sliding, const MeasurementSetting
   }
 }
 
-RadiusRow measure_row(const AccuracyStudy& st, StudyRuns& runs, const std::string& name, const SettingInfo& info,
+RadiusRow measure_row(const Study& st, StudyRuns& runs, const std::string& name, const SettingInfo& info,
                       const std::string& scene) {
   RadiusRow row;
   row.setting = name, row.scene = scene, row.Rs = info.Rs, row.r_max = info.r_max;
@@ -248,7 +248,7 @@ double interpolate(const NormalAverage& a, double dn) {
   return kNaN;
 }
 
-MixedRow mixed_row(const AccuracyStudy& st, StudyRuns& runs, const std::string& name, const SettingInfo& info, double R0) {
+MixedRow mixed_row(const Study& st, StudyRuns& runs, const std::string& name, const SettingInfo& info, double R0) {
   MixedRow m;
   m.setting = name;
   m.ratio = info.measure.normal.second_radius_ratio;
@@ -317,7 +317,7 @@ RadiusValue common_exponent(const std::vector<std::vector<double>>& x, const std
   return {n, std::sqrt(1.0 / sxx) * (s2 > 1.0 ? std::sqrt(s2) : 1.0)};
 }
 
-RadiusReport radius_report(const AccuracyStudy& st, const std::string& dir) {
+RadiusReport radius_report(const Study& st, const std::string& dir) {
   RadiusReport r;
   r.Fn_delta_n = st.Fn_delta_n, r.kt_delta_n = st.kt_delta_n;
   StudyRuns runs(dir);

@@ -1,4 +1,4 @@
-// The radius study's report (issue 16, docs/radius.md; experiments/radius-study.yaml): how the
+// The radius study's report (issue 16, docs/radius.md; experiments/studies/radius.yaml): how the
 // soft-particle's laws change with its shell radius Rs, its friction coefficient, the contact of
 // two radii, and the law file a simulation reads (formats/law_file.hpp).
 //
@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "formats/law_file.hpp"
-#include "report/accuracy_study.hpp"
+#include "report/study_file.hpp"
 
 namespace softpack {
 
@@ -75,7 +75,7 @@ struct RadiusReport {
 /// Reads the results under `dir` (<dir>/<setting>/...): a setting is reported from the stages it
 /// has run (normal first; what is missing is noted), one without normal results is listed as
 /// missing. InputError when the reference lacks a stage.
-RadiusReport radius_report(const AccuracyStudy& study, const std::string& dir);
+RadiusReport radius_report(const Study& study, const std::string& dir);
 
 /// A common slope n of log y against log x over several groups (one intercept each), weighted by
 /// 1/σ_log²: the exponent of a power law measured at several Δn. Exposed for the tests.
@@ -84,11 +84,11 @@ RadiusValue common_exponent(const std::vector<std::vector<double>>& x, const std
 
 /// The law file of the study's reference (its laws at R0, the scaling of the fixed variant, or
 /// the self-similar one without it, and the mixing rule's check).
-LawFile radius_law_file(const RadiusReport& r, const AccuracyStudy& study, const std::string& code_version);
+LawFile radius_law_file(const RadiusReport& r, const Study& study, const std::string& code_version);
 
 /// table.md, radius.json, scaling.dat and friction.dat (figures/radius_*.gp) and laws.json in
 /// `out_dir`; returns the text of table.md.
-std::string write_radius_report(const RadiusReport& r, const AccuracyStudy& study, const std::string& out_dir,
+std::string write_radius_report(const RadiusReport& r, const Study& study, const std::string& out_dir,
                                 const std::string& title);
 
 }  // namespace softpack

@@ -43,7 +43,7 @@ LawValue law(const RadiusValue& v) { return LawValue{v.value, v.error}; }
 
 }  // namespace
 
-LawFile radius_law_file(const RadiusReport& r, const AccuracyStudy& study, const std::string& code_version) {
+LawFile radius_law_file(const RadiusReport& r, const Study& study, const std::string& code_version) {
   LawFile f;
   f.reference_radius = r.R0;
   for (const char* scene : {"soft-solid", "soft-soft"}) {
@@ -89,7 +89,7 @@ LawFile radius_law_file(const RadiusReport& r, const AccuracyStudy& study, const
   return f;
 }
 
-std::string write_radius_report(const RadiusReport& r, const AccuracyStudy& study, const std::string& out_dir,
+std::string write_radius_report(const RadiusReport& r, const Study& study, const std::string& out_dir,
                                 const std::string& title) {
   std::filesystem::create_directories(out_dir);
   std::string t = fmt::format("# {}\n\nR0 = {} m (the reference). Every value over the setting's seeds ± its seed-to-seed "

@@ -1,4 +1,4 @@
-// The results files of a study's runs (workflow/accuracy.mk: <dir>/<setting>/{packings, normal,
+// The results files of a study's runs (workflow/studies.mk: <dir>/<setting>/{packings, normal,
 // tangential}/...), each read once: the reports (accuracy, calibration) come back to the same
 // files many times for their jackknife and paired comparisons.
 #pragma once

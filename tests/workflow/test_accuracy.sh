@@ -1,24 +1,30 @@
 #!/usr/bin/env bash
-# The fidelity study's machinery (make accuracy, softpack-accuracy) on a tiny study of the quick
-# profile, in a copy of the source tree (the build is reused):
+# The studies' machinery (workflow/studies.mk, softpack-study) on a tiny accuracy study of the
+# quick profile, in a copy of the source tree (the build is reused):
 #   1. a bad study file is refused with its key and exit code 2: a seed of the paper's seven,
 #      an unknown key, a setting `of` one that does not run, a key of a section the base lacks;
-#   2. make accuracy runs the reference and every setting, writes the table, the Pareto data and
-#      the figure; the reference compared with itself has zero error, every setting a row;
-#   3. a second make accuracy recomputes nothing; changing one setting reruns that one only;
-#   4. softpack-accuracy check compares two of its profiles on their seeds (the fast profile's
-#      confirmation): every quantity with both standard errors, the costs; different seeds refused.
+#   2. a study file in experiments/studies/ is a make goal of its name, with no make edit: it runs
+#      the reference and every setting, writes the table, the Pareto data and the figure; the
+#      reference compared with itself has zero error, every setting a row;
+#   3. a second make recomputes nothing; changing one setting reruns that one only;
+#   4. softpack-study check compares two of its profiles on their seeds (the fast profile's
+#      confirmation): every quantity with both standard errors, the costs; different seeds refused;
+#   5. the calibration report (another kind) of the same runs: make study-report STUDY=FILE.
 #
 #   test_accuracy.sh BUILD_DIR SOURCE_DIR
 source "$(dirname "$0")/common.sh"
 copy_tree "$work/tree"
 cd "$work/tree"
 export MAKEFLAGS=
-acc="$build/bin/softpack-accuracy"
+acc="$build/bin/softpack-study"
 
 study() {  # study FILE [EXTRA-SETTING-LINES]: a study of the quick profile on seeds 101-102
   cat > "$1" <<YAML
-study: test
+study: $(basename "$1" .yaml)
+report: accuracy
+out: accuracy
+figures:
+  - {script: figures/accuracy_cost.gp, data: pareto.dat, name: accuracy-cost}
 base: experiments/quick.yaml
 seeds: [101, 102]
 compare: {Fn_delta_n: [0.5, 0.7], kt_delta_n: [0.6, 0.7]}
@@ -57,9 +63,9 @@ refused "setting bad"
 pass "bad study files are refused with the key"
 
 # --- 2. the study runs -------------------------------------------------------------------------
-study "$work/study.yaml"
-mk() { make --no-print-directory BUILD="$build" DATA=data ACCURACY_STUDY="$work/study.yaml" "$@"; }
-mk -j2 accuracy > "$work/a1.log" 2>&1 || { cat "$work/a1.log"; fail "make accuracy"; }
+study experiments/studies/tiny.yaml  # a new study: one file, no make edit, `make tiny`
+mk() { make --no-print-directory BUILD="$build" DATA=data "$@"; }
+mk -j2 tiny > "$work/a1.log" 2>&1 || { cat "$work/a1.log"; fail "make tiny"; }
 report=data/accuracy/report
 for f in table.md pareto.dat report.json accuracy-cost.pdf accuracy-cost.png; do
   [[ -s $report/$f ]] || fail "$report/$f is missing or empty"
@@ -76,20 +82,20 @@ cpu = {s["name"]: s["cpu_seconds"] for s in r["settings"]}
 assert 0 < cpu["base-1-seed"] < cpu["base"], cpu  # one seed of the two costs less
 assert r["reference"]["cpu_seconds"] > 0
 PY
-pass "make accuracy: the reference, 2 settings run and 1 subset compared; table, data, figure"
+pass "make tiny (experiments/studies/tiny.yaml): the reference, 2 settings run and 1 subset compared; table, data, figure"
 
 # --- 3. nothing twice; a changed setting reruns alone --------------------------------------------
-mk -j2 accuracy > "$work/a2.log" 2>&1 || { cat "$work/a2.log"; fail "make accuracy again"; }
-! grep -qE '^(packing|normal|tangential):' "$work/a2.log" || { cat "$work/a2.log"; fail "a second make accuracy recomputed something"; }
-sed -i 's/stops-1: {set: {relaxation.stops: 1}}/stops-1: {set: {relaxation.stops: 2}}/' "$work/study.yaml"
-mk -j2 accuracy > "$work/a3.log" 2>&1 || { cat "$work/a3.log"; fail "make accuracy after a change"; }
+mk -j2 tiny > "$work/a2.log" 2>&1 || { cat "$work/a2.log"; fail "make tiny again"; }
+! grep -qE '^(packing|normal|tangential):' "$work/a2.log" || { cat "$work/a2.log"; fail "a second make tiny recomputed something"; }
+sed -i 's/stops-1: {set: {relaxation.stops: 1}}/stops-1: {set: {relaxation.stops: 2}}/' experiments/studies/tiny.yaml
+mk -j2 tiny > "$work/a3.log" 2>&1 || { cat "$work/a3.log"; fail "make tiny after a change"; }
 grep -qE '^normal: stops-1 ' "$work/a3.log" || { cat "$work/a3.log"; fail "the changed setting was not rerun"; }
 ! grep -qE '^(normal|tangential|packing): (reference|base) ' "$work/a3.log" || { cat "$work/a3.log"; fail "an unchanged setting was rerun"; }
-pass "a second make accuracy recomputes nothing; a changed setting reruns alone"
+pass "a second make tiny recomputes nothing; a changed setting reruns alone"
 
-# --- 4. one profile against another (softpack-accuracy check, make fast-check's comparison) -----
+# --- 4. one profile against another (softpack-study check, make fast-check's comparison) -----
 "$acc" check --data data/accuracy --reference data/accuracy/profiles/base.yaml --candidate data/accuracy/profiles/stops-1.yaml \
-  --Fn-at 0.5 0.7 --kt-at 0.6 0.7 --out-dir "$work/check" > "$work/check.log" 2>&1 || { cat "$work/check.log"; fail "softpack-accuracy check"; }
+  --Fn-at 0.5 0.7 --kt-at 0.6 0.7 --out-dir "$work/check" > "$work/check.log" 2>&1 || { cat "$work/check.log"; fail "softpack-study check"; }
 grep -q '^# The stops-1 profile against the base profile on seeds 101, 102' "$work/check/table.md" || fail "check table: $(head -3 "$work/check/table.md")"
 /usr/bin/python3 - "$work/check/check.json" <<'PY' || fail "check.json"
 import json, sys
@@ -108,15 +114,15 @@ set +e
 code=$?
 set -e
 [ $code -eq 2 ] && grep -q "different seeds" "$work/err" || fail "profiles of different seeds: exit $code, $(cat "$work/err")"
-pass "softpack-accuracy check: every quantity with both standard errors and the costs; different seeds refused"
+pass "softpack-study check: every quantity with both standard errors and the costs; different seeds refused"
 
-# --- 5. the calibration report on the same runs (make calibrate-report, softpack-accuracy calibrate) ---
-cp "$work/study.yaml" "$work/calibrate.yaml"
-sed -i 's/^compare:.*/compare: {Fn_delta_n: [0.5, 0.7], kt_delta_n: [0.6, 0.7]}\ncalibrate: {b_range: {soft-solid: [0.4, 0.8]}}\ncommon: {fit: {weighting: unweighted, onset_force: 1.0e-3}}/' \
-  "$work/calibrate.yaml"
+# --- 5. the calibration report on the same runs (make study-report STUDY=FILE, another kind) ---
+sed -e 's/^study: .*/study: calibrate-test/' -e 's/^report: .*/report: calibration/' \
+  -e 's/^  - {script: figures.*/  - {script: figures\/calibration_onset.gp, data: onset.dat, name: onset}/' \
+  -e 's/^compare:.*/compare: {Fn_delta_n: [0.5, 0.7], kt_delta_n: [0.6, 0.7]}\ncalibrate: {b_range: {soft-solid: [0.4, 0.8]}}\ncommon: {fit: {weighting: unweighted, onset_force: 1.0e-3}}/' \
+  experiments/studies/tiny.yaml > "$work/calibrate-test.yaml"
 # The same profiles as the accuracy study's plus a fit section: only the averages would differ, not the runs.
-mk CALIBRATE_STUDY="$work/calibrate.yaml" CALIBRATE_DIR=data/accuracy calibrate-report > "$work/c.log" 2>&1 ||
-  { cat "$work/c.log"; fail "make calibrate-report"; }
+mk study-report STUDY="$work/calibrate-test.yaml" > "$work/c.log" 2>&1 || { cat "$work/c.log"; fail "make study-report (calibration)"; }
 cal=data/accuracy/report
 for f in table.md onset.dat calibration.json onset.pdf onset.png; do [[ -s $cal/$f ]] || fail "$cal/$f is missing or empty"; done
 grep -q '^| reference | (the base, experiments/quick.yaml) | 3 |' $cal/table.md || fail "calibration table: $(head -20 $cal/table.md)"
@@ -135,4 +141,4 @@ assert ref["error"][q.index("soft-solid Fn(0.7)")] > 0, ref
 # One seed has no seed-to-seed error.
 assert all(e is None for e in s["base-1-seed"]["error"]), s["base-1-seed"]["error"]
 PY
-pass "make calibrate-report: every setting's laws and packings with their errors, table, data, figure"
+pass "make study-report, a calibration study: every setting's laws and packings with their errors, table, data, figure"

@@ -1,9 +1,11 @@
-#include "report/accuracy_study.hpp"
+#include "report/study_file.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <set>
+#include <utility>
 
 #include "analysis/fit_options.hpp"
 #include "profile/profile.hpp"
@@ -11,6 +13,7 @@
 #include "core/error.hpp"
 #include "measure/settings.hpp"
 #include "packing/packing_profile.hpp"
+#include "report/report_kinds.hpp"
 
 namespace softpack {
 namespace {
@@ -81,19 +84,58 @@ bool settings_named(const ConfigNode& root, const std::string& name) {
 
 }  // namespace
 
-const StudySetting& AccuracyStudy::setting(const std::string& name) const {
+const StudySetting& Study::setting(const std::string& name) const {
   if (name == reference.name) return reference;
   for (const auto& s : settings)
     if (s.name == name) return s;
   throw InputError(fmt::format("{}: no setting '{}'", path, name));
 }
 
-AccuracyStudy read_accuracy_study(const std::string& path) {
+namespace {
+
+// The study's plan: its name, report kind, stages, folder and figures.
+void read_plan(const ConfigNode& root, Study& st) {
+  constexpr const char* kNameChars = "abcdefghijklmnopqrstuvwxyz0123456789.-";
+  st.name = root.at("study").string();
+  if (st.name.empty() || st.name.find_first_not_of(kNameChars) != std::string::npos)
+    root.at("study").fail("a study's name is its make goal's and folder's: lowercase letters, digits, '.', '-'");
+  if (const std::string stem = std::filesystem::path(st.path).stem().string(); st.name != stem)
+    root.at("study").fail(fmt::format("the study's name is its file's ({}.yaml: `make {}`), not '{}'", stem, stem, st.name));
+  st.report = root.at("report").choice(report_kind_names());
+  st.stages = {"tangential"};
+  if (auto stages = root.find("stages")) {
+    st.stages.clear();
+    for (const ConfigNode& s : stages->items()) st.stages.push_back(s.choice({"packings", "normal", "tangential", "sliding"}));
+    if (st.stages.empty()) stages->fail("allowed: a list of the profile's goals (packings, normal, tangential, sliding), not empty");
+  }
+  st.out = "studies/" + st.name;
+  if (auto out = root.find("out")) {
+    st.out = out->string();
+    if (st.out.empty() || st.out.front() == '/' || st.out.find("..") != std::string::npos ||
+        st.out.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789.-/_") != std::string::npos)
+      out->fail("allowed: a folder under DATA (lowercase letters, digits, '.', '-', '_', '/'; not absolute, no '..')");
+  }
+  if (auto figures = root.find("figures"))
+    for (const ConfigNode& f : figures->items()) {
+      f.allow_only({"script", "data", "name"});
+      StudyFigure fig{f.at("script").string(), f.at("data").string(), f.at("name").string()};
+      if (!std::filesystem::is_regular_file(fig.script)) f.at("script").fail(fmt::format("{}: no such gnuplot script", fig.script));
+      for (const auto& [key, v] : {std::pair{"data", fig.data}, std::pair{"name", fig.name}})
+        if (v.empty() || v.find_first_not_of(kNameChars) != std::string::npos)
+          f.at(key).fail("allowed: a file name in the report's folder (lowercase letters, digits, '.', '-')");
+      st.figures.push_back(fig);
+    }
+}
+
+}  // namespace
+
+Study read_study(const std::string& path) {
   const ConfigNode root = ConfigNode::load_file(path);
-  root.allow_only({"study", "base", "seeds", "common", "compare", "calibrate", "radius", "reference", "settings"});
-  AccuracyStudy st;
+  root.allow_only({"study", "report", "stages", "out", "figures", "base", "seeds", "common", "compare", "calibrate", "radius",
+                   "reference", "settings"});
+  Study st;
   st.path = path;
-  root.at("study").string();
+  read_plan(root, st);
   st.base = root.at("base").string();
   try {
     st.base_yaml = YAML::Clone(ConfigNode::load_file(st.base).yaml());  // with the project's checks of a YAML file
@@ -184,7 +226,7 @@ AccuracyStudy read_accuracy_study(const std::string& path) {
   return st;
 }
 
-std::string setting_changes(const AccuracyStudy& st, const StudySetting& s) {
+std::string setting_changes(const Study& st, const StudySetting& s) {
   if (!s.runs()) return fmt::format("{} on {} of its seeds", s.of, s.seeds.size());
   if (s.set.empty()) return s.name == "reference" ? "the reference" : fmt::format("(the base, {})", st.base);
   std::string t;
@@ -196,7 +238,7 @@ std::string setting_changes(const AccuracyStudy& st, const StudySetting& s) {
   return t;
 }
 
-std::string setting_profile_text(const AccuracyStudy& study, const StudySetting& setting) {
+std::string setting_profile_text(const Study& study, const StudySetting& setting) {
   YAML::Node base = YAML::Clone(study.base_yaml);
   for (const auto& [key, value] : study.common) replace(base, key, value, fmt::format("{}: common", study.path));
   for (const auto& [key, value] : setting.set)
@@ -213,7 +255,7 @@ std::string setting_profile_text(const AccuracyStudy& study, const StudySetting&
   for (const auto& [key, value] : study.common) keys += " " + key;
   if (!setting.set.empty()) keys += " (common), then";
   for (const auto& [key, value] : setting.set) keys += " " + key;
-  return fmt::format("# Generated by softpack-accuracy from {} (setting '{}'): {} with{} replaced.\n", study.path, setting.name,
+  return fmt::format("# Generated by softpack-study from {} (setting '{}'): {} with{} replaced.\n", study.path, setting.name,
                      study.base, keys.empty() ? " nothing" : keys) +
          out.c_str() + "\n";
 }

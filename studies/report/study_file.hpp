@@ -1,8 +1,10 @@
-// The fidelity study's file (experiments/accuracy-cost.yaml, docs/accuracy.md): a base profile,
-// the study's seeds, the reference settings and the settings to compare, each a set of keys of
-// the base replaced (after the study's `common` keys). Every setting becomes a profile of its own, run by the profile DAG
-// (workflow/accuracy.mk); a setting `of` another one with fewer `seeds` is that one's results on
-// those seeds (no run).
+// A study's file (experiments/studies/<name>.yaml, docs/studies.md): a base profile, the study's
+// seeds, the reference settings and the settings to compare, each a set of keys of the base
+// replaced (after the study's `common` keys); the profile goals each setting runs (`stages`), its
+// report's kind (`report`, report/report_kinds.hpp), the figures drawn from that report's data
+// and the folder it writes under DATA (`out`). Every setting becomes a profile of its own, run by
+// the profile DAG (workflow/studies.mk); a setting `of` another one with fewer `seeds` is that
+// one's results on those seeds (no run).
 #pragma once
 #include <cstdint>
 #include <map>
@@ -22,8 +24,19 @@ struct StudySetting {
   bool runs() const { return of.empty(); }
 };
 
-struct AccuracyStudy {
+/// A figure of the study's report: gnuplot `script` drawn from the report's `data` file into
+/// `name`.pdf and `name`.png (the script reads the variables `data` and `out`).
+struct StudyFigure {
+  std::string script, data, name;
+};
+
+struct Study {
   std::string path, base;
+  std::string name;                 ///< `study`
+  std::string report;               ///< the report's kind (report/report_kinds.hpp)
+  std::vector<std::string> stages;  ///< the profile goals every setting runs (default: tangential)
+  std::string out;                  ///< its folder under DATA (default: studies/<name>)
+  std::vector<StudyFigure> figures;
   YAML::Node base_yaml;  ///< the base profile as read (ConfigNode's checks)
   std::vector<std::uint64_t> seeds;
   std::vector<std::pair<std::string, YAML::Node>> common;  ///< replaced in every setting first
@@ -45,14 +58,14 @@ struct AccuracyStudy {
 /// settings' seeds a subset of their source's, `of` naming a running setting, and every
 /// setting's profile valid (it is generated and read as the stages read it). InputError names
 /// the file, line and key.
-AccuracyStudy read_accuracy_study(const std::string& path);
+Study read_study(const std::string& path);
 
 /// What a setting changes, for the reports: "key = value, ..." ("(the base, FILE)" for none;
 /// "S on n of its seeds" for a setting `of` S).
-std::string setting_changes(const AccuracyStudy& study, const StudySetting& setting);
+std::string setting_changes(const Study& study, const StudySetting& setting);
 
 /// The profile of a running setting (or the reference): the base with the keys of `set`
 /// replaced, its `profile` name and `seeds`; a header says where it comes from.
-std::string setting_profile_text(const AccuracyStudy& study, const StudySetting& setting);
+std::string setting_profile_text(const Study& study, const StudySetting& setting);
 
 }  // namespace softpack

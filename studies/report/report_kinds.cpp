@@ -1,0 +1,49 @@
+#include "report/report_kinds.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "core/error.hpp"
+#include "core/version.hpp"
+#include "formats/law_file.hpp"
+#include "report/accuracy_report.hpp"
+#include "report/calibration_report.hpp"
+#include "report/radius_report.hpp"
+
+namespace softpack {
+
+const std::vector<ReportKind>& report_kinds() {
+  static const std::vector<ReportKind> kinds{
+      {"accuracy", "Accuracy against cost", "table.md, pareto.dat, report.json (report/accuracy_report.hpp)",
+       [](const Study& study, const std::string& data, const std::string& out, const std::string& title) {
+         return write_accuracy_report(accuracy_report(study, data), out, title);
+       }},
+      {"calibration", "Calibration", "table.md, onset.dat, sensitivity.dat, calibration.json (report/calibration_report.hpp)",
+       [](const Study& study, const std::string& data, const std::string& out, const std::string& title) {
+         return write_calibration_report(calibration_report(study, data), out, title);
+       }},
+      {"radius", "Radius and friction",
+       "table.md, radius.json, scaling.dat, friction.dat and the law file laws.json (report/radius_report.hpp)",
+       [](const Study& study, const std::string& data, const std::string& out, const std::string& title) {
+         const RadiusReport r = radius_report(study, data);
+         const std::string table = write_radius_report(r, study, out, title);
+         write_law_file(out + "/laws.json", radius_law_file(r, study, code_version()));
+         return table;
+       }},
+  };
+  return kinds;
+}
+
+std::vector<std::string> report_kind_names() {
+  std::vector<std::string> names;
+  for (const ReportKind& k : report_kinds()) names.push_back(k.name);
+  return names;
+}
+
+const ReportKind& report_kind(const std::string& name) {
+  for (const ReportKind& k : report_kinds())
+    if (k.name == name) return k;
+  throw InputError(fmt::format("no report kind '{}'; allowed: {}", name, fmt::join(report_kind_names(), ", ")));
+}
+
+}  // namespace softpack
