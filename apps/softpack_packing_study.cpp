@@ -18,6 +18,7 @@
 
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
+#include "analysis/seed_statistics.hpp"
 #include "profile/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "core/error.hpp"
@@ -58,12 +59,8 @@ Row measure(const PackingParameters& p, const std::vector<std::uint64_t>& seeds,
                            pk.radii.size(), s.solid_fraction, s.exponent.b, sec);
   }
   for (int q = 0; q < 5; ++q) {
-    const double n = static_cast<double>(samples[q].size());
-    double m = 0.0, v2 = 0.0;
-    for (double x : samples[q]) m += x / n;
-    for (double x : samples[q]) v2 += (x - m) * (x - m);
-    row.mean[q] = m;
-    row.error[q] = n > 1 ? std::sqrt(v2 / (n - 1) / n) : 0.0;
+    const MeanError m = mean_error(samples[q]);
+    row.mean[q] = m.mean, row.error[q] = m.error;
   }
   return row;
 }

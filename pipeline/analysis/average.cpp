@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -63,19 +62,6 @@ void check_same_seeds(const std::vector<SeedFile>& normal, const std::vector<See
     throw InputError(fmt::format("--tangential: results of seeds {}, --normal: of seeds {}; allowed: the same seeds for both "
                                  "(one scene's laws over the same soft-particles)",
                                  fmt::join(t, ", "), fmt::join(n, ", ")));
-}
-
-MeanError mean_error(const std::vector<double>& v) {
-  MeanError m;
-  const double n = static_cast<double>(v.size());
-  if (v.empty()) return m;
-  for (double x : v) m.mean += x / n;
-  if (v.size() > 1) {
-    double ss = 0.0;
-    for (double x : v) ss += (x - m.mean) * (x - m.mean);
-    m.error = std::sqrt(ss / (n - 1.0) / n);
-  }
-  return m;
 }
 
 namespace {

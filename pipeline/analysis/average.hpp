@@ -1,12 +1,15 @@
 // Averages over seeds of the sweep results of one scene (paper §5: "averaging over seven
-// different simulations"): mean and standard error of the mean at every Delta_n (normal) and
-// every (Delta_n, alpha) (tangential), and the tangential spring constant kt: the slope of the
-// parallel force against ht over the alpha grid, one per seed, then averaged. On the results
-// in memory (formats/sweep_file.hpp reads them); the average file: formats/average_file.hpp.
+// different simulations"): mean and standard error of the mean (seed_statistics.hpp) at every
+// Delta_n (normal) and every (Delta_n, alpha) (tangential), and the tangential spring constant
+// kt: the slope of the parallel force against ht over the alpha grid, one per seed, then
+// averaged. On the results in memory (formats/sweep_file.hpp reads them); the average file:
+// formats/average_file.hpp.
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "analysis/seed_statistics.hpp"  // MeanError, mean_error
 
 namespace softpack {
 
@@ -39,12 +42,6 @@ void check_one_configuration(const std::vector<SeedFile>& files, const std::stri
 /// InputError unless the normal and the tangential results are of the same seeds: the two
 /// laws of one table would otherwise describe different soft-particles.
 void check_same_seeds(const std::vector<SeedFile>& normal, const std::vector<SeedFile>& tangential);
-
-/// Mean and standard error of the mean (0 for a single value).
-struct MeanError {
-  double mean = 0.0, error = 0.0;
-};
-MeanError mean_error(const std::vector<double>& values);
 
 struct NormalAverage {
   std::vector<double> delta_n;

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "analysis/average.hpp"
+#include "analysis/seed_statistics.hpp"
 #include "core/error.hpp"
 
 namespace softpack::fit {
@@ -52,11 +52,7 @@ Jackknife jackknife(const FitOptions& options, const SceneCurves& curves) {
       return j;
     }
   }
-  Eigen::Vector4d mean = Eigen::Vector4d::Zero();
-  for (const auto& t : theta) mean += t / static_cast<double>(n);
-  Eigen::Matrix4d cov = Eigen::Matrix4d::Zero();
-  for (const auto& t : theta) cov += (t - mean) * (t - mean).transpose();
-  cov *= static_cast<double>(n - 1) / static_cast<double>(n);
+  const Eigen::Matrix4d cov = jackknife_covariance(theta);
   j.done = true;
   j.samples = n;
   j.a = std::sqrt(cov(0, 0)), j.b = std::sqrt(cov(1, 1)), j.c = std::sqrt(cov(2, 2)), j.delta = std::sqrt(cov(3, 3));

@@ -44,8 +44,8 @@ struct SceneCurves {
 };
 
 /// Leave-one-seed-out: each coefficient's jackknife standard error, sqrt((n−1)/n Σ (θ_j − θ̄)²),
-/// and the covariance of (a, b, c) likewise. Not done (reason) without per-seed values, with
-/// fewer than 3 seeds, or when a leave-one-out fit fails.
+/// and the covariance of (a, b, c) likewise (seed_statistics.hpp: jackknife_covariance). Not done
+/// (reason) without per-seed values, with fewer than 3 seeds, or when a leave-one-out fit fails.
 struct Jackknife {
   bool done = false;
   std::string reason;

@@ -3,8 +3,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <limits>
 #include <sstream>
+
+#include "core/types.hpp"
 
 namespace softpack::table {
 namespace {
@@ -89,7 +90,7 @@ std::string published_text(const Column& c, const std::string& key) {
 struct Cells {
   std::optional<Estimate> ours;
   std::string published;
-  double deviation = std::numeric_limits<double>::quiet_NaN();
+  double deviation = kNaN;
 };
 
 Cells cells(const Column& c, const std::string& key) {
@@ -115,7 +116,7 @@ std::vector<Row> table2_rows() {
 }
 
 double relative_deviation_percent(double ours, double published) {
-  if (published == 0.0) return std::numeric_limits<double>::quiet_NaN();
+  if (published == 0.0) return kNaN;
   return (ours - published) / std::abs(published) * 100.0;
 }
 

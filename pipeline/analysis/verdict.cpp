@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "analysis/seed_statistics.hpp"
 #include "core/error.hpp"
 
 namespace softpack::verdict {
@@ -97,14 +98,11 @@ ZeroMeanTest zero_mean_test(const std::vector<std::vector<double>>& rows) {
   double smallest = 1.0;
   t.largest_t = 0.0;
   for (const auto& row : rows) {
-    const double n = static_cast<double>(row.size());
     if (row.size() < 2) throw InputError("a zero-mean test needs at least two seeds per point");
-    double m = 0.0, v = 0.0;
-    for (double x : row) m += x / n;
-    for (double x : row) v += (x - m) * (x - m);
-    const double se = std::sqrt(v / (n - 1.0) / n);
+    const MeanError m = mean_error(row);
+    const double se = m.error;
     if (!(se > 0.0)) throw InputError("a zero-mean test needs seeds that differ at every point");
-    const double tt = m / se;
+    const double tt = m.mean / se;
     t.largest_t = std::max(t.largest_t, std::abs(tt));
     smallest = std::min(smallest, student_t_two_sided_p(tt, static_cast<int>(row.size()) - 1));
     ++t.points;

@@ -5,12 +5,12 @@
 
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "formats/json_input.hpp"
 #include "io/atomic_file.hpp"
 
@@ -73,7 +73,7 @@ std::map<std::string, table::Estimate> estimates(const nlohmann::json& j, const 
     const auto v = j.find(key);
     if (v == j.end() || !v->is_number())
       throw InputError(fmt::format("{}.{}: {}; allowed: a number", where, key, v == j.end() ? "missing" : "not a number"));
-    table::Estimate e{v->get<double>(), std::numeric_limits<double>::quiet_NaN()};
+    table::Estimate e{v->get<double>(), kNaN};
     const auto err = j.find(key + kError);
     if (err != j.end() && err->is_number()) e.error = err->get<double>();
     else if (err != j.end() && !err->is_null())
@@ -114,7 +114,7 @@ json options_json(const fit::FitOptions& o) {
 double number_at(const nlohmann::json& j, const char* key, const std::string& where) {
   const auto v = j.find(key);
   if (v == j.end()) throw InputError(fmt::format("{}.{}: missing", where, key));
-  if (v->is_null()) return std::numeric_limits<double>::quiet_NaN();
+  if (v->is_null()) return kNaN;
   if (!v->is_number()) throw InputError(fmt::format("{}.{}: not a number; allowed: a number or null", where, key));
   return v->get<double>();
 }
@@ -146,7 +146,7 @@ fit::Jackknife read_jackknife(const nlohmann::json& j, const std::string& where)
     if (!row.is_array() || row.size() != 3) throw InputError(fmt::format("{}.covariance: expected 3 rows of 3", where));
     for (int c = 0; c < 3; ++c) {
       const auto& v = row[static_cast<std::size_t>(c)];
-      out.covariance(r, c) = v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+      out.covariance(r, c) = v.is_number() ? v.get<double>() : kNaN;
     }
   }
   return out;

@@ -28,13 +28,13 @@
 // 0 < R_min <= R_max, a checked_ratio <= 0.
 #pragma once
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "contact/soft_particle_law.hpp"
+#include "core/types.hpp"
 
 namespace softpack {
 
@@ -43,16 +43,16 @@ inline constexpr int kLawFileVersion = 1;
 
 /// A measured value and its standard error (NaN: not known).
 struct LawValue {
-  double value = std::numeric_limits<double>::quiet_NaN();
-  double error = std::numeric_limits<double>::quiet_NaN();  ///< NaN = not known
+  double value = kNaN;
+  double error = kNaN;  ///< NaN = not known
 };
 
 /// Eq. 7 (normal: Fn = a dn^b + c for dn >= delta, 0 below, c = -a delta^b) or Eq. 8
 /// (tangential stiffness kt, the same form), with dn = hn / R.
 struct LawFit {
   LawValue a, b, c, delta;
-  double delta_n_min = std::numeric_limits<double>::quiet_NaN();  ///< the delta_n range the law
-  double delta_n_max = std::numeric_limits<double>::quiet_NaN();  ///< was measured on
+  double delta_n_min = kNaN;  ///< the delta_n range the law
+  double delta_n_max = kNaN;  ///< was measured on
 };
 
 /// The soft-particle friction coefficient mu_soft = Ft/Fn while the contact slides, per delta_n
@@ -65,8 +65,8 @@ struct FrictionLaw {
 /// X(R) = X(R0) (R/R0)^exponent at fixed delta_n.
 struct RadiusScaling {
   LawValue exponent;
-  double R_min = std::numeric_limits<double>::quiet_NaN();  ///< [m], the radii it was measured at
-  double R_max = std::numeric_limits<double>::quiet_NaN();  ///< [m]
+  double R_min = kNaN;  ///< [m], the radii it was measured at
+  double R_max = kNaN;  ///< [m]
   std::string variant;  ///< "fixed" (same grains, more of them) or "self-similar"
 };
 
@@ -82,7 +82,7 @@ struct SceneLaws {
 struct MixingRule {
   /// The only allowed value: the soft-soft law at R_eq = 2 R1 R2 / (R1 + R2).
   std::string rule = "reduced-radius";
-  double checked_ratio = std::numeric_limits<double>::quiet_NaN();  ///< R2/R1 at which it was checked
+  double checked_ratio = kNaN;  ///< R2/R1 at which it was checked
   LawValue deviation;  ///< mean relative deviation measured/predicted of Fn over the checked points
 };
 
@@ -94,7 +94,7 @@ struct LawFileProvenance {
 
 struct LawFile {
   int version = kLawFileVersion;
-  double reference_radius = std::numeric_limits<double>::quiet_NaN();  ///< R0 [m]: the shell radius a, c were measured at
+  double reference_radius = kNaN;  ///< R0 [m]: the shell radius a, c were measured at
   std::map<std::string, SceneLaws> scenes;  ///< keys "soft-solid", "soft-soft" (at least one)
   std::optional<MixingRule> mixing;
   LawFileProvenance provenance;

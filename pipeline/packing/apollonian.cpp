@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "core/types.hpp"
 
 namespace softpack {
 namespace {
@@ -69,7 +70,7 @@ void validate(const ApollonianOptions& o) {
 }
 
 SizeExponentFit fit_size_exponent(const std::vector<ApollonianCircle>& circles, double r_lo, double r_hi) {
-  SizeExponentFit fit{std::numeric_limits<double>::quiet_NaN(), r_lo, r_hi, 0};
+  SizeExponentFit fit{kNaN, r_lo, r_hi, 0};
   std::vector<double> radii;
   for (const auto& c : circles)
     if (c.generation >= 0) radii.push_back(c.r);

@@ -8,7 +8,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "analysis/seed_statistics.hpp"
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
 
@@ -16,17 +18,7 @@ namespace softpack {
 namespace {
 
 // Mean and standard error over seeds; NaN where not known (no seed, or one for the error).
-MeanError seeds_mean_error(const std::vector<double>& v) {
-  MeanError m;
-  if (v.empty()) return {std::nan(""), std::nan("")};
-  for (double x : v) m.mean += x;
-  m.mean /= static_cast<double>(v.size());
-  if (v.size() < 2) return {m.mean, std::nan("")};
-  double ss = 0.0;
-  for (double x : v) ss += (x - m.mean) * (x - m.mean);
-  m.error = std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
-  return m;
-}
+MeanError seeds_mean_error(const std::vector<double>& v) { return mean_error(v, FewSeeds::not_known); }
 
 // The value of column `get` of a run's rows of `phase` at `strain`, linear between rows; a row
 // within `tolerance` of it (a phase's last row, a step short of the grid) stands for it; NaN
@@ -45,7 +37,7 @@ double at_strain(const CoarseResult& r, int phase, double strain, Get get, doubl
       if (std::abs(row.shear - strain) <= tolerance) return get(row);
       prev = &row;
     }
-    return std::nan("");
+    return kNaN;
   }
   const CurveRow* prev = nullptr;
   for (const CurveRow& row : r.rows) {
@@ -65,7 +57,7 @@ double at_strain(const CoarseResult& r, int phase, double strain, Get get, doubl
   }
   for (const CurveRow& row : r.rows)
     if (row.phase == phase && std::abs(row.strain - strain) <= tolerance) return get(row);
-  return std::nan("");
+  return kNaN;
 }
 
 }  // namespace

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/average.hpp"  // MeanError
+#include "analysis/seed_statistics.hpp"  // MeanError
 #include "coarse/result_file.hpp"
 
 namespace softpack {

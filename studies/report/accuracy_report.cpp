@@ -12,6 +12,7 @@
 
 #include "analysis/average.hpp"
 #include "analysis/power_fit.hpp"
+#include "analysis/seed_statistics.hpp"
 #include "core/error.hpp"
 #include "core/types.hpp"
 #include "formats/sweep_file.hpp"

@@ -9,6 +9,7 @@
 #include "analysis/average.hpp"
 #include "analysis/fit_options.hpp"
 #include "analysis/power_fit.hpp"
+#include "analysis/seed_statistics.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
 #include "core/types.hpp"

@@ -1,12 +1,10 @@
 // The results files of a study's runs (workflow/studies.mk: <dir>/<setting>/{packings, normal,
 // tangential}/...), each read once: the reports (accuracy, calibration) come back to the same
-// files many times for their jackknife and paired comparisons.
+// files many times for their jackknife (analysis/seed_statistics.hpp) and paired comparisons.
 #pragma once
 #include <fmt/format.h>
 
-#include <cmath>
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -29,18 +27,6 @@ inline std::string sweep_path(const std::string& dir, const std::string& setting
 
 inline std::string packing_path(const std::string& dir, const std::string& setting, std::uint64_t seed) {
   return fmt::format("{}/{}/packings/seed-{}.h5", dir, setting, seed);
-}
-
-/// The leave-one-seed-out (jackknife) standard error from the values left by each seed in turn:
-/// √((n − 1)/n · Σ (θ_i − θ̄)²); NaN for fewer than two.
-inline double jackknife_error(const std::vector<double>& leave_one_out) {
-  const double n = static_cast<double>(leave_one_out.size());
-  if (leave_one_out.size() < 2) return std::numeric_limits<double>::quiet_NaN();
-  double m = 0.0, s2 = 0.0;
-  for (double v : leave_one_out) m += v;
-  m /= n;
-  for (double v : leave_one_out) s2 += (v - m) * (v - m);
-  return std::sqrt(s2 * (n - 1.0) / n);
 }
 
 /// The files of a running setting's measurement on `seeds` (both scenes), for its cost and completeness.
