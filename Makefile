@@ -54,7 +54,7 @@ STUDY_FILES := $(sort $(wildcard experiments/studies/*.yaml))
 STUDY_NAMES := $(basename $(notdir $(STUDY_FILES)))
 # The goals that need the tools and a profile (the pipeline's and the studies').
 PIPELINE_GOALS := all tables figures paper archive packings normal tangential sliding sweeps averages fits figure1 figure2 \
-  study-packing density-rule study-relaxation study study-report $(STUDY_NAMES) $(STUDY_NAMES:%=%-report) fast-check timing \
+  study-packing density-rule study study-report $(STUDY_NAMES) $(STUDY_NAMES:%=%-report) fast-check timing \
   coarse-grain coarse-grain-runs coarse-grain-report coarse-grain-multi-contact
 # The goals that write nothing under DATA; every other goal (a file named on the command line too)
 # writes there and takes its lock.
@@ -142,8 +142,10 @@ bench: build  ## benchmarks: engine throughput, contact detection, LAMMPS side b
 	  || { echo "build: the benchmarks FAILED; the end of $(BUILD)/build.log:"; tail -40 $(BUILD)/build.log; exit 1; }
 	bench/run_benchmarks.sh $(BUILD)
 
-clean:  ## remove the builds and the profile's generated data and figures (keeps data/archive)
-	rm -rf $(BUILD) $(BUILD_SANITIZE) $(FUZZ_BUILD) $(DATA)/scenes $(DATA)/$(PROFILE) $(DATA)/studies
+clean:  ## remove the builds and the profile's generated data and figures (keeps data/archive and the studies' committed records)
+	rm -rf $(BUILD) $(BUILD_SANITIZE) $(FUZZ_BUILD) $(DATA)/scenes $(DATA)/$(PROFILE)
+	@if git ls-files --error-unmatch $(DATA)/studies > /dev/null 2>&1; then git clean -fdxq -- $(DATA)/studies; \
+	  else rm -rf $(DATA)/studies; fi
 
 # make verify needs no build: every archive under data/archive (or ARCHIVES=dir...) against its
 # MANIFEST.sha256, and each manifest against the SHA-256 its dataset.bib cites.

@@ -57,12 +57,3 @@ tangential: $(foreach scene,$(SCENES),$(call TANGENTIAL_RESULTS,$(scene)))  ## t
 SLIDING_RESULTS = $(foreach seed,$(SEEDS),$(SWEEP_DIR)/sliding/$(1)-seed-$(seed).h5)
 sliding: $(foreach scene,$(SCENES),$(call SLIDING_RESULTS,$(scene)))  ## the sliding measurement (a profile with a sliding section)
 sweeps: normal tangential  ## both sweeps
-
-# How long to relax: the soft-soft normal sweeps again with 30 stops instead of six, compared
-# with the archived results (docs/measurement.md; about 30 minutes on one core).
-.PHONY: study-relaxation
-study-relaxation: | $(TOOLS)  ## soft-soft normal law with 30 relaxation stops against the archived 6 (paper profile)
-	@$(MAKE) --no-print-directory packings PROFILE=paper
-	@mkdir -p $(DATA)/studies/relaxation-stops
-	DATA=$(DATA) workflow/studies/relaxation_stops.sh 30 $(DATA)/studies/relaxation-stops > $(DATA)/studies/relaxation-stops/table.md.tmp.$$$$ \
-	  && mv $(DATA)/studies/relaxation-stops/table.md.tmp.$$$$ $(DATA)/studies/relaxation-stops/table.md && cat $(DATA)/studies/relaxation-stops/table.md

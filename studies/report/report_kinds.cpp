@@ -9,6 +9,7 @@
 #include "report/accuracy_report.hpp"
 #include "report/calibration_report.hpp"
 #include "report/radius_report.hpp"
+#include "report/response_report.hpp"
 
 namespace softpack {
 
@@ -30,6 +31,7 @@ const std::vector<ReportKind>& report_kinds() {
          write_law_file(out + "/laws.json", radius_law_file(r, study, code_version()));
          return table;
        }},
+      {"response", "Response of the normal law", "table.md, response.dat (report/response_report.hpp)", write_response_report},
   };
   return kinds;
 }

@@ -68,4 +68,8 @@ std::string setting_changes(const Study& study, const StudySetting& setting);
 /// replaced, its `profile` name and `seeds`; a header says where it comes from.
 std::string setting_profile_text(const Study& study, const StudySetting& setting);
 
+/// The number at the dotted `key` of a setting's profile (the base's, where nothing sets it);
+/// InputError naming the study, the setting and the key.
+double setting_number(const Study& study, const StudySetting& setting, const std::string& key);
+
 }  // namespace softpack

@@ -154,7 +154,7 @@ void keep_worst(Worst& w, double v, const Sweep& s, std::size_t k) {
 // soft-soft fails throughout: counting only points above 1% of the sweep's largest force, still
 // 13 of 20 normal (worst force ratio 0.18) and 13 of 50 tangential (0.49). Not an engine bug
 // (nothing is NaN or blows up; EveryFileIsCompleteAndFinite passes) but the paper's protocol,
-// which has no convergence criterion. Measured (make study-relaxation, docs/measurement.md "How
+// which has no convergence criterion. Measured (release 0.5.0's make study-relaxation, docs/measurement.md "How
 // long to relax"): 30 stops instead of six bring Delta_n = 0.5 to rest but not the onset, whose
 // barely overlapped Hertz contacts relax ever more slowly; they change single seeds by factors of
 // 0.6 to 3.9 (from one state of rest to another: the largest unbalanced grain force is below

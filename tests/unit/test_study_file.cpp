@@ -78,5 +78,34 @@ TEST_F(StudyFile, AMistakeInThePlanIsRefusedNamingTheKey) {
   EXPECT_THROW(report_kind("sizes"), InputError);
 }
 
+// The response kind (report/response_report.hpp) reads the value of the one key its settings set
+// from each setting's profile, orders them by it and lists what has not run; two keys are refused.
+TEST_F(StudyFile, AResponseStudyVariesOneKeyAndListsItsSettingsByItsValue) {
+  const std::string body =
+      "study: speeds\nreport: response\nstages: [normal]\nbase: experiments/quick.yaml\nseeds: [101, 102]\n"
+      "compare: {Fn_delta_n: [0.5]}\nreference: {set: {normal.speed: 0.01}}\n";
+  const std::string path = (dir_ / "speeds.yaml").string();
+  std::ofstream(path) << body << "settings:\n  fast: {set: {normal.speed: 0.04}}\n  slow: {set: {normal.speed: 0.0025}}\n";
+  const std::string table = report_kind("response").write(read_study(path), (dir_ / "runs").string(), dir_.string(), "T");
+  const auto slow = table.find("| slow (not run in full) | 0.0025 |"), reference = table.find("| reference (not run in full) | 0.01 |"),
+             fast = table.find("| fast (not run in full) | 0.04 |");
+  ASSERT_NE(slow, std::string::npos) << table;
+  ASSERT_NE(reference, std::string::npos) << table;
+  ASSERT_NE(fast, std::string::npos) << table;
+  EXPECT_LT(slow, reference);
+  EXPECT_LT(reference, fast);
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "response.dat"));
+
+  std::ofstream(path) << body << "settings:\n  stiff: {set: {material.E: 1.0e6}}\n";
+  try {
+    report_kind("response").write(read_study(path), (dir_ / "runs").string(), dir_.string(), "T");
+    ADD_FAILURE() << "a response study of two keys was not refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("varies one key of the profile; its settings set 2 (material.E, normal.speed)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace softpack
