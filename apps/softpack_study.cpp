@@ -8,10 +8,8 @@
 //       what make needs of the study, as shell assignments: its folder under DATA, the profile
 //       goals each setting runs, its figures (script:data:name)
 //   softpack-study report --study FILE --data DIR --out-dir DIR/report [--title T]
-//       the report of the study's kind (`report:`, report/report_kinds.hpp): accuracy (every
-//       setting against the reference), calibration (every setting's laws and packings and their
-//       change against the base), radius (the laws per radius, their scaling, the friction, the
-//       law file laws.json)
+//       the report of the study's kind (`report:`; the kinds: report/report_kinds.cpp, and
+//       softpack-study report --help)
 //   softpack-study check --data DIR --reference experiments/paper.yaml --candidate experiments/fast.yaml --out-dir DIR
 //       the candidate profile against the reference profile on the seeds of both (the fast
 //       profile's confirmation, report/fast_check.hpp): table.md, check.json

@@ -72,7 +72,6 @@ std::string point_mismatch(const PointFile& f, const PointKey& key) {
   return "";
 }
 
-
 std::vector<PointResult> run_sweep(const SweepContext& c, const SweepStage& stage) {
   std::size_t total = 0;
   for (std::size_t chain = 0; chain < stage.chains(); ++chain) total += stage.points(chain);
@@ -132,7 +131,7 @@ std::vector<PointResult> run_sweep(const SweepContext& c, const SweepStage& stag
       }
       // 5. Record, 6. checkpoint, 7. progress.
       PointResult r = record_point(sim, c.setup, relax);
-      stage.place(r, chain, k);
+      r.delta_n = p.key.delta_n, r.hn = p.key.delta_n * c.setup.Rs, r.alpha_deg = p.key.alpha_deg, r.ht = p.key.ht;
       r.steps = sim.step_count() - step0;
       r.timing = timing;
       stage.before_checkpoint(sim);

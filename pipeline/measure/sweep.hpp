@@ -48,7 +48,7 @@ struct SweepContext {
 };
 
 /// Which point a point file must hold to be taken as a point of a sweep: its stage and its place
-/// on the grid (the values the sweep records with it, bit for bit).
+/// on the grid, the values the sweep records with it (hn = delta_n Rs).
 struct PointKey {
   const char* stage;
   double delta_n, alpha_deg, ht;
@@ -82,8 +82,6 @@ class SweepStage {
   virtual void load(Simulation& sim, std::size_t chain, std::size_t k, std::optional<std::size_t> from) const = 0;
   /// What the stage does to the simulation after recording a point, before saving its state.
   virtual void before_checkpoint(Simulation&) const {}
-  /// Point k's place on the grid (delta_n, hn, alpha_deg, ht), into its result.
-  virtual void place(PointResult& r, std::size_t chain, std::size_t k) const = 0;
   /// A point's `steps` counted from the simulation's count before its restore, not after (the
   /// normal direct path from 0 since release 0.1.0: a known error of that diagnostic column,
   /// kept until the next release that changes result bits).

@@ -87,10 +87,6 @@ class NormalStage final : public SweepStage {
     const double hn_from = from ? grid_[*from] * c_.setup.Rs : 0.0;
     move_second_body(sim, c_.setup, Vec3(-1, 0, 0), grid_[k] * c_.setup.Rs - hn_from, c_.settings.normal.speed);
   }
-  void place(PointResult& r, std::size_t, std::size_t k) const override {
-    r.delta_n = grid_[k];
-    r.hn = grid_[k] * c_.setup.Rs;
-  }
   bool counts_steps_before_restore() const override { return !c_.settings.normal.incremental && zero_first(); }
 
  private:
@@ -125,12 +121,6 @@ class TangentialStage final : public SweepStage {
   }
   // A rotation held (tangential.after: hold) lets go before the state is saved.
   void before_checkpoint(Simulation& sim) const override { sim.release_drivers(); }
-  void place(PointResult& r, std::size_t a, std::size_t b) const override {
-    r.delta_n = t().delta_n[a];
-    r.hn = t().delta_n[a] * c_.setup.Rs;
-    r.alpha_deg = t().alpha_deg[b];
-    r.ht = std::numbers::pi * c_.setup.Rs * r.alpha_deg / 180.0;
-  }
 
  private:
   const TangentialSettings& t() const { return c_.settings.tangential; }
@@ -161,12 +151,6 @@ class SlidingStage final : public SweepStage {
     if (dht <= 0.0) return;
     if (c_.setup.second_body < 0) return move_second_body(sim, c_.setup, Vec3(0, 1, 0), dht, s().speed);
     turn_body(sim, c_.setup.second_body, dht / c_.setup.Rs, s().speed / c_.setup.Rs, AfterDrive::release, true);  // an orbit
-  }
-  void place(PointResult& r, std::size_t a, std::size_t b) const override {
-    r.delta_n = s().delta_n[a];
-    r.hn = s().delta_n[a] * c_.setup.Rs;
-    r.ht = ht(b);
-    r.alpha_deg = alpha_deg(ht(b));
   }
 
  private:
