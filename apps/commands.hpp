@@ -19,7 +19,6 @@ namespace fit_app { int main(int argc, char** argv); }
 namespace import_app { int main(int argc, char** argv); }
 namespace normal_app { int main(int argc, char** argv); }
 namespace pack_app { int main(int argc, char** argv); }
-namespace packing_study_app { int main(int argc, char** argv); }
 namespace run_app { int main(int argc, char** argv); }
 namespace section_app { int main(int argc, char** argv); }
 namespace sliding_app { int main(int argc, char** argv); }
@@ -47,7 +46,6 @@ inline constexpr std::array kCommands{
     Command{"fit", fit_app::main, "Eq. 7 and Eq. 8 fitted to the averages of one scene"},
     Command{"table", table_app::main, "Tables 1 and 2 beside the paper's"},
     Command{"apollonian", apollonian_app::main, "the Apollonian gasket of Figure 1"},
-    Command{"packing-study", packing_study_app::main, "packing statistics against beta, I, r_max/Rs and the shell rule"},
     Command{"timing", timing_app::main, "the wall-clock and CPU time of a profile's outputs"},
     Command{"study", study_app::main, "a study of settings of a base profile: profiles, plan, report (accuracy, calibration, radius); the fast check"},
     Command{"coarse", coarse_app::main, "the coarse-grain validation"},

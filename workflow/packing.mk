@@ -1,16 +1,16 @@
-# Packing stage: packings of the profile's seeds (with pictures), Figures 1 and 2, and the
-# packing density study. Included by the top-level Makefile.
+# Packing stage: packings of the profile's seeds (with pictures), Figures 1 and 2. Included by the
+# top-level Makefile. (The packing studies are studies of settings, experiments/studies/:
+# make packing-density, make density-rule.)
 
 PACKING_DIR := $(DATA)/$(PROFILE)/packings
 PACKINGS := $(foreach s,$(SEEDS),$(PACKING_DIR)/seed-$(s).h5)
 # Everything a run writes lives under its DATA (and its lock): the figures too.
 FIGURES_OUT := $(DATA)/$(PROFILE)/figures
-STUDY_FIGURES := $(DATA)/studies/figures
 # Generated packings (softpack-pack), or imported ones when the profile's packing section has
 # `import` (softpack-import; docs/import.md): same options, same packing file.
 PACK := $(BUILD)/bin/softpack-$(if $(filter imported,$(call config,packings)),import,pack)
 
-.PHONY: packings study-packing density-rule figure1 figure2
+.PHONY: packings figure1 figure2
 # The executables are brought up to date before any stage runs (an order-only prerequisite);
 # not under make -n or make -q, which must only say what would run.
 TOOLS := $(if $(findstring n,$(MAKE_LETTERS))$(findstring q,$(MAKE_LETTERS)),,build-tools)
@@ -40,26 +40,3 @@ $(FIGURES_OUT)/fig2_section.dat: $(PACKING_DIR)/seed-$(firstword $(SEEDS)).h5 | 
 $(FIGURES_OUT)/fig2_softparticle.%: $(FIGURES_OUT)/fig2_section.dat figures/fig2_softparticle.gp
 	@gnuplot -e "data='$<'; $$($(CONFIG_TOOL) $(PROFILE_FILE) gnuplot); out='$@.tmp.$*'" \
 	  figures/fig2_softparticle.gp && mv $@.tmp.$* $@
-
-STUDY_DIR := $(DATA)/studies/packing-density
-study-packing: $(STUDY_DIR)/packing-density.md $(STUDY_FIGURES)/packing-density.png  ## the packing density study (beta, I, r_max/Rs)
-	@cat $(STUDY_DIR)/packing-density.md
-# The study varies its base profile's packing section (experiments/fast.yaml: the packing of
-# releases <= 0.4.0): it depends on that section only.
-STUDY_STAMP := $(call stamp,packing-density,packing,experiments/fast.yaml,$(DATA)/studies/stamps)
-$(STUDY_DIR)/packing-density.md $(STUDY_DIR)/packing-density.dat &: experiments/packing-density.yaml $(STUDY_STAMP) | $(TOOLS)
-	$(RUN) $(BUILD)/bin/softpack-packing-study --config experiments/packing-density.yaml --out $(STUDY_DIR)
-$(STUDY_FIGURES)/packing-density.png: $(STUDY_DIR)/packing-density.dat figures/packing_density.gp
-	@mkdir -p $(@D)
-	@gnuplot -e "data='$<'; out='$@.tmp.png'" figures/packing_density.gp && mv $@.tmp.png $@
-
-# The preregistered density rule (issue 29: experiments/criteria.yaml, paper/preregistration.md):
-# the criteria's (beta, trials) grid on its select seeds; the chosen setting is the paper
-# profile's. It reads the criteria and the base's packing section (the grid replaces beta and trials).
-DENSITY_RULE_DIR := $(DATA)/studies/density-rule
-density-rule: $(DENSITY_RULE_DIR)/density-rule.md  ## the preregistered packing-density rule on the held-out seeds (DATA/studies/density-rule/)
-	@cat $<
-$(DENSITY_RULE_DIR)/density-rule.md $(DENSITY_RULE_DIR)/density-rule.json &: experiments/density-rule.yaml experiments/criteria.yaml | $(TOOLS)
-	@mkdir -p $(@D) && echo "density-rule: -> $(@D) (log $(@D)/density-rule.log)"
-	@$(RUN) $(BUILD)/bin/softpack-packing-study --config experiments/density-rule.yaml --out $(@D) 2> $(@D)/density-rule.log \
-	  || { echo "density-rule: FAILED; see $(@D)/density-rule.log"; tail -5 $(@D)/density-rule.log; exit 1; }

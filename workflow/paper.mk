@@ -8,11 +8,12 @@ PAPER_PDF := $(PAPER_BUILD)/paper.pdf
 # from the result files into DATA/PROFILE/paper/generated/variables.tex. The report also states
 # what the preregistered rules chose on the held-out seeds: the select profile's verdict (its
 # tables, reused from its archive when the stamps match, as the profile's own). The studies'
-# reports are the committed ones (data/studies, data/radius/report, data/coarse-grain/report).
+# reports are the committed ones (data/studies/*/report, data/radius/report, data/coarse-grain/report).
 PAPER_VARIABLES := $(PAPER_BUILD)/generated/variables.tex
 SELECT_VERDICT := $(DATA)/select/tables/verdict.json
-STUDY_REPORTS := data/studies/density-rule/density-rule.json data/radius/report/radius.json \
-  data/coarse-grain/report/summary.json data/coarse-grain/report/curves.dat
+STUDY_REPORTS := data/studies/density-rule/report/density-rule.json data/radius/report/radius.json \
+  data/coarse-grain/report/summary.json data/coarse-grain/report/curves.dat \
+  data/studies/packing-density/report/packing-density.png
 
 # (In the select profile itself the file is its own table's, made by the tables rule.)
 ifneq ($(PROFILE),select)
@@ -31,7 +32,7 @@ endif
 paper-variables: $(TABLES) $(SELECT_VERDICT)
 	@for r in $(STUDY_REPORTS); do [ -f $$r ] || { echo "paper: $$r is missing (a committed study report; git checkout it, or rerun its study)" >&2; exit 2; }; done
 	@mkdir -p $(dir $(PAPER_VARIABLES)) && python3 paper/variables.py --out $(PAPER_VARIABLES) --profile $(DATA)/$(PROFILE) --select $(DATA)/select \
-	  --density data/studies/density-rule/density-rule.json --radius data/radius/report/radius.json \
+	  --density data/studies/density-rule/report/density-rule.json --radius data/radius/report/radius.json \
 	  --coarse data/coarse-grain/report/summary.json
 $(PAPER_VARIABLES): paper-variables ;
 
@@ -39,12 +40,12 @@ $(PAPER_VARIABLES): paper-variables ;
 paper: $(PAPER_PDF)  ## the reproduction report, DATA/PROFILE/paper/paper.pdf (LaTeX: tables, figures, cited data)
 
 $(PAPER_PDF): paper/paper.tex paper/references.bib $(PAPER_VARIABLES) $(TABLES) $(FIGURES_3_6) $(FIGURES_OUT)/fig1_apollonian.pdf $(FIGURES_OUT)/fig2_softparticle.pdf \
-    $(STUDY_FIGURES)/packing-density.png $(ARCHIVE_MANIFEST)
+    $(ARCHIVE_MANIFEST)
 	@mkdir -p $(PAPER_BUILD)
 	@echo "paper: $(PROFILE) -> $@ (log $(PAPER_BUILD)/latex/paper.log)"
 	@cd paper && BIBINPUTS=.:$(abspath $(ARCHIVE)): latexmk -pdf -interaction=nonstopmode -halt-on-error -silent \
 	  -outdir=$(abspath $(PAPER_BUILD)/latex) \
-	  -usepretex='\def\softpackprofile{$(PROFILE)}\def\datadir{$(abspath $(DATA)/$(PROFILE))}\def\figdir{$(abspath $(FIGURES_OUT))}\def\studyfigdir{$(abspath $(STUDY_FIGURES))}\def\softpackversion{$(VERSION)}\def\gendir{$(abspath $(PAPER_BUILD)/generated)}' \
+	  -usepretex='\def\softpackprofile{$(PROFILE)}\def\datadir{$(abspath $(DATA)/$(PROFILE))}\def\figdir{$(abspath $(FIGURES_OUT))}\def\studyfigdir{$(abspath data/studies/packing-density/report)}\def\softpackversion{$(VERSION)}\def\gendir{$(abspath $(PAPER_BUILD)/generated)}' \
 	  paper.tex > /dev/null \
 	  || { echo "paper: FAILED for $(PROFILE); see $(PAPER_BUILD)/latex/paper.log"; grep -A3 '^!' $(PAPER_BUILD)/latex/paper.log | head -20; exit 1; }
 	@cp $(PAPER_BUILD)/latex/paper.pdf $@.tmp && mv $@.tmp $@

@@ -106,10 +106,10 @@ void check_planned_stamp(const std::string& profile_path, const std::string& sta
                                profile_path, stage, planned, now));
 }
 
-std::vector<std::uint64_t> parse_seeds(const ConfigNode& root) {
+std::vector<std::uint64_t> parse_seeds(const ConfigNode& root, const std::string& key) {
   std::vector<std::uint64_t> seeds;
   std::map<std::uint64_t, std::size_t> seen;  // seed -> its first index
-  const std::vector<ConfigNode> items = root.at("seeds").items();
+  const std::vector<ConfigNode> items = root.at(key).items();
   for (std::size_t k = 0; k < items.size(); ++k) {
     const ConfigNode& s = items[k];
     if (!s.yaml().IsScalar()) s.fail("expected a seed, an integer like 3");
@@ -122,7 +122,7 @@ std::vector<std::uint64_t> parse_seeds(const ConfigNode& root) {
                          first->second));
     seeds.push_back(*v);
   }
-  if (seeds.empty()) root.at("seeds").fail("at least one seed is required");
+  if (seeds.empty()) root.at(key).fail("at least one seed is required");
   return seeds;
 }
 

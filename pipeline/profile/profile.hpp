@@ -63,7 +63,8 @@ void check_stamp(const std::string& path, const std::string& stage, const std::s
 void check_planned_stamp(const std::string& profile_path, const std::string& stage, const std::string& planned,
                          const std::string& now);
 
-/// The seeds of the profile (`seeds` list): seeds as parse_seed() (core/random.hpp) reads them, distinct.
-std::vector<std::uint64_t> parse_seeds(const ConfigNode& root);
+/// The seeds of the profile (`seeds` list, or the list at `key` of `root`): seeds as parse_seed()
+/// (core/random.hpp) reads them, distinct.
+std::vector<std::uint64_t> parse_seeds(const ConfigNode& root, const std::string& key = "seeds");
 
 }  // namespace softpack

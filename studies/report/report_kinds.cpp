@@ -8,6 +8,7 @@
 #include "formats/law_file.hpp"
 #include "report/accuracy_report.hpp"
 #include "report/calibration_report.hpp"
+#include "report/packing_report.hpp"
 #include "report/radius_report.hpp"
 #include "report/response_report.hpp"
 
@@ -15,23 +16,28 @@ namespace softpack {
 
 const std::vector<ReportKind>& report_kinds() {
   static const std::vector<ReportKind> kinds{
-      {"accuracy", "Accuracy against cost", "table.md, pareto.dat, report.json (report/accuracy_report.hpp)",
+      {"accuracy", "Accuracy against cost", "table.md, pareto.dat, report.json (report/accuracy_report.hpp)", {"compare"},
        [](const Study& study, const std::string& data, const std::string& out, const std::string& title) {
          return write_accuracy_report(accuracy_report(study, data), out, title);
        }},
-      {"calibration", "Calibration", "table.md, onset.dat, sensitivity.dat, calibration.json (report/calibration_report.hpp)",
+      {"calibration", "Calibration", "table.md, onset.dat, sensitivity.dat, calibration.json (report/calibration_report.hpp)", {"compare"},
        [](const Study& study, const std::string& data, const std::string& out, const std::string& title) {
          return write_calibration_report(calibration_report(study, data), out, title);
        }},
       {"radius", "Radius and friction",
-       "table.md, radius.json, scaling.dat, friction.dat and the law file laws.json (report/radius_report.hpp)",
+       "table.md, radius.json, scaling.dat, friction.dat and the law file laws.json (report/radius_report.hpp)", {"compare", "radius"},
        [](const Study& study, const std::string& data, const std::string& out, const std::string& title) {
          const RadiusReport r = radius_report(study, data);
          const std::string table = write_radius_report(r, study, out, title);
          write_law_file(out + "/laws.json", radius_law_file(r, study, code_version()));
          return table;
        }},
-      {"response", "Response of the normal law", "table.md, response.dat (report/response_report.hpp)", write_response_report},
+      {"density-rule", "The density rule", "table.md, density-rule.json (report/packing_report.hpp)", {"grid", "criteria"},
+       write_density_rule_report},
+      {"packings", "Packing density", "table.md, packing-density.dat (report/packing_report.hpp)", {"vary"},
+       write_packings_report},
+      {"response", "Response of the normal law", "table.md, response.dat (report/response_report.hpp)", {"compare"},
+       write_response_report},
   };
   return kinds;
 }

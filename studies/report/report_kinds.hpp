@@ -15,6 +15,7 @@ struct ReportKind {
   std::string name;   ///< what a study file's `report:` says
   std::string title;  ///< the table's first line, before "(study file, release X)"
   std::string files;  ///< what it writes, for --help and the messages
+  std::vector<std::string> needs;  ///< the study file's sections it reads (e.g. compare, criteria)
   /// Reads the settings' results under `data_dir` and writes the report into `out_dir`;
   /// returns the table (Markdown) it wrote.
   std::function<std::string(const Study&, const std::string& data_dir, const std::string& out_dir,

@@ -22,10 +22,37 @@ namespace {
 // report; every calibration and comparison runs on held-out seeds.
 constexpr std::uint64_t kFirstHeldOutSeed = 101;
 
+// The map holding the list at `key` of `parent`, and its key there: the study file's own, or for
+// `{file: F, key: a.b}` the list that file holds at a.b (read where it was fixed, not copied).
+// The map holding the list at the dotted `key` under `node`, and the key's last part.
+std::pair<ConfigNode, std::string> descend(const ConfigNode& node, const std::string& key) {
+  const std::size_t dot = key.find('.');
+  if (dot == std::string::npos) return {node, (node.at(key), key)};  // there, or an InputError naming file and key
+  return descend(node.at(key.substr(0, dot)), key.substr(dot + 1));
+}
+
+// The map holding the list at `key` of `parent`, and its key there: the study file's own, or for
+// `{file: F, key: a.b}` the list that file holds at a.b (read where it was fixed, not copied).
+// (No ConfigNode is assigned to: a YAML::Node's operator= would overwrite the node it refers to.)
+std::pair<ConfigNode, std::string> list_at(const ConfigNode& parent, const std::string& key) {
+  const ConfigNode n = parent.at(key);
+  if (!n.yaml().IsMap()) return {parent, key};
+  n.allow_only({"file", "key"});
+  const auto load = [&] {
+    try {
+      return ConfigNode::load_file(n.at("file").string());
+    } catch (const InputError& e) {
+      n.at("file").fail(e.what());
+    }
+  };
+  return descend(load(), n.at("key").string());
+}
+
 // The `seeds` of `n`, read as a profile's are (profile/profile.hpp), and all of them held out.
 std::vector<std::uint64_t> read_seeds(const ConfigNode& n) {
-  const std::vector<std::uint64_t> seeds = parse_seeds(n);
-  const std::vector<ConfigNode> items = n.at("seeds").items();
+  const auto [holder, key] = list_at(n, "seeds");
+  const std::vector<std::uint64_t> seeds = parse_seeds(holder, key);
+  const std::vector<ConfigNode> items = holder.at(key).items();
   for (std::size_t k = 0; k < seeds.size(); ++k)
     if (seeds[k] < kFirstHeldOutSeed)
       items[k].fail(fmt::format("seed {} is not allowed; allowed: held-out seeds >= {} (1-7 are the paper's, run only to report)",
@@ -80,9 +107,96 @@ void replace(YAML::Node root, const std::string& key, const YAML::Node& value, c
 }
 
 bool settings_named(const ConfigNode& root, const std::string& name) {
+  if (!root.has("settings")) return false;
   for (const std::string& k : root.at("settings").keys())
     if (k == name) return true;
   return false;
+}
+
+constexpr const char* kNameChars = "abcdefghijklmnopqrstuvwxyz0123456789.-";
+
+// `vary` (one key at a time) or `grid` (every combination) of `root`: settings appended to the
+// study's, named "<key>-<value>..." (the key's last part); one equal to the reference is `of` it.
+void generate_settings(const ConfigNode& root, Study& st, std::set<std::string>& names) {
+  const bool grid = root.has("grid");
+  const ConfigNode section = root.at(grid ? "grid" : "vary");
+  const YAML::Node ref = YAML::Load(setting_profile_text(st, st.reference));
+  std::vector<std::vector<ConfigNode>> values;
+  const std::vector<std::string> keys = section.keys();
+  for (const std::string& key : keys) {
+    const auto [holder, last] = list_at(section, key);
+    values.push_back(holder.at(last).items());
+    if (values.back().empty()) section.at(key).fail("at least one value is required");
+    for (const ConfigNode& v : values.back())
+      if (!v.yaml().IsScalar()) v.fail("allowed: a value (a number, true or false, a word)");
+    (grid ? st.grid : st.vary).push_back({key, {}});
+  }
+  // One setting per combination of an index into each key's values (grid), or per value (vary).
+  const auto add = [&](const std::vector<std::pair<std::size_t, std::size_t>>& picks) {
+    StudySetting s;
+    bool as_reference = true;
+    for (const auto& [axis, k] : picks) {
+      const std::string& key = keys[axis];
+      const ConfigNode& v = values[axis][k];
+      std::string part = key.substr(key.rfind('.') + 1) + "-" + v.yaml().Scalar();
+      for (char& c : part) c = c == '_' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (part.find_first_not_of(kNameChars) != std::string::npos)
+        v.fail(fmt::format("names its setting '{}': allowed in a name are lowercase letters, digits, '.', '-'", part));
+      s.name += (s.name.empty() ? "" : "-") + part;
+      s.set.emplace_back(key, YAML::Clone(v.yaml()));
+      const auto [parent, name] = parent_of(ref, key, fmt::format("{}: {}", st.path, key));
+      const YAML::Node r = std::as_const(parent)[name];
+      double a = 0.0, b = 0.0;
+      as_reference = as_reference && r && r.IsScalar() &&
+                     (r.Scalar() == v.yaml().Scalar() || (YAML::convert<double>::decode(r, a) &&
+                                                          YAML::convert<double>::decode(v.yaml(), b) && a == b));
+    }
+    if (!names.insert(s.name).second) values[picks.back().first][picks.back().second].fail(fmt::format("'{}' is a name already used", s.name));
+    s.seeds = st.seeds;
+    if (as_reference) s.set.clear(), s.of = "reference";
+    for (const auto& [axis, k] : picks) (grid ? st.grid : st.vary)[axis].points.emplace_back(values[axis][k].yaml().Scalar(), s.name);
+    st.settings.push_back(std::move(s));
+  };
+  if (!grid) {
+    for (std::size_t axis = 0; axis < values.size(); ++axis)
+      for (std::size_t k = 0; k < values[axis].size(); ++k) add({{axis, k}});
+    return;
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> picks;
+  for (std::size_t axis = 0; axis < values.size(); ++axis) picks.emplace_back(axis, 0);
+  for (;;) {
+    add(picks);
+    std::size_t axis = values.size();
+    while (axis > 0 && ++picks[axis - 1].second == values[axis - 1].size()) picks[--axis].second = 0;
+    if (axis == 0) return;
+  }
+}
+
+// The file's `settings`: names, and for one that runs the reference's seeds (compared on the
+// same soft-particles); for one `of` another, a setting that runs and a subset of its seeds.
+void check_settings(const ConfigNode& settings, Study& st, std::set<std::string>& names) {
+  for (const std::string& name : settings.keys()) {
+    const ConfigNode n = settings.at(name);
+    if (name.empty() || name.find_first_not_of(kNameChars) != std::string::npos)
+      n.fail("a setting's name is its profile's and folder's: lowercase letters, digits, '.', '-'");
+    if (!names.insert(name).second) n.fail(fmt::format("'{}' is a name already used", name));
+    st.settings.push_back(read_setting(name, n, st.seeds));
+  }
+  for (const auto& s : st.settings) {
+    if (s.runs()) {
+      for (std::uint64_t seed : s.seeds)
+        if (std::find(st.reference.seeds.begin(), st.reference.seeds.end(), seed) == st.reference.seeds.end())
+          settings.at(s.name).at("seeds").fail(fmt::format("seed {} is not a seed of the reference, so nothing to compare it with", seed));
+      continue;
+    }
+    const ConfigNode n = settings.at(s.name);
+    const auto source = std::find_if(st.settings.begin(), st.settings.end(), [&](const StudySetting& o) { return o.name == s.of; });
+    const StudySetting* from = s.of == "reference" ? &st.reference : source != st.settings.end() ? &*source : nullptr;
+    if (!from || !from->runs()) n.at("of").fail(fmt::format("'{}' is not a setting that runs", s.of));
+    for (std::uint64_t seed : s.seeds)
+      if (std::find(from->seeds.begin(), from->seeds.end(), seed) == from->seeds.end())
+        n.at("seeds").fail(fmt::format("seed {} is not one of the seeds of '{}'", seed, s.of));
+  }
 }
 
 }  // namespace
@@ -98,7 +212,6 @@ namespace {
 
 // The study's plan: its name, report kind, stages, folder and figures.
 void read_plan(const ConfigNode& root, Study& st) {
-  constexpr const char* kNameChars = "abcdefghijklmnopqrstuvwxyz0123456789.-";
   st.name = root.at("study").string();
   if (st.name.empty() || st.name.find_first_not_of(kNameChars) != std::string::npos)
     root.at("study").fail("a study's name is its make goal's and folder's: lowercase letters, digits, '.', '-'");
@@ -134,11 +247,13 @@ void read_plan(const ConfigNode& root, Study& st) {
 
 Study read_study(const std::string& path) {
   const ConfigNode root = ConfigNode::load_file(path);
-  root.allow_only({"study", "report", "stages", "out", "figures", "base", "seeds", "common", "compare", "calibrate", "radius",
-                   "reference", "settings"});
+  root.allow_only({"study", "report", "stages", "out", "figures", "base", "seeds", "common", "compare", "criteria", "calibrate",
+                   "radius", "reference", "settings", "vary", "grid"});
   Study st;
   st.path = path;
   read_plan(root, st);
+  for (const std::string& section : report_kind(st.report).needs)
+    if (!root.has(section)) root.fail(fmt::format("`{}` is missing: the report kind '{}' reads it", section, st.report));
   st.base = root.at("base").string();
   try {
     st.base_yaml = YAML::Clone(ConfigNode::load_file(st.base).yaml());  // with the project's checks of a YAML file
@@ -146,10 +261,15 @@ Study read_study(const std::string& path) {
     root.at("base").fail(e.what());
   }
   st.seeds = read_seeds(root);
-  const ConfigNode cmp = root.at("compare");
-  cmp.allow_only({"Fn_delta_n", "kt_delta_n"});
-  st.Fn_delta_n = read_numbers(cmp.at("Fn_delta_n"));
-  if (auto kt = cmp.find("kt_delta_n")) st.kt_delta_n = read_numbers(*kt);  // none: kt is not compared
+  if (auto cmp = root.find("compare")) {
+    cmp->allow_only({"Fn_delta_n", "kt_delta_n"});
+    st.Fn_delta_n = read_numbers(cmp->at("Fn_delta_n"));
+    if (auto kt = cmp->find("kt_delta_n")) st.kt_delta_n = read_numbers(*kt);  // none: kt is not compared
+  }
+  if (auto criteria = root.find("criteria")) {
+    st.criteria = criteria->string();
+    if (!std::filesystem::is_regular_file(st.criteria)) criteria->fail(fmt::format("{}: no such file", st.criteria));
+  }
   if (auto cal = root.find("calibrate")) {
     cal->allow_only({"b_range"});
     const ConfigNode ranges = cal->at("b_range");
@@ -176,37 +296,17 @@ Study read_study(const std::string& path) {
   }
   if (auto common = root.find("common"))
     for (const std::string& key : common->keys()) st.common.emplace_back(key, YAML::Clone(common->at(key).yaml()));
-  st.reference = read_setting("reference", root.at("reference"), st.seeds);
+  if (auto ref = root.find("reference")) st.reference = read_setting("reference", *ref, st.seeds);
+  else st.reference = StudySetting{"reference", {}, "", st.seeds};
   if (!st.reference.of.empty()) root.at("reference").at("of").fail("the reference runs: it cannot be `of` another setting");
   for (std::uint64_t s : st.seeds)
     if (std::find(st.reference.seeds.begin(), st.reference.seeds.end(), s) == st.reference.seeds.end())
       root.at("reference").at("seeds").fail(fmt::format("the reference must hold every seed of the study; {} is missing", s));
-  const ConfigNode settings = root.at("settings");
+  if (root.has("vary") && root.has("grid")) root.at("grid").fail("a study varies one key at a time (`vary`) or every combination (`grid`), not both");
+  if (!root.has("settings") && !root.has("vary") && !root.has("grid")) root.fail("no settings: give `settings`, `vary` or `grid`");
   std::set<std::string> names{"reference"};
-  for (const std::string& name : settings.keys()) {
-    const ConfigNode n = settings.at(name);
-    if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789.-") != std::string::npos)
-      n.fail("a setting's name is its profile's and folder's: lowercase letters, digits, '.', '-'");
-    if (!names.insert(name).second) n.fail(fmt::format("'{}' is a name already used", name));
-    st.settings.push_back(read_setting(name, n, st.seeds));
-  }
-  // A setting that runs: seeds of the reference (compared on the same soft-particles). `of`: a
-  // setting that runs, and a subset of its seeds.
-  for (const auto& s : st.settings) {
-    if (s.runs()) {
-      for (std::uint64_t seed : s.seeds)
-        if (std::find(st.reference.seeds.begin(), st.reference.seeds.end(), seed) == st.reference.seeds.end())
-          settings.at(s.name).at("seeds").fail(fmt::format("seed {} is not a seed of the reference, so nothing to compare it with", seed));
-      continue;
-    }
-    const ConfigNode n = settings.at(s.name);
-    const auto source = std::find_if(st.settings.begin(), st.settings.end(), [&](const StudySetting& o) { return o.name == s.of; });
-    const StudySetting* from = s.of == "reference" ? &st.reference : source != st.settings.end() ? &*source : nullptr;
-    if (!from || !from->runs()) n.at("of").fail(fmt::format("'{}' is not a setting that runs", s.of));
-    for (std::uint64_t seed : s.seeds)
-      if (std::find(from->seeds.begin(), from->seeds.end(), seed) == from->seeds.end())
-        n.at("seeds").fail(fmt::format("seed {} is not one of the seeds of '{}'", seed, s.of));
-  }
+  if (auto settings = root.find("settings")) check_settings(*settings, st, names);
+  if (root.has("vary") || root.has("grid")) generate_settings(root, st, names);
   // Every profile must be one the stages accept: generated, then read as they read it.
   for (const StudySetting* s : [&] {
          std::vector<const StudySetting*> all{&st.reference};
@@ -247,7 +347,7 @@ std::string setting_profile_text(const Study& study, const StudySetting& setting
   for (const auto& [key, value] : setting.set)
     replace(base, key, value, fmt::format("{}: settings.{}.set", study.path, setting.name));
   base["profile"] = setting.name;
-  base["description"] = fmt::format("Accuracy study {}, setting '{}' (generated; do not edit)", study.path, setting.name);
+  base["description"] = fmt::format("Study {}, setting '{}' (generated; do not edit)", study.path, setting.name);
   YAML::Node seeds(YAML::NodeType::Sequence);
   for (std::uint64_t s : setting.seeds) seeds.push_back(s);
   seeds.SetStyle(YAML::EmitterStyle::Flow);
@@ -256,7 +356,7 @@ std::string setting_profile_text(const Study& study, const StudySetting& setting
   out << base;
   std::string keys;
   for (const auto& [key, value] : study.common) keys += " " + key;
-  if (!setting.set.empty()) keys += " (common), then";
+  if (!study.common.empty() && !setting.set.empty()) keys += " (common), then";
   for (const auto& [key, value] : setting.set) keys += " " + key;
   return fmt::format("# Generated by softpack-study from {} (setting '{}'): {} with{} replaced.\n", study.path, setting.name,
                      study.base, keys.empty() ? " nothing" : keys) +
@@ -265,10 +365,14 @@ std::string setting_profile_text(const Study& study, const StudySetting& setting
 
 double setting_number(const Study& study, const StudySetting& setting, const std::string& key) {
   const std::string where = fmt::format("{}: setting '{}'", study.path, setting.name);
-  const auto [parent, last] = parent_of(YAML::Load(setting_profile_text(study, setting)), key, where);
+  const StudySetting& source = setting.runs() ? setting : study.setting(setting.of);
+  const auto [parent, last] = parent_of(YAML::Load(setting_profile_text(study, source)), key, where);
   const YAML::Node value = std::as_const(parent)[last];
-  if (!value || !value.IsScalar()) throw InputError(fmt::format("{}: {} is not a number of its profile", where, key));
-  return value.as<double>();
+  double number = 0.0;
+  bool flag = false;
+  if (value && value.IsScalar() && YAML::convert<double>::decode(value, number)) return number;
+  if (value && value.IsScalar() && YAML::convert<bool>::decode(value, flag)) return flag ? 1.0 : 0.0;
+  throw InputError(fmt::format("{}: {} is not a number of its profile", where, key));
 }
 
 }  // namespace softpack

@@ -4,7 +4,11 @@
 // report's kind (`report`, report/report_kinds.hpp), the figures drawn from that report's data
 // and the folder it writes under DATA (`out`). Every setting becomes a profile of its own, run by
 // the profile DAG (workflow/studies.mk); a setting `of` another one with fewer `seeds` is that
-// one's results on those seeds (no run).
+// one's results on those seeds (no run). Settings may also be generated: `vary` (one key at a
+// time around the reference) or `grid` (every combination of the keys' values); a generated
+// setting equal to the reference is the reference's results (`of: reference`). A list (seeds,
+// values) may be read from another file, `{file: F, key: a.b}`: the preregistered criteria's
+// grid and seeds are read where they were fixed, not copied.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -30,6 +34,13 @@ struct StudyFigure {
   std::string script, data, name;
 };
 
+/// A key the study varies (`vary` or `grid`): its settings, each with the value it sets as written
+/// (`vary`: the settings of this key; `grid`: every setting of the grid, in the grid's order).
+struct StudyAxis {
+  std::string key;                                          ///< dotted key of the profile
+  std::vector<std::pair<std::string, std::string>> points;  ///< (value as written, setting name)
+};
+
 struct Study {
   std::string path, base;
   std::string name;                 ///< `study`
@@ -49,6 +60,9 @@ struct Study {
   /// soft-soft of two radii), and from which ht / Rs a sliding contact's Ft / Fn is averaged.
   std::map<std::string, std::vector<std::string>> radius_variants;
   double mu_from_ht_over_Rs = 0.0;
+  std::string criteria;          ///< `criteria`: the criteria file a judging kind applies ("": none)
+  std::vector<StudyAxis> vary;   ///< `vary`: each key with its settings, in the file's order
+  std::vector<StudyAxis> grid;   ///< `grid`: its keys, the last varying fastest
   StudySetting reference;                      ///< name "reference", its own seeds
   std::vector<StudySetting> settings;
   const StudySetting& setting(const std::string& name) const;  ///< reference or a setting; InputError
@@ -68,8 +82,9 @@ std::string setting_changes(const Study& study, const StudySetting& setting);
 /// replaced, its `profile` name and `seeds`; a header says where it comes from.
 std::string setting_profile_text(const Study& study, const StudySetting& setting);
 
-/// The number at the dotted `key` of a setting's profile (the base's, where nothing sets it);
-/// InputError naming the study, the setting and the key.
+/// The number at the dotted `key` of a setting's profile (the base's, where nothing sets it; for a
+/// setting `of` another, that one's); true and false read 1 and 0; InputError naming the study,
+/// the setting and the key.
 double setting_number(const Study& study, const StudySetting& setting, const std::string& key);
 
 }  // namespace softpack

@@ -274,7 +274,7 @@ expect_error "^softpack-run: error: bad\.yaml:18:[0-9]+: .*wake: unknown key; al
 # --- Command lines: CLI11's errors are bad input (exit 2, one line); --help exits 0 --------------
 case_name every_executable_maps_command_line_errors_to_exit_2
 for exe in softpack-run softpack-pack softpack-normal softpack-tangential softpack-sliding softpack-average softpack-fit softpack-table \
-           softpack-config softpack-section softpack-apollonian softpack-packing-study softpack-timing softpack-study; do
+           softpack-config softpack-section softpack-apollonian softpack-timing softpack-study; do
   "$bin/$exe" --help > help.txt || fail "$exe --help: exit code $?"
   grep -q "^Usage: " help.txt || fail "$exe --help printed no usage"
   expect_error "^$exe: error: .+; see $exe --help$" none.txt "$bin/$exe" --no-such-option

@@ -173,8 +173,6 @@ TEST(Experiments, EveryFileStillLoads) {
       EXPECT_NO_THROW(parse_measurement(r));
     }
   }
-  const ConfigNode study = ConfigNode::load_file((root / "experiments/packing-density.yaml").string());
-  EXPECT_NO_THROW(parse_seeds(study));
 }
 
 

@@ -7,7 +7,10 @@
 #include <fstream>
 #include <string>
 
+#include "config/yaml_node.hpp"
 #include "core/error.hpp"
+#include "formats/packing_file.hpp"
+#include "packing/packing_profile.hpp"
 #include "report/study_file.hpp"
 #include "report/report_kinds.hpp"
 
@@ -104,6 +107,88 @@ TEST_F(StudyFile, AResponseStudyVariesOneKeyAndListsItsSettingsByItsValue) {
     EXPECT_NE(std::string(e.what()).find("varies one key of the profile; its settings set 2 (material.E, normal.speed)"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// `vary`: a setting per value named <key>-<value>, the reference's own value the reference's results;
+// `grid`: every combination, the last key fastest, its lists read from another file.
+TEST_F(StudyFile, VaryAndGridGenerateTheirSettings) {
+  const std::string head = "report: packings\nstages: [packings]\nbase: experiments/quick.yaml\nseeds: [101, 102]\n";
+  std::ofstream((dir_ / "sizes.yaml").string()) << "study: sizes\n" << head
+                                                << "vary:\n  packing.beta: [1.0, 2, 3.0]\n  packing.shell_is_neighbour: [false]\n";
+  const Study v = read_study((dir_ / "sizes.yaml").string());
+  ASSERT_EQ(v.vary.size(), 2u);
+  EXPECT_EQ(v.vary[0].points, (std::vector<std::pair<std::string, std::string>>{{"1.0", "beta-1.0"}, {"2", "beta-2"}, {"3.0", "beta-3.0"}}));
+  EXPECT_EQ(v.setting("beta-2").of, "reference");  // quick.yaml's beta is 2.0
+  EXPECT_TRUE(v.setting("beta-3.0").runs());
+  EXPECT_EQ(setting_number(v, v.setting("beta-3.0"), "packing.beta"), 3.0);
+  EXPECT_EQ(setting_number(v, v.setting("shell-is-neighbour-false"), "packing.shell_is_neighbour"), 0.0);
+
+  std::ofstream((dir_ / "lists.yaml").string()) << "held: [103, 104]\ngrid: {beta: [1.0, 2.0], trials: [30, 3000]}\n";
+  const std::string lists = (dir_ / "lists.yaml").string();
+  std::ofstream((dir_ / "rule.yaml").string())
+      << "study: rule\nreport: density-rule\nstages: [packings]\nbase: experiments/quick.yaml\ncriteria: " << lists
+      << "\nseeds: {file: " << lists << ", key: held}\ngrid:\n  packing.beta: {file: " << lists
+      << ", key: grid.beta}\n  packing.trials: {file: " << lists << ", key: grid.trials}\n";
+  const Study g = read_study((dir_ / "rule.yaml").string());
+  EXPECT_EQ(g.seeds, (std::vector<std::uint64_t>{103, 104}));
+  ASSERT_EQ(g.grid.size(), 2u);
+  std::vector<std::string> names;
+  for (const auto& [value, name] : g.grid[1].points) names.push_back(name);
+  EXPECT_EQ(names, (std::vector<std::string>{"beta-1.0-trials-30", "beta-1.0-trials-3000", "beta-2.0-trials-30",
+                                             "beta-2.0-trials-3000"}));
+  EXPECT_EQ(g.setting("beta-2.0-trials-3000").of, "reference");
+  EXPECT_EQ(g.grid[1].points[2].first, "30");
+}
+
+TEST_F(StudyFile, GeneratedSettingsAreRefusedWithTheKey) {
+  const std::string head = "report: packings\nstages: [packings]\nbase: experiments/quick.yaml\nseeds: [101]\n";
+  const auto refused = [&](const std::string& name, const std::string& body) {
+    std::ofstream((dir_ / (name + ".yaml")).string()) << "study: " << name << "\n" << head << body;
+    try {
+      read_study((dir_ / (name + ".yaml")).string());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(refused("both", "vary: {packing.beta: [1.0]}\ngrid: {packing.trials: [10]}\n").find("not both"), std::string::npos);
+  EXPECT_NE(refused("none", "").find("`vary` is missing: the report kind 'packings' reads it"), std::string::npos);
+  EXPECT_NE(refused("word", "vary: {packing.beta: [\"1 0\"]}\n").find("names its setting 'beta-1 0'"), std::string::npos);
+  EXPECT_NE(refused("far", "vary: {packing.beta: {file: experiments/quick.yaml, key: packing.gamma}}\n").find("gamma"),
+            std::string::npos);
+  EXPECT_NE(refused("twice", "vary: {packing.beta: [3.0, 3.0]}\n").find("'beta-3.0' is a name already used"), std::string::npos);
+  EXPECT_NE(refused("bad", "vary: {packing.beta: [-1.0]}\n").find("setting beta--1.0"), std::string::npos);
+}
+
+// The density rule (report/packing_report.hpp) takes, among the settings within the criteria's
+// margin of the densest mean solid fraction, the one of least mean generation time: the packings'
+// times are planted, so the choice is known.
+TEST_F(StudyFile, TheDensityRuleChoosesTheCheapestWithinTheMargin) {
+  const std::string runs = (dir_ / "runs").string(), criteria = (dir_ / "criteria.yaml").string();
+  std::ofstream(criteria) << "density: {solid_fraction_margin: 0.5}\n";
+  std::ofstream((dir_ / "rule.yaml").string())
+      << "study: rule\nreport: density-rule\nstages: [packings]\nbase: experiments/quick.yaml\ncriteria: " << criteria
+      << "\nseeds: [101, 102]\ncommon: {packing.polydispersity: 1.5, packing.r_max_over_Rs: 0.35}\n"
+         "grid: {packing.beta: [0.5, 2.0], packing.trials: [3000]}\n";
+  const Study st = read_study((dir_ / "rule.yaml").string());
+  // beta 0.5 is far less dense than beta 2.0 (the reference's own value); it is made the cheaper.
+  for (const StudySetting* s : {&st.setting("beta-0.5-trials-3000"), &st.reference})
+    for (std::uint64_t seed : st.seeds) {
+      const ConfigNode profile = ConfigNode::load_string(setting_profile_text(st, *s), "profile");
+      const PackingProfile pp = parse_packing(profile);
+      const Packing pk = generate_packing(pp.parameters, seed);
+      PackingProvenance prov;
+      prov.program = "softpack-pack";
+      prov.seconds = s->name == "reference" ? 10.0 : 1.0;
+      fs::create_directories(runs + "/" + s->name + "/packings");
+      write_packing_file(runs + "/" + s->name + "/packings/seed-" + std::to_string(seed) + ".h5", pp.parameters, pk,
+                         packing_statistics(pk.centres, pk.radii, pp.parameters.Rs, pp.parameters.r_max, 10), prov);
+    }
+  for (const auto& [margin, chosen] : {std::pair{"0.5", "beta-0.5-trials-3000"}, std::pair{"0.001", "beta-2.0-trials-3000"}}) {
+    std::ofstream(criteria) << "density: {solid_fraction_margin: " << margin << "}\n";
+    const std::string table = report_kind("density-rule").write(st, runs, dir_.string(), "T");
+    EXPECT_NE(table.find(std::string("(setting ") + chosen + ")"), std::string::npos) << table;
   }
 }
 
