@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   profiles->add_option("--study", study_path, "study file, e.g. experiments/studies/accuracy.yaml")->required();
   profiles->add_option("--out-dir", out_dir, "folder of the generated profiles")->required();
   CLI::App* plan = app.add_subcommand("plan", "what make needs of the study, as shell assignments: study_dir (its folder under "
-                                              "DATA), study_stages (the goals each setting runs), study_figures (script:data:name)");
+                                              "DATA), study_archive (the archive its stages may reuse), study_stages (the goals each setting runs), study_figures (script:data:name)");
   plan->add_option("--study", study_path, "study file")->required();
   plan->add_option("--data", data_dir, "DATA, the folder the study's own folder is in")->required();
   std::string kinds;
@@ -89,8 +89,8 @@ int main(int argc, char** argv) {
     if (plan->parsed()) {
       std::string figures;
       for (const StudyFigure& f : study.figures) figures += (figures.empty() ? "" : " ") + f.script + ":" + f.data + ":" + f.name;
-      fmt::print("study_dir='{}/{}'\nstudy_stages='{}'\nstudy_figures='{}'\n", data_dir, study.out, fmt::join(study.stages, " "),
-                 figures);
+      fmt::print("study_dir='{}/{}'\nstudy_archive='{}'\nstudy_stages='{}'\nstudy_figures='{}'\n", data_dir, study.out, study.archive,
+                 fmt::join(study.stages, " "), figures);
       return 0;
     }
     const ReportKind& kind = report_kind(study.report);

@@ -4,7 +4,8 @@
 # `stages`, by default the tangential sweeps and what they need) with the profile DAG itself (a
 # make of its own: PROFILE_FILE the generated profile, DATA the study's folder `out`, so every
 # point is checkpointed and every stage stamped; a stopped study loses at most the points in
-# progress and a changed setting reruns only what it touches), then `make NAME-report` writes
+# progress and a changed setting reruns only what it touches; a stage whose stamp and seeds are an
+# earlier setting's is shared with it, share_stages), then `make NAME-report` writes
 # the report of the study's kind (softpack-study report) and draws its figures.
 #
 #   make radius SETTINGS="similar-2"   # only those settings (and the reference: all is compared to it)
@@ -37,24 +38,44 @@ study_run = $(if $(findstring n,$(MAKE_LETTERS)),@echo "study $(1): would write 
 
 # run_study FILE: the profile of the reference and of every setting, then each one's stages by
 # the profile DAG in the study's folder (SETTINGS: only those, and the reference). A setting whose
-# run fails is recorded as failed.
+# run fails is recorded as failed. Nothing is taken from the release's archive of a profile (a
+# setting is no profile of the project), except from the study's own `archive`, where the stamps
+# match (workflow/archive_check.sh checks it first).
 define run_study
 [ -n "$(1)" ] || { echo "study: say which study: make study STUDY=FILE, or make NAME for experiments/studies/NAME.yaml" >&2; exit 2; }; \
 plan=$$($(STUDY_TOOL) plan --study $(1) --data $(DATA)) || exit 2; eval "$$plan"; \
 mkdir -p $$study_dir/profiles; \
 settings=$$($(STUDY_TOOL) profiles --study $(1) --out-dir $$study_dir/profiles) || exit 2; \
-chosen="$(SETTINGS)"; n=0; total=$$(echo $$settings | wc -w); \
+chosen="$(SETTINGS)"; n=0; total=$$(echo $$settings | wc -w); done=; \
+reuse=FROM_SCRATCH=1; [ -z "$$study_archive" ] || reuse=ARCHIVE=$$study_archive; \
 for s in $$settings; do n=$$((n + 1)); \
   if [ -n "$$chosen" ] && [ $$s != reference ] && ! echo " $$chosen " | grep -q " $$s "; then continue; fi; \
   echo "study $(1): setting $$n/$$total: $$s ($$study_dir/$$s)"; mkdir -p $$study_dir/$$s; \
+  $(call share_stages,$$study_dir,$$s,$$done); done="$$done $$s"; \
   if $(MAKE) --no-print-directory PROFILE=$$s PROFILE_FILE=$$study_dir/profiles/$$s.yaml DATA=$$study_dir \
-    FROM_SCRATCH=1 $$study_stages > $$study_dir/$$s/make.log 2>&1; then rm -f $$study_dir/$$s/failed.txt; \
+    $$reuse $$study_stages > $$study_dir/$$s/make.log 2>&1; then rm -f $$study_dir/$$s/failed.txt; \
   else [ $$s != reference ] || { tail -20 $$study_dir/$$s/make.log; exit 1; }; \
     grep -h -m1 -e 'numerical error' -e 'error:' $$study_dir/$$s/*/*.log $$study_dir/$$s/make.log 2>/dev/null | head -1 \
       > $$study_dir/$$s/failed.txt; \
     echo "study $(1): setting $$s FAILED, reported as such: $$(cat $$study_dir/$$s/failed.txt)"; fi; \
-  grep -E '^(pack|normal|tangential|sliding):' $$study_dir/$$s/make.log || true; \
+  grep -E '^(pack|normal|tangential|sliding|average|fit):' $$study_dir/$$s/make.log || true; \
 done
+endef
+
+# share_stages DIR SETTING EARLIER: a stage's results are shared, not recomputed, when an earlier
+# setting of the study has the same seeds and the same stamp of that stage (stamps include every
+# section upstream: workflow/stamps.mk), and the setting has none of its own yet: its folder is
+# hard links to the earlier one's, with its stamp file (same names, same times), so make finds it
+# up to date. A rerun of either writes new files (atomic renames), never through the links.
+define share_stages
+for st in packing:packings normal:normal tangential:tangential sliding:sliding; do \
+  stage=$${st%%:*}; dir=$${st#*:}; [ ! -e $(1)/$(2)/$$dir ] || continue; \
+  for d in $(3); do [ -d $(1)/$$d/$$dir ] && [ -f $(1)/$$d/stamps/$$stage.hash ] || continue; \
+    own=$$($(CONFIG_TOOL) $(1)/profiles/$(2).yaml stamp $$stage --release $(VERSION) 2> /dev/null) || continue; \
+    [ "$$own" = "$$(cat $(1)/$$d/stamps/$$stage.hash)" ] || continue; \
+    [ "$$($(CONFIG_TOOL) $(1)/profiles/$(2).yaml seeds)" = "$$($(CONFIG_TOOL) $(1)/profiles/$$d.yaml seeds)" ] || continue; \
+    mkdir -p $(1)/$(2)/stamps && cp -al $(1)/$$d/$$dir $(1)/$(2)/$$dir && cp -al $(1)/$$d/stamps/$$stage.hash $(1)/$(2)/stamps/ \
+    && echo "study: $(2) shares $$d's $$dir (the same seeds and $$stage stamp)"; break; done; done
 endef
 
 # study_report FILE: the report of the study's kind from the settings run so far (settings not

@@ -8,6 +8,7 @@
 #include "formats/law_file.hpp"
 #include "report/accuracy_report.hpp"
 #include "report/calibration_report.hpp"
+#include "report/fits_report.hpp"
 #include "report/packing_report.hpp"
 #include "report/radius_report.hpp"
 #include "report/response_report.hpp"
@@ -34,6 +35,7 @@ const std::vector<ReportKind>& report_kinds() {
        }},
       {"density-rule", "The density rule", "table.md, density-rule.json (report/packing_report.hpp)", {"grid", "criteria"},
        write_density_rule_report},
+      {"fits", "Fit options", "table.md, fits.json (report/fits_report.hpp)", {}, write_fits_report},
       {"packings", "Packing density", "table.md, packing-density.dat (report/packing_report.hpp)", {"vary"},
        write_packings_report},
       {"response", "Response of the normal law", "table.md, response.dat (report/response_report.hpp)", {"compare"},

@@ -221,8 +221,10 @@ void read_plan(const ConfigNode& root, Study& st) {
   st.stages = {"tangential"};
   if (auto stages = root.find("stages")) {
     st.stages.clear();
-    for (const ConfigNode& s : stages->items()) st.stages.push_back(s.choice({"packings", "normal", "tangential", "sliding"}));
-    if (st.stages.empty()) stages->fail("allowed: a list of the profile's goals (packings, normal, tangential, sliding), not empty");
+    for (const ConfigNode& s : stages->items())
+      st.stages.push_back(s.choice({"packings", "normal", "tangential", "sliding", "averages", "fits"}));
+    if (st.stages.empty())
+      stages->fail("allowed: a list of the profile's goals (packings, normal, tangential, sliding, averages, fits), not empty");
   }
   st.out = "studies/" + st.name;
   if (auto out = root.find("out")) {
@@ -230,6 +232,11 @@ void read_plan(const ConfigNode& root, Study& st) {
     if (st.out.empty() || st.out.front() == '/' || st.out.find("..") != std::string::npos ||
         st.out.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789.-/_") != std::string::npos)
       out->fail("allowed: a folder under DATA (lowercase letters, digits, '.', '-', '_', '/'; not absolute, no '..')");
+  }
+  if (auto archive = root.find("archive")) {
+    st.archive = archive->string();
+    if (!std::filesystem::is_regular_file(st.archive + "/MANIFEST.sha256"))
+      archive->fail(fmt::format("{} is not an archive (no MANIFEST.sha256): allowed, a folder data/archive/<release>/<profile>", st.archive));
   }
   if (auto figures = root.find("figures"))
     for (const ConfigNode& f : figures->items()) {
@@ -247,7 +254,7 @@ void read_plan(const ConfigNode& root, Study& st) {
 
 Study read_study(const std::string& path) {
   const ConfigNode root = ConfigNode::load_file(path);
-  root.allow_only({"study", "report", "stages", "out", "figures", "base", "seeds", "common", "compare", "criteria", "calibrate",
+  root.allow_only({"study", "report", "archive", "stages", "out", "figures", "base", "seeds", "common", "compare", "criteria", "calibrate",
                    "radius", "reference", "settings", "vary", "grid"});
   Study st;
   st.path = path;

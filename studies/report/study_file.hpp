@@ -47,6 +47,7 @@ struct Study {
   std::string report;               ///< the report's kind (report/report_kinds.hpp)
   std::vector<std::string> stages;  ///< the profile goals every setting runs (default: tangential)
   std::string out;                  ///< its folder under DATA (default: studies/<name>)
+  std::string archive;  ///< `archive`: results the stages reuse where their stamps match ("": none)
   std::vector<StudyFigure> figures;
   YAML::Node base_yaml;  ///< the base profile as read (ConfigNode's checks)
   std::vector<std::uint64_t> seeds;

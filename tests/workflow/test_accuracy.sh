@@ -6,10 +6,13 @@
 #   2. a study file in experiments/studies/ is a make goal of its name, with no make edit: it runs
 #      the reference and every setting, writes the table, the Pareto data and the figure; the
 #      reference compared with itself has zero error, every setting a row;
-#   3. a second make recomputes nothing; changing one setting reruns that one only;
+#   3. a second make recomputes nothing; changing one setting reruns that one only; a stage whose
+#      seeds and stamp are an earlier setting's is shared, not recomputed;
 #   4. softpack-study check compares two of its profiles on their seeds (the fast profile's
 #      confirmation): every quantity with both standard errors, the costs; different seeds refused;
-#   5. the calibration report (another kind) of the same runs: make study-report STUDY=FILE.
+#   5. the calibration report (another kind) of the same runs: make study-report STUDY=FILE;
+#   6. a study of fit options: its setting shares the reference's sweeps by their stamps and runs
+#      only averages and fits; its report (kind fits) has each coefficient's jackknife error.
 #
 #   test_accuracy.sh BUILD_DIR SOURCE_DIR
 source "$(dirname "$0")/common.sh"
@@ -83,6 +86,12 @@ assert 0 < cpu["base-1-seed"] < cpu["base"], cpu  # one seed of the two costs le
 assert r["reference"]["cpu_seconds"] > 0
 PY
 pass "make tiny (experiments/studies/tiny.yaml): the reference, 2 settings run and 1 subset compared; table, data, figure"
+# stops-1 has base's seeds and packing section (its relaxation differs): base's packings are its own.
+grep -q "^study: stops-1 shares base's packings" "$work/a1.log" || { cat "$work/a1.log"; fail "stops-1 did not share base's packings"; }
+grep -q "^pack: stops-1 " "$work/a1.log" && fail "stops-1's packings were generated again"
+[ data/accuracy/stops-1/packings/seed-101.h5 -ef data/accuracy/base/packings/seed-101.h5 ] || fail "stops-1's packing is not base's file"
+grep -qE "^study: stops-1 shares base's (normal|tangential)" "$work/a1.log" && fail "stops-1 shared a sweep of another relaxation"
+pass "a setting with an earlier one's seeds and packing stamp shares its packings (hard links), not its sweeps"
 
 # --- 3. nothing twice; a changed setting reruns alone --------------------------------------------
 mk -j2 tiny > "$work/a2.log" 2>&1 || { cat "$work/a2.log"; fail "make tiny again"; }
@@ -142,3 +151,35 @@ assert ref["error"][q.index("soft-solid Fn(0.7)")] > 0, ref
 assert all(e is None for e in s["base-1-seed"]["error"]), s["base-1-seed"]["error"]
 PY
 pass "make study-report, a calibration study: every setting's laws and packings with their errors, table, data, figure"
+
+# --- 6. fit options: the sweeps shared, only averages and fits run ------------------------------
+cat > experiments/studies/tiny-fits.yaml <<'YAML'
+study: tiny-fits
+report: fits
+stages: [fits]
+base: experiments/quick.yaml
+seeds: [101, 102]
+reference:
+  seeds: [101, 102, 103]
+  set:
+    relaxation: {protocol: converged, force_tolerance: 1.0e-3, energy_tolerance: 1.0e-7, check_interval: 0.05,
+                 max_time: 5.0, zero_velocities_at_checks: true}
+settings:
+  unweighted:
+    seeds: [101, 102, 103]
+    set:
+      fit: {weighting: unweighted, onset_force: 1.0e-3}
+      relaxation: {protocol: converged, force_tolerance: 1.0e-3, energy_tolerance: 1.0e-7, check_interval: 0.05,
+                   max_time: 5.0, zero_velocities_at_checks: true}
+YAML
+mk tiny-fits > "$work/f.log" 2>&1 || { cat "$work/f.log"; fail "make tiny-fits"; }
+for stage in packings normal tangential; do
+  grep -q "^study: unweighted shares reference's $stage" "$work/f.log" || { cat "$work/f.log"; fail "unweighted did not share the $stage"; }
+done
+! grep -qE '^(pack|normal|tangential): unweighted ' "$work/f.log" || { cat "$work/f.log"; fail "unweighted ran a sweep"; }
+grep -qE '^fit: unweighted ' "$work/f.log" || { cat "$work/f.log"; fail "unweighted did not fit"; }
+fits=data/studies/tiny-fits/report/table.md
+[ "$(grep -c '^| unweighted | fit = ' $fits)" -eq 2 ] || fail "fits report: $(cat $fits)"
+grep -q '^| reference | relaxation = .* | [0-9.e+-]* ± ' $fits || fail "no jackknife error in the fits report: $(cat $fits)"
+pass "a fit-options study: its sweeps shared by stamp, only its averages and fits run"
+

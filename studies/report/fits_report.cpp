@@ -1,0 +1,82 @@
+#include "report/fits_report.hpp"
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "core/types.hpp"
+#include "formats/fit_file.hpp"
+#include "io/atomic_file.hpp"
+#include "report/study_runs.hpp"
+
+namespace softpack {
+namespace {
+
+// "value ± error" with the error's two significant digits setting the value's ("—" for none).
+std::string estimate_text(double value, double error) {
+  if (!std::isfinite(value)) return "—";
+  if (!std::isfinite(error) || error <= 0.0) return fmt::format("{:.4g}", value);
+  return fmt::format("{:.4g} ± {:.2g}", value, error);
+}
+
+nlohmann::json pair_json(double value, double error) {
+  const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  return nlohmann::json::array({number(value), number(error)});
+}
+
+}  // namespace
+
+std::string write_fits_report(const Study& study, const std::string& data_dir, const std::string& out_dir,
+                              const std::string& title) {
+  std::vector<const StudySetting*> settings{&study.reference};
+  for (const StudySetting& s : study.settings) settings.push_back(&s);
+  std::string md = fmt::format(
+      "# {}\n\nEq. 7's coefficients ± their leave-one-seed-out (jackknife) standard error; Eq. 8's (kt) ± the fit's "
+      "standard error; χ²/dof of Eq. 7 over every point as experiments/criteria.yaml judges it.\n",
+      title);
+  nlohmann::json rows = nlohmann::json::array();
+  for (const std::string& scene : kStudyScenes) {
+    md += fmt::format("\n## {}\n\n| setting | fit | a [N] | b | c [N] | δ | kt a | kt b | χ²/dof |\n"
+                      "|---|---|---|---|---|---|---|---|---|\n",
+                      scene);
+    for (const StudySetting* s : settings) {
+      const std::string folder = s->runs() ? s->name : s->of;
+      const std::string path = fmt::format("{}/{}/fits/{}.json", data_dir, folder, scene);
+      if (!std::filesystem::exists(path)) {
+        md += fmt::format("| {} | {} | not run | | | | | | |\n", s->name, setting_changes(study, *s));
+        continue;
+      }
+      const FitEstimates f = read_fit_file(path);
+      const fit::Jackknife jk = f.jackknife.value_or(fit::Jackknife{});
+      const auto normal = [&](const char* key, double jk_error) {
+        const auto it = f.normal.find(key);
+        return it == f.normal.end() ? std::pair{kNaN, kNaN} : std::pair{it->second.value, jk.done ? jk_error : kNaN};
+      };
+      const auto kt = [&](const char* key) {
+        if (!f.tangential || !f.tangential->count(key)) return std::pair{kNaN, kNaN};
+        const table::Estimate& e = f.tangential->at(key);
+        return std::pair{e.value, e.error};
+      };
+      const std::pair<double, double> values[6] = {normal("a", jk.a), normal("b", jk.b), normal("c", jk.c),
+                                                   normal("delta", jk.delta), kt("a"), kt("b")};
+      const double chi2 = f.judged ? f.judged->chi2_per_dof : kNaN;
+      md += fmt::format("| {} | {} |", s->name, setting_changes(study, *s));
+      nlohmann::json row = {{"setting", s->name}, {"scene", scene}, {"path", path}, {"chi2_per_dof", pair_json(chi2, kNaN)[0]}};
+      const char* names[6] = {"a", "b", "c", "delta", "kt_a", "kt_b"};
+      for (int k = 0; k < 6; ++k) {
+        md += fmt::format(" {} |", estimate_text(values[k].first, values[k].second));
+        row[names[k]] = pair_json(values[k].first, values[k].second);
+      }
+      md += fmt::format(" {} |\n", std::isfinite(chi2) ? fmt::format("{:.3g}", chi2) : "—");
+      rows.push_back(row);
+    }
+  }
+  write_files_atomically({{out_dir + "/table.md", md}, {out_dir + "/fits.json", nlohmann::json{{"title", title}, {"rows", rows}}.dump(2) + "\n"}});
+  return md;
+}
+
+}  // namespace softpack
