@@ -5,10 +5,13 @@
 #
 #   test_softpack_commands.sh BIN_DIR SOURCE_DIR
 source "$(dirname "$0")/common.sh"
-bin=$1
+bin=$1 source_dir=$2
 
+# The commands `softpack --help` lists are the build's (apps/CMakeLists.txt, SOFTPACK_COMMANDS).
 mapfile -t names < <("$bin/softpack" --help | sed -n 's/^  softpack-\([a-z-]*\) .*/\1/p')
-[[ ${#names[@]} -ge 16 ]] || fail "softpack --help lists ${#names[@]} commands: $("$bin/softpack" --help)"
+built=$(sed -n '/^set(SOFTPACK_COMMANDS/,/)/p' "$source_dir/apps/CMakeLists.txt" | sed 's/^set(SOFTPACK_COMMANDS//' | tr -d '()' | tr -s ' \n' '\n' | grep . | sort)
+[[ $(printf '%s\n' "${names[@]}" | sort) == "$built" ]] ||
+  fail "softpack --help lists ${names[*]}; apps/CMakeLists.txt builds $(echo $built)"
 for name in "${names[@]}"; do
   [[ -L $bin/softpack-$name && $(readlink "$bin/softpack-$name") == softpack ]] || fail "$bin/softpack-$name is not a link to softpack"
   "$bin/softpack-$name" --help > "$tmp/help" || fail "softpack-$name --help: exit $?"
