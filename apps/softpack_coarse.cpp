@@ -6,7 +6,9 @@
 //       runs its oedometric compression with that model and writes the curve
 //       (coarse/result_file.hpp);
 //   softpack-coarse report --config ... --runs DIR --out DIR
-//       compares the two models over the seeds that have both (coarse/report.hpp).
+//       compares the two models over the seeds that have both (coarse/report.hpp);
+//   softpack-coarse stamp --config ... --release V
+//       the stages' configuration stamps, for make (coarse/settings.hpp).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -124,6 +126,10 @@ int main(int argc, char** argv) {
   seeds_cmd->add_option("--config", seeds_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
   bool medium_text = false;  // what a medium depends on, as the medium file records it (maintenance)
   seeds_cmd->add_flag("--medium-text", medium_text)->group("");
+  std::string stamp_config, release;
+  CLI::App* stamp_cmd = app.add_subcommand("stamp", "print the stages' configuration stamps, medium=, resolved=, soft= (for make)");
+  stamp_cmd->add_option("--config", stamp_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
+  stamp_cmd->add_option("--release", release, "the release the stamps are of (make passes CMakeLists.txt's)")->required();
   ReportOptions ro;
   CLI::App* report_cmd = app.add_subcommand("report", "compare the two models over the seeds that ran both");
   report_cmd->add_option("--config", ro.config, "settings, e.g. experiments/coarse-grain.yaml")->required();
@@ -138,6 +144,11 @@ int main(int argc, char** argv) {
       }
       for (std::uint64_t seed : read_coarse_grain_settings(seeds_config).seeds) fmt::print("{} ", seed);
       fmt::print("\n");
+      return 0;
+    }
+    if (*stamp_cmd) {
+      const CoarseStamps st = coarse_stamps(stamp_config, release);
+      fmt::print("medium={}\nresolved={}\nsoft={}\n", st.medium, st.resolved, st.soft);
       return 0;
     }
     if (*probe_cmd) {

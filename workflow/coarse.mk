@@ -2,8 +2,10 @@
 # seed of COARSE_CONFIG the two-decade medium (softpack-coarse medium: its packings are most of
 # the time), then its oedometric compression resolved and with soft-particles (softpack-coarse
 # run: one results file per model and seed), then the comparison, its table and its figure
-# (softpack-coarse report; figures/coarse_grain.gp). A rerun redoes only what is missing or older
-# than the settings, the law file or the tool; every file is written atomically.
+# (softpack-coarse report; figures/coarse_grain.gp). A rerun redoes only what is missing or whose
+# stage's stamp changed (softpack-coarse stamp: a hash of exactly what the stage reads, the law
+# file's content for the soft model; coarse/settings.hpp), never because a program was relinked;
+# every file is written atomically.
 #
 #   make coarse-grain                          # every seed, both models, then the report
 #   make coarse-grain COARSE_SEEDS="301"       # only those seeds
@@ -11,7 +13,17 @@
 COARSE_CONFIG ?= experiments/coarse-grain.yaml
 COARSE_DIR ?= data/coarse-grain
 COARSE_TOOL := $(BUILD)/bin/softpack-coarse
-COARSE_LAWS := data/radius/report/laws.json
+# The stages' stamps, once the tool exists (a fresh clone asks after building it: coarse-grain
+# runs coarse-grain-runs in a make of its own); a stamp file is rewritten only when it changes.
+ifneq ($(wildcard $(COARSE_TOOL)),)
+COARSE_STAMPS := $(shell $(COARSE_TOOL) stamp --config $(COARSE_CONFIG) --release $(VERSION))
+ifneq ($(.SHELLSTATUS),0)
+$(error $(COARSE_CONFIG) is refused (the message above); fix it, or make build if softpack-coarse is out of date)
+endif
+endif
+coarse_stamp = $(COARSE_DIR)/stamps/$(1).hash
+$(foreach stage,medium resolved soft,$(eval $(call stamp_rule,$(call coarse_stamp,$(stage)),$(patsubst \
+  $(stage)=%,%,$(filter $(stage)=%,$(COARSE_STAMPS))))))
 
 .PHONY: coarse-grain coarse-grain-runs coarse-grain-report
 coarse-grain: | $(TOOLS)  ## the coarse-grain validation: resolved against soft-particles (COARSE_DIR/report/)
@@ -22,14 +34,14 @@ coarse-grain: | $(TOOLS)  ## the coarse-grain validation: resolved against soft-
 COARSE_SEEDS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --config $(COARSE_CONFIG))
 coarse-grain-runs: $(foreach s,$(COARSE_SEEDS),$(COARSE_DIR)/runs/resolved-$(s).h5 $(COARSE_DIR)/runs/soft-$(s).h5)
 
-$(COARSE_DIR)/media/medium-%.h5: $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOLS)
+$(COARSE_DIR)/media/medium-%.h5: $(call coarse_stamp,medium) | $(TOOLS)
 	@mkdir -p $(@D)
 	@$(RUN) $(COARSE_TOOL) medium --config $(COARSE_CONFIG) --seed $* --out $@ 2> $(@D)/medium-$*.log \
 	  || { echo "coarse-grain: medium $* FAILED (log: $(@D)/medium-$*.log)"; tail -3 $(@D)/medium-$*.log; exit 1; }
 	@tr '\r' '\n' < $(@D)/medium-$*.log | tail -1
 
 define coarse_run
-$(COARSE_DIR)/runs/$(1)-$(2).h5: $(COARSE_DIR)/media/medium-$(2).h5 $(COARSE_LAWS) $(COARSE_TOOL) | $(TOOLS)
+$(COARSE_DIR)/runs/$(1)-$(2).h5: $(COARSE_DIR)/media/medium-$(2).h5 $(call coarse_stamp,$(1)) | $(TOOLS)
 	@mkdir -p $$(@D)
 	@$(RUN) $(COARSE_TOOL) run --config $(COARSE_CONFIG) --model $(1) --medium $$< --out $$@ 2> $$(@D)/$(1)-$(2).log \
 	  || { echo "coarse-grain: $(1) $(2) FAILED (log: $$(@D)/$(1)-$(2).log)"; tr '\r' '\n' < $$(@D)/$(1)-$(2).log | tail -3; exit 1; }

@@ -8,6 +8,7 @@
 #include "profile/profile.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
+#include "io/sha256.hpp"
 #include "packing/packing_profile.hpp"
 
 namespace softpack {
@@ -112,6 +113,28 @@ CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const st
 
   s.seeds = parse_seeds(c);
   return s;
+}
+
+CoarseStamps coarse_stamps(const std::string& path, const std::string& version, const std::string& root_dir) {
+  const CoarseGrainSettings s = read_coarse_grain_settings(path, root_dir);  // checked first
+  const ConfigNode c = ConfigNode::load_file(path).at("coarse_grain");
+  const ConfigNode sp = c.at("soft_particle");
+  const ConfigNode profile = ConfigNode::load_file(resolve(root_dir, s.profile));
+  const auto text = [](const ConfigNode& n) {
+    std::ostringstream t;
+    t << n.yaml();
+    return t.str() + "\n";
+  };
+  const auto stamp = [&](const std::string& stage, const std::string& what) {
+    return sha256_of_bytes("softpack " + version + "\nstage " + stage + "\n" + what).substr(0, 16);
+  };
+  std::string medium = section_text(profile, "packing") + "overrides: " + (sp.has("packing") ? text(sp.at("packing")) : "\n") +
+                       "medium:\n" + text(c.at("medium"));
+  std::string resolved = medium + section_text(profile, "material") + section_text(profile, "simulation") +
+                         "shell_mass_fraction: " + text(sp.at("shell_mass_fraction")) + "compression:\n" + text(c.at("compression"));
+  std::string soft = resolved + "laws: " + sha256_of_file(s.laws) + "\ngrain_contact: " + text(sp.at("grain_contact")) +
+                     "beyond_range: " + text(sp.at("beyond_range"));
+  return {stamp("medium", medium), stamp("resolved", resolved), stamp("soft", soft)};
 }
 
 }  // namespace softpack

@@ -65,4 +65,18 @@ struct CoarseGrainSettings {
 /// is allowed. `root_dir`: where relative paths (profile, laws) start.
 CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const std::string& root_dir = ".");
 
+/// The configuration stamps of the coarse-grain stages (workflow/coarse.mk: a stage reruns when
+/// its stamp changes, not when a program is relinked): 16 hex digits of the SHA-256 of "softpack
+/// VERSION", the stage and the text of exactly what it reads --
+///   medium    the soft-particle profile's `packing` section, the study's packing overrides, `medium`;
+///   resolved  the medium's, the profile's `material` and `simulation` sections, shell_mass_fraction,
+///             `compression`;
+///   soft      the resolved model's, the law file's SHA-256 (its content, not its time), grain_contact,
+///             beyond_range.
+/// So a variant that changes only how a soft-particle meets a grain keeps its media and resolved runs.
+struct CoarseStamps {
+  std::string medium, resolved, soft;
+};
+CoarseStamps coarse_stamps(const std::string& path, const std::string& version, const std::string& root_dir = ".");
+
 }  // namespace softpack

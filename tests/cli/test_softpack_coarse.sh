@@ -28,4 +28,34 @@ expect_error "compression.speed: -1 is not allowed" "$tmp/x.h5" "$exe" run --con
 sed 's/    grains: 12/    grian: 12/' "$config" > "$tmp/typo.yaml"
 expect_error "coarse_grain.medium.grian: unknown key" "$tmp/m.h5" "$exe" medium --config "$tmp/typo.yaml" --seed 1 --out "$tmp/m.h5"
 expect_error "has both runs" "$tmp/r/coarse-grain.md" "$exe" report --config "$config" --runs "$tmp/none" --out "$tmp/r"
+
+# The stages' stamps (workflow/coarse.mk): each changes with exactly what its stage reads.
+stamps() { "$exe" stamp --config "$1" --release 9.9.9 | tr '\n' ' '; }
+base=$(stamps "$config")
+[[ $base =~ ^medium=[0-9a-f]{16}\ resolved=[0-9a-f]{16}\ soft=[0-9a-f]{16}\ $ ]] || fail "stamp: '$base'"
+field() { echo "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+same_but() {  # same_but CONFIG WHAT STAGES-THAT-CHANGE
+  local other; other=$(stamps "$1")
+  for stage in medium resolved soft; do
+    if [[ " $3 " == *" $stage "* ]]; then
+      [[ $(field "$other" $stage) != $(field "$base" $stage) ]] || fail "$2 left the $stage stamp as it was"
+    else
+      [[ $(field "$other" $stage) == $(field "$base" $stage) ]] || fail "$2 changed the $stage stamp"
+    fi
+  done
+}
+sed 's/    grain_contact: wall/    grain_contact: reduced-radius/' "$config" > "$tmp/contact.yaml"
+same_but "$tmp/contact.yaml" "grain_contact" "soft"
+sed 's/    speed: 0.05/    speed: 0.04/' "$config" > "$tmp/speed.yaml"
+same_but "$tmp/speed.yaml" "compression.speed" "resolved soft"
+sed 's/    grains: 12/    grains: 13/' "$config" > "$tmp/grains.yaml"
+same_but "$tmp/grains.yaml" "medium.grains" "medium resolved soft"
+cp data/radius/report/laws.json "$tmp/laws.json"
+sed "s|    laws: data/radius/report/laws.json|    laws: $tmp/laws.json|" "$config" > "$tmp/laws.yaml"
+same_but "$tmp/laws.yaml" "the same law file elsewhere" ""
+touch -d '2001-01-01' "$tmp/laws.json"
+same_but "$tmp/laws.yaml" "an older law file of the same content" ""
+sed -i 's/"version": 1/"version": 1 /' "$tmp/laws.json"
+same_but "$tmp/laws.yaml" "a law file of other bytes" "soft"
+[[ $(field "$(stamps "$config")" medium) == $(field "$(stamps "$tmp/contact.yaml")" medium) ]] || fail "stamps are not stable"
 echo "ok"
