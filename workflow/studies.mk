@@ -66,7 +66,9 @@ endef
 # setting of the study has the same seeds and the same stamp of that stage (stamps include every
 # section upstream: workflow/stamps.mk), and the setting has none of its own yet: its folder is
 # hard links to the earlier one's, with its stamp file (same names, same times), so make finds it
-# up to date. A rerun of either writes new files (atomic renames), never through the links.
+# up to date; the normal stage's checkpoints come along (the tangential stage starts from them).
+# A rerun of either writes new files (atomic renames), never through the links; the logs, which a
+# recipe's redirection truncates in place, are copies of their own.
 define share_stages
 for st in packing:packings normal:normal tangential:tangential sliding:sliding; do \
   stage=$${st%%:*}; dir=$${st#*:}; [ ! -e $(1)/$(2)/$$dir ] || continue; \
@@ -75,6 +77,9 @@ for st in packing:packings normal:normal tangential:tangential sliding:sliding; 
     [ "$$own" = "$$(cat $(1)/$$d/stamps/$$stage.hash)" ] || continue; \
     [ "$$($(CONFIG_TOOL) $(1)/profiles/$(2).yaml seeds)" = "$$($(CONFIG_TOOL) $(1)/profiles/$$d.yaml seeds)" ] || continue; \
     mkdir -p $(1)/$(2)/stamps && cp -al $(1)/$$d/$$dir $(1)/$(2)/$$dir && cp -al $(1)/$$d/stamps/$$stage.hash $(1)/$(2)/stamps/ \
+    && if [ $$stage = normal ] && [ -d $(1)/$$d/checkpoints/normal ] && [ ! -e $(1)/$(2)/checkpoints/normal ]; then \
+      mkdir -p $(1)/$(2)/checkpoints && cp -al $(1)/$$d/checkpoints/normal $(1)/$(2)/checkpoints/normal; fi \
+    && find $(1)/$(2)/$$dir -name '*.log' -exec sh -c 'cp "$$1" "$$1.own" && mv "$$1.own" "$$1"' sh {} \; \
     && echo "study: $(2) shares $$d's $$dir (the same seeds and $$stage stamp)"; break; done; done
 endef
 

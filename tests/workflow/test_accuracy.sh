@@ -90,6 +90,8 @@ pass "make tiny (experiments/studies/tiny.yaml): the reference, 2 settings run a
 grep -q "^study: stops-1 shares base's packings" "$work/a1.log" || { cat "$work/a1.log"; fail "stops-1 did not share base's packings"; }
 grep -q "^pack: stops-1 " "$work/a1.log" && fail "stops-1's packings were generated again"
 [ data/accuracy/stops-1/packings/seed-101.h5 -ef data/accuracy/base/packings/seed-101.h5 ] || fail "stops-1's packing is not base's file"
+[ data/accuracy/stops-1/packings/seed-101.log -ef data/accuracy/base/packings/seed-101.log ] && fail "stops-1's packing log is base's (a rerun would truncate both)"
+cmp -s data/accuracy/stops-1/packings/seed-101.log data/accuracy/base/packings/seed-101.log || fail "stops-1's packing log differs from base's"
 grep -qE "^study: stops-1 shares base's (normal|tangential)" "$work/a1.log" && fail "stops-1 shared a sweep of another relaxation"
 pass "a setting with an earlier one's seeds and packing stamp shares its packings (hard links), not its sweeps"
 
@@ -176,6 +178,7 @@ mk tiny-fits > "$work/f.log" 2>&1 || { cat "$work/f.log"; fail "make tiny-fits";
 for stage in packings normal tangential; do
   grep -q "^study: unweighted shares reference's $stage" "$work/f.log" || { cat "$work/f.log"; fail "unweighted did not share the $stage"; }
 done
+[ -d data/studies/tiny-fits/unweighted/checkpoints/normal ] || fail "the normal checkpoints did not come with the shared normal results"
 ! grep -qE '^(pack|normal|tangential): unweighted ' "$work/f.log" || { cat "$work/f.log"; fail "unweighted ran a sweep"; }
 grep -qE '^fit: unweighted ' "$work/f.log" || { cat "$work/f.log"; fail "unweighted did not fit"; }
 fits=data/studies/tiny-fits/report/table.md
