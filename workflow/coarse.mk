@@ -15,10 +15,13 @@ COARSE_DIR ?= data/coarse-grain
 COARSE_TOOL := $(BUILD)/bin/softpack-coarse
 # The stages' stamps, once the tool exists (a fresh clone asks after building it: coarse-grain
 # runs coarse-grain-runs in a make of its own); a stamp file is rewritten only when it changes.
+# (Asked only for the coarse goals: a make of the profile's never reads the coarse settings.)
 ifneq ($(wildcard $(COARSE_TOOL)),)
+ifneq ($(filter coarse-grain%,$(MAKECMDGOALS)),)
 COARSE_STAMPS := $(shell $(COARSE_TOOL) stamp --config $(COARSE_CONFIG) --release $(VERSION))
 ifneq ($(.SHELLSTATUS),0)
 $(error $(COARSE_CONFIG) is refused (the message above); fix it, or make build if softpack-coarse is out of date)
+endif
 endif
 endif
 coarse_stamp = $(COARSE_DIR)/stamps/$(1).hash

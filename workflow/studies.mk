@@ -49,7 +49,7 @@ settings=$$($(STUDY_TOOL) profiles --study $(1) --out-dir $$study_dir/profiles) 
 chosen="$(SETTINGS)"; n=0; total=$$(echo $$settings | wc -w); done=; \
 reuse=FROM_SCRATCH=1; [ -z "$$study_archive" ] || reuse=ARCHIVE=$$study_archive; \
 for s in $$settings; do n=$$((n + 1)); \
-  if [ -n "$$chosen" ] && [ $$s != reference ] && ! echo " $$chosen " | grep -q " $$s "; then continue; fi; \
+  if [ -n "$$chosen" ] && [ $$s != reference ] && ! echo " $$chosen " | grep -qF -- " $$s "; then continue; fi; \
   echo "study $(1): setting $$n/$$total: $$s ($$study_dir/$$s)"; mkdir -p $$study_dir/$$s; \
   $(call share_stages,$$study_dir,$$s,$$done); done="$$done $$s"; \
   if $(MAKE) --no-print-directory PROFILE=$$s PROFILE_FILE=$$study_dir/profiles/$$s.yaml DATA=$$study_dir \
@@ -76,7 +76,7 @@ for st in packing:packings normal:normal tangential:tangential sliding:sliding; 
     own=$$($(CONFIG_TOOL) $(1)/profiles/$(2).yaml stamp $$stage --release $(VERSION) 2> /dev/null) || continue; \
     [ "$$own" = "$$(cat $(1)/$$d/stamps/$$stage.hash)" ] || continue; \
     [ "$$($(CONFIG_TOOL) $(1)/profiles/$(2).yaml seeds)" = "$$($(CONFIG_TOOL) $(1)/profiles/$$d.yaml seeds)" ] || continue; \
-    mkdir -p $(1)/$(2)/stamps && cp -al $(1)/$$d/$$dir $(1)/$(2)/$$dir && cp -al $(1)/$$d/stamps/$$stage.hash $(1)/$(2)/stamps/ \
+    mkdir -p $(1)/$(2)/stamps && cp -al $(1)/$$d/$$dir $(1)/$(2)/$$dir && ln -f $(1)/$$d/stamps/$$stage.hash $(1)/$(2)/stamps/$$stage.hash \
     && if [ $$stage = normal ] && [ -d $(1)/$$d/checkpoints/normal ] && [ ! -e $(1)/$(2)/checkpoints/normal ]; then \
       mkdir -p $(1)/$(2)/checkpoints && cp -al $(1)/$$d/checkpoints/normal $(1)/$(2)/checkpoints/normal; fi \
     && find $(1)/$(2)/$$dir -name '*.log' -exec sh -c 'cp "$$1" "$$1.own" && mv "$$1.own" "$$1"' sh {} \; \

@@ -128,7 +128,7 @@ CoarseStamps coarse_stamps(const std::string& path, const std::string& version, 
   const auto stamp = [&](const std::string& stage, const std::string& what) {
     return sha256_of_bytes("softpack " + version + "\nstage " + stage + "\n" + what).substr(0, 16);
   };
-  std::string medium = section_text(profile, "packing") + "overrides: " + (sp.has("packing") ? text(sp.at("packing")) : "\n") +
+  std::string medium = "profile: " + s.profile + "\n" + section_text(profile, "packing") + "overrides: " + (sp.has("packing") ? text(sp.at("packing")) : "\n") +
                        "medium:\n" + text(c.at("medium"));
   std::string resolved = medium + section_text(profile, "material") + section_text(profile, "simulation") +
                          "shell_mass_fraction: " + text(sp.at("shell_mass_fraction")) + "compression:\n" + text(c.at("compression"));

@@ -68,7 +68,8 @@ CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const st
 /// The configuration stamps of the coarse-grain stages (workflow/coarse.mk: a stage reruns when
 /// its stamp changes, not when a program is relinked): 16 hex digits of the SHA-256 of "softpack
 /// VERSION", the stage and the text of exactly what it reads --
-///   medium    the soft-particle profile's `packing` section, the study's packing overrides, `medium`;
+///   medium    the soft-particle profile's path (the medium file records it) and `packing` section,
+///             the study's packing overrides, `medium`;
 ///   resolved  the medium's, the profile's `material` and `simulation` sections, shell_mass_fraction,
 ///             `compression`;
 ///   soft      the resolved model's, the law file's SHA-256 (its content, not its time), grain_contact,

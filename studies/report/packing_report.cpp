@@ -53,7 +53,11 @@ nlohmann::json written_json(const std::string& text) {
       ec == std::errc() && end == text.data() + text.size())
     return i;
   if (text == "true" || text == "false") return text == "true";
-  return std::stod(text);
+  try {
+    return std::stod(text);
+  } catch (const std::exception&) {
+    throw InputError(fmt::format("'{}' is not a number, true or false: the packing reports tabulate numbers", text));
+  }
 }
 
 double written_number(const std::string& text) {

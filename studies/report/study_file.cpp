@@ -313,6 +313,8 @@ Study read_study(const std::string& path) {
   if (!root.has("settings") && !root.has("vary") && !root.has("grid")) root.fail("no settings: give `settings`, `vary` or `grid`");
   std::set<std::string> names{"reference"};
   if (auto settings = root.find("settings")) check_settings(*settings, st, names);
+  if ((root.has("vary") || root.has("grid")) && !st.reference.set.empty())
+    root.at("reference").at("set").fail("`vary` and `grid` vary the base around itself: the reference sets no key (use `common`)");
   if (root.has("vary") || root.has("grid")) generate_settings(root, st, names);
   // Every profile must be one the stages accept: generated, then read as they read it.
   for (const StudySetting* s : [&] {

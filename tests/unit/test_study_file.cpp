@@ -159,6 +159,8 @@ TEST_F(StudyFile, GeneratedSettingsAreRefusedWithTheKey) {
             std::string::npos);
   EXPECT_NE(refused("twice", "vary: {packing.beta: [3.0, 3.0]}\n").find("'beta-3.0' is a name already used"), std::string::npos);
   EXPECT_NE(refused("bad", "vary: {packing.beta: [-1.0]}\n").find("setting beta--1.0"), std::string::npos);
+  EXPECT_NE(refused("around", "reference: {set: {packing.trials: 10}}\nvary: {packing.beta: [3.0]}\n").find("the reference sets no key"),
+            std::string::npos);
 }
 
 // The density rule (report/packing_report.hpp) takes, among the settings within the criteria's
