@@ -1,4 +1,5 @@
 #include "report/calibration_report.hpp"
+#include "report/report_cells.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -236,10 +237,6 @@ CalibrationReport calibration_report(const Study& st, const std::string& dir) {
 
 namespace {
 
-std::string cell(double v, double e) {
-  if (!std::isfinite(v)) return "–";
-  return std::isfinite(e) ? fmt::format("{:.4g} ± {:.2g}", v, e) : fmt::format("{:.4g}", v);
-}
 
 std::size_t index_of(const CalibrationReport& r, const std::string& name) {
   const auto it = std::find(r.quantities.begin(), r.quantities.end(), name);
@@ -265,7 +262,7 @@ std::string table(const CalibrationReport& r, const std::vector<std::string>& co
     md += fmt::format("| {} |", row.name);
     for (const auto& c : columns) {
       const std::size_t k = index_of(r, c);
-      md += fmt::format(" {} |", cell(row.value[k], row.error[k]));
+      md += fmt::format(" {} |", value_cell(row.value[k], row.error[k]));
     }
     md += "\n";
   }
@@ -369,8 +366,8 @@ std::string write_calibration_report(const CalibrationReport& r, const std::stri
   for (const auto& row : r.rows) {
     nlohmann::json values = nlohmann::json::array(), errors = nlohmann::json::array();
     for (std::size_t k = 0; k < row.value.size(); ++k) {
-      values.push_back(std::isfinite(row.value[k]) ? nlohmann::json(row.value[k]) : nlohmann::json(nullptr));
-      errors.push_back(std::isfinite(row.error[k]) ? nlohmann::json(row.error[k]) : nlohmann::json(nullptr));
+      values.push_back(json_number(row.value[k]));
+      errors.push_back(json_number(row.error[k]));
     }
     j["settings"].push_back({{"name", row.name},
                              {"changes", row.knob},

@@ -1,4 +1,5 @@
 #include "report/fast_check.hpp"
+#include "report/report_cells.hpp"
 
 #include <fmt/format.h>
 
@@ -88,13 +89,12 @@ std::string write_fast_check(const FastCheck& c, const std::string& out_dir) {
     md += fmt::format("| {} | {:.4g} ± {:.2g} | {:.4g} ± {:.2g} | {} | {} |\n", r.quantity, r.reference, r.reference_sigma,
                       r.candidate, r.candidate_sigma, r.established ? fmt::format("{:+.2f}", r.z) : "–",
                       r.established ? (r.agrees ? "yes" : "no") : "–");
-    const auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
     rows.push_back({{"quantity", r.quantity},
-                    {"reference", num(r.reference)},
-                    {"reference_sigma", num(r.reference_sigma)},
-                    {"candidate", num(r.candidate)},
-                    {"candidate_sigma", num(r.candidate_sigma)},
-                    {"z", num(r.z)},
+                    {"reference", json_number(r.reference)},
+                    {"reference_sigma", json_number(r.reference_sigma)},
+                    {"candidate", json_number(r.candidate)},
+                    {"candidate_sigma", json_number(r.candidate_sigma)},
+                    {"z", json_number(r.z)},
                     {"established", r.established},
                     {"agrees", r.agrees}});
   }

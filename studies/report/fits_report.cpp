@@ -11,24 +11,10 @@
 #include "core/types.hpp"
 #include "formats/fit_file.hpp"
 #include "io/atomic_file.hpp"
+#include "report/report_cells.hpp"
 #include "report/study_runs.hpp"
 
 namespace softpack {
-namespace {
-
-// "value ± error" with the error's two significant digits setting the value's ("—" for none).
-std::string estimate_text(double value, double error) {
-  if (!std::isfinite(value)) return "—";
-  if (!std::isfinite(error) || error <= 0.0) return fmt::format("{:.4g}", value);
-  return fmt::format("{:.4g} ± {:.2g}", value, error);
-}
-
-nlohmann::json pair_json(double value, double error) {
-  const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  return nlohmann::json::array({number(value), number(error)});
-}
-
-}  // namespace
 
 std::string write_fits_report(const Study& study, const std::string& data_dir, const std::string& out_dir,
                               const std::string& title) {
@@ -65,13 +51,13 @@ std::string write_fits_report(const Study& study, const std::string& data_dir, c
                                                    normal("delta", jk.delta), kt("a"), kt("b")};
       const double chi2 = f.judged ? f.judged->chi2_per_dof : kNaN;
       md += fmt::format("| {} | {} |", s->name, setting_changes(study, *s));
-      nlohmann::json row = {{"setting", s->name}, {"scene", scene}, {"path", path}, {"chi2_per_dof", pair_json(chi2, kNaN)[0]}};
+      nlohmann::json row = {{"setting", s->name}, {"scene", scene}, {"path", path}, {"chi2_per_dof", json_number(chi2)}};
       const char* names[6] = {"a", "b", "c", "delta", "kt_a", "kt_b"};
       for (int k = 0; k < 6; ++k) {
-        md += fmt::format(" {} |", estimate_text(values[k].first, values[k].second));
-        row[names[k]] = pair_json(values[k].first, values[k].second);
+        md += fmt::format(" {} |", value_cell(values[k].first, values[k].second));
+        row[names[k]] = {json_number(values[k].first), json_number(values[k].second)};
       }
-      md += fmt::format(" {} |\n", std::isfinite(chi2) ? fmt::format("{:.3g}", chi2) : "—");
+      md += fmt::format(" {} |\n", std::isfinite(chi2) ? fmt::format("{:.3g}", chi2) : "–");
       rows.push_back(row);
     }
   }

@@ -60,11 +60,6 @@ nlohmann::json written_json(const std::string& text) {
   }
 }
 
-double written_number(const std::string& text) {
-  const nlohmann::json j = written_json(text);
-  return j.is_boolean() ? (j.get<bool>() ? 1.0 : 0.0) : j.get<double>();
-}
-
 std::string packings_provenance(const Study& study, const std::string& title) {
   return fmt::format("{}: softpack-study {}, base {}, seeds {}", title, code_version(), study.base, fmt::join(study.seeds, " "));
 }
@@ -89,12 +84,12 @@ std::string write_packings_report(const Study& study, const std::string& data_di
                    "depletion length [mm] | seconds |\n|---|---|---|---|---|---|---|\n";
   for (std::size_t a = 0; a < study.vary.size(); ++a) {
     const StudyAxis& axis = study.vary[a];
-    const std::string parameter = axis.key.substr(axis.key.rfind('.') + 1);
+    const std::string parameter = axis.name();
     if (a > 0) dat += "\n\n";  // a gnuplot index per key
-    for (const auto& [text, name] : axis.points) {
-      const StudySetting& s = study.setting(name);
+    for (const auto& point : axis.points) {
+      const StudySetting& s = study.setting(point.second);
       const PackingRow r = measure_packings(runs, study, s);
-      const double value = written_number(text);
+      const double value = setting_number(study, s, axis.key);
       dat += fmt::format("{} {:.6g}", parameter, value);
       for (const MeanError& m : r.q) dat += fmt::format(" {:.8g} {:.3g}", m.mean, m.error);
       dat += "\n";
@@ -130,7 +125,7 @@ std::string write_density_rule_report(const Study& study, const std::string& dat
 
   const std::string prov = packings_provenance(study, title) + ", criteria " + study.criteria;
   std::string head, line;
-  for (const StudyAxis& axis : study.grid) head += axis.key.substr(axis.key.rfind('.') + 1) + " | ", line += "---|";
+  for (const StudyAxis& axis : study.grid) head += axis.name() + " | ", line += "---|";
   std::string md = fmt::format(
       "# The density rule\n\n{}\n\nThe rule ({}, paper/preregistration.md): among the settings whose mean solid fraction is "
       "within {:g} of the densest ({:.4f}), the one of least mean generation time. Mean ± standard error over the seeds.\n\n"
@@ -143,7 +138,7 @@ std::string write_density_rule_report(const Study& study, const std::string& dat
     nlohmann::json j;
     std::string cells;
     for (const StudyAxis& axis : study.grid) {
-      j[axis.key.substr(axis.key.rfind('.') + 1)] = written_json(axis.points[k].first);
+      j[axis.name()] = written_json(axis.points[k].first);
       cells += axis.points[k].first + " | ";
     }
     md += fmt::format("| {}{:.0f} ± {:.0f} | {:.4f} ± {:.4f} | {:.3f} ± {:.3f} | {:.1f} ± {:.1f} | {}{} |\n", cells, r.q[0].mean,
@@ -160,9 +155,8 @@ std::string write_density_rule_report(const Study& study, const std::string& dat
   nlohmann::json choice;
   std::string rule;
   for (const StudyAxis& axis : study.grid) {
-    const std::string key = axis.key.substr(axis.key.rfind('.') + 1);
-    choice[key] = written_json(axis.points[chosen].first);
-    rule += (rule.empty() ? "" : ", ") + key + " = " + axis.points[chosen].first;
+    choice[axis.name()] = written_json(axis.points[chosen].first);
+    rule += (rule.empty() ? "" : ", ") + axis.name() + " = " + axis.points[chosen].first;
   }
   md += fmt::format("\nChosen: {} (setting {}).\n", rule, study.grid.front().points[chosen].second);
   const nlohmann::json j = {{"provenance", prov}, {"margin", margin}, {"densest_solid_fraction", densest},

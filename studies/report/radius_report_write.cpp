@@ -12,18 +12,15 @@
 #include "core/types.hpp"
 #include "io/atomic_file.hpp"
 #include "report/radius_report.hpp"
+#include "report/report_cells.hpp"
 
 namespace softpack {
 namespace {
 
-std::string pm(const RadiusValue& v) {
-  if (!std::isfinite(v.value)) return "–";
-  return std::isfinite(v.error) ? fmt::format("{:.4g} ± {:.2g}", v.value, v.error) : fmt::format("{:.4g}", v.value);
-}
+std::string pm(const RadiusValue& v) { return value_cell(v.value, v.error); }
 
 nlohmann::json js(const RadiusValue& v) {
-  const auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  return {{"value", num(v.value)}, {"error", num(v.error)}};
+  return {{"value", json_number(v.value)}, {"error", json_number(v.error)}};
 }
 
 const RadiusRow* row_of(const RadiusReport& r, const std::string& setting, const std::string& scene) {
@@ -173,7 +170,7 @@ std::string write_radius_report(const RadiusReport& r, const Study& study, const
   }
   for (const RadiusScalingRow& s : r.scaling)
     j["scaling"].push_back({{"variant", s.variant}, {"scene", s.scene}, {"quantity", s.quantity}, {"exponent", js(s.exponent)},
-                            {"chi2_per_dof", std::isfinite(s.chi2_per_dof) ? nlohmann::json(s.chi2_per_dof) : nlohmann::json(nullptr)},
+                            {"chi2_per_dof", json_number(s.chi2_per_dof)},
                             {"R_min", s.R_min}, {"R_max", s.R_max}});
   for (const MixedRow& m : r.mixed) {
     nlohmann::json x{{"setting", m.setting}, {"ratio", m.ratio}, {"delta_n", m.delta_n}, {"measured", m.measured},

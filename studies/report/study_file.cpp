@@ -123,6 +123,7 @@ void generate_settings(const ConfigNode& root, Study& st, std::set<std::string>&
   const YAML::Node ref = YAML::Load(setting_profile_text(st, st.reference));
   std::vector<std::vector<ConfigNode>> values;
   const std::vector<std::string> keys = section.keys();
+  if (keys.empty()) section.fail("at least one key of the profile is required");
   for (const std::string& key : keys) {
     const auto [holder, last] = list_at(section, key);
     values.push_back(holder.at(last).items());
@@ -138,7 +139,7 @@ void generate_settings(const ConfigNode& root, Study& st, std::set<std::string>&
     for (const auto& [axis, k] : picks) {
       const std::string& key = keys[axis];
       const ConfigNode& v = values[axis][k];
-      std::string part = key.substr(key.rfind('.') + 1) + "-" + v.yaml().Scalar();
+      std::string part = StudyAxis{key, {}}.name() + "-" + v.yaml().Scalar();
       for (char& c : part) c = c == '_' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       if (part.find_first_not_of(kNameChars) != std::string::npos)
         v.fail(fmt::format("names its setting '{}': allowed in a name are lowercase letters, digits, '.', '-'", part));

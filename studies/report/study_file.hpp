@@ -39,6 +39,7 @@ struct StudyFigure {
 struct StudyAxis {
   std::string key;                                          ///< dotted key of the profile
   std::vector<std::pair<std::string, std::string>> points;  ///< (value as written, setting name)
+  std::string name() const { return key.substr(key.rfind('.') + 1); }  ///< the key's last part (beta)
 };
 
 struct Study {
