@@ -5,10 +5,10 @@
 //   softpack-coarse run --config ... --model resolved|soft --medium medium-S.h5 --out F.h5
 //       runs its oedometric compression with that model and writes the curve
 //       (coarse/result_file.hpp);
-//   softpack-coarse report --config ... --runs DIR --out DIR
-//       compares the two models over the seeds that have both (coarse/report.hpp);
 //   softpack-coarse stamp --config ... --release V
 //       the stages' configuration stamps, for make (coarse/settings.hpp).
+// The comparison of the two models is a study's report (`make coarse-grain`, softpack-study
+// report: report kind `coarse`).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -19,7 +19,6 @@
 #include "coarse/medium_file.hpp"
 #include "coarse/multi_contact.hpp"
 #include "io/atomic_file.hpp"
-#include "coarse/report.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -130,11 +129,6 @@ int main(int argc, char** argv) {
   CLI::App* stamp_cmd = app.add_subcommand("stamp", "print the stages' configuration stamps, medium=, resolved=, soft= (for make)");
   stamp_cmd->add_option("--config", stamp_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
   stamp_cmd->add_option("--release", release, "the release the stamps are of (make passes CMakeLists.txt's)")->required();
-  ReportOptions ro;
-  CLI::App* report_cmd = app.add_subcommand("report", "compare the two models over the seeds that ran both");
-  report_cmd->add_option("--config", ro.config, "settings, e.g. experiments/coarse-grain.yaml")->required();
-  report_cmd->add_option("--runs", ro.runs, "directory of the runs' results (<model>-<seed>.h5)")->required();
-  report_cmd->add_option("--out", ro.out, "report directory (coarse-grain.md, .dat for the figure, summary.json)")->required();
   if (const auto code = parse_command_line(app, argc, argv, program)) return *code;
   try {
     if (*seeds_cmd) {
@@ -163,9 +157,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*medium_cmd) return medium(o, program);
-    if (*run_cmd) return run(o, program);
-    write_coarse_report(ro);
-    return 0;
+    return run(o, program);
   } catch (...) {
     return exit_on_error(program);
   }

@@ -5,8 +5,11 @@
 //       writes DIR/<setting>.yaml for the reference and every setting that runs (a file is
 //       rewritten only when its text changes) and prints their names, the reference first
 //   softpack-study plan --study FILE --data DATA
-//       what make needs of the study, as shell assignments: its folder under DATA, the profile
-//       goals each setting runs, its figures (script:data:name)
+//       what make needs of the study, as shell assignments: its folder under DATA, the make
+//       arguments that run a setting (report/study_base.hpp), its figures (script:data:name)
+//   softpack-study share --study FILE --data DIR --setting S --earlier "A B" --release V
+//       the stages S takes from an earlier setting, one "stage folder earlier" a line (same stamp,
+//       its seeds among the earlier one's; workflow/studies.mk links them)
 //   softpack-study report --study FILE --data DIR --out-dir DIR/report [--title T]
 //       the report of the study's kind (`report:`; the kinds: report/report_kinds.cpp, and
 //       softpack-study report --help)
@@ -18,6 +21,7 @@
 #include <fmt/ranges.h>
 
 #include <filesystem>
+#include <sstream>
 
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
@@ -26,6 +30,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "core/version.hpp"
+#include "report/study_base.hpp"
 #include "report/study_file.hpp"
 #include "report/fast_check.hpp"
 #include "report/report_kinds.hpp"
@@ -40,9 +45,17 @@ int main(int argc, char** argv) {
   profiles->add_option("--study", study_path, "study file, e.g. experiments/studies/accuracy.yaml")->required();
   profiles->add_option("--out-dir", out_dir, "folder of the generated profiles")->required();
   CLI::App* plan = app.add_subcommand("plan", "what make needs of the study, as shell assignments: study_dir (its folder under "
-                                              "DATA), study_archive (the archive its stages may reuse), study_stages (the goals each setting runs), study_figures (script:data:name)");
+                                              "DATA), study_args (the make arguments that run a setting, @SETTING@ its name), study_figures (script:data:name)");
   plan->add_option("--study", study_path, "study file")->required();
   plan->add_option("--data", data_dir, "DATA, the folder the study's own folder is in")->required();
+  std::string setting, earlier, release;
+  CLI::App* share = app.add_subcommand("share", "the stages a setting shares with an earlier one (same stamp, its seeds among theirs): "
+                                                "stage folder earlier, a line each");
+  share->add_option("--study", study_path, "study file")->required();
+  share->add_option("--data", data_dir, "the study's folder (its profiles/ and <setting>/)")->required();
+  share->add_option("--setting", setting, "the setting about to run")->required();
+  share->add_option("--earlier", earlier, "the settings run before it, in order, separated by spaces");
+  share->add_option("--release", release, "the release the stamps are of (make passes CMakeLists.txt's)")->required();
   std::string kinds;
   for (const ReportKind& k : report_kinds()) kinds += fmt::format("; {}: {}", k.name, k.files);
   CLI::App* report = app.add_subcommand("report", "the study's report, of the kind its file names (`report:`" + kinds + ")");
@@ -89,8 +102,18 @@ int main(int argc, char** argv) {
     if (plan->parsed()) {
       std::string figures;
       for (const StudyFigure& f : study.figures) figures += (figures.empty() ? "" : " ") + f.script + ":" + f.data + ":" + f.name;
-      fmt::print("study_dir='{}/{}'\nstudy_archive='{}'\nstudy_stages='{}'\nstudy_figures='{}'\n", data_dir, study.out, study.archive,
-                 fmt::join(study.stages, " "), figures);
+      const std::string dir = data_dir + "/" + study.out;
+      const std::string args = setting_make_args(study.base_kind, dir, study.stages,
+                                                 study.archive.empty() ? "FROM_SCRATCH=1" : "ARCHIVE=" + study.archive);
+      fmt::print("study_dir='{}'\nstudy_args='{}'\nstudy_figures='{}'\n", dir, args, figures);
+      return 0;
+    }
+    if (share->parsed()) {
+      std::vector<std::string> before;
+      std::istringstream words(earlier);
+      for (std::string w; words >> w;) before.push_back(w);
+      for (const SharedStage& s : shareable_stages(study.base_kind, data_dir, setting, before, release))
+        fmt::print("{} {} {}\n", s.stage, s.folder, s.earlier);
       return 0;
     }
     const ReportKind& kind = report_kind(study.report);

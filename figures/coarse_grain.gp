@@ -1,9 +1,9 @@
-# The coarse-grain validation's figure (make coarse-grain; studies/coarse/report.hpp): the axial
+# The coarse-grain validation's figure (make coarse-grain draws it for every setting; studies/coarse/report.hpp): the axial
 # stress sigma_zz and the lateral stress ratio K0 against the strain of the oedometric
 # compression, the resolved medium (every grain of both decades) and the soft-particle one, mean
 # over the seeds with their standard errors; unloading as a second block.
 #
-#   gnuplot -e "data='data/coarse-grain/report/curves.dat'; out='coarse-grain.pdf'" figures/coarse_grain.gp
+#   gnuplot -e "data='data/coarse-grain/report/reference/curves.dat'; out='coarse-grain.pdf'" figures/coarse_grain.gp
 #
 # data: columns 1 strain, 2 phase, 3-4 sigma resolved (mean, error), 5-6 sigma soft, 7-8 K0
 # resolved, 9-10 K0 soft, 11-12 solid fraction, 13-16 Z, 17-18 soft - resolved, 19 agrees,
@@ -46,7 +46,8 @@ if (has_shear) {
        data index 2 using 1:22:23 with yerrorlines lc rgb "#d62728" pt 5 ps 0.3 title "soft-particles"
 } else {
   unset border; unset tics; unset xlabel; unset ylabel
-  set label 1 "no shear in this study" at graph 0.5, 0.5 center
-  plot NaN notitle
+  set label 1 "no platen shear in this setting" at graph 0.5, 0.5 center
+  set xrange [0:1]; set yrange [0:1]
+  plot -1 notitle
 }
 unset multiplot

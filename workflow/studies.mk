@@ -3,7 +3,8 @@
 # reference and of every setting (softpack-study profiles), runs each one's stages (the study's
 # `stages`, by default the tangential sweeps and what they need) with the profile DAG itself (a
 # make of its own: PROFILE_FILE the generated profile, DATA the study's folder `out`, so every
-# point is checkpointed and every stage stamped; a stopped study loses at most the points in
+# point is checkpointed and every stage stamped; a study of the coarse-grain settings runs
+# coarse-grain-runs likewise, workflow/coarse.mk; a stopped study loses at most the points in
 # progress and a changed setting reruns only what it touches; a stage whose stamp and seeds are an
 # earlier setting's is shared with it, share_stages), then `make NAME-report` writes
 # the report of the study's kind (softpack-study report) and draws its figures.
@@ -36,51 +37,48 @@ $(STUDY_NAMES:%=%-report): | $(TOOLS)
 study_run = $(if $(findstring n,$(MAKE_LETTERS)),@echo "study $(1): would write the profiles of its settings into its folder \
   (softpack-study plan) and run their stages there",+@$(call run_study,$(1)))
 
-# run_study FILE: the profile of the reference and of every setting, then each one's stages by
-# the profile DAG in the study's folder (SETTINGS: only those, and the reference). A setting whose
-# run fails is recorded as failed. Nothing is taken from the release's archive of a profile (a
-# setting is no profile of the project), except from the study's own `archive`, where the stamps
-# match (workflow/archive_check.sh checks it first).
+# run_study FILE: the file of the reference and of every setting (a profile, or the coarse-grain
+# settings: report/study_base.hpp), then each one's stages in the study's folder by the make goals
+# its base has (the profile DAG with PROFILE_FILE and DATA; the coarse-grain runs with
+# COARSE_CONFIG and COARSE_DIR: softpack-study plan says which). SETTINGS: only those, and the
+# reference. A setting whose run fails is recorded as failed. Nothing is taken from the release's
+# archive of a profile (a setting is no profile of the project), except from the study's own
+# `archive`, where the stamps match (workflow/archive_check.sh checks it first).
 define run_study
 [ -n "$(1)" ] || { echo "study: say which study: make study STUDY=FILE, or make NAME for experiments/studies/NAME.yaml" >&2; exit 2; }; \
 plan=$$($(STUDY_TOOL) plan --study $(1) --data $(DATA)) || exit 2; eval "$$plan"; \
 mkdir -p $$study_dir/profiles; \
 settings=$$($(STUDY_TOOL) profiles --study $(1) --out-dir $$study_dir/profiles) || exit 2; \
 chosen="$(SETTINGS)"; n=0; total=$$(echo $$settings | wc -w); done=; \
-reuse=FROM_SCRATCH=1; [ -z "$$study_archive" ] || reuse=ARCHIVE=$$study_archive; \
 for s in $$settings; do n=$$((n + 1)); \
   if [ -n "$$chosen" ] && [ $$s != reference ] && ! echo " $$chosen " | grep -qF -- " $$s "; then continue; fi; \
   echo "study $(1): setting $$n/$$total: $$s ($$study_dir/$$s)"; mkdir -p $$study_dir/$$s; \
-  $(call share_stages,$$study_dir,$$s,$$done); done="$$done $$s"; \
-  if $(MAKE) --no-print-directory PROFILE=$$s PROFILE_FILE=$$study_dir/profiles/$$s.yaml DATA=$$study_dir \
-    $$reuse $$study_stages > $$study_dir/$$s/make.log 2>&1; then rm -f $$study_dir/$$s/failed.txt; \
+  $(call share_stages,$(1),$$study_dir,$$s,$$done); done="$$done $$s"; \
+  if $(MAKE) --no-print-directory $${study_args//@SETTING@/$$s} > $$study_dir/$$s/make.log 2>&1; then rm -f $$study_dir/$$s/failed.txt; \
   else [ $$s != reference ] || { tail -20 $$study_dir/$$s/make.log; exit 1; }; \
     grep -h -m1 -e 'numerical error' -e 'error:' $$study_dir/$$s/*/*.log $$study_dir/$$s/make.log 2>/dev/null | head -1 \
       > $$study_dir/$$s/failed.txt; \
     echo "study $(1): setting $$s FAILED, reported as such: $$(cat $$study_dir/$$s/failed.txt)"; fi; \
-  grep -E '^(pack|normal|tangential|sliding|average|fit):' $$study_dir/$$s/make.log || true; \
+  grep -E '^(pack|normal|tangential|sliding|average|fit|coarse-grain):' $$study_dir/$$s/make.log || true; \
 done
 endef
 
-# share_stages DIR SETTING EARLIER: a stage's results are shared, not recomputed, when an earlier
-# setting of the study has the same seeds and the same stamp of that stage (stamps include every
-# section upstream: workflow/stamps.mk), and the setting has none of its own yet: its folder is
-# hard links to the earlier one's, with its stamp file (same names, same times), so make finds it
-# up to date; the normal stage's checkpoints come along (the tangential stage starts from them).
-# A rerun of either writes new files (atomic renames), never through the links; the logs, which a
-# recipe's redirection truncates in place, are copies of their own.
+# share_stages FILE DIR SETTING EARLIER: a stage's results are shared, not recomputed, when an
+# earlier setting of the study has the same stamp of that stage (stamps include every section
+# upstream: workflow/stamps.mk, softpack-coarse stamp) and every seed of the setting, and the
+# setting has none of its own yet (softpack-study share decides): its folder is hard links to the
+# earlier one's, with its stamp file (same names, same times), so make finds it up to date; the
+# normal stage's checkpoints come along (the tangential stage starts from them). A rerun of either
+# writes new files (atomic renames), never through the links; the logs, which a recipe's
+# redirection truncates in place, are copies of their own.
 define share_stages
-for st in packing:packings normal:normal tangential:tangential sliding:sliding; do \
-  stage=$${st%%:*}; dir=$${st#*:}; [ ! -e $(1)/$(2)/$$dir ] || continue; \
-  for d in $(3); do [ -d $(1)/$$d/$$dir ] && [ -f $(1)/$$d/stamps/$$stage.hash ] || continue; \
-    own=$$($(CONFIG_TOOL) $(1)/profiles/$(2).yaml stamp $$stage --release $(VERSION) 2> /dev/null) || continue; \
-    [ "$$own" = "$$(cat $(1)/$$d/stamps/$$stage.hash)" ] || continue; \
-    [ "$$($(CONFIG_TOOL) $(1)/profiles/$(2).yaml seeds)" = "$$($(CONFIG_TOOL) $(1)/profiles/$$d.yaml seeds)" ] || continue; \
-    mkdir -p $(1)/$(2)/stamps && cp -al $(1)/$$d/$$dir $(1)/$(2)/$$dir && ln -f $(1)/$$d/stamps/$$stage.hash $(1)/$(2)/stamps/$$stage.hash \
-    && if [ $$stage = normal ] && [ -d $(1)/$$d/checkpoints/normal ] && [ ! -e $(1)/$(2)/checkpoints/normal ]; then \
-      mkdir -p $(1)/$(2)/checkpoints && cp -al $(1)/$$d/checkpoints/normal $(1)/$(2)/checkpoints/normal; fi \
-    && find $(1)/$(2)/$$dir -name '*.log' -exec sh -c 'cp "$$1" "$$1.own" && mv "$$1.own" "$$1"' sh {} \; \
-    && echo "study: $(2) shares $$d's $$dir (the same seeds and $$stage stamp)"; break; done; done
+$(STUDY_TOOL) share --study $(1) --data $(2) --setting $(3) --earlier "$(4)" --release $(VERSION) | while read stage dir d; do \
+  mkdir -p $(2)/$(3)/stamps && cp -al $(2)/$$d/$$dir $(2)/$(3)/$$dir && ln -f $(2)/$$d/stamps/$$stage.hash $(2)/$(3)/stamps/$$stage.hash \
+  && if [ $$stage = normal ] && [ -d $(2)/$$d/checkpoints/normal ] && [ ! -e $(2)/$(3)/checkpoints/normal ]; then \
+    mkdir -p $(2)/$(3)/checkpoints && cp -al $(2)/$$d/checkpoints/normal $(2)/$(3)/checkpoints/normal; fi \
+  && find $(2)/$(3)/$$dir -name '*.log' -exec sh -c 'cp "$$1" "$$1.own" && mv "$$1.own" "$$1"' sh {} \; \
+  && echo "study: $(3) shares $$d's $$dir (the same $$stage stamp, its seeds among $$d's)"; done; \
+[ $${PIPESTATUS[0]} = 0 ] || exit 2
 endef
 
 # study_report FILE: the report of the study's kind from the settings run so far (settings not

@@ -126,22 +126,27 @@ std::string coarse_pm(const MeanError& m, const char* fmt_value = "{:.4g}") {
 
 }  // namespace
 
-void write_coarse_report(const ReportOptions& o) {
-  const CoarseGrainSettings s = read_coarse_grain_settings(o.config);
+std::string coarse_run_path(const std::string& dir, CoarseModel model, std::uint64_t seed) {
+  return fmt::format("{}/{}/seed-{}.h5", dir, name(model), seed);
+}
+
+std::optional<CoarseComparison> coarse_comparison(const CoarseGrainSettings& s, const std::string& dir) {
   std::vector<CoarseResult> resolved, soft;
   for (std::uint64_t seed : s.seeds) {
-    const auto file = [&](const char* model) { return (std::filesystem::path(o.runs) / fmt::format("{}-{}.h5", model, seed)).string(); };
-    if (!std::filesystem::exists(file("resolved")) || !std::filesystem::exists(file("soft"))) continue;
-    resolved.push_back(read_coarse_result(file("resolved")));
-    soft.push_back(read_coarse_result(file("soft")));
+    const std::string a = coarse_run_path(dir, CoarseModel::resolved, seed), b = coarse_run_path(dir, CoarseModel::soft, seed);
+    if (!std::filesystem::exists(a) || !std::filesystem::exists(b)) continue;
+    resolved.push_back(read_coarse_result(a));
+    soft.push_back(read_coarse_result(b));
   }
-  if (resolved.empty())
-    throw InputError(fmt::format("{}: no seed of {} has both runs (resolved-<seed>.h5 and soft-<seed>.h5)", o.runs, o.config));
-  const CoarseComparison c = compare_coarse(resolved, soft, s.strain, s.unload_strain, s.record_strain, s.shear, s.record_shear);
-  std::filesystem::create_directories(o.out);
+  if (resolved.empty()) return std::nullopt;
+  return compare_coarse(resolved, soft, s.strain, s.unload_strain, s.record_strain, s.shear, s.record_shear);
+}
+
+void write_coarse_report(const CoarseComparison& c, const CoarseGrainSettings& s, const std::string& label, const std::string& out) {
+  std::filesystem::create_directories(out);
 
   std::ostringstream dat;
-  dat << "# softpack-coarse report: " << o.config << ", seeds";
+  dat << "# coarse-grain report: " << label << ", seeds";
   for (auto seed : c.seeds) dat << ' ' << seed;
   dat << "\n# strain phase sigma_res sigma_res_se sigma_soft sigma_soft_se K0_res K0_res_se K0_soft K0_soft_se"
          " fraction_res fraction_soft Z_res Z_res_se Z_soft Z_soft_se diff diff_se agrees tau_res tau_res_se tau_soft tau_soft_se\n"
@@ -156,11 +161,11 @@ void write_coarse_report(const ReportOptions& o) {
                        p.Z[1].mean, p.Z[1].error, p.sigma_difference.mean, p.sigma_difference.error, p.agrees ? 1 : 0,
                        p.tau[0].mean, p.tau[0].error, p.tau[1].mean, p.tau[1].error);
   }
-  write_file_atomically((std::filesystem::path(o.out) / "curves.dat").string(), dat.str());
+  write_file_atomically((std::filesystem::path(out) / "curves.dat").string(), dat.str());
 
   std::ostringstream md;
   md << "# Coarse-grain validation: resolved against soft-particles\n\n";
-  md << fmt::format("Settings `{}`; seeds", o.config);
+  md << fmt::format("Settings `{}`; seeds", label);
   for (auto seed : c.seeds) md << ' ' << seed;
   md << fmt::format(". Resolved: {} spheres; soft: {} spheres ({} bodies). Code {}.\n\n", c.spheres[0], c.spheres[1], c.bodies,
                     code_version());
@@ -194,10 +199,10 @@ void write_coarse_report(const ReportOptions& o) {
   md << ", soft";
   for (double t : c.cpu[1]) md << fmt::format(" {:.2f}", t);
   md << fmt::format(".\nSoft contacts beyond the laws' measured range: {} evaluations (largest Δn {:.3f}).\n", c.beyond_range, c.max_dn);
-  write_file_atomically((std::filesystem::path(o.out) / "coarse-grain.md").string(), md.str());
+  write_file_atomically((std::filesystem::path(out) / "coarse-grain.md").string(), md.str());
 
   nlohmann::json j;
-  j["settings"] = o.config;
+  j["settings"] = label;
   j["seeds"] = c.seeds;
   j["agreement_strain"] = c.agreement_strain;
   j["speedup"] = {{"mean", c.mean_speedup.mean}, {"error", std::isfinite(c.mean_speedup.error) ? nlohmann::json(c.mean_speedup.error) : nlohmann::json()}, {"per_seed", c.speedup}};
@@ -207,7 +212,7 @@ void write_coarse_report(const ReportOptions& o) {
   j["beyond_range"] = c.beyond_range;
   j["max_dn"] = c.max_dn;
   j["code_version"] = code_version();
-  write_file_atomically((std::filesystem::path(o.out) / "summary.json").string(), j.dump(1) + "\n");
+  write_file_atomically((std::filesystem::path(out) / "summary.json").string(), j.dump(1) + "\n");
 }
 
 }  // namespace softpack

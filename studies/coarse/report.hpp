@@ -1,5 +1,5 @@
-// The comparison of the two models of the coarse-grain validation (softpack-coarse report;
-// docs/coarse-grain.md): over the seeds that ran both, on the common strain grid of the settings
+// The comparison of the two models of the coarse-grain validation (one setting of a study of the
+// coarse-grain settings: report kind `coarse`, report/coarse_report.hpp; docs/coarse-grain.md): over the seeds that ran both, on the common strain grid of the settings
 // (each run's curve interpolated linearly in strain, loading and unloading apart),
 //
 //   per model   the mean and standard error over seeds of sigma_zz (top wall), K0 =
@@ -15,6 +15,7 @@
 // Written to `out`: coarse-grain.md (the table, with what was compared), curves.dat (the columns
 // the figure draws, a block per phase) and summary.json.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,6 @@
 #include "coarse/result_file.hpp"
 
 namespace softpack {
-
-struct ReportOptions {
-  std::string config, runs, out;
-};
 
 /// One grid point of the comparison.
 struct CoarsePoint {
@@ -53,7 +50,14 @@ struct CoarseComparison {
 CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const std::vector<CoarseResult>& soft, double strain,
                                 double unload_strain, double step, double shear = 0.0, double shear_step = 0.0);
 
-/// Reads the runs of the settings' seeds (InputError when no seed has both) and writes the report.
-void write_coarse_report(const ReportOptions& o);
+/// A run's results file in a setting's folder `dir` (workflow/coarse.mk): DIR/<model>/seed-S.h5.
+std::string coarse_run_path(const std::string& dir, CoarseModel model, std::uint64_t seed);
+
+/// The comparison of the runs in `dir` of the settings' seeds that have both; none when none has.
+std::optional<CoarseComparison> coarse_comparison(const CoarseGrainSettings& s, const std::string& dir);
+
+/// Writes the comparison's coarse-grain.md, curves.dat and summary.json into `out`; `label` says
+/// whose settings they are (the study and the setting).
+void write_coarse_report(const CoarseComparison& c, const CoarseGrainSettings& s, const std::string& label, const std::string& out);
 
 }  // namespace softpack

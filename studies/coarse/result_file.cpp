@@ -1,6 +1,7 @@
 #include "coarse/result_file.hpp"
 
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "core/version.hpp"
 #include "formats/h5_fields.hpp"
 #include "io/hdf5_file.hpp"
@@ -86,8 +87,15 @@ CoarseResult read_coarse_result(const std::string& path) {
   get(f, "curve/strain", strain);
   r.rows.resize(strain.size());
   columns([&](const char* name, auto member) {
+    // A run from before the platen shear was added (the committed reduced-radius runs) has neither the
+    // wall's displacement nor its shear stress: no shear (0), tau not recorded (NaN).
+    const std::string key = std::string("curve/") + name;
+    if ((key == "curve/shear" || key == "curve/tau") && !f.exists(key)) {
+      for (CurveRow& row : r.rows) row.*member = key == "curve/shear" ? 0.0 : kNaN;
+      return;
+    }
     std::vector<double> v;
-    get(f, std::string("curve/") + name, v);
+    get(f, key, v);
     formats::same_length(f, std::string("curve/") + name, v.size(), "curve/strain", strain.size());
     formats::check_finite(f, std::string("curve/") + name, v);
     for (std::size_t k = 0; k < v.size(); ++k) r.rows[k].*member = v[k];

@@ -42,7 +42,10 @@ std::string resolve(const std::string& root_dir, const std::string& p) {
 }  // namespace
 
 CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const std::string& root_dir) {
-  const ConfigNode root = ConfigNode::load_file(path);
+  return read_coarse_grain_settings(ConfigNode::load_file(path), root_dir);
+}
+
+CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std::string& root_dir) {
   root.allow_only({"coarse_grain"});
   const ConfigNode c = root.at("coarse_grain");
   c.allow_only({"soft_particle", "medium", "compression", "seeds"});
@@ -100,10 +103,9 @@ CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const st
 
   const ConfigNode k = c.at("compression");
   k.allow_only({"speed", "strain", "unload_strain", "record_strain", "relax", "max_overlap_fraction", "shear", "record_shear"});
-  if (auto sh = k.find("shear")) {
-    s.shear = in_range(*sh, 0.0, 1.0);
-    s.record_shear = in_range(k.at("record_shear"), 0.0, std::max(s.shear, 1e-12), true);
-  }
+  if (auto sh = k.find("shear")) s.shear = in_range(*sh, 0.0, 1.0);
+  if (s.shear > 0.0) s.record_shear = in_range(k.at("record_shear"), 0.0, s.shear, true);  // shear 0: none, no rows
+  else if (auto rs = k.find("record_shear")) rs->fail("no platen shear (shear is 0 or absent): record_shear is not read; remove it");
   if (auto r = k.find("relax")) s.relax = in_range(*r, 0.0, 1000.0);
   s.speed = in_range(k.at("speed"), 0.0, 10.0, true);
   s.strain = in_range(k.at("strain"), 0.0, 0.9, true);

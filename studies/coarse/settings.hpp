@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "config/yaml_node.hpp"
 #include "measure/settings.hpp"
 #include "packing/generator.hpp"
 #include "scene/scene_def.hpp"
@@ -64,6 +65,8 @@ struct CoarseGrainSettings {
 /// Reads and checks experiments/coarse-grain.yaml; InputError names the file, the key and what
 /// is allowed. `root_dir`: where relative paths (profile, laws) start.
 CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const std::string& root_dir = ".");
+/// The same of a file already read (a study's generated settings, report/study_file.hpp).
+CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std::string& root_dir = ".");
 
 /// The configuration stamps of the coarse-grain stages (workflow/coarse.mk: a stage reruns when
 /// its stamp changes, not when a program is relinked): 16 hex digits of the SHA-256 of "softpack

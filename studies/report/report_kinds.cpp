@@ -8,6 +8,7 @@
 #include "formats/law_file.hpp"
 #include "report/accuracy_report.hpp"
 #include "report/calibration_report.hpp"
+#include "report/coarse_report.hpp"
 #include "report/fits_report.hpp"
 #include "report/packing_report.hpp"
 #include "report/radius_report.hpp"
@@ -33,6 +34,9 @@ const std::vector<ReportKind>& report_kinds() {
          write_law_file(out + "/laws.json", radius_law_file(r, study, code_version()));
          return table;
        }},
+      {"coarse", "Coarse-grain validation",
+       "table.md, coarse.json and per setting <setting>/coarse-grain.md, curves.dat, summary.json (report/coarse_report.hpp)", {},
+       write_coarse_study_report, StudyBase::coarse_grain},
       {"density-rule", "The density rule", "table.md, density-rule.json (report/packing_report.hpp)", {"grid", "criteria"},
        write_density_rule_report},
       {"fits", "Fit options", "table.md, fits.json (report/fits_report.hpp)", {}, write_fits_report},

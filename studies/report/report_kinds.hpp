@@ -21,6 +21,7 @@ struct ReportKind {
   std::function<std::string(const Study&, const std::string& data_dir, const std::string& out_dir,
                             const std::string& title)>
       write;
+  StudyBase base = StudyBase::profile;  ///< the base of the studies it reports (report/study_base.hpp)
 };
 
 /// Every kind, in the order of their names.

@@ -1,18 +1,16 @@
 #include "report/study_file.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <set>
 #include <utility>
 
-#include "analysis/fit_options.hpp"
 #include "profile/profile.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
-#include "measure/settings.hpp"
-#include "packing/packing_profile.hpp"
 #include "report/report_kinds.hpp"
 
 namespace softpack {
@@ -72,7 +70,7 @@ StudySetting read_setting(const std::string& name, const ConfigNode& n, const st
   StudySetting s;
   s.name = name;
   if (auto set = n.find("set"))
-    for (const std::string& key : set->keys()) s.set.emplace_back(key, YAML::Clone(set->at(key).yaml()));
+    for (const std::string& key : set->keys()) s.set.emplace_back(key, YAML::Clone(std::as_const(set->yaml())[key]));  // ~ too
   if (auto of = n.find("of")) {
     s.of = of->string();
     if (!s.set.empty()) n.at("set").fail("a setting `of` another one takes its results: it cannot also `set` keys");
@@ -101,9 +99,14 @@ std::pair<YAML::Node, std::string> parent_of(YAML::Node root, const std::string&
   }
 }
 
+// Sets the value at the dotted `key`; a null value (~) removes the key, which the base must have.
 void replace(YAML::Node root, const std::string& key, const YAML::Node& value, const std::string& where) {
   auto [parent, last] = parent_of(root, key, where);
-  parent[last] = YAML::Clone(value);
+  if (!value.IsNull()) {
+    parent[last] = YAML::Clone(value);
+    return;
+  }
+  if (!parent.remove(last)) throw InputError(fmt::format("{}: '{}': ~ removes a key of the base profile, which has none there", where, key));
 }
 
 bool settings_named(const ConfigNode& root, const std::string& name) {
@@ -219,13 +222,12 @@ void read_plan(const ConfigNode& root, Study& st) {
   if (const std::string stem = std::filesystem::path(st.path).stem().string(); st.name != stem)
     root.at("study").fail(fmt::format("the study's name is its file's ({}.yaml: `make {}`), not '{}'", stem, stem, st.name));
   st.report = root.at("report").choice(report_kind_names());
-  st.stages = {"tangential"};
+  const StudyBaseKind& kind = study_base_kind(st.base_yaml);
+  st.stages = kind.default_goals;
   if (auto stages = root.find("stages")) {
     st.stages.clear();
-    for (const ConfigNode& s : stages->items())
-      st.stages.push_back(s.choice({"packings", "normal", "tangential", "sliding", "averages", "fits"}));
-    if (st.stages.empty())
-      stages->fail("allowed: a list of the profile's goals (packings, normal, tangential, sliding, averages, fits), not empty");
+    for (const ConfigNode& s : stages->items()) st.stages.push_back(s.choice(kind.goals));
+    if (st.stages.empty()) stages->fail(fmt::format("allowed: a list of the goals of {} ({}), not empty", kind.name, fmt::join(kind.goals, ", ")));
   }
   st.out = "studies/" + st.name;
   if (auto out = root.find("out")) {
@@ -235,6 +237,7 @@ void read_plan(const ConfigNode& root, Study& st) {
       out->fail("allowed: a folder under DATA (lowercase letters, digits, '.', '-', '_', '/'; not absolute, no '..')");
   }
   if (auto archive = root.find("archive")) {
+    if (!kind.archive) archive->fail(fmt::format("a study of {} reuses no archive", kind.name));
     st.archive = archive->string();
     if (!std::filesystem::is_regular_file(st.archive + "/MANIFEST.sha256"))
       archive->fail(fmt::format("{} is not an archive (no MANIFEST.sha256): allowed, a folder data/archive/<release>/<profile>", st.archive));
@@ -245,8 +248,8 @@ void read_plan(const ConfigNode& root, Study& st) {
       StudyFigure fig{f.at("script").string(), f.at("data").string(), f.at("name").string()};
       if (!std::filesystem::is_regular_file(fig.script)) f.at("script").fail(fmt::format("{}: no such gnuplot script", fig.script));
       for (const auto& [key, v] : {std::pair{"data", fig.data}, std::pair{"name", fig.name}})
-        if (v.empty() || v.find_first_not_of(kNameChars) != std::string::npos)
-          f.at(key).fail("allowed: a file name in the report's folder (lowercase letters, digits, '.', '-')");
+        if (v.empty() || v.front() == '/' || v.find("..") != std::string::npos || v.find_first_not_of(kNameChars + std::string("/")) != std::string::npos)
+          f.at(key).fail("allowed: a file in the report's folder (lowercase letters, digits, '.', '-', '/'; not absolute, no '..')");
       st.figures.push_back(fig);
     }
 }
@@ -259,15 +262,19 @@ Study read_study(const std::string& path) {
                    "radius", "reference", "settings", "vary", "grid"});
   Study st;
   st.path = path;
-  read_plan(root, st);
-  for (const std::string& section : report_kind(st.report).needs)
-    if (!root.has(section)) root.fail(fmt::format("`{}` is missing: the report kind '{}' reads it", section, st.report));
   st.base = root.at("base").string();
   try {
     st.base_yaml = YAML::Clone(ConfigNode::load_file(st.base).yaml());  // with the project's checks of a YAML file
   } catch (const InputError& e) {
     root.at("base").fail(e.what());
   }
+  st.base_kind = study_base_kind(st.base_yaml).base;
+  read_plan(root, st);
+  if (const ReportKind& k = report_kind(st.report); k.base != st.base_kind)
+    root.at("report").fail(fmt::format("the report kind '{}' reports studies of {}; the base {} is {}", st.report,
+                                       study_base_kind(k.base).name, st.base, study_base_kind(st.base_kind).name));
+  for (const std::string& section : report_kind(st.report).needs)
+    if (!root.has(section)) root.fail(fmt::format("`{}` is missing: the report kind '{}' reads it", section, st.report));
   st.seeds = read_seeds(root);
   if (auto cmp = root.find("compare")) {
     cmp->allow_only({"Fn_delta_n", "kt_delta_n"});
@@ -303,7 +310,7 @@ Study read_study(const std::string& path) {
       radius->at("mu_from_ht_over_Rs").fail("allowed: 0 < value < 1 (ht / Rs from which the contact slides)");
   }
   if (auto common = root.find("common"))
-    for (const std::string& key : common->keys()) st.common.emplace_back(key, YAML::Clone(common->at(key).yaml()));
+    for (const std::string& key : common->keys()) st.common.emplace_back(key, YAML::Clone(std::as_const(common->yaml())[key]));
   if (auto ref = root.find("reference")) st.reference = read_setting("reference", *ref, st.seeds);
   else st.reference = StudySetting{"reference", {}, "", st.seeds};
   if (!st.reference.of.empty()) root.at("reference").at("of").fail("the reference runs: it cannot be `of` another setting");
@@ -323,18 +330,7 @@ Study read_study(const std::string& path) {
          for (const auto& x : st.settings) all.push_back(&x);
          return all;
        }()) {
-    if (!s->runs()) continue;
-    const std::string name = fmt::format("{} (setting {})", path, s->name);
-    try {
-      const ConfigNode p = ConfigNode::load_string(setting_profile_text(st, *s), name);
-      parse_seeds(p);
-      parse_packing(p);
-      parse_measurement(p);
-      fit::parse_fit_section(p);
-    } catch (const InputError& e) {
-      const std::string msg = e.what();
-      throw InputError(msg.rfind(name, 0) == 0 ? msg : name + ": " + msg);
-    }
+    if (s->runs()) check_setting_file(st.base_kind, setting_profile_text(st, *s), fmt::format("{} (setting {})", path, s->name));
   }
   return st;
 }
@@ -346,7 +342,7 @@ std::string setting_changes(const Study& st, const StudySetting& s) {
   for (const auto& [key, value] : s.set) {
     YAML::Emitter e;
     e << YAML::Flow << value;
-    t += (t.empty() ? "" : ", ") + key + " = " + e.c_str();
+    t += (t.empty() ? "" : ", ") + key + (value.IsNull() ? std::string(" removed") : " = " + std::string(e.c_str()));
   }
   return t;
 }
@@ -356,12 +352,8 @@ std::string setting_profile_text(const Study& study, const StudySetting& setting
   for (const auto& [key, value] : study.common) replace(base, key, value, fmt::format("{}: common", study.path));
   for (const auto& [key, value] : setting.set)
     replace(base, key, value, fmt::format("{}: settings.{}.set", study.path, setting.name));
-  base["profile"] = setting.name;
-  base["description"] = fmt::format("Study {}, setting '{}' (generated; do not edit)", study.path, setting.name);
-  YAML::Node seeds(YAML::NodeType::Sequence);
-  for (std::uint64_t s : setting.seeds) seeds.push_back(s);
-  seeds.SetStyle(YAML::EmitterStyle::Flow);
-  base["seeds"] = seeds;
+  place_setting_seeds(base, study.base_kind, setting.name, fmt::format("Study {}, setting '{}' (generated; do not edit)", study.path, setting.name),
+                      setting.seeds);
   YAML::Emitter out;
   out << base;
   std::string keys;

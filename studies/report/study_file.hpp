@@ -18,6 +18,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "report/study_base.hpp"
+
 namespace softpack {
 
 struct StudySetting {
@@ -51,6 +53,7 @@ struct Study {
   std::string archive;  ///< `archive`: results the stages reuse where their stamps match ("": none)
   std::vector<StudyFigure> figures;
   YAML::Node base_yaml;  ///< the base profile as read (ConfigNode's checks)
+  StudyBase base_kind = StudyBase::profile;  ///< a profile, or the coarse-grain settings (report/study_base.hpp)
   std::vector<std::uint64_t> seeds;
   std::vector<std::pair<std::string, YAML::Node>> common;  ///< replaced in every setting first
   std::vector<double> Fn_delta_n, kt_delta_n;  ///< where Fn and kt are compared

@@ -70,6 +70,24 @@ TEST_F(StudyFile, ThePlanHasDefaults) {
   EXPECT_TRUE(s.figures.empty());
 }
 
+// A base whose one key is coarse_grain is the coarse-grain settings' (report/study_base.hpp): a
+// setting's seeds go into its section, ~ removes a key, and the reports say so.
+TEST_F(StudyFile, ACoarseGrainBaseKeepsItsSeedsInItsSectionAndRemovesKeysWithNull) {
+  const std::string path = (dir_ / "cg.yaml").string();
+  std::ofstream(path) << "study: cg\nreport: coarse\nbase: tests/data/coarse-grain-tiny.yaml\nseeds: [901, 902]\n"
+                         "settings:\n  still: {set: {coarse_grain.compression.shear: ~, coarse_grain.compression.record_shear: ~}, seeds: [902]}\n";
+  const Study st = read_study(path);
+  EXPECT_EQ(st.base_kind, StudyBase::coarse_grain);
+  EXPECT_EQ(st.stages, std::vector<std::string>{"coarse-grain-runs"});
+  const ConfigNode file = ConfigNode::load_string(setting_profile_text(st, st.setting("still")), "still");
+  file.allow_only({"coarse_grain"});  // no profile name or description
+  EXPECT_EQ(file.at("coarse_grain").at("seeds").items().size(), 1u);
+  EXPECT_FALSE(file.at("coarse_grain").at("compression").has("shear"));
+  EXPECT_TRUE(file.at("coarse_grain").at("compression").has("speed"));
+  EXPECT_EQ(setting_changes(st, st.setting("still")),
+            "coarse_grain.compression.shear removed, coarse_grain.compression.record_shear removed");
+}
+
 TEST_F(StudyFile, AMistakeInThePlanIsRefusedNamingTheKey) {
   EXPECT_NE(refusal("one", "study: other\nreport: accuracy\n").find("the study's name is its file's (one.yaml"), std::string::npos);
   EXPECT_NE(refusal("one", "study: one\nreport: sizes\n").find("report"), std::string::npos);

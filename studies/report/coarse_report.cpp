@@ -1,0 +1,85 @@
+#include "report/coarse_report.hpp"
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "coarse/report.hpp"
+#include "coarse/settings.hpp"
+#include "config/yaml_node.hpp"
+#include "core/types.hpp"
+#include "io/atomic_file.hpp"
+#include "report/report_cells.hpp"
+
+namespace softpack {
+namespace {
+
+// The last point of a phase (1 loading, 2 shear), or none.
+const CoarsePoint* last_of(const CoarseComparison& c, int phase) {
+  const CoarsePoint* last = nullptr;
+  for (const CoarsePoint& p : c.points)
+    if (p.phase == phase) last = &p;
+  return last;
+}
+
+std::string ratio_cell(const MeanError* a, const MeanError* b) {
+  return a && b && b->mean != 0.0 ? fmt::format("{:.3f}", a->mean / b->mean) : "–";
+}
+
+}  // namespace
+
+std::string write_coarse_study_report(const Study& study, const std::string& data_dir, const std::string& out_dir,
+                                      const std::string& title) {
+  std::vector<const StudySetting*> settings{&study.reference};
+  for (const StudySetting& s : study.settings) settings.push_back(&s);
+  std::string md = fmt::format(
+      "# {}\n\nEach setting's medium compressed resolved and with soft-particles (docs/coarse-grain.md); its own table "
+      "and figure in <setting>/. At the end of loading: σzz of the soft medium / the resolved one's (means over seeds) "
+      "and K0 of each; at the end of the platen shear, τ/σzz of each. Agreement: every loading point up to that strain "
+      "within 2 √(se² + se²).\n\n"
+      "| setting | changes | seeds | agreement strain | σzz soft / resolved | K0 resolved | K0 soft | τ/σzz resolved | "
+      "τ/σzz soft | speed-up | CPU resolved [s] |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+      title);
+  nlohmann::json rows = nlohmann::json::array();
+  for (const StudySetting* s : settings) {
+    const StudySetting& source = s->runs() ? *s : study.setting(s->of);
+    const std::string folder = fmt::format("{}/{}", data_dir, source.name), changes = setting_changes(study, *s);
+    CoarseGrainSettings cs =
+        read_coarse_grain_settings(ConfigNode::load_string(setting_profile_text(study, source), study.path + " (setting " + source.name + ")"));
+    cs.seeds = s->seeds;
+    const std::optional<CoarseComparison> c = coarse_comparison(cs, folder);
+    if (!c) {
+      std::string failed;
+      if (std::ifstream in(folder + "/failed.txt"); in) std::getline(in, failed);
+      md += fmt::format("| {} | {} | | {} | | | | | | | |\n", s->name, changes, failed.empty() ? "not run" : "failed: " + failed);
+      continue;
+    }
+    write_coarse_report(*c, cs, fmt::format("{}, setting {}", study.path, s->name), fmt::format("{}/{}", out_dir, s->name));
+    const CoarsePoint* load = last_of(*c, 1);
+    const CoarsePoint* shear = last_of(*c, 2);
+    double cpu = 0.0;
+    for (double t : c->cpu[0]) cpu += t;
+    std::string seeds;
+    for (auto seed : c->seeds) seeds += (seeds.empty() ? "" : " ") + std::to_string(seed);
+    const auto tau_ratio = [&](int m) { return shear ? fmt::format("{:.3f}", shear->tau[m].mean / shear->sigma[m].mean) : std::string("–"); };
+    md += fmt::format("| {} | {} | {} | {:.3f} | {} | {} | {} | {} | {} | {} | {:.0f} |\n", s->name, changes, seeds, c->agreement_strain,
+                      ratio_cell(load ? &load->sigma[1] : nullptr, load ? &load->sigma[0] : nullptr),
+                      load ? value_cell(load->K0[0].mean, load->K0[0].error) : "–", load ? value_cell(load->K0[1].mean, load->K0[1].error) : "–",
+                      tau_ratio(0), tau_ratio(1), value_cell(c->mean_speedup.mean, c->mean_speedup.error), cpu);
+    rows.push_back({{"setting", s->name},
+                    {"changes", changes},
+                    {"seeds", c->seeds},
+                    {"report", s->name + "/summary.json"},
+                    {"agreement_strain", c->agreement_strain},
+                    {"sigma_soft_over_resolved", load ? json_number(load->sigma[1].mean / load->sigma[0].mean) : nullptr},
+                    {"speedup", json_number(c->mean_speedup.mean)},
+                    {"cpu_seconds_resolved", cpu}});
+  }
+  write_files_atomically({{out_dir + "/table.md", md}, {out_dir + "/coarse.json", nlohmann::json{{"title", title}, {"rows", rows}}.dump(2) + "\n"}});
+  return md;
+}
+
+}  // namespace softpack
