@@ -118,6 +118,14 @@ int main(int argc, char** argv) {
     }
     const ReportKind& kind = report_kind(study.report);
     if (title.empty()) title = fmt::format("{} ({}, release {})", kind.title, study_path, release_version());
+    // Results of another configuration than the settings' now are reported as they are, and said so.
+    if (const std::vector<std::string> stale = stale_settings(study, data_dir, release_version()); !stale.empty()) {
+      const std::string say = fmt::format("{} {} results of another configuration than the study file gives {} now (a stage's "
+                                          "stamp differs): rerun, make {} SETTINGS=\"{}\"", fmt::join(stale, ", "),
+                                          stale.size() == 1 ? "holds" : "hold", stale.size() == 1 ? "it" : "them", study.name, fmt::join(stale, " "));
+      fmt::print(stderr, "softpack-study: warning: {}\n", say);
+      title += "\n\n> **Stale:** " + say + ".";
+    }
     std::filesystem::create_directories(out_dir);
     fmt::print("{}", kind.write(study, data_dir, out_dir, title));
     return 0;

@@ -118,8 +118,12 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
 }
 
 CoarseStamps coarse_stamps(const std::string& path, const std::string& version, const std::string& root_dir) {
-  const CoarseGrainSettings s = read_coarse_grain_settings(path, root_dir);  // checked first
-  const ConfigNode c = ConfigNode::load_file(path).at("coarse_grain");
+  return coarse_stamps(ConfigNode::load_file(path), version, root_dir);
+}
+
+CoarseStamps coarse_stamps(const ConfigNode& root, const std::string& version, const std::string& root_dir) {
+  const CoarseGrainSettings s = read_coarse_grain_settings(root, root_dir);  // checked first
+  const ConfigNode c = root.at("coarse_grain");
   const ConfigNode sp = c.at("soft_particle");
   const ConfigNode profile = ConfigNode::load_file(resolve(root_dir, s.profile));
   const auto text = [](const ConfigNode& n) {

@@ -82,5 +82,6 @@ struct CoarseStamps {
   std::string medium, resolved, soft;
 };
 CoarseStamps coarse_stamps(const std::string& path, const std::string& version, const std::string& root_dir = ".");
+CoarseStamps coarse_stamps(const ConfigNode& root, const std::string& version, const std::string& root_dir = ".");
 
 }  // namespace softpack

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "core/error.hpp"
 #include "core/types.hpp"
@@ -19,7 +20,13 @@ namespace softpack {
 std::string write_fits_report(const Study& study, const std::string& data_dir, const std::string& out_dir,
                               const std::string& title) {
   std::vector<const StudySetting*> settings{&study.reference};
-  for (const StudySetting& s : study.settings) settings.push_back(&s);
+  for (const StudySetting& s : study.settings) {
+    // A fit file is of all its setting's seeds: a setting on fewer of them would show another's fit.
+    if (!s.runs() && s.seeds != study.setting(s.of).seeds)
+      throw InputError(fmt::format("{}: setting '{}' is '{}' on fewer seeds: the fits kind reports each setting's fit files, made on "
+                                   "all its seeds; give it the seeds of '{}' or `set` a key", study.path, s.name, s.of, s.of));
+    settings.push_back(&s);
+  }
   std::string md = fmt::format(
       "# {}\n\nEq. 7's coefficients ± their leave-one-seed-out (jackknife) standard error; Eq. 8's (kt) ± the fit's "
       "standard error; χ²/dof of Eq. 7 over every point as experiments/criteria.yaml judges it.\n",
@@ -33,7 +40,9 @@ std::string write_fits_report(const Study& study, const std::string& data_dir, c
       const std::string folder = s->runs() ? s->name : s->of;
       const std::string path = fmt::format("{}/{}/fits/{}.json", data_dir, folder, scene);
       if (!std::filesystem::exists(path)) {
-        md += fmt::format("| {} | {} | not run | | | | | | |\n", s->name, setting_changes(study, *s));
+        std::string failed;
+        if (std::ifstream in(fmt::format("{}/{}/failed.txt", data_dir, folder)); in) std::getline(in, failed);
+        md += fmt::format("| {} | {} | {} | | | | | | |\n", s->name, setting_changes(study, *s), failed.empty() ? "not run" : "failed: " + failed);
         continue;
       }
       const FitEstimates f = read_fit_file(path);

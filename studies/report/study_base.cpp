@@ -14,6 +14,7 @@
 #include "measure/settings.hpp"
 #include "packing/packing_profile.hpp"
 #include "profile/profile.hpp"
+#include "report/study_file.hpp"
 
 namespace softpack {
 
@@ -76,12 +77,11 @@ std::string setting_make_args(StudyBase base, const std::string& study_dir, cons
   return fmt::format("PROFILE=@SETTING@ PROFILE_FILE={} DATA={} {} {}", file, study_dir, reuse, fmt::join(goals, " "));
 }
 
-std::vector<std::string> setting_stamps(StudyBase base, const std::string& path, const std::string& release) {
+std::vector<std::string> setting_stamps(StudyBase base, const ConfigNode& root, const std::string& release) {
   if (base == StudyBase::coarse_grain) {
-    const CoarseStamps s = coarse_stamps(path, release);
+    const CoarseStamps s = coarse_stamps(root, release);
     return {s.medium, s.resolved, s.soft};
   }
-  const ConfigNode root = ConfigNode::load_file(path);
   std::vector<std::string> stamps;
   for (const auto& [stage, folder] : study_base_kind(StudyBase::profile).shared) {
     try {
@@ -102,7 +102,7 @@ std::vector<SharedStage> shareable_stages(StudyBase base, const std::string& stu
                                           const std::vector<std::string>& earlier, const std::string& release) {
   namespace fs = std::filesystem;
   const auto file = [&](const std::string& s) { return fmt::format("{}/profiles/{}.yaml", study_dir, s); };
-  const std::vector<std::string> own = setting_stamps(base, file(setting), release);
+  const std::vector<std::string> own = setting_stamps(base, ConfigNode::load_file(file(setting)), release);
   const std::vector<std::uint64_t> seeds = setting_file_seeds(base, file(setting));
   const auto& shared = study_base_kind(base).shared;
   std::vector<SharedStage> out;
@@ -125,6 +125,27 @@ std::vector<SharedStage> shareable_stages(StudyBase base, const std::string& stu
     }
   }
   return out;
+}
+
+std::vector<std::string> stale_settings(const Study& study, const std::string& study_dir, const std::string& release) {
+  std::vector<std::string> stale;
+  std::vector<const StudySetting*> all{&study.reference};
+  for (const StudySetting& s : study.settings) all.push_back(&s);
+  const auto& shared = study_base_kind(study.base_kind).shared;
+  for (const StudySetting* s : all) {
+    if (!s->runs()) continue;
+    const std::vector<std::string> now =
+        setting_stamps(study.base_kind, ConfigNode::load_string(setting_profile_text(study, *s), study.path + " (setting " + s->name + ")"), release);
+    for (std::size_t k = 0; k < shared.size(); ++k) {
+      std::ifstream in(fmt::format("{}/{}/stamps/{}.hash", study_dir, s->name, shared[k].first));
+      std::string recorded;
+      if (in >> recorded && recorded != now[k]) {
+        stale.push_back(s->name);
+        break;
+      }
+    }
+  }
+  return stale;
 }
 
 }  // namespace softpack

@@ -15,6 +15,9 @@
 
 namespace softpack {
 
+class ConfigNode;
+struct Study;
+
 enum class StudyBase { profile, coarse_grain };
 
 struct StudyBaseKind {
@@ -46,9 +49,9 @@ void check_setting_file(StudyBase base, const std::string& text, const std::stri
 std::string setting_make_args(StudyBase base, const std::string& study_dir, const std::vector<std::string>& goals,
                               const std::string& reuse);
 
-/// The stamp of each shared stage of the setting file `path` (workflow/stamps.mk and coarse.mk
-/// write the same ones), in the order of StudyBaseKind::shared, and its seeds.
-std::vector<std::string> setting_stamps(StudyBase base, const std::string& path, const std::string& release);
+/// The stamp of each shared stage of a setting's file (workflow/stamps.mk and coarse.mk write the
+/// same ones), in the order of StudyBaseKind::shared ("" for a stage it has not), and its seeds.
+std::vector<std::string> setting_stamps(StudyBase base, const ConfigNode& file, const std::string& release);
 std::vector<std::uint64_t> setting_file_seeds(StudyBase base, const std::string& path);
 
 /// A stage of `setting` that is shared with the `earlier` setting's (workflow/studies.mk links it).
@@ -61,5 +64,10 @@ struct SharedStage {
 /// every section upstream), and every seed of the setting (results are per seed).
 std::vector<SharedStage> shareable_stages(StudyBase base, const std::string& study_dir, const std::string& setting,
                                           const std::vector<std::string>& earlier, const std::string& release);
+
+/// The running settings of `study` whose results in `study_dir` are of another configuration than
+/// their file now: a stamp file of one of their stages there holds another stamp (a setting edited
+/// since, and not rerun: make NAME SETTINGS=...). A stage without a stamp file is not judged.
+std::vector<std::string> stale_settings(const Study& study, const std::string& study_dir, const std::string& release);
 
 }  // namespace softpack

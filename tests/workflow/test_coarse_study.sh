@@ -57,6 +57,15 @@ mk -n coarse-tiny > "$work/c3.log" 2>&1 || fail "make -n coarse-tiny"
 find data | cmp -s - "$work/files.before" || fail "make -n coarse-tiny wrote a file"
 pass "a second make recomputes nothing; make -n writes nothing"
 
+sed -i 's/coarse_grain.compression.speed: 0.04/coarse_grain.compression.speed: 0.03/' experiments/studies/coarse-tiny.yaml
+mk coarse-tiny-report > "$work/c4.log" 2>&1 || { cat "$work/c4.log"; fail "make coarse-tiny-report"; }
+grep -q 'Stale:\*\* slow holds' $d/report/table.md || { cat $d/report/table.md; fail "the report does not say slow's results are of another configuration"; }
+grep -q 'Stale' $d/report/table.md && ! grep -q 'Stale:\*\* .*reference' $d/report/table.md || fail "the report calls more than slow stale"
+mk coarse-tiny SETTINGS=slow > "$work/c5.log" 2>&1 || { cat "$work/c5.log"; fail "make coarse-tiny SETTINGS=slow"; }
+! grep -q 'Stale' $d/report/table.md || fail "still stale after slow's rerun"
+! grep -q '^coarse-grain: .*media' $d/slow/make.log || fail "slow's rerun built its medium again"
+pass "an edited setting's results are reported as stale until it reruns (its resolved and soft runs only)"
+
 refused() {  # refused MESSAGE FILE-TEXT
   printf '%s\n' "$2" > "$work/bad.yaml"
   set +e
