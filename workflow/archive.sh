@@ -49,9 +49,16 @@ cp "$profile_file" "$staging/profile.yaml"
 # it): keep its provenance and BibTeX (they name the run that made the data), refresh its date.
 # The tables (the verdict) are derived from the fits and averages and carry the code version and time
 # of the run that wrote them: they are archived, not compared (tests/regression recomputes them).
-data_sums() { (cd "$1" && find . -type f ! -name MANIFEST.sha256 ! -name PROVENANCE.json ! -name dataset.bib ! -path './tables/*' -printf '%P\n' |
-  LC_ALL=C sort | xargs sha256sum); }
-if [[ -f $dest/MANIFEST.sha256 ]] && diff -q <(data_sums "$staging") <(data_sums "$dest") > /dev/null; then
+# The profile and the criteria are compared by what they say, not by their comments: a comment
+# edited since (a path renamed) is no other configuration -- the stamps, compared with the data,
+# cover every section a stage reads -- and re-archiving for it would give data made by one commit
+# the provenance of another.
+data_sums() { (cd "$1" && find . -type f ! -name MANIFEST.sha256 ! -name PROVENANCE.json ! -name dataset.bib ! -path './tables/*' \
+  ! -name profile.yaml ! -name criteria.yaml -printf '%P\n' | LC_ALL=C sort | xargs sha256sum); }
+uncommented() { [[ ! -f $1 ]] || sed -E 's/(^|[[:space:]])#.*$//; s/[[:space:]]+$//' "$1" | grep -v '^$'; }
+same_words() { diff -q <(uncommented "$staging/$1") <(uncommented "$dest/$1") > /dev/null; }
+if [[ -f $dest/MANIFEST.sha256 ]] && diff -q <(data_sums "$staging") <(data_sums "$dest") > /dev/null \
+  && same_words profile.yaml && same_words criteria.yaml; then
   touch "$dest/MANIFEST.sha256"
   echo "archive: $dest already holds these results (unchanged)"
   exit 0

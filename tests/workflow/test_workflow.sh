@@ -107,7 +107,11 @@ done
 touch data-j1/quick/fits/*.json  # newer, same content: the archive is kept as it is
 mk DATA=data-j1 archive > "$work/archive2.log" 2>&1 || { cat "$work/archive2.log"; fail "make archive (again)"; }
 grep -q 'already holds these results' "$work/archive2.log" || fail "make archive rewrote an archive of the same results"
-pass "make archive: results, stamps, MANIFEST (verified), provenance, BibTeX; kept when unchanged"
+sed -i '1s/^/# a comment added since the archive\n/' "$profile"  # the same configuration: the archive is kept
+mk DATA=data-j1 archive > "$work/archive3.log" 2>&1 || { cat "$work/archive3.log"; fail "make archive (a comment added)"; }
+grep -q 'already holds these results' "$work/archive3.log" || fail "make archive rewrote the archive for a comment of the profile"
+cp "$work/quick.yaml.orig" "$profile"
+pass "make archive: results, stamps, MANIFEST (verified), provenance, BibTeX; kept when unchanged, a comment aside"
 
 copy_tree "$work/fresh"
 mkdir -p "$work/fresh/data" && cp -r data/archive "$work/fresh/data/"
