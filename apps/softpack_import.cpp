@@ -97,10 +97,10 @@ int main(int argc, char** argv) {
     write_imported_packing_file(out_path, record, imported.centres, imported.radii, imported.Rs, stats, prov);
     if (!quiet)
       fmt::print(stderr,
-                 "softpack-import seed {}: {} spheres from {} ({}), shell {} m ({}), largest overlap {:.2g} of a radius, solid "
-                 "fraction {:.4f}, {:.2f} s -> {}\n",
+                 "softpack-import seed {}: {} spheres from {} ({}), shell {} m ({}; the outermost grain {:.2g} % of it inside), "
+                 "largest overlap {:.2g} of a radius, solid fraction {:.4f}, {:.2f} s -> {}\n",
                  seed, imported.radii.size(), imported.source, name(imported.format), imported.Rs, name(spec.shell),
-                 imported.largest_overlap, stats.solid_fraction, watch.elapsed().wall, out_path);
+                 100.0 * imported.shell_gap, imported.largest_overlap, stats.solid_fraction, watch.elapsed().wall, out_path);
     return 0;
   } catch (...) {
     return exit_on_error("softpack-import");

@@ -61,7 +61,7 @@ const char* name(ShellSource s) {
 }
 
 ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& seeds) {
-  n.allow_only({"files", "format", "length_unit", "shell", "overlap_tolerance"});
+  n.allow_only({"files", "format", "length_unit", "shell", "overlap_tolerance", "max_shell_gap"});
   ImportSpec s;
   const ConfigNode files = n.at("files");
   if (!files.yaml().IsMap()) files.fail("expected a map of seed: file, like {1: packings/run-1.data}");
@@ -111,6 +111,12 @@ ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& s
     s.overlap_tolerance = t->number();
     if (!(s.overlap_tolerance >= 0.0 && s.overlap_tolerance <= 0.5))
       t->fail(fmt::format("{} is not allowed; allowed: 0 <= tolerance <= 0.5 (overlap over the smaller radius)", s.overlap_tolerance));
+  }
+  if (const auto g = n.find("max_shell_gap")) {
+    s.max_shell_gap = g->number();
+    if (!(s.max_shell_gap >= 0.0 && s.max_shell_gap < 1.0))
+      g->fail(fmt::format("{} is not allowed; allowed: 0 <= gap < 1 (the gap between the outermost grain and the shell, over Rs)",
+                          s.max_shell_gap));
   }
   return s;
 }
@@ -189,6 +195,8 @@ ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed) {
                                  spec.length_unit, why));
 
   // To metres, the shell's centre at the origin; every grain inside the shell.
+  double reach = 0.0;  // of the outermost grain, in the file's unit
+  std::size_t outermost = 0;
   for (std::size_t i = 0; i < s.radii.size(); ++i) {
     const Vec3 x = (s.centres[i] - c) * spec.length_unit;
     const double r = s.radii[i] * spec.length_unit;
@@ -197,9 +205,19 @@ ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed) {
     if (!(x.norm() + r <= out.Rs * (1.0 + 1e-9)))
       throw InputError(fmt::format("{}: this grain reaches {} from the shell's centre, beyond the shell (radius {}, {}; in the file's unit)",
                                    line(i), x.norm() / spec.length_unit + s.radii[i], R, name(spec.shell)));
+    if (const double d = (s.centres[i] - c).norm() + s.radii[i]; d > reach) reach = d, outermost = i;
     out.centres.push_back(x);
     out.radii.push_back(r);
   }
+  out.shell_gap = std::max(0.0, 1.0 - reach / R);
+  if (spec.shell != ShellSource::given && out.shell_gap > spec.max_shell_gap)
+    throw InputError(fmt::format(
+        "{}: the outermost grain reaches {:.4g} from the shell's centre: a gap of {:.1f} % of the shell's radius {:.4g} ({}; in the "
+        "file's unit), more than packing.import.max_shell_gap = {} allows: the {} is not the packing's shell. Give the shell, "
+        "shell: {{radius: R, centre: [x, y, z]}}{}, or raise max_shell_gap if the gap is meant",
+        line(outermost), reach, 100.0 * out.shell_gap, R, name(spec.shell), spec.max_shell_gap,
+        spec.shell == ShellSource::read ? "file's box" : "largest seed's enclosing sphere",
+        spec.shell == ShellSource::read ? ", or shell: enclosing" : ""));
   const Overlap o = deepest_overlap(out.centres, out.radii);
   out.largest_overlap = o.fraction;
   if (o.fraction > spec.overlap_tolerance)

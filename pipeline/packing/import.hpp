@@ -31,6 +31,10 @@ struct ImportSpec {
   double shell_radius = 0.0;                   ///< given: in the file's unit
   Vec3 shell_centre = Vec3::Zero();            ///< given: in the file's unit
   double overlap_tolerance = 1e-6;             ///< largest overlap allowed, over the smaller radius
+  /// The largest gap allowed between the outermost grain and a shell read from the box or
+  /// enclosing the seeds, over Rs: a wider one means the box is not the shell (a LAMMPS box around
+  /// a wall region is often larger). A given shell is the user's word: its gap is reported only.
+  double max_shell_gap = 0.02;
 };
 
 /// Reads `packing.import` (file, line and column in messages); every seed of the profile must
@@ -45,10 +49,12 @@ struct ImportedPacking {
   ForeignFormat format = ForeignFormat::text;
   std::string source, sha256;  ///< the source file and the SHA-256 of its bytes
   double largest_overlap = 0.0;  ///< deepest overlap between two grains, over the smaller radius
+  double shell_gap = 0.0;        ///< 1 - (outermost grain's reach) / Rs: the gap to the shell, over Rs
 };
 
 /// Imports the source file of `seed`: InputError naming the file, its line and what is wrong
-/// (a grain beyond the shell, two grains overlapping beyond the tolerance, a bad file).
+/// (a grain beyond the shell, two grains overlapping beyond the tolerance, a shell read or
+/// enclosing that leaves a gap wider than max_shell_gap, a bad file).
 ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed);
 
 /// One line per seed, "seed <seed> <file> sha256 <digest>": what the stages' stamps add to the

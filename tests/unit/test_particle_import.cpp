@@ -146,5 +146,35 @@ TEST(ParticleImport, Sha256OfKnownText) {
   EXPECT_EQ(sha256_of_file(write("abc.txt", "abc")), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
 }
 
+// A shell read from the box or enclosing the seeds must hold the grains without a wide gap (a
+// LAMMPS box around a wall region is often larger than the wall: the shell came out 10 % too big,
+// with no word); a shell the user gives is the user's word, its gap reported.
+TEST(ParticleImport, AShellThatLeavesAWideGapIsRefusedUnlessGiven) {
+  // A grain of radius 1 touching a sphere of radius 2 about the origin; the box is +-2.2.
+  const std::string path = write("wide.xyz", "2\nProperties=species:S:1:pos:R:3:radius:R:1 Lattice=\"4.4 0 0 0 4.4 0 0 0 4.4\" "
+                                             "Origin=\"-2.2 -2.2 -2.2\"\nX 1 0 0 1\nX -1 0 0 1\n");
+  ImportSpec spec;
+  spec.files[1] = path;
+  spec.shell = ShellSource::read;
+  try {
+    import_packing(spec, 1);
+    FAIL() << "a box 10 % wider than the grains' reach was taken for the shell";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("wide.xyz:3: the outermost grain reaches 2 from the shell's centre: a gap of 9.1 %"),
+              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("max_shell_gap = 0.02"), std::string::npos) << e.what();
+  }
+  spec.max_shell_gap = 0.1;
+  EXPECT_NEAR(import_packing(spec, 1).shell_gap, 1.0 - 2.0 / 2.2, 1e-12);
+  spec.max_shell_gap = 0.02;
+  spec.shell = ShellSource::given;
+  spec.shell_radius = 2.2;
+  EXPECT_NEAR(import_packing(spec, 1).shell_gap, 1.0 - 2.0 / 2.2, 1e-12);  // given: reported, not refused
+  spec.shell = ShellSource::enclosing;  // the largest seed's sphere: the smaller seed is refused
+  spec.files[2] = write("small.txt", "0 0 0 1\n");
+  EXPECT_NEAR(import_packing(spec, 1).shell_gap, 0.0, 1e-12);
+  EXPECT_THROW(import_packing(spec, 2), InputError);
+}
+
 }  // namespace
 }  // namespace softpack
