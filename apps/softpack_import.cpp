@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -82,6 +83,7 @@ int main(int argc, char** argv) {
     record.length_unit = spec.length_unit;
     record.overlap_tolerance = spec.overlap_tolerance;
     record.largest_overlap = imported.largest_overlap;
+    record.density = imported.density;
     PackingProvenance prov;
     prov.program = "softpack-import";
     prov.code_version = code_version();
@@ -98,9 +100,13 @@ int main(int argc, char** argv) {
     if (!quiet)
       fmt::print(stderr,
                  "softpack-import seed {}: {} spheres from {} ({}), shell {} m ({}; the outermost grain {:.2g} % of it inside), "
-                 "largest overlap {:.2g} of a radius, solid fraction {:.4f}, {:.2f} s -> {}\n",
+                 "largest overlap {:.2g} of a radius, solid fraction {:.4f}, {}, {:.2f} s -> {}\n",
                  seed, imported.radii.size(), imported.source, name(imported.format), imported.Rs, name(spec.shell),
-                 100.0 * imported.shell_gap, imported.largest_overlap, stats.solid_fraction, watch.elapsed().wall, out_path);
+                 100.0 * imported.shell_gap, imported.largest_overlap, stats.solid_fraction,
+                 std::isfinite(imported.density) ? fmt::format("density {:.6g} kg/m^3 (the file's)", imported.density)
+                 : spec.density_ignored      ? std::string("the file's density ignored (the profile's material.density applies)")
+                                             : std::string("no density in the file (the profile's material.density applies)"),
+                 watch.elapsed().wall, out_path);
     return 0;
   } catch (...) {
     return exit_on_error("softpack-import");

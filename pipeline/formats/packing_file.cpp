@@ -94,6 +94,7 @@ void write_imported_packing_file(const std::string& path, const ImportRecord& re
   put_spheres(f, centres, radii, Rs);
   put(f, kRs, Rs);
   each_import_field(record, writer(f));
+  if (std::isfinite(record.density)) put(f, "imported/density", record.density);  // none: absent
   put(f, "stats/inserted", radii.size());
   put_statistics(f, stats);
   each_packing_provenance(provenance, writer(f));
@@ -139,6 +140,7 @@ PackingFile read_packing_file(const std::string& path) {
   if (v.program == kImport) {  // no generator: its shell, and the largest grain
     ImportRecord r;
     each_import_field(r, reader(f));
+    if (f.exists("imported/density")) get(f, "imported/density", r.density);
     out.imported = r;
     get(f, kRs, p.Rs);
     p.r_max = 0.0;

@@ -21,7 +21,8 @@
 //   /parameters/Rs      the shell radius [m]
 //   /imported/...       source_file, source_sha256, format, shell (given|read|enclosing),
 //                       shell_centre_in_file (3, the file's unit), length_unit [m per unit],
-//                       overlap_tolerance, largest_overlap (over the smaller radius)
+//                       overlap_tolerance, largest_overlap (over the smaller radius),
+//                       density (the source's density column [kg/m^3]; absent: none or ignored)
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -55,6 +56,9 @@ struct ImportRecord {
   std::string source_file, source_sha256, format, shell;
   Vec3 shell_centre_in_file = Vec3::Zero();
   double length_unit = 1.0, overlap_tolerance = 0.0, largest_overlap = 0.0;
+  /// The grains' density the source file gives [kg/m^3] (/imported/density; NaN, the dataset
+  /// absent: the file has none, or the profile ignores it, or the file is from before 0.6.1).
+  double density = kNaN;
 };
 
 /// Writes an imported packing atomically; `centres` about the shell's centre, SI.

@@ -151,6 +151,8 @@ ForeignSpheres read_lammps(const Lines& l) {
         }
       }
       add_sphere(s, l, k, x, 0.5 * number(l, k, e[2], "diameter"));
+      s.densities.push_back(number(l, k, e[3], "density"));
+      if (!(s.densities.back() > 0.0)) l.fail(k, fmt::format("density {}: allowed, > 0", s.densities.back()));
     }
   }
   if (!found) throw InputError(l.path + ": no Atoms section");
@@ -205,7 +207,7 @@ ForeignSpheres read_xyz(const Lines& l) {
     p.push_back(properties.substr(a, b - a));
   }
   if (p.size() % 3 != 0) l.fail(1, fmt::format("Properties={} is not name:type:columns triples", properties));
-  long pos = -1, radius = -1, diameter = -1, column = 0;
+  long pos = -1, radius = -1, diameter = -1, density = -1, column = 0;
   for (std::size_t i = 0; i < p.size(); i += 3) {
     const long cols = count(l, 1, p[i + 2], "Properties: the column count");
     if (cols < 1 || cols > 1000) l.fail(1, fmt::format("Properties: '{}' is not allowed as a column count; allowed: 1 to 1000", p[i + 2]));
@@ -213,6 +215,7 @@ ForeignSpheres read_xyz(const Lines& l) {
     if (name == "pos" && cols == 3) pos = column;
     if ((name == "radius" || name == "radii") && cols == 1) radius = column;
     if (name == "diameter" && cols == 1) diameter = column;
+    if (name == "density" && cols == 1) density = column;
     column += cols;
   }
   if (pos < 0) l.fail(1, fmt::format("Properties={} has no pos:R:3 column", properties));
@@ -238,6 +241,10 @@ ForeignSpheres read_xyz(const Lines& l) {
     if (static_cast<long>(w.size()) != column) l.fail(k, fmt::format("{} columns; Properties={} gives {}", w.size(), properties, column));
     const auto at = [&](long c) { return number(l, k, w[static_cast<std::size_t>(c)], "value"); };
     add_sphere(s, l, k, Vec3(at(pos), at(pos + 1), at(pos + 2)), radius >= 0 ? at(radius) : 0.5 * at(diameter));
+    if (density >= 0) {
+      s.densities.push_back(at(density));
+      if (!(s.densities.back() > 0.0)) l.fail(k, fmt::format("density {}: allowed, > 0", s.densities.back()));
+    }
   }
   for (std::size_t k = 2 + n; k < l.text.size(); ++k)
     if (!split(l.text[k]).empty()) l.fail(k, "a second frame (or extra lines); give a file of one frame");

@@ -30,12 +30,15 @@ struct ForeignSpheres {
   std::vector<Vec3> centres;
   std::vector<double> radii;
   std::vector<long> lines;        ///< 1-based line of each sphere in the file
+  /// Each sphere's density, in the file's unit, when the file has the column (LAMMPS atom_style
+  /// sphere; an extended XYZ `density` property); empty otherwise.
+  std::vector<double> densities;
   std::optional<ForeignBox> box;  ///< when the file gives an orthogonal one
   std::string no_box_reason;      ///< why there is none, when the file has a box of another shape
 };
 
 /// Reads the file. InputError with file, line and what is wrong: unreadable, not the format,
-/// a count that disagrees with the header, a non-finite value, a radius <= 0, image flags in a
+/// a count that disagrees with the header, a non-finite value, a radius <= 0, a density <= 0, image flags in a
 /// triclinic box, a LAMMPS atom style other than sphere, an XYZ file without positions or
 /// radii. A triclinic box or a non-orthogonal Lattice is read as no box (no_box_reason says so).
 ForeignSpheres read_foreign_spheres(const std::string& path, ForeignFormat format);

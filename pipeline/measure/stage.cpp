@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "profile/profile.hpp"
 #include "packing/packing_profile.hpp"
@@ -31,6 +32,17 @@ PackingFile checked_packing(const std::string& path, const std::string& packing_
                                  p.imported ? "softpack-import" : "softpack-pack", config_path));
   check_stamp(path, "packing", p.provenance.stamp, packing_stamp, config_path);
   return p;
+}
+
+// An imported packing's grains have the density its source file gives: the profile's material
+// must be that one, or say that it ignores the file's (the grains' mass sets the relaxation's
+// dynamics; a density read and dropped would measure another soft-particle with no word).
+void check_imported_density(const std::string& path, const PackingFile& p, double density, const std::string& config_path) {
+  if (!p.imported || !std::isfinite(p.imported->density) || std::abs(p.imported->density - density) <= 1e-9 * density) return;
+  throw InputError(fmt::format("{}: its grains' density is {:.6g} kg/m^3 (the density column of {}, times packing.import.density_unit), "
+                               "not material.density = {:.6g} of {}, which every grain takes: set material.density: {:.6g}, or "
+                               "packing.import.density: ignore to take the profile's",
+                               path, p.imported->density, p.imported->source_file, density, config_path, p.imported->density));
 }
 
 // How a packing is named in the points' configuration: its path, its seed and its identity (the
@@ -72,6 +84,7 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
     if (o.packing.empty()) throw InputError("--packing: required (the packing file of this seed)");
     const std::string packing_stamp = profile_stamp(root, "packing");
     const PackingFile first = checked_packing(o.packing, packing_section, packing_stamp, o.config_path);
+    check_imported_density(o.packing, first, settings.simulation.material.density, o.config_path);
     // The seed the results are filed and averaged under is the packing's own.
     if (first.provenance.seed != static_cast<std::uint64_t>(o.seed))
       throw InputError(fmt::format("--seed: {} does not match --packing {}, which was made with seed {}; "
@@ -82,6 +95,7 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
     if (kind == ContactScene::soft_soft) {
       if (o.second_packing.empty()) throw InputError("--second-packing: required for soft-soft (a packing of another seed)");
       const PackingFile second = checked_packing(o.second_packing, packing_section, packing_stamp, o.config_path);
+      check_imported_density(o.second_packing, second, settings.simulation.material.density, o.config_path);
       if (second.provenance.seed == first.provenance.seed)
         throw InputError(fmt::format("--second-packing: {} has the same seed as --packing; soft-soft needs two independent packings",
                                      o.second_packing));

@@ -61,7 +61,7 @@ const char* name(ShellSource s) {
 }
 
 ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& seeds) {
-  n.allow_only({"files", "format", "length_unit", "shell", "overlap_tolerance", "max_shell_gap"});
+  n.allow_only({"files", "format", "length_unit", "shell", "overlap_tolerance", "max_shell_gap", "density", "density_unit"});
   ImportSpec s;
   const ConfigNode files = n.at("files");
   if (!files.yaml().IsMap()) files.fail("expected a map of seed: file, like {1: packings/run-1.data}");
@@ -117,6 +117,13 @@ ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& s
     if (!(s.max_shell_gap >= 0.0 && s.max_shell_gap < 1.0))
       g->fail(fmt::format("{} is not allowed; allowed: 0 <= gap < 1 (the gap between the outermost grain and the shell, over Rs)",
                           s.max_shell_gap));
+  }
+  if (const auto d = n.find("density")) s.density_ignored = d->choice({"take", "ignore"}) == "ignore";
+  if (const auto u = n.find("density_unit")) {
+    s.density_unit = u->number();
+    if (!(s.density_unit > 0.0 && std::isfinite(s.density_unit)))
+      u->fail(fmt::format("{} is not allowed; allowed: kg/m^3 per density unit of the files, > 0 (1 for SI, 1000 for g/cm^3)",
+                          s.density_unit));
   }
   return s;
 }
@@ -218,6 +225,16 @@ ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed) {
         line(outermost), reach, 100.0 * out.shell_gap, R, name(spec.shell), spec.max_shell_gap,
         spec.shell == ShellSource::read ? "file's box" : "largest seed's enclosing sphere",
         spec.shell == ShellSource::read ? ", or shell: enclosing" : ""));
+  // The density column: one value for every grain (softpack's grains share one material), which
+  // the stages compare with the profile's material.density (measure/stage.cpp).
+  if (!s.densities.empty() && !spec.density_ignored) {
+    for (std::size_t i = 1; i < s.densities.size(); ++i)
+      if (std::abs(s.densities[i] - s.densities[0]) > 1e-9 * s.densities[0])
+        throw InputError(fmt::format("{} and {}: densities {} and {}: softpack's grains share one material (the profile's "
+                                     "material.density); give a file of one density, or packing.import.density: ignore",
+                                     line(0), line(i), s.densities[0], s.densities[i]));
+    out.density = s.densities[0] * spec.density_unit;
+  }
   const Overlap o = deepest_overlap(out.centres, out.radii);
   out.largest_overlap = o.fraction;
   if (o.fraction > spec.overlap_tolerance)

@@ -5,6 +5,7 @@
 // inside the shell, no overlap beyond a tolerance.
 #pragma once
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -35,6 +36,11 @@ struct ImportSpec {
   /// enclosing the seeds, over Rs: a wider one means the box is not the shell (a LAMMPS box around
   /// a wall region is often larger). A given shell is the user's word: its gap is reported only.
   double max_shell_gap = 0.02;
+  /// The file's density column: taken (times density_unit, kg/m^3 per the file's density unit)
+  /// and checked against the profile's material.density by the stages that use it, or ignored
+  /// (`density: ignore`: the profile's applies, said in the packing file).
+  bool density_ignored = false;
+  double density_unit = 1.0;
 };
 
 /// Reads `packing.import` (file, line and column in messages); every seed of the profile must
@@ -50,6 +56,9 @@ struct ImportedPacking {
   std::string source, sha256;  ///< the source file and the SHA-256 of its bytes
   double largest_overlap = 0.0;  ///< deepest overlap between two grains, over the smaller radius
   double shell_gap = 0.0;        ///< 1 - (outermost grain's reach) / Rs: the gap to the shell, over Rs
+  /// The grains' density [kg/m^3] from the file's column (one value: the grains share one
+  /// material); NaN when the file has none or the profile ignores it.
+  double density = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Imports the source file of `seed`: InputError naming the file, its line and what is wrong

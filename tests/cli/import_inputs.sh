@@ -22,7 +22,8 @@ for s in (1, 2):
             o.write(f"{c[k] - R!r} {c[k] + R!r} {a}lo {a}hi\n")
         o.write("\nMasses\n\n1 1.0\n\nAtoms # sphere\n\n")
         for i in range(len(r)):
-            o.write(f"{i + 1} 1 {2 * r[i]!r} 2500 {x[i, 0] + c[0]!r} {x[i, 1] + c[1]!r} {x[i, 2] + c[2]!r} 0 0 0\n")
+            # the density column: the sweep test profile's material.density (packing.import.density: the file's is taken)
+            o.write(f"{i + 1} 1 {2 * r[i]!r} 250000 {x[i, 0] + c[0]!r} {x[i, 1] + c[1]!r} {x[i, 2] + c[2]!r} 0 0 0\n")
         o.write("\nVelocities\n\n" + "".join(f"{i + 1} 0 0 0 0 0 0\n" for i in range(len(r))))
     with open(f"{d}/run-{s}.txt", "w") as o:
         o.write("# x y z r [m]\n" + "".join(f"{p[0] / 1e3!r} {p[1] / 1e3!r} {p[2] / 1e3!r} {q / 1e3!r}\n" for p, q in zip(x, r)))

@@ -129,3 +129,22 @@ bad_profile "$tmp/missing.data" "$unit"
 expect_error "missing.data: cannot read" "$out" imp "$tmp/bad.yaml"
 expect_error "packing: no \`import\` section" "$out" imp "$base"
 echo "ok: overlapping grains, a grain beyond the shell, another atom style, a wrong count, a non-cubic box, no box, boxes of two sizes, a missing seed or file, generator keys: refused"
+
+# --- 5. the density column: taken and checked against the profile's material, or ignored ----------------
+awk '/Atoms/ {a = 1} a && NF == 10 {$4 = 2500} {print}' "$tmp/run-1.data" > "$tmp/light-1.data"
+awk '/Atoms/ {a = 1} a && NF == 10 {$4 = 2500} {print}' "$tmp/run-2.data" > "$tmp/light-2.data"
+profile "$tmp/light.yaml" "$(import_section "$tmp/light-1.data" "$tmp/light-2.data" "$unit")" "[0.4]"
+"$bin/softpack-import" --config "$tmp/light.yaml" --seed 1 --out "$tmp/light-1.h5" 2> "$tmp/light.log" || fail "import: $(cat "$tmp/light.log")"
+grep -q "density 2500 kg/m^3 (the file's)" "$tmp/light.log" || fail "softpack-import does not say the file's density: $(cat "$tmp/light.log")"
+expect_error "its grains' density is 2500 kg/m^3 (the density column of $tmp/light-1.data, times packing.import.density_unit), not material.density = 250000" \
+  "$tmp/light.h5" "$bin/softpack-normal" --config "$tmp/light.yaml" --scene soft-solid --seed 1 --packing "$tmp/light-1.h5" \
+  --checkpoints "$tmp/ck-light" --out "$tmp/light.h5"
+profile "$tmp/light.yaml" "$(import_section "$tmp/light-1.data" "$tmp/light-2.data" "$unit"$'    density: ignore\n')" "[0.4]"
+"$bin/softpack-import" --config "$tmp/light.yaml" --seed 1 --out "$tmp/light-1.h5" 2> "$tmp/light.log" || fail "import: $(cat "$tmp/light.log")"
+grep -q "the file's density ignored" "$tmp/light.log" || fail "softpack-import does not say the density is ignored: $(cat "$tmp/light.log")"
+"$bin/softpack-normal" --config "$tmp/light.yaml" --scene soft-solid --seed 1 --packing "$tmp/light-1.h5" --checkpoints "$tmp/ck-light" \
+  --out "$tmp/light.h5" --quiet 2> "$tmp/light-normal.log" || fail "density: ignore did not let the sweep take the profile's density: $(tail -3 "$tmp/light-normal.log")"
+awk '/Atoms/ {a = 1} a && NF == 10 && $1 == 2 {$4 = 2600} {print}' "$tmp/run-1.data" > "$tmp/mixed.data"
+bad_profile "$tmp/mixed.data" "$unit"
+expect_error "densities 250000 and 2600: softpack's grains share one material" "$out" imp "$tmp/bad.yaml"
+echo "ok: the density column is taken and checked by the sweep (refused when it is not the profile's), ignored on request, one value"

@@ -55,6 +55,7 @@ TEST(ParticleImport, LammpsDataFileWithImageFlags) {
   ASSERT_TRUE(s.box);
   EXPECT_EQ(s.box->lo, Vec3(-1, -1, 0));
   EXPECT_EQ(s.box->hi, Vec3(1, 1, 4));
+  EXPECT_EQ(s.densities.size(), 2u);  // the density column, read (the stages compare it with material.density)
 }
 
 TEST(ParticleImport, LammpsRefusesWhatItCannotRead) {
@@ -97,6 +98,10 @@ TEST(ParticleImport, ExtendedXyzWithDiameterAndOrigin) {
   ASSERT_TRUE(s.box);
   EXPECT_EQ(s.box->lo, Vec3(-1, -1, -1));
   EXPECT_EQ(s.box->hi, Vec3(1, 1, 1));
+  EXPECT_TRUE(s.densities.empty());  // no density property
+  const ForeignSpheres d = read_foreign_spheres(write("d.xyz", "1\nProperties=species:S:1:pos:R:3:radius:R:1:density:R:1\nX 0 0 0 1 2500\n"),
+                                                ForeignFormat::xyz);
+  EXPECT_EQ(d.densities, std::vector<double>{2500.0});
   EXPECT_NE(error_of(write("b.xyz", "1\nProperties=species:S:1:pos:R:3\nX 0 0 0\n"), ForeignFormat::xyz).find("no radius"),
             std::string::npos);
   EXPECT_NE(error_of(write("c.xyz", "1\nProperties=species:S:1:pos:R:3:radius:R:1\nX 0 0 0 1\n1\n\nX 0 0 0 1\n"), ForeignFormat::xyz)
