@@ -54,9 +54,14 @@ def eq7(dn, a, b, c, delta):
     return np.where(dn >= delta, a * dn**b + c, 0.0)
 
 
+def measured(folder):
+    """The scenes the folder holds an average and a fit of (a profile may measure one scene)."""
+    return [s for s in SCENES if (Path(folder) / "averages" / f"{s}.h5").is_file() and (Path(folder) / "fits" / f"{s}.json").is_file()]
+
+
 def main(folder, out="figure3.png"):
     fig, ax = plt.subplots(figsize=(5.0, 4.6))
-    data = {scene: (*load_average(folder, scene), load_fit(folder, scene)) for scene in SCENES}
+    data = {scene: (*load_average(folder, scene), load_fit(folder, scene)) for scene in measured(folder)}
     # The axis floor: the decade below the smallest positive mean force (as fig3_normal.gp).
     smallest = min(F[F > 0].min(initial=1e-4) for _, F, _, _, _ in data.values())
     floor = 10.0 ** max(np.floor(np.log10(smallest)), -5)
@@ -92,8 +97,7 @@ if __name__ == "__main__":
         sys.exit(0)
     if len(sys.argv) not in (2, 3):
         sys.exit(__doc__.split("\n\n")[1])
-    for scene in SCENES:  # a clear message, not a traceback, when the folder lacks a file
-        for need in (Path(sys.argv[1]) / "averages" / f"{scene}.h5", Path(sys.argv[1]) / "fits" / f"{scene}.json"):
-            if not need.is_file():
-                sys.exit(f"figure3.py: {need}: no such file (make tables writes it; or give an archive folder)")
+    if not measured(sys.argv[1]):  # a clear message, not a traceback, when the folder holds no scene
+        sys.exit(f"figure3.py: {sys.argv[1]}: no scene with both averages/<scene>.h5 and fits/<scene>.json "
+                 f"({', '.join(SCENES)}): give a profile's folder after make tables (data/<profile>) or an archive folder")
     main(*sys.argv[1:])

@@ -25,17 +25,24 @@ if (!exists("avg") || !exists("out")) {
   print "usage: gnuplot -e \"avg='data/<profile>/average'; out='fig3_normal.pdf|png'\" [-e \"a_solid=..; b_solid=..; c_solid=..; delta_solid=..; a_soft=..; b_soft=..; c_soft=..; delta_soft=..\"] figures/fig3_normal.gp"
   exit status 2
 }
+# A profile may measure one scene (normal.scenes): the other's file is then absent, and its
+# points, fit and paper curve are not drawn.
 file_solid = avg."/normal-soft-solid.dat"
 file_soft = avg."/normal-soft-soft.dat"
-do for [f in file_solid." ".file_soft] {
-  if (system("test -r '".f."' && echo yes") ne "yes") {
-    print "fig3_normal.gp: cannot read ".f
-    exit status 2
-  }
+readable(f) = system("test -r '".f."' && echo yes") eq "yes"
+has_solid = readable(file_solid)
+has_soft = readable(file_soft)
+if (!has_solid && !has_soft) {
+  print "fig3_normal.gp: cannot read ".file_solid." nor ".file_soft
+  exit status 2
 }
+if (!has_solid) { file_solid = "/dev/null" }
+if (!has_soft) { file_soft = "/dev/null" }
 
 # The paper's Table 1: from experiments/published.yaml via softpack-table --gnuplot.
-do for [v in "paper_a_solid paper_b_solid paper_c_solid paper_delta_solid paper_a_soft paper_b_soft paper_c_soft paper_delta_soft"] {
+# (of the scenes measured: softpack-table writes those of the profile's scenes)
+paper_vars = (has_solid ? "paper_a_solid paper_b_solid paper_c_solid paper_delta_solid " : "").(has_soft ? "paper_a_soft paper_b_soft paper_c_soft paper_delta_soft" : "")
+do for [v in paper_vars] {
   if (!exists(v)) {
     print "fig3_normal.gp: ".v." is not set: load the published coefficients, -e \"load 'published.gp'\" (softpack-table --gnuplot, from experiments/published.yaml)"
     exit status 2
@@ -76,11 +83,15 @@ set output out
 # Axis: from the decade of the smallest positive mean force (at least 1e-5 N) to above Hertz.
 # (stats fails on a file without a valid point: look at the largest force first)
 ymin_solid = ymin_soft = 1e-4
-stats file_solid using 2 nooutput
-if (STATS_max > 0) { stats file_solid using ($2 > 0 ? $2 : 1/0) nooutput; ymin_solid = STATS_min }
-stats file_soft using 2 nooutput
-if (STATS_max > 0) { stats file_soft using ($2 > 0 ? $2 : 1/0) nooutput; ymin_soft = STATS_min }
-stats file_solid using 1 nooutput
+if (has_solid) {
+  stats file_solid using 2 nooutput
+  if (STATS_max > 0) { stats file_solid using ($2 > 0 ? $2 : 1/0) nooutput; ymin_solid = STATS_min }
+}
+if (has_soft) {
+  stats file_soft using 2 nooutput
+  if (STATS_max > 0) { stats file_soft using ($2 > 0 ? $2 : 1/0) nooutput; ymin_soft = STATS_min }
+}
+stats (has_solid ? file_solid : file_soft) using 1 nooutput
 xmax = STATS_max
 ymin = (ymin_solid < ymin_soft ? ymin_solid : ymin_soft)
 floor_exp = floor(log10(ymin))
@@ -108,13 +119,15 @@ below(y) = (y < yfloor) ? yfloor : 1/0
 
 # Key below the graph in two columns: soft-solid on the left, soft-soft on the right, so that
 # it hides no curve (inside, it would cover Hertz's law or the onsets).
+# (An unmeasured scene's entries have an empty title: no key entry, nothing drawn.)
+shown(on, t) = on ? t : ""
 plot hertz(x) with lines lc rgb c_hz lw 1.2 dt 3 title "Hertz, solid sphere of radius R_s", \
-     file_solid using 1:($2 >= yfloor ? $2 : 1/0):3 with yerrorbars pt 7 ps ps lc rgb c_sol title "soft-solid, ours (mean ± s.e.)", \
-     (have_solid ? law(x, a_solid, b_solid, c_solid, delta_solid) : 1/0) with lines lc rgb c_sol lw 1.5 title (have_solid ? "soft-solid, our fit (Eq. 7)" : "soft-solid, our fit: none"), \
-     law(x, paper_a_solid, paper_b_solid, paper_c_solid, paper_delta_solid) with lines lc rgb c_sol lw 1.5 dt (6,4) title "soft-solid, paper (Table 1)", \
+     file_solid using 1:($2 >= yfloor ? $2 : 1/0):3 with yerrorbars pt 7 ps ps lc rgb c_sol title shown(has_solid, "soft-solid, ours (mean ± s.e.)"), \
+     (have_solid ? law(x, a_solid, b_solid, c_solid, delta_solid) : 1/0) with lines lc rgb c_sol lw 1.5 title shown(has_solid, have_solid ? "soft-solid, our fit (Eq. 7)" : "soft-solid, our fit: none"), \
+     (has_solid ? law(x, paper_a_solid, paper_b_solid, paper_c_solid, paper_delta_solid) : 1/0) with lines lc rgb c_sol lw 1.5 dt (6,4) title shown(has_solid, "soft-solid, paper (Table 1)"), \
      file_soft using 1:(below($2)) with points pt 11 ps ps*0.9 lc rgb c_sft notitle, \
      file_solid using 1:(below($2)) with points pt 10 ps ps*1.7 lc rgb c_sol notitle, \
      NaN with points pt 10 ps ps*1.3 lc rgb "#777777" title "F_n below the axis (0 before onset)", \
-     file_soft using 1:($2 >= yfloor ? $2 : 1/0):3 with yerrorbars pt 5 ps ps lc rgb c_sft title "soft-soft, ours (mean ± s.e.)", \
-     (have_soft ? law(x, a_soft, b_soft, c_soft, delta_soft) : 1/0) with lines lc rgb c_sft lw 1.5 title (have_soft ? "soft-soft, our fit (Eq. 7)" : "soft-soft, our fit: none"), \
-     law(x, paper_a_soft, paper_b_soft, paper_c_soft, paper_delta_soft) with lines lc rgb c_sft lw 1.5 dt (6,4) title "soft-soft, paper (Table 1)"
+     file_soft using 1:($2 >= yfloor ? $2 : 1/0):3 with yerrorbars pt 5 ps ps lc rgb c_sft title shown(has_soft, "soft-soft, ours (mean ± s.e.)"), \
+     (have_soft ? law(x, a_soft, b_soft, c_soft, delta_soft) : 1/0) with lines lc rgb c_sft lw 1.5 title shown(has_soft, have_soft ? "soft-soft, our fit (Eq. 7)" : "soft-soft, our fit: none"), \
+     (has_soft ? law(x, paper_a_soft, paper_b_soft, paper_c_soft, paper_delta_soft) : 1/0) with lines lc rgb c_sft lw 1.5 dt (6,4) title shown(has_soft, "soft-soft, paper (Table 1)")

@@ -32,17 +32,25 @@ if (!exists("avg") || !exists("out")) {
   print "usage: gnuplot -e \"avg='data/<profile>/average'; out='fig6_kt.pdf|png'\" [-e \"kt_a_solid=..; kt_b_solid=..; kt_c_solid=..; kt_a_soft=..; kt_b_soft=..; kt_c_soft=..; delta_solid=..; delta_soft=..; log=1\"] figures/fig6_kt.gp"
   exit status 2
 }
+# A profile may measure one scene (normal.scenes): the other's file is then absent, and its
+# points, fit and paper curve are not drawn.
 file_solid = avg."/kt-soft-solid.dat"
 file_soft = avg."/kt-soft-soft.dat"
-do for [f in file_solid." ".file_soft] {
-  if (system("test -r '".f."' && echo yes") ne "yes") {
-    print "fig6_kt.gp: cannot read ".f
-    exit status 2
-  }
+readable(f) = system("test -r '".f."' && echo yes") eq "yes"
+has_solid = readable(file_solid)
+has_soft = readable(file_soft)
+if (!has_solid && !has_soft) {
+  print "fig6_kt.gp: cannot read ".file_solid." nor ".file_soft
+  exit status 2
 }
+files = (has_solid ? file_solid." " : "").(has_soft ? file_soft : "")
+if (!has_solid) { file_solid = "/dev/null" }
+if (!has_soft) { file_soft = "/dev/null" }
 
 # The paper's Table 2 with δ of Table 1: from experiments/published.yaml via softpack-table --gnuplot.
-do for [v in "paper_kt_a_solid paper_kt_b_solid paper_kt_c_solid paper_kt_delta_solid paper_kt_a_soft paper_kt_b_soft paper_kt_c_soft paper_kt_delta_soft"] {
+# (of the scenes measured: softpack-table writes those of the profile's scenes)
+paper_vars = (has_solid ? "paper_kt_a_solid paper_kt_b_solid paper_kt_c_solid paper_kt_delta_solid " : "").(has_soft ? "paper_kt_a_soft paper_kt_b_soft paper_kt_c_soft paper_kt_delta_soft" : "")
+do for [v in paper_vars] {
   if (!exists(v)) {
     print "fig6_kt.gp: ".v." is not set: load the published coefficients, -e \"load 'published.gp'\" (softpack-table --gnuplot, from experiments/published.yaml)"
     exit status 2
@@ -80,24 +88,21 @@ set output out
 
 # Ranges: x from 0 (the paper's onsets are at 0.065 and 0.148) to the largest Δn measured;
 # y over our means with their error bars.
-stats file_solid using 1 nooutput
-xmax = STATS_max
-stats file_soft using 1 nooutput
-if (STATS_max > xmax) { xmax = STATS_max }
-stats file_solid using ($2 + $3) nooutput
-ytop = STATS_max
-stats file_soft using ($2 + $3) nooutput
-if (STATS_max > ytop) { ytop = STATS_max }
-stats file_solid using ($2 - $3) nooutput
-ybot = STATS_min
-stats file_soft using ($2 - $3) nooutput
-if (STATS_min < ybot) { ybot = STATS_min }
+xmax = -1e300; ytop = -1e300; ybot = 1e300
+do for [f in files] {
+  stats f using 1 nooutput
+  if (STATS_max > xmax) { xmax = STATS_max }
+  stats f using ($2 + $3) nooutput
+  if (STATS_max > ytop) { ytop = STATS_max }
+  stats f using ($2 - $3) nooutput
+  if (STATS_min < ybot) { ybot = STATS_min }
+}
 if (ybot > 0) { ybot = 0 }
 if (ytop <= 0) { ytop = 1 }
 ytop = 1.1 * ytop
 ybot = 1.1 * ybot - 0.02 * ytop
-paper_top = law(xmax, paper_kt_a_solid, paper_kt_b_solid, paper_kt_c_solid, paper_kt_delta_solid)
-t = law(xmax, paper_kt_a_soft, paper_kt_b_soft, paper_kt_c_soft, paper_kt_delta_soft)
+paper_top = has_solid ? law(xmax, paper_kt_a_solid, paper_kt_b_solid, paper_kt_c_solid, paper_kt_delta_solid) : -1e300
+t = has_soft ? law(xmax, paper_kt_a_soft, paper_kt_b_soft, paper_kt_c_soft, paper_kt_delta_soft) : -1e300
 if (t > paper_top) { paper_top = t }
 ratio = 1.1 * paper_top / ytop
 
@@ -116,7 +121,7 @@ if (log) {
   set format y "10^{%L}"
   # smallest positive mean (stats fails on a file without one: check the largest first)
   lo = paper_top / 100.0
-  do for [f in file_solid." ".file_soft] {
+  do for [f in files] {
     stats f using 2 nooutput
     if (STATS_max > 0) { stats f using ($2 > 0 ? $2 : 1/0) nooutput; if (STATS_min < lo) { lo = STATS_min } }
   }
@@ -138,13 +143,15 @@ if (log) {
   set label 1 sprintf("right axis = left axis / %.3g", 1.0 / ratio) at graph 0.03, 0.95 left tc rgb "#555555"
 }
 
-plot file_solid using 1:(pos($2)):3 with yerrorbars pt 7 ps ps lc rgb c_sol title "soft-solid, ours ± s.e.", \
+# (An unmeasured scene's entries have an empty title: no key entry, nothing drawn.)
+shown(on, t) = on ? t : ""
+plot file_solid using 1:(pos($2)):3 with yerrorbars pt 7 ps ps lc rgb c_sol title shown(has_solid, "soft-solid, ours ± s.e."), \
      (have_solid ? law(x, kt_a_solid, kt_b_solid, kt_c_solid, kt_delta_solid) : 1/0) with lines lc rgb c_sol lw 1.5 \
-        title (have_solid ? "soft-solid, our fit (Eq. 8)" : "soft-solid, our fit: none"), \
-     law(x, paper_kt_a_solid, paper_kt_b_solid, paper_kt_c_solid, paper_kt_delta_solid) axes @paper_axes \
-        with lines lc rgb c_sol lw 1.5 dt (6,4) title "soft-solid, paper, Table 2".paper_note, \
-     file_soft using 1:(pos($2)):3 with yerrorbars pt 5 ps ps lc rgb c_sft title "soft-soft, ours ± s.e.", \
+        title shown(has_solid, have_solid ? "soft-solid, our fit (Eq. 8)" : "soft-solid, our fit: none"), \
+     (has_solid ? law(x, paper_kt_a_solid, paper_kt_b_solid, paper_kt_c_solid, paper_kt_delta_solid) : 1/0) axes @paper_axes \
+        with lines lc rgb c_sol lw 1.5 dt (6,4) title shown(has_solid, "soft-solid, paper, Table 2".paper_note), \
+     file_soft using 1:(pos($2)):3 with yerrorbars pt 5 ps ps lc rgb c_sft title shown(has_soft, "soft-soft, ours ± s.e."), \
      (have_soft ? law(x, kt_a_soft, kt_b_soft, kt_c_soft, kt_delta_soft) : 1/0) with lines lc rgb c_sft lw 1.5 \
-        title (have_soft ? "soft-soft, our fit (Eq. 8)" : "soft-soft, our fit: none"), \
-     law(x, paper_kt_a_soft, paper_kt_b_soft, paper_kt_c_soft, paper_kt_delta_soft) axes @paper_axes \
-        with lines lc rgb c_sft lw 1.5 dt (6,4) title "soft-soft, paper, Table 2".paper_note
+        title shown(has_soft, have_soft ? "soft-soft, our fit (Eq. 8)" : "soft-soft, our fit: none"), \
+     (has_soft ? law(x, paper_kt_a_soft, paper_kt_b_soft, paper_kt_c_soft, paper_kt_delta_soft) : 1/0) axes @paper_axes \
+        with lines lc rgb c_sft lw 1.5 dt (6,4) title shown(has_soft, "soft-soft, paper, Table 2".paper_note)

@@ -58,13 +58,15 @@ $(TABLES) &: $(filter %.json,$(FITS)) $(filter %.h5,$(AVERAGES)) $(PUBLISHED) $(
 
 # Figures 3-6 as PDF (the report) and PNG (the screen). Every figure script reads the averages
 # and the coefficients (ours, the paper's) as gnuplot variables.
-FIGURE_NAMES := fig3_normal $(if $(NORMAL_ONLY),,fig4_tangential_soft_solid fig5_tangential_soft_soft fig6_kt)
+# A profile of one scene (normal.scenes) draws that scene's: Figures 3 and 6 show what was measured.
+FIGURE_NAMES := fig3_normal $(if $(NORMAL_ONLY),,$(if $(filter soft-solid,$(SCENES)),fig4_tangential_soft_solid) \
+  $(if $(filter soft-soft,$(SCENES)),fig5_tangential_soft_soft) fig6_kt)
 FIGURES_3_6 := $(foreach f,$(FIGURE_NAMES),$(FIGURES_OUT)/$(f).pdf $(FIGURES_OUT)/$(f).png)
 figures: figure1 figure2 $(FIGURES_3_6)  ## Figures 1-6 (DATA/PROFILE/figures/, PDF and PNG)
 
 # gnuplot_run SCRIPT OUT VARIABLES: draws via OUT.tmp.EXT, renamed into place.
 gnuplot_run = mkdir -p $(FIGURES_OUT) && gnuplot -e "avg='$(AVERAGE_DIR)'; out='$(2).tmp$(suffix $(2))'; $(3)" \
-  -e "load '$(FIT_DIR)/soft-solid.gp'; load '$(FIT_DIR)/soft-soft.gp'; load '$(TABLE_DIR)/published.gp'" $(1) \
+  -e "$(foreach scene,$(SCENES),load '$(FIT_DIR)/$(scene).gp'; )load '$(TABLE_DIR)/published.gp'" $(1) \
   && mv $(2).tmp$(suffix $(2)) $(2) || { echo "figure: FAILED to draw $(2) with $(1)"; rm -f $(2).tmp$(suffix $(2)); exit 1; }
 FIGURE_INPUTS := $(AVERAGES) $(FITS) $(TABLE_DIR)/published.gp
 

@@ -33,3 +33,16 @@ mk tangential > "$tmp/make2.log" 2>&1 && fail "make tangential on a normal-only 
 grep -q "normal-only profile" "$tmp/make2.log" || fail "make tangential on a normal-only profile: $(cat "$tmp/make2.log")"
 echo "ok: make tables figures on a normal-only profile of imported packings (grid from 0.1): both scenes swept, averaged, fitted; Table 1 and Figure 3; h5py reads it all as the guide says; make tangential says why not"
 
+# A profile of one scene (normal.scenes: [soft-solid]) draws its figure: make figures loaded the
+# fits of both scenes and Figure 3 read both averages (issue 31).
+sed 's/^  scenes: \[soft-solid, soft-soft\]/  scenes: [soft-solid]/' "$tmp/lammps.yaml" > "$tmp/one-scene.yaml"
+grep -q "scenes: \[soft-solid\]$" "$tmp/one-scene.yaml" || fail "the one-scene profile was not written"
+(cd "$root" && make --no-print-directory PROFILE=imported PROFILE_FILE="$tmp/one-scene.yaml" DATA="$tmp/data-one" \
+   FIGURES_OUT="$tmp/figures-one" BUILD="$(dirname "$bin")" TOOLS= -j2 tables figures) > "$tmp/one.log" 2>&1 ||
+  { cat "$tmp/one.log"; fail "make tables figures on a profile of the soft-solid scene alone"; }
+[[ -s $tmp/figures-one/fig3_normal.png && -s $tmp/figures-one/fig3_normal.pdf ]] || fail "no Figure 3 of the one-scene profile"
+[[ ! -e $tmp/data-one/imported/normal/soft-soft-seed-1.h5 ]] || fail "the one-scene profile swept soft-soft"
+$py "$root/examples/figure3.py" "$tmp/data-one/imported" "$tmp/figure3-one.png" > "$tmp/fig3py.log" 2>&1 && [[ -s $tmp/figure3-one.png ]] ||
+  { cat "$tmp/fig3py.log"; fail "examples/figure3.py refused the one-scene folder"; }
+echo "ok: a profile of one scene: its sweeps, Table 1 and Figure 3 (make tables figures, examples/figure3.py)"
+
