@@ -8,6 +8,13 @@ SHELL := /bin/bash
 .DELETE_ON_ERROR:
 
 PROFILE ?= paper
+# Your own profile, kept anywhere: PROFILE=path/to/own.yaml (absolute, or relative to this folder;
+# from elsewhere, make -C softpack PROFILE=$PWD/own.yaml) is that file, named after it (its
+# results in DATA/own/); the paths in it (imported packings) are relative to its folder.
+ifneq ($(filter %.yaml %.yml,$(PROFILE)),)
+override PROFILE_FILE := $(abspath $(PROFILE))
+override PROFILE := $(basename $(notdir $(PROFILE)))
+endif
 DATA ?= data
 RUN ?=
 BUILD ?= build

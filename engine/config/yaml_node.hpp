@@ -29,6 +29,8 @@ class ConfigNode {
   static ConfigNode load_string(const std::string& text, const std::string& name);
 
   const std::string& path() const { return path_; }
+  /// The file it was read from (load_file), or the name load_string was given.
+  const std::string& file() const { return *file_; }
   const YAML::Node& yaml() const { return node_; }
 
   // Maps.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <map>
 #include <unordered_map>
@@ -72,7 +73,11 @@ ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& s
     if (!seed) file.fail(fmt::format("'{}' is not a seed: {}", k, error));
     if (std::find(seeds.begin(), seeds.end(), *seed) == seeds.end())
       file.fail(fmt::format("seed {} is not in the profile's seeds", *seed));
-    s.files[*seed] = file.string();
+    // Relative to the profile's folder (a profile travels with its packings; make runs anywhere).
+    std::filesystem::path p = file.string();
+    if (p.is_relative() && std::filesystem::is_regular_file(n.file()))
+      p = (std::filesystem::path(n.file()).parent_path() / p).lexically_normal();
+    s.files[*seed] = p.string();
   }
   for (const std::uint64_t seed : seeds)
     if (!s.files.count(seed)) files.fail(fmt::format("no file for seed {} of the profile's seeds", seed));

@@ -349,6 +349,13 @@ std::string setting_changes(const Study& st, const StudySetting& s) {
 
 std::string setting_profile_text(const Study& study, const StudySetting& setting) {
   YAML::Node base = YAML::Clone(study.base_yaml);
+  // An imported packing's files are relative to its profile's folder (packing/import.hpp): the
+  // generated profile lives elsewhere, so they are written from the base's folder.
+  const auto child = [](const YAML::Node& n, const char* key) { return n.IsMap() && n[key] ? n[key] : YAML::Node(); };
+  if (YAML::Node files = child(child(child(std::as_const(base), "packing"), "import"), "files"); files.IsMap())
+    for (auto it = files.begin(); it != files.end(); ++it)
+      if (const std::filesystem::path p = it->second.as<std::string>(""); !p.empty() && p.is_relative())
+        it->second = (std::filesystem::path(study.base).parent_path() / p).lexically_normal().string();
   for (const auto& [key, value] : study.common) replace(base, key, value, fmt::format("{}: common", study.path));
   for (const auto& [key, value] : setting.set)
     replace(base, key, value, fmt::format("{}: settings.{}.set", study.path, setting.name));

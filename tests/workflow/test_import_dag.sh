@@ -46,3 +46,14 @@ $py "$root/examples/figure3.py" "$tmp/data-one/imported" "$tmp/figure3-one.png" 
   { cat "$tmp/fig3py.log"; fail "examples/figure3.py refused the one-scene folder"; }
 echo "ok: a profile of one scene: its sweeps, Table 1 and Figure 3 (make tables figures, examples/figure3.py)"
 
+# Your own profile, kept elsewhere with its packings: make PROFILE=path/to/own.yaml, the import
+# paths relative to the profile's folder (issue 31: they were relative to the repository).
+mkdir -p "$tmp/own/packings" && cp "$tmp/run-1.data" "$tmp/run-2.data" "$tmp/own/packings/"
+profile "$tmp/own/own.yaml" "$(import_section packings/run-1.data packings/run-2.data $'    length_unit: 1.0e-3\n    shell: read\n')"
+sed -i 's/^profile: imported$/profile: own/' "$tmp/own/own.yaml"  # a profile is named after its file
+(cd "$root" && make --no-print-directory PROFILE="$tmp/own/own.yaml" DATA="$tmp/data-own" BUILD="$(dirname "$bin")" TOOLS= -j2 tables) \
+  > "$tmp/own.log" 2>&1 || { cat "$tmp/own.log"; fail "make PROFILE=$tmp/own/own.yaml tables"; }
+[[ -s $tmp/data-own/own/tables/table1.md && -s $tmp/data-own/own/packings/seed-2.h5 ]] || fail "no results of the own profile in DATA/own/"
+h5dump -d /imported/source_file "$tmp/data-own/own/packings/seed-1.h5" | grep -q "$tmp/own/packings/run-1.data" ||
+  fail "the packing was not read from the profile's folder"
+echo "ok: make PROFILE=path/to/own.yaml: results in DATA/own/, import paths relative to the profile's folder"
