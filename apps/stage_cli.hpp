@@ -49,20 +49,27 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
   // On a terminal each progress line replaces the previous one; in a log they follow each other.
   const bool tty = ::isatty(STDERR_FILENO) != 0;
   bool line_open = false;  // a progress line waits for its newline (terminal)
-  double computed_seconds = 0.0;
+  double computed_seconds = 0.0, last_seconds = 0.0;
   std::size_t computed = 0;
   std::string last_stage = stage;
   const auto progress = [&](const std::string& of, std::size_t k, std::size_t n, const PointResult& r, bool reused) {
     if (of != last_stage) computed_seconds = 0.0, computed = 0, last_stage = of;  // the time left of each sweep
-    if (!reused) computed_seconds += r.seconds(), ++computed;
+    if (!reused) computed_seconds += r.seconds(), last_seconds = r.seconds(), ++computed;
     if (quiet || (reused && of != stage)) return;  // normal states the tangential stage reuses: not worth a line
-    const double eta = computed ? computed_seconds / static_cast<double>(computed) * static_cast<double>(n - k - 1) : 0.0;
-    const double ratio = r.checks.empty() ? 0.0 : r.checks.back().residuals.force_ratio();
+    // The points get slower as the contact deepens: the time left at the pace of the last point
+    // (or of the mean, if that is slower), not of the mean alone, which ran ahead by half.
+    const double pace = computed ? std::max(computed_seconds / static_cast<double>(computed), last_seconds) : 0.0;
+    const double eta = pace * static_cast<double>(n - k - 1);
+    // The relaxation's force ratio (residual over mean contact force) says how well a loaded point
+    // came to rest; before the wall carries anything it is no measure of that, so it is not shown.
+    const std::string ratio = r.force.x() == 0.0 && r.force.y() == 0.0 ? std::string(", not loaded yet")
+                              : r.checks.empty()                     ? std::string()
+                                                                     : fmt::format(", force ratio {:.1e}", r.checks.back().residuals.force_ratio());
     const std::string what = of == "normal"    ? fmt::format("{}delta_n {:.4f}", of != stage ? "normal state " : "", r.delta_n)
                              : of == "sliding" ? fmt::format("delta_n {:.4f} ht {:.3e} m", r.delta_n, r.ht)
                                                : fmt::format("delta_n {:.4f} alpha {:+.3f} deg", r.delta_n, r.alpha_deg);
     const std::string awake = r.awake_fraction ? fmt::format(", {:.0f}% awake", 100.0 * *r.awake_fraction) : "";
-    fmt::print(stderr, "{}{} {} seed {}: point {}/{} {}: Fn {:.4e} N, Ft {:+.3e} N, force ratio {:.1e}{}{}{}", tty ? "\r\033[K" : "",
+    fmt::print(stderr, "{}{} {} seed {}: point {}/{} {}: Fn {:.4e} N, Ft {:+.3e} N{}{}{}{}", tty ? "\r\033[K" : "",
                program, o.scene, o.seed, k + 1, n, what, r.force.x(), r.force.y(), ratio, awake,
                reused ? " (checkpoint)" : fmt::format(", {:.1f} s, ETA {:.0f} s", r.seconds(), eta), tty ? "" : "\n");
     line_open = tty;

@@ -15,6 +15,10 @@ for s in 1 2; do "$bin/softpack-pack" --config "$profile" --seed $s --out "$tmp/
 normal() { "$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 1 --packing "$tmp/p1.h5" "$@"; }
 normal --checkpoints "$tmp/a" --out "$tmp/a.h5" 2> "$tmp/progress"
 grep -q "point 5/5" "$tmp/progress" || fail "no progress lines: $(cat "$tmp/progress")"
+# Delta_n 0 carries nothing: no force ratio there, which read as a failed relaxation (issue 31);
+# a loaded point has its own.
+grep "point 1/5" "$tmp/progress" | grep -q "not loaded yet" || fail "the unloaded point: $(grep "point 1/5" "$tmp/progress")"
+grep "point 5/5" "$tmp/progress" | grep -q "force ratio" || fail "the loaded point has no force ratio: $(grep "point 5/5" "$tmp/progress")"
 
 # Killed at a random moment, then started again: the same numbers as an uninterrupted run.
 normal --checkpoints "$tmp/b" --out "$tmp/b.h5" --quiet &
