@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
     record.overlap_tolerance = spec.overlap_tolerance;
     record.largest_overlap = imported.largest_overlap;
     record.density = imported.density;
+    record.pressed_face = spec.pressed_face;
     PackingProvenance prov;
     prov.program = "softpack-import";
     prov.code_version = code_version();

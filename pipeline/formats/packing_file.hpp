@@ -22,7 +22,8 @@
 //   /imported/...       source_file, source_sha256, format, shell (given|read|enclosing),
 //                       shell_centre_in_file (3, the file's unit), length_unit [m per unit],
 //                       overlap_tolerance, largest_overlap (over the smaller radius),
-//                       density (the source's density column [kg/m^3]; absent: none or ignored)
+//                       density (the source's density column [kg/m^3]; absent: none or ignored),
+//                       pressed_face (the source's face turned onto +x, the wall's side)
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -59,6 +60,9 @@ struct ImportRecord {
   /// The grains' density the source file gives [kg/m^3] (/imported/density; NaN, the dataset
   /// absent: the file has none, or the profile ignores it, or the file is from before 0.6.1).
   double density = kNaN;
+  /// The face of the source's packing the wall presses, turned onto +x (/imported/pressed_face;
+  /// "+x" for files from before it existed).
+  std::string pressed_face = "+x";
 };
 
 /// Writes an imported packing atomically; `centres` about the shell's centre, SI.

@@ -62,7 +62,8 @@ const char* name(ShellSource s) {
 }
 
 ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& seeds) {
-  n.allow_only({"files", "format", "length_unit", "shell", "overlap_tolerance", "max_shell_gap", "density", "density_unit"});
+  n.allow_only({"files", "format", "length_unit", "shell", "overlap_tolerance", "max_shell_gap", "density", "density_unit",
+                "pressed_face"});
   ImportSpec s;
   const ConfigNode files = n.at("files");
   if (!files.yaml().IsMap()) files.fail("expected a map of seed: file, like {1: packings/run-1.data}");
@@ -123,6 +124,7 @@ ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& s
       g->fail(fmt::format("{} is not allowed; allowed: 0 <= gap < 1 (the gap between the outermost grain and the shell, over Rs)",
                           s.max_shell_gap));
   }
+  if (const auto f = n.find("pressed_face")) s.pressed_face = f->choice({"+x", "-x", "+y", "-y", "+z", "-z"});
   if (const auto d = n.find("density")) s.density_ignored = d->choice({"take", "ignore"}) == "ignore";
   if (const auto u = n.find("density_unit")) {
     s.density_unit = u->number();
@@ -206,11 +208,13 @@ ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed) {
     throw InputError(fmt::format("{}: the shell radius {} (in the file's unit) times packing.import.length_unit = {}: {}", path, R,
                                  spec.length_unit, why));
 
-  // To metres, the shell's centre at the origin; every grain inside the shell.
+  // To metres, the shell's centre at the origin, the pressed face turned onto +x; every grain
+  // inside the shell.
+  const Eigen::Matrix3d turn = face_onto_x(spec.pressed_face);
   double reach = 0.0;  // of the outermost grain, in the file's unit
   std::size_t outermost = 0;
   for (std::size_t i = 0; i < s.radii.size(); ++i) {
-    const Vec3 x = (s.centres[i] - c) * spec.length_unit;
+    const Vec3 x = turn * (s.centres[i] - c) * spec.length_unit;
     const double r = s.radii[i] * spec.length_unit;
     if (const std::string why = limits::refusal(r, limits::kRadius); !why.empty())
       throw InputError(fmt::format("{}: the radius times packing.import.length_unit = {}: {}", line(i), spec.length_unit, why));
@@ -248,6 +252,18 @@ ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed) {
                                  "only if the overlap is meant)",
                                  line(o.i), line(o.j), o.fraction, spec.overlap_tolerance));
   return out;
+}
+
+Eigen::Matrix3d face_onto_x(const std::string& face) {
+  Eigen::Matrix3d m;
+  if (face == "+x") m << 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  else if (face == "-x") m << -1, 0, 0, 0, -1, 0, 0, 0, 1;
+  else if (face == "+y") m << 0, 1, 0, -1, 0, 0, 0, 0, 1;
+  else if (face == "-y") m << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  else if (face == "+z") m << 0, 0, 1, 0, 1, 0, -1, 0, 0;
+  else if (face == "-z") m << 0, 0, -1, 0, 1, 0, 1, 0, 0;
+  else throw InputError(fmt::format("pressed_face: '{}' is not allowed; allowed: +x, -x, +y, -y, +z, -z", face));
+  return m;
 }
 
 std::string import_sources_text(const ImportSpec& spec) {

@@ -41,6 +41,10 @@ struct ImportSpec {
   /// (`density: ignore`: the profile's applies, said in the packing file).
   bool density_ignored = false;
   double density_unit = 1.0;
+  /// The face of the file's packing the wall presses (the soft-solid wall comes from +x): "+x"
+  /// keeps the file's axes; another face is turned onto +x by a proper rotation about the shell's
+  /// centre (+y: (x,y,z) -> (y,-x,z); +z: (z,y,-x); -x: (-x,-y,z); -y: (-y,x,z); -z: (-z,y,x)).
+  std::string pressed_face = "+x";
 };
 
 /// Reads `packing.import` (file, line and column in messages); every seed of the profile must
@@ -65,6 +69,9 @@ struct ImportedPacking {
 /// (a grain beyond the shell, two grains overlapping beyond the tolerance, a shell read or
 /// enclosing that leaves a gap wider than max_shell_gap, a bad file).
 ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed);
+
+/// The proper rotation that turns `face` (+x, -x, +y, -y, +z, -z) onto +x.
+Eigen::Matrix3d face_onto_x(const std::string& face);
 
 /// One line per seed, "seed <seed> <file> sha256 <digest>": what the stages' stamps add to the
 /// profile's text, so that a changed source file reruns its packing and everything after.

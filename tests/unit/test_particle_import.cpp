@@ -181,5 +181,27 @@ TEST(ParticleImport, AShellThatLeavesAWideGapIsRefusedUnlessGiven) {
   EXPECT_THROW(import_packing(spec, 2), InputError);
 }
 
+// The wall presses +x: a packing whose pressed face was another is turned onto it by a proper
+// rotation about the shell's centre (issue 31: a LAMMPS wall came down on +z).
+TEST(ParticleImport, ThePressedFaceIsTurnedOntoPlusX) {
+  for (const std::string face : {"+x", "-x", "+y", "-y", "+z", "-z"}) {
+    const Eigen::Matrix3d m = face_onto_x(face);
+    Vec3 n = Vec3::Zero();
+    n[face[1] - 'x'] = face[0] == '+' ? 1.0 : -1.0;
+    EXPECT_EQ(m * n, Vec3(1, 0, 0)) << face;
+    EXPECT_DOUBLE_EQ(m.determinant(), 1.0) << face << ": not a proper rotation";
+    EXPECT_TRUE((m * m.transpose()).isIdentity(0.0)) << face;
+  }
+  ImportSpec spec;
+  spec.files[1] = write("face.txt", "0 0 1 1\n0 0 -1 1\n");  // two grains along z, touching the shell of radius 2 at z = +-2
+  spec.shell = ShellSource::given;
+  spec.shell_radius = 2.0;
+  spec.pressed_face = "+z";
+  const ImportedPacking p = import_packing(spec, 1);
+  EXPECT_EQ(p.centres[0], Vec3(1, 0, 0));  // the grain at +z now faces the wall
+  EXPECT_EQ(p.centres[1], Vec3(-1, 0, 0));
+  EXPECT_THROW(face_onto_x("+w"), InputError);
+}
+
 }  // namespace
 }  // namespace softpack
