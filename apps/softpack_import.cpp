@@ -101,9 +101,13 @@ int main(int argc, char** argv) {
     if (!quiet)
       fmt::print(stderr,
                  "softpack-import seed {}: {} spheres from {} ({}), shell {} m ({}; the outermost grain {:.2g} % of it inside), "
-                 "largest overlap {:.2g} of a radius, solid fraction {:.4f}, {}, {:.2f} s -> {}\n",
+                 "largest overlap {:.2g} of a radius{}, solid fraction {:.4f}, {}, {:.2f} s -> {}\n",
                  seed, imported.radii.size(), imported.source, name(imported.format), imported.Rs, name(spec.shell),
-                 100.0 * imported.shell_gap, imported.largest_overlap, stats.solid_fraction,
+                 100.0 * imported.shell_gap, imported.largest_overlap,
+                 imported.moved_in ? fmt::format(", {} grains pressing into the shell moved in by up to {:.2g} of their radius",
+                                                 imported.moved_in, imported.largest_move)
+                                   : std::string(),
+                 stats.solid_fraction,
                  std::isfinite(imported.density) ? fmt::format("density {:.6g} kg/m^3 (the file's)", imported.density)
                  : spec.density_ignored      ? std::string("the file's density ignored (the profile's material.density applies)")
                                              : std::string("no density in the file (the profile's material.density applies)"),

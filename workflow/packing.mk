@@ -8,7 +8,11 @@ PACKINGS := $(foreach s,$(SEEDS),$(PACKING_DIR)/seed-$(s).h5)
 FIGURES_OUT := $(DATA)/$(PROFILE)/figures
 # Generated packings (softpack-pack), or imported ones when the profile's packing section has
 # `import` (softpack-import; docs/import.md): same options, same packing file.
-PACK := $(BUILD)/bin/softpack-$(if $(filter imported,$(call config,packings)),import,pack)
+IMPORTED := $(filter imported,$(call config,packings))
+PACK := $(BUILD)/bin/softpack-$(if $(IMPORTED),import,pack)
+# An import's summary (spheres, shell and the outermost grain's gap, overlap, density) goes to
+# its log and is shown: it says what was assumed. softpack-pack's progress is not.
+PACK_QUIET := $(if $(IMPORTED),,--quiet)
 
 .PHONY: packings figure1 figure2
 # The executables are brought up to date before any stage runs (an order-only prerequisite);
@@ -22,8 +26,9 @@ $(PACKING_DIR)/seed-%.h5: $(PACK_STAMP) | $(TOOLS)
 	@$(call from_archive,$@ $(@:.h5=.vtp) $(@:.h5=.xyz),$(PACK_STAMP)) || { \
 	  echo "pack: $(PROFILE) seed $* -> $@ (log $(@:.h5=.log))"; \
 	  $(RUN) $(PACK) --config $(PROFILE_FILE) $(call planned,$(PACK_STAMP)) --seed $* --out $@ --vtp $(@:.h5=.vtp) \
-	    --xyz $(@:.h5=.xyz) --quiet 2> $(@:.h5=.log) \
-	  || { echo "pack: FAILED for $(PROFILE) seed $*; see $(@:.h5=.log)"; cat $(@:.h5=.log); exit 1; }; }
+	    --xyz $(@:.h5=.xyz) $(PACK_QUIET) 2> $(@:.h5=.log) \
+	  || { echo "pack: FAILED for $(PROFILE) seed $*; see $(@:.h5=.log)"; cat $(@:.h5=.log); exit 1; }; \
+	  $(if $(IMPORTED),sed 's/^/pack: /' $(@:.h5=.log);) }
 
 figure1: $(FIGURES_OUT)/fig1_apollonian.png $(FIGURES_OUT)/fig1_apollonian.pdf  ## Figure 1: a 2D Apollonian packing
 figure2: $(FIGURES_OUT)/fig2_softparticle.png $(FIGURES_OUT)/fig2_softparticle.pdf  ## Figure 2: a soft-particle (cross-section)

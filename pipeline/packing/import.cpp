@@ -214,14 +214,26 @@ ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed) {
   double reach = 0.0;  // of the outermost grain, in the file's unit
   std::size_t outermost = 0;
   for (std::size_t i = 0; i < s.radii.size(); ++i) {
-    const Vec3 x = turn * (s.centres[i] - c) * spec.length_unit;
+    Vec3 x = turn * (s.centres[i] - c) * spec.length_unit;
     const double r = s.radii[i] * spec.length_unit;
     if (const std::string why = limits::refusal(r, limits::kRadius); !why.empty())
       throw InputError(fmt::format("{}: the radius times packing.import.length_unit = {}: {}", line(i), spec.length_unit, why));
-    if (!(x.norm() + r <= out.Rs * (1.0 + 1e-9)))
-      throw InputError(fmt::format("{}: this grain reaches {} from the shell's centre, beyond the shell (radius {}, {}; in the file's unit)",
-                                   line(i), x.norm() / spec.length_unit + s.radii[i], R, name(spec.shell)));
+    // A grain may press into the shell as into another grain, by overlap_tolerance of its radius
+    // (a packing compacted against a wall does; a file of few digits rounds a touching grain out).
+    if (!(x.norm() + r <= out.Rs * (1.0 + 1e-9) + spec.overlap_tolerance * r))
+      throw InputError(fmt::format("{}: this grain reaches {} from the shell's centre, beyond the shell (radius {}, {}; in the file's unit) "
+                                   "by {:.3g} of its radius; allowed: packing.import.overlap_tolerance = {} (raise it only if the "
+                                   "overlap is meant: ASE's extended XYZ keeps positions to 1e-8)",
+                                   line(i), x.norm() / spec.length_unit + s.radii[i], R, name(spec.shell),
+                                   (x.norm() + r - out.Rs) / r, spec.overlap_tolerance));
     if (const double d = (s.centres[i] - c).norm() + s.radii[i]; d > reach) reach = d, outermost = i;
+    // Pressing into the shell (within the tolerance): moved in to touch it, as a packing file
+    // holds its grains inside the shell; counted and reported.
+    if (const double excess = x.norm() + r - out.Rs; excess > 0.0) {
+      x *= (out.Rs - r) / x.norm();
+      ++out.moved_in;
+      out.largest_move = std::max(out.largest_move, excess / r);
+    }
     out.centres.push_back(x);
     out.radii.push_back(r);
   }

@@ -60,13 +60,16 @@ struct ImportedPacking {
   std::string source, sha256;  ///< the source file and the SHA-256 of its bytes
   double largest_overlap = 0.0;  ///< deepest overlap between two grains, over the smaller radius
   double shell_gap = 0.0;        ///< 1 - (outermost grain's reach) / Rs: the gap to the shell, over Rs
+  std::size_t moved_in = 0;      ///< grains pressing into the shell (within overlap_tolerance), moved in to touch it
+  double largest_move = 0.0;     ///< the largest such move, over the grain's radius
   /// The grains' density [kg/m^3] from the file's column (one value: the grains share one
   /// material); NaN when the file has none or the profile ignores it.
   double density = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Imports the source file of `seed`: InputError naming the file, its line and what is wrong
-/// (a grain beyond the shell, two grains overlapping beyond the tolerance, a shell read or
+/// (a grain beyond the shell by more than overlap_tolerance of its radius -- within it, the grain is
+/// moved in to touch the shell, and counted --, two grains overlapping beyond the tolerance, a shell read or
 /// enclosing that leaves a gap wider than max_shell_gap, a bad file).
 ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed);
 
