@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <tuple>
 
@@ -168,11 +167,8 @@ AccuracyReport accuracy_report(const Study& st, const std::string& dir) {
     row.runs = s.runs();
     row.seeds = s.seeds.size();
     const StudySetting& src = source(st, s);
-    const std::string failed = fmt::format("{}/{}/failed.txt", dir, src.name);
-    if (std::filesystem::exists(failed)) {
-      std::ifstream in(failed);
-      std::getline(in, row.failed);
-      if (row.failed.empty()) row.failed = "its run failed (no message)";
+    if (const auto failed = setting_failure(dir, src.name)) {
+      row.failed = *failed;
       return row;
     }
     const ProfileTiming time = collect_timing(study_files(dir, src.name, s.seeds));

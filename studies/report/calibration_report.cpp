@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <span>
 #include <stdexcept>
 
@@ -200,11 +199,8 @@ CalibrationReport calibration_report(const Study& st, const std::string& dir) {
     row.knob = s->name == "reference" ? fmt::format("(the base, {})", st.base) : setting_changes(st, *s);
     row.seeds = s->seeds.size();
     const StudySetting& src = s->runs() ? *s : st.setting(s->of);
-    const std::string failed = fmt::format("{}/{}/failed.txt", dir, src.name);
-    if (std::filesystem::exists(failed)) {
-      std::ifstream in(failed);
-      std::getline(in, row.failed);
-      if (row.failed.empty()) row.failed = "its run failed (no message)";
+    if (const auto failed = setting_failure(dir, src.name)) {
+      row.failed = *failed;
       r.rows.push_back(row);
       continue;
     }

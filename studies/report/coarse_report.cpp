@@ -4,8 +4,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
-#include <fstream>
 
 #include "coarse/report.hpp"
 #include "coarse/settings.hpp"
@@ -13,6 +11,7 @@
 #include "core/types.hpp"
 #include "io/atomic_file.hpp"
 #include "report/report_cells.hpp"
+#include "report/study_runs.hpp"
 
 namespace softpack {
 namespace {
@@ -52,9 +51,8 @@ std::string write_coarse_study_report(const Study& study, const std::string& dat
     cs.seeds = s->seeds;
     const std::optional<CoarseComparison> c = coarse_comparison(cs, folder);
     if (!c) {
-      std::string failed;
-      if (std::ifstream in(folder + "/failed.txt"); in) std::getline(in, failed);
-      md += fmt::format("| {} | {} | | {} | | | | | | | |\n", s->name, changes, failed.empty() ? "not run" : "failed: " + failed);
+      const auto failed = setting_failure(data_dir, source.name);
+      md += fmt::format("| {} | {} | | {} | | | | | | | |\n", s->name, changes, failed ? "failed: " + *failed : "not run");
       continue;
     }
     write_coarse_report(*c, cs, fmt::format("{}, setting {}", study.path, s->name), fmt::format("{}/{}", out_dir, s->name));

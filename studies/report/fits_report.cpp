@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 #include "core/error.hpp"
 #include "core/types.hpp"
@@ -40,9 +39,8 @@ std::string write_fits_report(const Study& study, const std::string& data_dir, c
       const std::string folder = s->runs() ? s->name : s->of;
       const std::string path = fmt::format("{}/{}/fits/{}.json", data_dir, folder, scene);
       if (!std::filesystem::exists(path)) {
-        std::string failed;
-        if (std::ifstream in(fmt::format("{}/{}/failed.txt", data_dir, folder)); in) std::getline(in, failed);
-        md += fmt::format("| {} | {} | {} | | | | | | |\n", s->name, setting_changes(study, *s), failed.empty() ? "not run" : "failed: " + failed);
+        const auto failed = setting_failure(data_dir, folder);
+        md += fmt::format("| {} | {} | {} | | | | | | |\n", s->name, setting_changes(study, *s), failed ? "failed: " + *failed : "not run");
         continue;
       }
       const FitEstimates f = read_fit_file(path);

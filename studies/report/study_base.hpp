@@ -50,7 +50,7 @@ std::string setting_make_args(StudyBase base, const std::string& study_dir, cons
                               const std::string& reuse);
 
 /// The stamp of each shared stage of a setting's file (workflow/stamps.mk and coarse.mk write the
-/// same ones), in the order of StudyBaseKind::shared ("" for a stage it has not), and its seeds.
+/// same ones), in the order of StudyBaseKind::shared ("" for a stage it has not); and its seeds.
 std::vector<std::string> setting_stamps(StudyBase base, const ConfigNode& file, const std::string& release);
 std::vector<std::uint64_t> setting_file_seeds(StudyBase base, const std::string& path);
 

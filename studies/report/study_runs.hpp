@@ -5,7 +5,9 @@
 #include <fmt/format.h>
 
 #include <cstdint>
+#include <fstream>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,6 +18,17 @@
 #include "report/stage_timing.hpp"
 
 namespace softpack {
+
+/// Why a setting's run failed: the first line of <dir>/<setting>/failed.txt, which
+/// workflow/studies.mk writes for a failed setting ("its run failed (no message)" when empty);
+/// none when it did not fail.
+inline std::optional<std::string> setting_failure(const std::string& dir, const std::string& setting) {
+  std::ifstream in(fmt::format("{}/{}/failed.txt", dir, setting));
+  if (!in) return std::nullopt;
+  std::string line;
+  std::getline(in, line);
+  return line.empty() ? "its run failed (no message)" : line;
+}
 
 /// The two scenes of a study's runs.
 inline const std::vector<std::string> kStudyScenes{"soft-solid", "soft-soft"};

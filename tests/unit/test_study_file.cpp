@@ -13,6 +13,7 @@
 #include "packing/packing_profile.hpp"
 #include "report/study_file.hpp"
 #include "report/report_kinds.hpp"
+#include "report/study_runs.hpp"
 
 namespace softpack {
 namespace {
@@ -86,6 +87,17 @@ TEST_F(StudyFile, ACoarseGrainBaseKeepsItsSeedsInItsSectionAndRemovesKeysWithNul
   EXPECT_TRUE(file.at("coarse_grain").at("compression").has("speed"));
   EXPECT_EQ(setting_changes(st, st.setting("still")),
             "coarse_grain.compression.shear removed, coarse_grain.compression.record_shear removed");
+}
+
+// A setting whose run failed is reported with the first line of its failed.txt (workflow/studies.mk).
+TEST_F(StudyFile, AFailedSettingIsReadFromItsFailedFile) {
+  fs::create_directories(dir_ / "a");
+  fs::create_directories(dir_ / "b");
+  std::ofstream(dir_ / "a" / "failed.txt") << "numerical error: the time step\nmore\n";
+  std::ofstream(dir_ / "b" / "failed.txt");
+  EXPECT_EQ(setting_failure(dir_.string(), "a"), "numerical error: the time step");
+  EXPECT_EQ(setting_failure(dir_.string(), "b"), "its run failed (no message)");
+  EXPECT_EQ(setting_failure(dir_.string(), "c"), std::nullopt);
 }
 
 TEST_F(StudyFile, AMistakeInThePlanIsRefusedNamingTheKey) {
