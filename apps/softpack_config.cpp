@@ -12,6 +12,8 @@
 //   softpack-config PROFILE stages            the stages it has (a normal-only profile: packing normal;
 //                                             with a `sliding` section, sliding at the end)
 //   softpack-config PROFILE packings          generated or imported (which program makes them)
+//   softpack-config PROFILE name              the name the profile gives itself (`profile:`; empty
+//                                             without one): make refuses one that is not its own
 //   softpack-config PROFILE stale FILE...      of the result files given, those whose recorded stamp
 //                                             is not their stage's stamp now (Make reruns them)
 #include <CLI/CLI.hpp>
@@ -45,6 +47,7 @@ int main(int argc, char** argv) {
   auto* gnuplot = app.add_subcommand("gnuplot", "Rs, E and nu as gnuplot variables: Rs=...; E=...; nu=...");
   auto* stages = app.add_subcommand("stages", "the stages the profile has, on one line (a normal-only profile: packing normal)");
   auto* packings = app.add_subcommand("packings", "generated (softpack-pack) or imported (softpack-import, packing.import)");
+  auto* name = app.add_subcommand("name", "the name the profile gives itself (its `profile:` key; an empty line without one)");
   auto* stale = app.add_subcommand(
       "stale", "of the result files given, those whose recorded stamp is not their stage's stamp now, one per line (make reruns them)");
   std::vector<std::string> stale_files;
@@ -79,6 +82,7 @@ int main(int argc, char** argv) {
       fmt::print("{}{}\n", settings.has_tangential ? "packing normal tangential average" : "packing normal",
                  settings.has_sliding ? " sliding" : "");
     if (*packings) fmt::print("{}\n", packing.import ? "imported" : "generated");
+    if (*name) fmt::print("{}\n", root.find("profile") ? root.find("profile")->string() : "");
     if (*stale) {
       // One configuration per result, also for make's up-to-date check: a result made with
       // another configuration than the profile's now (an edit during a run, reverted since) is

@@ -39,7 +39,15 @@ FORCE:
 planned = --stamp '$(file < $(1))'
 
 ifeq ($(wildcard $(PROFILE_FILE)),)
-$(error $(PROFILE_FILE): no such profile (PROFILE=$(PROFILE)); profiles: $(notdir $(basename $(wildcard experiments/*.yaml))))
+$(error $(PROFILE_FILE): no such profile (PROFILE=$(PROFILE)); the profiles here: $(notdir $(basename $(shell \
+  grep -l '^profile:' experiments/*.yaml))); or your own, PROFILE=path/to/own.yaml)
+endif
+# A profile's results carry the name make gives it (its file's, or PROFILE=); a `profile:` key
+# naming another would be refused only at the fit, after the sweeps: refused here instead.
+PROFILE_NAME := $(call config,name)
+ifneq ($(if $(PROFILE_NAME),$(PROFILE_NAME),$(PROFILE)),$(PROFILE))
+$(error $(PROFILE_FILE) names itself '$(PROFILE_NAME)' (its profile: key), but make names it '$(PROFILE)' \
+  (after its file) and puts its results in $(DATA)/$(PROFILE)/: make the key profile: $(PROFILE), or rename the file $(PROFILE_NAME).yaml)
 endif
 SEEDS := $(call config,seeds)
 SCENES := $(call config,scenes)

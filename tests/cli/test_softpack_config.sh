@@ -15,6 +15,7 @@ quick=$root/experiments/quick.yaml
 [ "$("$cfg" "$quick" sections tangential)" = "packing material simulation relaxation normal tangential" ] ||
   fail "sections tangential: $("$cfg" "$quick" sections tangential)"
 [[ "$("$cfg" "$quick" stamp normal)" =~ ^[0-9a-f]{16}$ ]] || fail "stamp: $("$cfg" "$quick" stamp normal)"
+[ "$("$cfg" "$quick" name)" = "quick" ] || fail "name: $("$cfg" "$quick" name)"
 "$cfg" "$quick" gnuplot | grep -qx 'Rs=0.016; E=500000; nu=0.3' || fail "gnuplot: $("$cfg" "$quick" gnuplot)"
 
 # stamps STAGE...: the stamps of the stages for the profile $tmp/p.yaml

@@ -66,6 +66,20 @@ awk '
   {print}' "$root/experiments/quick.yaml" > "$own/own.yaml"
 mk() { (cd "$root" && make --no-print-directory PROFILE="$own/own.yaml" DATA="$tmp/data" FIGURES_OUT="$tmp/figures" \
           BUILD="$(dirname "$bin")" TOOLS= "$@"); }
+# A profile whose profile: key names another than its file is refused before anything runs (its
+# results would be filed under the file's name; the fit refused it, after the sweeps); a profile
+# that does not exist is refused with the list of the profiles, not every YAML of experiments/.
+cp "$own/own.yaml" "$own/mine.yaml"
+(cd "$root" && make --no-print-directory PROFILE="$own/mine.yaml" DATA="$tmp/data-mine" BUILD="$(dirname "$bin")" TOOLS= \
+  packings) > "$tmp/name.log" 2>&1 && fail "a profile named 'own' in mine.yaml was run"
+grep -q "names itself 'own' (its profile: key), but make names it 'mine'" "$tmp/name.log" || { cat "$tmp/name.log"; fail "the name was not said"; }
+[[ -z $(ls "$tmp/data-mine") ]] || fail "the refused profile wrote into $tmp/data-mine: $(ls "$tmp/data-mine")"
+rm "$own/mine.yaml"
+(cd "$root" && make --no-print-directory PROFILE=nonesuch BUILD="$(dirname "$bin")" TOOLS= packings) > "$tmp/none.log" 2>&1 &&
+  fail "make PROFILE=nonesuch ran"
+grep -q "the profiles here: .*quick" "$tmp/none.log" && ! grep -qE "criteria|published|coarse-grain" "$tmp/none.log" ||
+  { cat "$tmp/none.log"; fail "PROFILE=nonesuch: not the list of profiles"; }
+echo "ok: a profile named unlike its file is refused before it runs; a missing one lists the profiles"
 mk packings > "$tmp/read.log" 2>&1 && fail "shell: read took LAMMPS's box (+-1.1 Rs) for the shell"
 grep -qE "a gap of [0-9.]+ % of the shell's radius 0.0176" "$tmp/read.log" || { cat "$tmp/read.log"; fail "the gap was not said"; }
 sed -i 's/^    shell: read$/    shell: {radius: 0.016, centre: [0, 0, 0]}/; s|2: packings/run-2.data|2: packings/run-2.xyz|' "$own/own.yaml"
