@@ -14,6 +14,7 @@ Exit 1 listing every claim that fails and every other number, with its line.
 
     tests/docs/check_readme_numbers.py BIN_DIR [README]
 """
+import functools
 import glob
 import json
 import re
@@ -40,11 +41,13 @@ def timing(**files):
     return data
 
 
+@functools.cache
 def archive_cpu_minutes():
     files = {k: sorted(glob.glob(str(archive / k / "*.h5"))) for k in ("packings", "normal", "tangential")}
     return sum(s["cost"]["cpu"] for s in timing(**files)["stages"]) / 60
 
 
+@functools.cache
 def longest_job():
     """The archive's sweep file of most CPU time: (its scene and stage, CPU-minutes)."""
     best = (0.0, "")
@@ -56,6 +59,7 @@ def longest_job():
     return best[1], best[0] / 60
 
 
+@functools.cache
 def fast_check():
     return json.loads((root / "data" / "fast-check" / "check.json").read_text())
 
