@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
     record.largest_overlap = imported.largest_overlap;
     record.density = imported.density;
     record.pressed_face = spec.pressed_face;
+    record.not_used = imported.not_used;
     PackingProvenance prov;
     prov.program = "softpack-import";
     prov.code_version = code_version();
@@ -101,7 +102,7 @@ int main(int argc, char** argv) {
     if (!quiet)
       fmt::print(stderr,
                  "softpack-import seed {}: {} spheres from {} ({}), shell {} m ({}; the outermost grain {:.2g} % of it inside), "
-                 "largest overlap {:.2g} of a radius{}, solid fraction {:.4f}, {}, {:.2f} s -> {}\n",
+                 "largest overlap {:.2g} of a radius{}, solid fraction {:.4f}, {}{}, {:.2f} s -> {}\n",
                  seed, imported.radii.size(), imported.source, name(imported.format), imported.Rs, name(spec.shell),
                  100.0 * imported.shell_gap, imported.largest_overlap,
                  imported.moved_in ? fmt::format(", {} grains pressing into the shell moved in by up to {:.2g} of their radius",
@@ -111,7 +112,8 @@ int main(int argc, char** argv) {
                  std::isfinite(imported.density) ? fmt::format("density {:.6g} kg/m^3 (the file's)", imported.density)
                  : spec.density_ignored      ? std::string("the file's density ignored (the profile's material.density applies)")
                                              : std::string("no density in the file (the profile's material.density applies)"),
-                 watch.elapsed().wall, out_path);
+                 imported.not_used.empty() ? std::string() : fmt::format(", not used: {}", imported.not_used), watch.elapsed().wall,
+                 out_path);
     return 0;
   } catch (...) {
     return exit_on_error("softpack-import");

@@ -96,6 +96,7 @@ void write_imported_packing_file(const std::string& path, const ImportRecord& re
   each_import_field(record, writer(f));
   if (std::isfinite(record.density)) put(f, "imported/density", record.density);  // none: absent
   put(f, "imported/pressed_face", record.pressed_face);
+  put(f, "imported/not_used", record.not_used);
   put(f, "stats/inserted", radii.size());
   put_statistics(f, stats);
   each_packing_provenance(provenance, writer(f));
@@ -143,6 +144,7 @@ PackingFile read_packing_file(const std::string& path) {
     each_import_field(r, reader(f));
     if (f.exists("imported/density")) get(f, "imported/density", r.density);
     if (f.exists("imported/pressed_face")) get(f, "imported/pressed_face", r.pressed_face);
+    if (f.exists("imported/not_used")) get(f, "imported/not_used", r.not_used);
     out.imported = r;
     get(f, kRs, p.Rs);
     p.r_max = 0.0;

@@ -63,6 +63,9 @@ struct ImportRecord {
   /// The face of the source's packing the wall presses, turned onto +x (/imported/pressed_face;
   /// "+x" for files from before it existed).
   std::string pressed_face = "+x";
+  /// What the source holds that the import did not use, with what applied instead
+  /// (/imported/not_used; "" for nothing, and for files from before it existed).
+  std::string not_used;
 };
 
 /// Writes an imported packing atomically; `centres` about the shell's centre, SI.

@@ -79,6 +79,25 @@ void add_sphere(ForeignSpheres& s, const Lines& l, std::size_t k, const Vec3& x,
 
 std::string strip_comment(const std::string& s) { return s.substr(0, s.find('#')); }
 
+void add_type(ForeignSpheres& s, std::size_t k, const std::string& type) {
+  if (std::find(s.types.begin(), s.types.end(), type) != s.types.end()) return;
+  s.types.push_back(type);
+  if (s.types.size() == 2) s.type_line = static_cast<long>(k + 1);
+}
+
+// A grain's velocity `v` or angular velocity `w` (whichever is given) on line k.
+void add_motion(ForeignSpheres& s, std::size_t k, std::optional<Vec3> v, std::optional<Vec3> w) {
+  const double speed = v ? v->norm() : 0.0, spin = w ? w->norm() : 0.0;
+  if (v && (!s.max_speed || speed > *s.max_speed)) {
+    s.max_speed = speed;
+    if (speed > 0.0) s.motion_line = static_cast<long>(k + 1);
+  }
+  if (w && (!s.max_spin || spin > *s.max_spin)) {
+    s.max_spin = spin;
+    if (spin > 0.0 && !(s.max_speed && *s.max_speed > 0.0)) s.motion_line = static_cast<long>(k + 1);
+  }
+}
+
 // --- LAMMPS data file (read_data): a title line, a header, then sections ------------------------
 ForeignSpheres read_lammps(const Lines& l) {
   if (l.text.empty()) throw InputError(l.path + ": empty file; expected a LAMMPS data file (read_data)");
@@ -119,7 +138,23 @@ ForeignSpheres read_lammps(const Lines& l) {
       continue;
     }
     const std::size_t section = k++;
+    if (w[0] == "Velocities") {  // atom_style sphere: id vx vy vz wx wy wz
+      s.motion_source = "its Velocities section";
+      for (; k < l.text.size(); ++k) {
+        const std::vector<std::string> e = split(strip_comment(l.text[k]));
+        if (e.empty()) continue;
+        if (!to_number(e[0])) break;
+        if (e.size() != 7 && e.size() != 4)
+          l.fail(k, fmt::format("{} columns; a Velocities line of atom_style sphere has 7 (id vx vy vz wx wy wz)", e.size()));
+        const auto at = [&](std::size_t c) { return number(l, k, e[c], "velocity"); };
+        add_motion(s, k, Vec3(at(1), at(2), at(3)), e.size() == 7 ? std::optional<Vec3>(Vec3(at(4), at(5), at(6))) : std::nullopt);
+      }
+      continue;
+    }
     if (w[0] != "Atoms") {
+      std::string keyword = w[0];
+      for (std::size_t i = 1; i < w.size(); ++i) keyword += " " + w[i];
+      s.not_read.push_back("section " + keyword);
       while (k < l.text.size()) {  // skip its entries
         const std::vector<std::string> e = split(strip_comment(l.text[k]));
         if (!e.empty() && !to_number(e[0])) break;
@@ -151,6 +186,7 @@ ForeignSpheres read_lammps(const Lines& l) {
         }
       }
       add_sphere(s, l, k, x, 0.5 * number(l, k, e[2], "diameter"));
+      add_type(s, k, e[1]);
       s.densities.push_back(number(l, k, e[3], "density"));
       if (!(s.densities.back() > 0.0)) l.fail(k, fmt::format("density {}: allowed, > 0", s.densities.back()));
     }
@@ -207,17 +243,30 @@ ForeignSpheres read_xyz(const Lines& l) {
     p.push_back(properties.substr(a, b - a));
   }
   if (p.size() % 3 != 0) l.fail(1, fmt::format("Properties={} is not name:type:columns triples", properties));
-  long pos = -1, radius = -1, diameter = -1, density = -1, column = 0;
+  long pos = -1, radius = -1, diameter = -1, density = -1, type = -1, velocity = -1, spin = -1, column = 0;
   for (std::size_t i = 0; i < p.size(); i += 3) {
     const long cols = count(l, 1, p[i + 2], "Properties: the column count");
     if (cols < 1 || cols > 1000) l.fail(1, fmt::format("Properties: '{}' is not allowed as a column count; allowed: 1 to 1000", p[i + 2]));
     const std::string name = lower(p[i]);
+    const bool read = (name == "pos" && cols == 3) || ((name == "radius" || name == "radii") && cols == 1) ||
+                      (name == "diameter" && cols == 1) || (name == "density" && cols == 1) ||
+                      ((name == "species" || name == "type") && cols == 1) ||
+                      ((name == "vel" || name == "velo" || name == "velocities" || name == "momenta") && cols == 3) ||
+                      (name == "omega" && cols == 3);
     if (name == "pos" && cols == 3) pos = column;
     if ((name == "radius" || name == "radii") && cols == 1) radius = column;
     if (name == "diameter" && cols == 1) diameter = column;
     if (name == "density" && cols == 1) density = column;
+    if ((name == "species" || name == "type") && cols == 1) type = column;
+    if ((name == "vel" || name == "velo" || name == "velocities" || name == "momenta") && cols == 3) {
+      velocity = column;
+      s.motion_source = "its " + p[i] + " column";
+    }
+    if (name == "omega" && cols == 3) spin = column;
+    if (!read) s.not_read.push_back("column " + p[i]);
     column += cols;
   }
+  if (spin >= 0 && velocity < 0) s.motion_source = "its omega column";
   if (pos < 0) l.fail(1, fmt::format("Properties={} has no pos:R:3 column", properties));
   if (radius < 0 && diameter < 0) l.fail(1, fmt::format("Properties={} has no radius (radius:R:1) or diameter column", properties));
   if (kv.count("lattice")) {
@@ -241,6 +290,9 @@ ForeignSpheres read_xyz(const Lines& l) {
     if (static_cast<long>(w.size()) != column) l.fail(k, fmt::format("{} columns; Properties={} gives {}", w.size(), properties, column));
     const auto at = [&](long c) { return number(l, k, w[static_cast<std::size_t>(c)], "value"); };
     add_sphere(s, l, k, Vec3(at(pos), at(pos + 1), at(pos + 2)), radius >= 0 ? at(radius) : 0.5 * at(diameter));
+    if (type >= 0) add_type(s, k, w[static_cast<std::size_t>(type)]);
+    const auto vec = [&](long c) { return c < 0 ? std::nullopt : std::optional<Vec3>(Vec3(at(c), at(c + 1), at(c + 2))); };
+    if (velocity >= 0 || spin >= 0) add_motion(s, k, vec(velocity), vec(spin));
     if (density >= 0) {
       s.densities.push_back(at(density));
       if (!(s.densities.back() > 0.0)) l.fail(k, fmt::format("density {}: allowed, > 0", s.densities.back()));

@@ -35,6 +35,19 @@ struct ForeignSpheres {
   std::vector<double> densities;
   std::optional<ForeignBox> box;  ///< when the file gives an orthogonal one
   std::string no_box_reason;      ///< why there is none, when the file has a box of another shape
+  /// The atom types the file gives (LAMMPS's `type` column, an extended XYZ `species` or `type`
+  /// column), distinct, in the order met; `type_line`: the line of a sphere of the second one.
+  std::vector<std::string> types;
+  long type_line = 0;
+  /// The grains' motion, when the file gives it (LAMMPS's Velocities section, an extended XYZ
+  /// `vel`/`velo`/`velocities`/`momenta` or `omega` column): the largest |v| and |omega|, in the file's
+  /// units; `motion_line`: the line of the fastest grain; `motion_source`: where it was read.
+  std::optional<double> max_speed, max_spin;
+  long motion_line = 0;
+  std::string motion_source;
+  /// What the file holds that the import does not read (other LAMMPS sections, other XYZ columns),
+  /// named for the summary and the packing file.
+  std::vector<std::string> not_read;
 };
 
 /// Reads the file. InputError with file, line and what is wrong: unreadable, not the format,

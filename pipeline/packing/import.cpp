@@ -1,6 +1,7 @@
 #include "packing/import.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -63,7 +64,7 @@ const char* name(ShellSource s) {
 
 ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& seeds) {
   n.allow_only({"files", "format", "length_unit", "shell", "overlap_tolerance", "max_shell_gap", "density", "density_unit",
-                "pressed_face"});
+                "pressed_face", "atom_types", "velocities"});
   ImportSpec s;
   const ConfigNode files = n.at("files");
   if (!files.yaml().IsMap()) files.fail("expected a map of seed: file, like {1: packings/run-1.data}");
@@ -125,6 +126,8 @@ ImportSpec parse_import(const ConfigNode& n, const std::vector<std::uint64_t>& s
                           s.max_shell_gap));
   }
   if (const auto f = n.find("pressed_face")) s.pressed_face = f->choice({"+x", "-x", "+y", "-y", "+z", "-z"});
+  if (const auto t = n.find("atom_types")) s.types_one_material = t->choice({"one-material"}) == "one-material";
+  if (const auto v = n.find("velocities")) s.velocities_rest = v->choice({"rest"}) == "rest";
   if (const auto d = n.find("density")) s.density_ignored = d->choice({"take", "ignore"}) == "ignore";
   if (const auto u = n.find("density_unit")) {
     s.density_unit = u->number();
@@ -256,6 +259,28 @@ ImportedPacking import_packing(const ImportSpec& spec, std::uint64_t seed) {
                                      line(0), line(i), s.densities[0], s.densities[i]));
     out.density = s.densities[0] * spec.density_unit;
   }
+  // Every other column: used, or refused with what would apply, or named as not read.
+  std::vector<std::string> not_used;
+  if (s.types.size() > 1) {
+    if (!spec.types_one_material)
+      throw InputError(fmt::format("{}:{}: atom type {}, after {} (the file's types: {}): softpack's grains share one material, the "
+                                   "profile's `material`; give packing.import.atom_types: one-material to take every type as it, "
+                                   "or a file of one type",
+                                   path, s.type_line, s.types[1], s.types[0], fmt::join(s.types, " ")));
+    not_used.push_back(fmt::format("atom types {} (one material: the profile's)", fmt::join(s.types, " ")));
+  }
+  if (s.max_speed.value_or(0.0) > 0.0 || s.max_spin.value_or(0.0) > 0.0) {
+    const std::string motion = fmt::format("the grains move ({}: |v| up to {:.3g}{}, in the file's units)", s.motion_source,
+                                           s.max_speed.value_or(0.0),
+                                           s.max_spin ? fmt::format(", |omega| up to {:.3g}", *s.max_spin) : std::string());
+    if (!spec.velocities_rest)
+      throw InputError(fmt::format("{}:{}: {}: softpack starts every packing at rest; give packing.import.velocities: rest to start "
+                                   "this one at rest, or a packing at rest",
+                                   path, s.motion_line, motion));
+    not_used.push_back(motion + ", started at rest");
+  }
+  not_used.insert(not_used.end(), s.not_read.begin(), s.not_read.end());
+  out.not_used = fmt::format("{}", fmt::join(not_used, "; "));
   const Overlap o = deepest_overlap(out.centres, out.radii);
   out.largest_overlap = o.fraction;
   if (o.fraction > spec.overlap_tolerance)

@@ -45,6 +45,12 @@ struct ImportSpec {
   /// keeps the file's axes; another face is turned onto +x by a proper rotation about the shell's
   /// centre (+y: (x,y,z) -> (y,-x,z); +z: (z,y,-x); -x: (-x,-y,z); -y: (-y,x,z); -z: (-z,y,x)).
   std::string pressed_face = "+x";
+  /// A file of several atom types is refused (softpack's grains share the profile's material)
+  /// unless `atom_types: one-material` takes every type as that material.
+  bool types_one_material = false;
+  /// A file whose grains move (LAMMPS's Velocities, an XYZ velocity column) is refused unless
+  /// `velocities: rest` starts them at rest, as every packing starts.
+  bool velocities_rest = false;
 };
 
 /// Reads `packing.import` (file, line and column in messages); every seed of the profile must
@@ -65,6 +71,9 @@ struct ImportedPacking {
   /// The grains' density [kg/m^3] from the file's column (one value: the grains share one
   /// material); NaN when the file has none or the profile ignores it.
   double density = std::numeric_limits<double>::quiet_NaN();
+  /// What the file holds and the import does not use, with what applies instead ("" for nothing):
+  /// atom types taken as one material, velocities set to rest, sections and columns not read.
+  std::string not_used;
 };
 
 /// Imports the source file of `seed`: InputError naming the file, its line and what is wrong

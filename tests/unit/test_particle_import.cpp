@@ -203,5 +203,58 @@ TEST(ParticleImport, ThePressedFaceIsTurnedOntoPlusX) {
   EXPECT_THROW(face_onto_x("+w"), InputError);
 }
 
+std::string import_error(const ImportSpec& spec) {
+  try {
+    import_packing(spec, 1);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Every column is used, refused with what would apply, or named (issue 31: a column read and
+// dropped is a value silently assumed): several atom types and moving grains are refused unless
+// the profile says how to take them; other sections and columns are named in not_used.
+TEST(ParticleImport, TypesAndVelocitiesAreRefusedUnlessTheProfileSaysHowToTakeThem) {
+  std::string t = kLammps;  // at rest, one type: nothing to say but the Masses section
+  t.replace(t.find("8 1 0.25"), 8, "8 1 0.25").replace(t.find("1 0 -1  #"), 6, "0 0 0 ");
+  ImportSpec spec;
+  spec.files[1] = write("rest.data", t);
+  spec.shell = ShellSource::given;
+  spec.shell_radius = 10.0;
+  EXPECT_EQ(import_packing(spec, 1).not_used, "section Masses");
+  const ForeignSpheres rest = read_foreign_spheres(spec.files[1], ForeignFormat::lammps);
+  EXPECT_EQ(rest.max_speed, 0.0);
+  EXPECT_EQ(rest.types, std::vector<std::string>{"1"});
+
+  std::string two = t;
+  spec.files[1] = write("types.data", two.replace(two.find("8 1 0.25"), 8, "8 2 0.25"));
+  EXPECT_NE(import_error(spec).find("types.data:17: atom type 2, after 1 (the file's types: 1 2): softpack's grains share one material"),
+            std::string::npos) << import_error(spec);
+  spec.types_one_material = true;
+  EXPECT_EQ(import_packing(spec, 1).not_used, "atom types 1 2 (one material: the profile's); section Masses");
+
+  std::string moving = t;
+  spec.files[1] = write("moving.data", moving.replace(moving.find("8 0 0 0 0 0 0"), 13, "8 0 3 4 0 0 1"));
+  EXPECT_NE(import_error(spec).find("moving.data:22: the grains move (its Velocities section: |v| up to 5, |omega| up to 1, in the "
+                                    "file's units): softpack starts every packing at rest; give packing.import.velocities: rest"),
+            std::string::npos) << import_error(spec);
+  spec.velocities_rest = true;
+  EXPECT_EQ(import_packing(spec, 1).not_used,
+            "the grains move (its Velocities section: |v| up to 5, |omega| up to 1, in the file's units), started at rest; section Masses");
+
+  // Extended XYZ: species, vel and omega read; other columns named.
+  spec = ImportSpec{};
+  spec.shell = ShellSource::given;
+  spec.shell_radius = 10.0;
+  spec.files[1] = write("cols.xyz", "2\nProperties=species:S:1:pos:R:3:radius:R:1:vel:R:3:forces:R:3:id:I:1\n"
+                                    "H 0 0 0 1 0 0 0 1 1 1 7\nH 3 0 0 1 0 0 0.5 0 0 0 8\n");
+  EXPECT_NE(import_error(spec).find("cols.xyz:4: the grains move (its vel column: |v| up to 0.5, in the file's units)"),
+            std::string::npos) << import_error(spec);
+  spec.velocities_rest = true;
+  EXPECT_EQ(import_packing(spec, 1).not_used, "the grains move (its vel column: |v| up to 0.5, in the file's units), started at rest; "
+                                             "column forces; column id");
+}
+
 }  // namespace
 }  // namespace softpack
