@@ -9,8 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "formats/packing_file.hpp"
 #include "io/atomic_file.hpp"
 #include "report/accuracy_report.hpp"
+#include "report/study_runs.hpp"
 
 namespace softpack {
 namespace {
@@ -47,6 +49,16 @@ FastCheck fast_check(const std::string& data, const std::string& reference, cons
                      const std::vector<std::uint64_t>& seeds, const std::vector<double>& Fn_delta_n,
                      const std::vector<double>& kt_delta_n) {
   if (seeds.size() < 2) throw InputError(fmt::format("the check needs at least 2 seeds (a jackknife), not {}", seeds.size()));
+  // Two protocols on the same soft-particles: two profiles whose packings differ would compare
+  // the packings as much as the protocols (the paper profile's changed in release 0.6.0, the fast
+  // profile's did not), with nothing to say so.
+  for (const std::uint64_t seed : seeds) {
+    const std::string a = packing_path(data, reference, seed), b = packing_path(data, candidate, seed);
+    if (packing_sha256(read_packing_file(a)) != packing_sha256(read_packing_file(b)))
+      throw InputError(fmt::format("{} and {}: the {} and {} profiles measured different packings of seed {}; the check compares "
+                                   "two protocols on the same soft-particles: give both profiles one packing section",
+                                   a, b, reference, candidate, seed));
+  }
   // Each profile's values and jackknife standard errors, from a comparison that takes it as the
   // reference; the first also gives the candidate's cost.
   const AccuracyReport ab = accuracy_report(pair_study(reference, candidate, seeds, Fn_delta_n, kt_delta_n), data);

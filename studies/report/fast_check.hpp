@@ -32,7 +32,7 @@ struct FastCheck {
 };
 
 /// Reads <data>/<profile>/{packings,normal,tangential}/ of both profiles on `seeds` (InputError
-/// naming the missing file when one is not there).
+/// naming the missing file when one is not there, or the two packings of a seed that differ).
 FastCheck fast_check(const std::string& data, const std::string& reference, const std::string& candidate,
                      const std::vector<std::uint64_t>& seeds, const std::vector<double>& Fn_delta_n,
                      const std::vector<double>& kt_delta_n);

@@ -9,7 +9,8 @@
 #   3. a second make recomputes nothing; changing one setting reruns that one only; a stage whose
 #      seeds and stamp are an earlier setting's is shared, not recomputed;
 #   4. softpack-study check compares two of its profiles on their seeds (the fast profile's
-#      confirmation): every quantity with both standard errors, the costs; different seeds refused;
+#      confirmation): every quantity with both standard errors, the costs; different seeds, or
+#      different packings of a seed, refused;
 #   5. the calibration report (another kind) of the same runs: make study-report STUDY=FILE;
 #   6. a study of fit options: its setting shares the reference's sweeps by their stamps and runs
 #      only averages and fits; its report (kind fits) has each coefficient's jackknife error.
@@ -128,7 +129,20 @@ set +e
 code=$?
 set -e
 [ $code -eq 2 ] && grep -q "different seeds" "$work/err" || fail "profiles of different seeds: exit $code, $(cat "$work/err")"
-pass "softpack-study check: every quantity with both standard errors and the costs; different seeds refused"
+# Two protocols on different packings are refused (the paper profile's packings changed in 0.6.0,
+# the fast profile's did not): here stops-1's packings of seeds 101 and 102 swapped.
+mkdir -p "$work/swapped" && cp -rL data/accuracy/base data/accuracy/stops-1 "$work/swapped/"
+p=$work/swapped/stops-1/packings
+mv "$p/seed-101.h5" "$p/tmp.h5" && mv "$p/seed-102.h5" "$p/seed-101.h5" && mv "$p/tmp.h5" "$p/seed-102.h5"
+set +e
+"$acc" check --data "$work/swapped" --reference data/accuracy/profiles/base.yaml --candidate data/accuracy/profiles/stops-1.yaml \
+  --Fn-at 0.5 0.7 --kt-at 0.6 0.7 --out-dir "$work/check3" > /dev/null 2> "$work/err"
+code=$?
+set -e
+[ $code -eq 2 ] && grep -q "the base and stops-1 profiles measured different packings of seed 101" "$work/err" ||
+  fail "profiles of different packings: exit $code, $(cat "$work/err")"
+[[ ! -e $work/check3/check.json ]] || fail "a check of different packings was written"
+pass "softpack-study check: every quantity with both standard errors and the costs; different seeds, different packings refused"
 
 # --- 5. the calibration report on the same runs (make study-report STUDY=FILE, another kind) ---
 sed -e 's/^study: .*/study: calibrate-test/' -e 's/^report: .*/report: calibration/' \
