@@ -23,6 +23,8 @@ import sys
 from pathlib import Path
 
 root = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(root / "tests" / "paper"))
+from check_numbers import allowed_list  # noqa: E402  (one reader of the allow-lists)
 bin_dir = Path(sys.argv[1])
 readme_path = Path(sys.argv[2]) if len(sys.argv) > 2 else root / "README.md"
 version = re.search(r"project\(softpack VERSION (\S+)", (root / "CMakeLists.txt").read_text()).group(1)
@@ -109,17 +111,6 @@ REFERENCES = [
 ]
 
 
-def allowed_list():
-    out = {}
-    for line in (root / "tests" / "docs" / "readme-numbers.yaml").read_text().splitlines():
-        m = re.match(r'\s*"?([0-9.]+)"?\s*:\s*(.*)', line)
-        if m and not line.lstrip().startswith("#"):
-            if not m.group(2).strip():
-                sys.exit(f"check_readme_numbers: {m.group(1)} on the allow-list has no source")
-            out[m.group(1)] = m.group(2).strip()
-    return out
-
-
 def inputs():
     values = set()
     for f in glob.glob(str(root / "experiments" / "**" / "*.yaml"), recursive=True):
@@ -159,7 +150,7 @@ def main():
         text = find(phrase, text).sub(blank, text)
     for pattern in REFERENCES:
         text = re.sub(pattern, blank, text, flags=re.S)
-    allowed, given = allowed_list(), inputs()
+    allowed, given = allowed_list(root / "tests" / "docs" / "readme-numbers.yaml"), inputs()
     for number, line in enumerate(text.split("\n"), 1):
         for m in re.finditer(r"(?<![\w.^-])\d+(?:\.\d+)?(?:[  ]\d{3})*", line):
             value = re.sub(r"[  ]", "", m.group(0))

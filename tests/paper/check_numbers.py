@@ -16,13 +16,14 @@ root = Path(__file__).resolve().parents[2]
 tex_path = Path(sys.argv[1]) if len(sys.argv) > 1 else root / "paper" / "paper.tex"
 
 
-def allowed_list():
+def allowed_list(path=root / "tests" / "paper" / "allowed-numbers.yaml"):
+    """The numbers of an allow-list file ("number": its source), each with its source."""
     out = {}
-    for line in (root / "tests" / "paper" / "allowed-numbers.yaml").read_text().splitlines():
+    for line in Path(path).read_text().splitlines():
         m = re.match(r'\s*"?([0-9.eE+-]+)"?\s*:\s*(.+)', line)
         if m and not line.lstrip().startswith("#"):
             if not m.group(2).strip():
-                sys.exit(f"check_numbers: {m.group(1)} on the allow-list has no source")
+                sys.exit(f"check_numbers: {m.group(1)} on the allow-list {path} has no source")
             out[m.group(1)] = m.group(2).strip()
     return out
 
