@@ -21,6 +21,8 @@
 #include <vector>
 
 #include "apps/exit_codes.hpp"
+#include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 
 namespace softpack {
@@ -80,10 +82,23 @@ inline std::optional<int> check_no_control_characters(const CLI::App& app, std::
 
 /// Parses the command line; the exit code when the program must stop (0 after --help, 2 for
 /// a bad command line), std::nullopt when it may go on.
+/// SOFTPACK_THREADS read now, so that a bad value stops the command before it runs (the engine
+/// reads it at its first threaded loop, which a small scene never reaches).
+inline std::optional<int> check_threads(std::string_view program) {
+  try {
+    parallel::threads();
+  } catch (const InputError& e) {
+    fmt::print(stderr, "{}: error: {}\n", program, e.what());
+    return kExitInput;
+  }
+  return std::nullopt;
+}
+
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, std::string_view program) {
   try {
     app.parse(argc, argv);
     if (const auto code = check_no_control_characters(app, program)) return code;
+    if (const auto code = check_threads(program)) return code;
     return check_outputs_apart(app, program);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help (and --help-all): the usage, on stdout

@@ -5,9 +5,10 @@
 //   AVX-512 (x86-64-v4)   simd::Avx512 data movement, eight lanes in one register
 //   baseline              portable data movement, the release flags' x86-64-v2
 //
-// chosen at run time (core/cpu_features.hpp); both give the same bits. A build without
-// SOFTPACK_AVX512 (the sanitizer's, CMakeLists.txt) compiles the baseline only. One step of a world is:
-// sphere pairs, then each plane, then each shell, each through forces/contact_loop.hpp.
+// chosen at run time (core/cpu_features.hpp), block by block; both give the same bits. A build
+// without SOFTPACK_AVX512 (the sanitizer's, CMakeLists.txt) compiles the baseline only. One step
+// of a world is: sphere pairs, then each plane, then each shell, each through
+// forces/contact_loop.hpp.
 #pragma once
 #include <cmath>
 #include <memory>
@@ -22,63 +23,67 @@
 namespace softpack {
 namespace loops {
 
-template <class Law, Effects Fx, class Isa>
-[[gnu::always_inline]] inline void all_contacts(Isa isa, World& world, ContactLists& lists, double dt,
-                                                std::vector<std::int32_t>& closed) {
+// One block of a kind of contact (forces/contact_loop.hpp contact_block), compiled for each
+// instruction set: the threads of the loop call it, so that the target attribute (which a lambda
+// does not inherit) is on a function of its own.
+template <class Law, Effects Fx, class Contacts>
+[[gnu::target("arch=x86-64-v4")]] void block_avx512(Contacts& c, double dt, std::int32_t* closed, std::size_t begin,
+                                                   std::size_t end) {
+  contact_block<Law, Fx>(simd::Avx512{}, c, dt, closed, begin, end);
+}
+
+template <class Law, Effects Fx, class Contacts>
+void block_portable(Contacts& c, double dt, std::int32_t* closed, std::size_t begin, std::size_t end) {
+  contact_block<Law, Fx>(simd::Portable{}, c, dt, closed, begin, end);
+}
+
+/// The contacts of one kind, through the blocks of the instruction set chosen at run time.
+template <class Law, Effects Fx, class Contacts>
+void run_contacts(Contacts& contacts, double dt, std::vector<std::int32_t>& closed) {
+  bool avx512 = false;
+  if constexpr (build::kAvx512Loops) avx512 = cpu::vector_isa() == cpu::VectorIsa::avx512;
+  contact_loop(contacts, closed, [&](Contacts& c, std::int32_t* k, std::size_t begin, std::size_t end) {
+    if constexpr (build::kAvx512Loops)
+      if (avx512) return block_avx512<Law, Fx>(c, dt, k, begin, end);
+    block_portable<Law, Fx>(c, dt, k, begin, end);
+  });
+}
+
+template <class Law, Effects Fx>
+void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) {
   Particles& p = world.p;
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), p.F.data(),
                        Fx.rotation ? p.T.data() : nullptr};
-  PairContacts<Fx> pairs{lists.pairs, s};
-  contact_loop<Law, Fx>(isa, pairs, dt, closed);
+  PairContacts<Fx> pairs{lists.pairs, s, p.size()};
+  run_contacts<Law, Fx>(pairs, dt, closed);
   for (std::size_t k = 0; k < world.planes.size(); ++k) {
     WallContacts<Fx, PlaneWall> plane{lists.planes[k], world.planes[k], s, world.plane_loads[k]};
-    contact_loop<Law, Fx>(isa, plane, dt, closed);
+    run_contacts<Law, Fx>(plane, dt, closed);
   }
   for (std::size_t k = 0; k < world.shells.size(); ++k) {
     WallContacts<Fx, SphericalShell> shell{lists.shells[k], world.shells[k], s, world.shell_loads[k]};
-    contact_loop<Law, Fx>(isa, shell, dt, closed);
+    run_contacts<Law, Fx>(shell, dt, closed);
   }
 }
 
-template <class Law, Effects Fx, class Isa>
-[[gnu::always_inline]] inline void masked_pairs(Isa isa, World& world, PairList& list, const std::uint8_t* mask, double sign, Vec3* F,
-                                                Vec3* T, std::vector<std::int32_t>& closed) {
+template <class Law, Effects Fx>
+void masked_pairs(World& world, PairList& list, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T,
+                  std::vector<std::int32_t>& closed) {
   Particles& p = world.p;
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), F, Fx.rotation ? T : nullptr};
-  MaskedPairContacts<Fx> pairs{{list, s}, mask, sign};
-  contact_loop<Law, Fx>(isa, pairs, 0.0, closed);
-}
-
-template <class Law, Effects Fx>
-[[gnu::target("arch=x86-64-v4")]] void masked_pairs_avx512(World& world, PairList& list, const std::uint8_t* mask, double sign, Vec3* F,
-                                                          Vec3* T, std::vector<std::int32_t>& closed) {
-  masked_pairs<Law, Fx>(simd::Avx512{}, world, list, mask, sign, F, T, closed);
-}
-
-template <class Law, Effects Fx>
-[[gnu::target("arch=x86-64-v4")]] void all_contacts_avx512(World& world, ContactLists& lists, double dt,
-                                                          std::vector<std::int32_t>& closed) {
-  all_contacts<Law, Fx>(simd::Avx512{}, world, lists, dt, closed);
-}
-
-template <class Law, Effects Fx>
-void all_contacts_portable(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) {
-  all_contacts<Law, Fx>(simd::Portable{}, world, lists, dt, closed);
+  MaskedPairContacts<Fx> pairs{{list, s, p.size()}, mask, sign};
+  run_contacts<Law, Fx>(pairs, 0.0, closed);
 }
 
 template <class Law, Effects Fx>
 class LoopsOf final : public ForceLoops {
  public:
   void run(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) const override {
-    if constexpr (build::kAvx512Loops)
-      if (cpu::vector_isa() == cpu::VectorIsa::avx512) return all_contacts_avx512<Law, Fx>(world, lists, dt, closed);
-    all_contacts_portable<Law, Fx>(world, lists, dt, closed);
+    all_contacts<Law, Fx>(world, lists, dt, closed);
   }
   void add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T,
                        std::vector<std::int32_t>& closed) const override {
-    if constexpr (build::kAvx512Loops)
-      if (cpu::vector_isa() == cpu::VectorIsa::avx512) return masked_pairs_avx512<Law, Fx>(world, pairs, mask, sign, F, T, closed);
-    masked_pairs<Law, Fx>(simd::Portable{}, world, pairs, mask, sign, F, T, closed);
+    masked_pairs<Law, Fx>(world, pairs, mask, sign, F, T, closed);
   }
 };
 

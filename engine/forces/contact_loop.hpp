@@ -1,20 +1,23 @@
-// The force loop every kind of contact goes through, eight contacts at a time:
+// The force loop every kind of contact goes through, over fixed blocks of its list:
 //
-//   select   which listed contacts touch (the springs of the others are cleared)
-//   gather   their geometry, constants and springs into the lanes of simd::Wide values
+//   select   which listed contacts of the block touch (the springs of the others are cleared)
+//   gather   their geometry, constants and springs into the lanes of simd::Wide values, eight at a time
 //   law      contact_force() of contact/contact_law.hpp
-//   add      forces and torques to the spheres (and the wall's load), in list order
+//   add      each contact's force and torques kept by contact (ContactResults), springs written back
+//   finish   the kept results summed into the spheres (and the wall's load), in list order
 //
 // A kind of contact (forces/pair_contacts.hpp; planes and shells: forces/wall_contacts.hpp) supplies
-// select(), gather() and add(); `Isa` is the data-movement back end of simd/isa.hpp. The sums
-// are made one contact after the other in list order, so the result bits do not depend on the
-// lane count or the instruction set.
+// them; `Isa` is the data-movement back end of simd/isa.hpp. The blocks (kBlock contacts) depend on
+// the list only and run on the threads of core/parallel.hpp; every sum is made afterwards, one
+// contact after the other in list order, so the result bits do not depend on the thread count,
+// the lane count or the instruction set.
 #pragma once
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include "contact/contact_law.hpp"
+#include "core/parallel.hpp"
 #include "simd/isa.hpp"
 
 namespace softpack {
@@ -32,20 +35,39 @@ struct ContactLanes {
 [[gnu::always_inline]] inline double lane(const simd::Wide& w, int m) { return w.v[m]; }
 [[gnu::always_inline]] inline Vec3 lane(const V3<simd::Wide>& v, int m) { return {v.x.v[m], v.y.v[m], v.z.v[m]}; }
 
+/// Contacts per block: a multiple of the lanes, so that a block's groups of eight are the list's.
+inline constexpr std::size_t kBlock = 1024;
+
+/// The contacts at positions [begin, end) of `contacts`: select, gather, law, add. `closed` has
+/// room for end - begin + kLanes indices.
 template <class NormalLaw, Effects Fx, class Isa, class Contacts>
-[[gnu::always_inline]] inline void contact_loop(Isa isa, Contacts& contacts, double dt, std::vector<std::int32_t>& closed) {
-  closed.resize(contacts.size() + simd::kLanes);
-  const std::size_t touching = contacts.select(isa, closed.data());
+[[gnu::always_inline]] inline void contact_block(Isa isa, Contacts& contacts, double dt, std::int32_t* closed, std::size_t begin,
+                                                 std::size_t end) {
+  const std::size_t touching = contacts.select(isa, closed, begin, end);
   if (touching == 0) return;
   // The last group is filled up with copies of the last contact; add() ignores them.
-  std::fill(closed.begin() + static_cast<std::ptrdiff_t>(touching),
-            closed.begin() + static_cast<std::ptrdiff_t>(touching + simd::kLanes), closed[touching - 1]);
+  std::fill(closed + touching, closed + touching + simd::kLanes, closed[touching - 1]);
   for (std::size_t m = 0; m < touching; m += simd::kLanes) {
-    const simd::Index k = simd::load(closed.data() + m);
+    const simd::Index k = simd::load(closed + m);
     ContactLanes c = contacts.gather(isa, k, dt);
     const ContactForce<simd::Wide> f = contact_force<NormalLaw, Fx>(c.geometry, c.constants, c.spring, dt);
-    contacts.add(c, f, closed.data() + m, static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
+    contacts.add(c, f, closed + m, static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
   }
+}
+
+/// Every contact of `contacts`: block(contacts, closed, begin, end) over the blocks of its
+/// positions (on the threads when Contacts::kThreaded: its add() writes only what belongs to
+/// the contact), then its finish().
+template <class Contacts, class Block>
+void contact_loop(Contacts& contacts, std::vector<std::int32_t>& closed, Block&& block) {
+  const std::size_t n = contacts.positions(), blocks = (n + kBlock - 1) / kBlock, stride = kBlock + simd::kLanes;
+  closed.resize(blocks * stride);
+  contacts.prepare();
+  const auto run = [&](std::size_t b) { block(contacts, closed.data() + b * stride, b * kBlock, std::min(n, (b + 1) * kBlock)); };
+  if constexpr (Contacts::kThreaded) parallel::for_each_block(blocks, run);
+  else
+    for (std::size_t b = 0; b < blocks; ++b) run(b);
+  contacts.finish();
 }
 
 /// The constants the declared effects read, gathered for contacts k.

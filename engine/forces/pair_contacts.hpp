@@ -7,9 +7,11 @@
 // With the synchronized history update the spring's frame is the half-step one: d - dt/2 (vi - vj)
 // and its contact-point velocity.
 #pragma once
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 
+#include "core/parallel.hpp"
 #include "forces/contact_loop.hpp"
 #include "neighbor/contact_list.hpp"
 
@@ -29,66 +31,82 @@ template <Effects Fx>
 struct PairContacts {
   PairList& list;
   SphereArrays s;
+  std::size_t spheres = 0;  ///< the length of the sphere arrays
+  /// One thread runs the blocks in order (parallel::serial): add() sums into the spheres as it
+  /// goes, in list order, and finish() has nothing left to do; the same bits either way.
+  bool direct = true;
+
+  static constexpr bool kThreaded = true;
 
   std::size_t size() const { return list.size(); }
+  /// What the blocks cut: the list, or the live pairs of a masked one.
+  std::size_t positions() const { return list.masked ? list.live.size() : list.size(); }
+
+  /// Before the blocks: the scratch sized; a masked list's pairs that are not live marked open.
+  void prepare() {
+    if constexpr (Fx.friction)
+      if (list.spring_live.size() != list.size()) list.spring_live.assign(list.size(), 1);  // a fresh list: any may be
+    list.results.resize(list.size());
+    if (list.masked) std::fill(list.results.touched.begin(), list.results.touched.end(), std::uint8_t{0});
+    direct = parallel::serial((positions() + kBlock - 1) / kBlock);
+  }
 
   // Clearing a spring is `spring *= 0.0`, not setZero(): it keeps the sign of each zero, as it
   // always has for pairs (the archived results depend on these bits).
   static void clear(Vec3& spring) { spring *= 0.0; }
 
-  /// The indices of the touching pairs, in list order (|d|^2 < (Ri + Rj)^2); with friction the
-  /// springs of the others are cleared where PairList::spring_live says they may be loaded.
-  /// A masked list (an active set) offers only its live pairs.
+  /// The indices of the touching pairs among positions [begin, end), in list order
+  /// (|d|^2 < (Ri + Rj)^2), each pair's `touched` set; with friction the springs of the others
+  /// are cleared where PairList::spring_live says they may be loaded. A masked list offers only
+  /// its live pairs.
   template <class Isa>
-  [[gnu::always_inline]] std::size_t select(Isa isa, std::int32_t* closed) {
+  [[gnu::always_inline]] std::size_t select(Isa isa, std::int32_t* closed, std::size_t begin, std::size_t end) {
     using simd::Wide;
-    const std::size_t n_pairs = list.size();
-    if constexpr (Fx.friction)
-      if (list.spring_live.size() != n_pairs) list.spring_live.assign(n_pairs, 1);  // a fresh list: any may be
-    if (list.masked) return select_live(isa, closed);
-    std::size_t n = 0, k = 0;
-    for (; k + simd::kLanes <= n_pairs; k += simd::kLanes) {
+    if (list.masked) return select_live(isa, closed, begin, end);
+    std::size_t n = 0, k = begin;
+    for (; k + simd::kLanes <= end; k += simd::kLanes) {
       const simd::Index i = simd::load(list.i.data() + k), j = simd::load(list.j.data() + k);
       const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
       const Wide r_sum = simd::load(list.r_sum.data() + k);
       const simd::Mask touch = dot(d, d) < r_sum * r_sum;
       n += static_cast<std::size_t>(simd::compress(isa, closed + n, touch, simd::iota(static_cast<std::int32_t>(k))));
+      const unsigned t = simd::bits(touch);
+      simd::store_bits_as_bytes(isa, list.results.touched.data() + k, t);
       if constexpr (Fx.friction) {
-        const unsigned t = simd::bits(touch);
         for (unsigned opened = simd::nonzero_bytes(isa, list.spring_live.data() + k) & ~t & 0xffu; opened != 0; opened &= opened - 1)
           clear(list.spring[k + static_cast<std::size_t>(std::countr_zero(opened))]);
         simd::store_bits_as_bytes(isa, list.spring_live.data() + k, t);
       }
     }
-    for (; k < n_pairs; ++k) touch_test(k, closed, n);
+    for (; k < end; ++k) touch_test(k, closed, n);
     return n;
   }
 
-  /// select() over the live pairs of a masked list, eight at a time by their indices.
+  /// select() over the live pairs at positions [begin, end) of a masked list, eight at a time by their indices.
   template <class Isa>
-  [[gnu::always_inline]] std::size_t select_live(Isa isa, std::int32_t* closed) {
+  [[gnu::always_inline]] std::size_t select_live(Isa isa, std::int32_t* closed, std::size_t begin, std::size_t end) {
     using simd::Wide;
     const std::int32_t* const live = list.live.data();
-    const std::size_t n_live = list.live.size();
-    std::size_t n = 0, m = 0;
-    for (; m + simd::kLanes <= n_live; m += simd::kLanes) {
+    std::size_t n = 0, m = begin;
+    for (; m + simd::kLanes <= end; m += simd::kLanes) {
       const simd::Index k = simd::load(live + m);
       const simd::Index i = simd::gather(isa, list.i.data(), k), j = simd::gather(isa, list.j.data(), k);
       const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
       const Wide r_sum = simd::gather(isa, list.r_sum.data(), k);
       const simd::Mask touch = dot(d, d) < r_sum * r_sum;
       n += static_cast<std::size_t>(simd::compress(isa, closed + n, touch, k));
-      if constexpr (Fx.friction) {
-        const unsigned t = simd::bits(touch);
-        for (int l = 0; l < simd::kLanes; ++l) {
-          const auto kk = static_cast<std::size_t>(live[m + static_cast<std::size_t>(l)]);
-          const bool touching = (t >> l) & 1u;
+      const unsigned t = simd::bits(touch);
+      for (int l = 0; l < simd::kLanes; ++l) {
+        const auto kk = static_cast<std::size_t>(live[m + static_cast<std::size_t>(l)]);
+        const bool touching = (t >> l) & 1u;
+        list.results.touched[kk] = touching ? 1 : 0;
+        if constexpr (Fx.friction) {
           if (list.spring_live[kk] && !touching) clear(list.spring[kk]);
           list.spring_live[kk] = touching ? 1 : 0;
         }
       }
     }
-    for (; m < n_live; ++m) touch_test(static_cast<std::size_t>(live[m]), closed, n);
+    for (; m < end; ++m) touch_test(static_cast<std::size_t>(live[m]), closed, n);
     return n;
   }
 
@@ -97,6 +115,7 @@ struct PairContacts {
     const bool t = (s.x[list.i[k]] - s.x[list.j[k]]).squaredNorm() < list.r_sum[k] * list.r_sum[k];
     closed[n] = static_cast<std::int32_t>(k);
     n += t ? 1 : 0;
+    list.results.touched[k] = t ? 1 : 0;
     if constexpr (Fx.friction) {
       if (list.spring_live[k] && !t) clear(list.spring[k]);
       list.spring_live[k] = t ? 1 : 0;
@@ -145,11 +164,57 @@ struct PairContacts {
     return c;
   }
 
-  /// F_i += F, F_j -= F, T_i -= ai n x Ft, T_j -= aj n x Ft, and the springs back, for the
-  /// first `live` lanes in order.
+  /// Each contact's force and torque terms kept (F, ai n x Ft, aj n x Ft), and the springs back,
+  /// for the first `live` lanes.
   [[gnu::always_inline]] void add(const ContactLanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
     V3<simd::Wide> nxFt{};
     if constexpr (Fx.rotation) nxFt = cross(c.geometry.n, f.Ft);
+    if (direct) return add_to_spheres(c, f, nxFt, k, live);
+    ContactResults& r = list.results;
+    for (int m = 0; m < live; ++m) {
+      const auto kk = static_cast<std::size_t>(k[m]);
+      r.F[kk] = lane(f.F, m);
+      if constexpr (Fx.rotation) {
+        const Vec3 t = lane(nxFt, m);
+        r.T1[kk] = lane(c.ai, m) * t;
+        r.T2[kk] = lane(c.aj, m) * t;
+      }
+      if constexpr (Fx.friction) list.spring[kk] = lane(c.spring, m);
+    }
+  }
+
+  /// F_i += F, F_j -= F, T_i -= ai n x Ft, T_j -= aj n x Ft of every touching pair, sphere by
+  /// sphere (on the threads), each sphere's terms in list order: as body 2 (pairs (i', s), i' < s)
+  /// then as body 1 (pairs (s, j')), the order of the list sorted by (i, j).
+  void finish() {
+    if (direct) return;
+    index_by_sphere();
+    const PairsBySphere& b = list.by_sphere;
+    const ContactResults& r = list.results;
+    const std::size_t blocks = (spheres + kBlock - 1) / kBlock;
+    parallel::for_each_block(blocks, [&](std::size_t block) {
+      const std::size_t end = std::min(spheres, (block + 1) * kBlock);
+      for (std::size_t sphere = block * kBlock; sphere < end; ++sphere) {
+        for (auto m = b.first_j[sphere]; m < b.first_j[sphere + 1]; ++m) {
+          const auto k = static_cast<std::size_t>(b.as_j[static_cast<std::size_t>(m)]);
+          if (!r.touched[k]) continue;
+          s.F[sphere] -= r.F[k];
+          if constexpr (Fx.rotation) s.T[sphere] -= r.T2[k];
+        }
+        for (auto k = static_cast<std::size_t>(b.first_i[sphere]); k < static_cast<std::size_t>(b.first_i[sphere + 1]); ++k) {
+          if (!r.touched[k]) continue;
+          s.F[sphere] += r.F[k];
+          if constexpr (Fx.rotation) s.T[sphere] -= r.T1[k];
+        }
+      }
+    });
+  }
+
+ private:
+  /// F_i += F, F_j -= F, T_i -= ai n x Ft, T_j -= aj n x Ft, and the springs back, for the
+  /// first `live` lanes in order (one thread).
+  [[gnu::always_inline]] void add_to_spheres(const ContactLanes& c, const ContactForce<simd::Wide>& f, const V3<simd::Wide>& nxFt,
+                                             const std::int32_t* k, int live) {
     for (int m = 0; m < live; ++m) {
       const int i = c.i.v[m], j = c.j.v[m];
       const Vec3 F = lane(f.F, m);
@@ -160,8 +225,24 @@ struct PairContacts {
         s.T[i] -= lane(c.ai, m) * t;
         s.T[j] -= lane(c.aj, m) * t;
       }
-      if constexpr (Fx.friction) list.spring[k[m]] = lane(c.spring, m);
+      if constexpr (Fx.friction) list.spring[static_cast<std::size_t>(k[m])] = lane(c.spring, m);
     }
+  }
+
+  /// The list's pairs by sphere (PairsBySphere), made again when the list or the spheres changed.
+  void index_by_sphere() {
+    PairsBySphere& b = list.by_sphere;
+    if (b.generation == list.generation && b.spheres == spheres) return;
+    const std::size_t n = list.size();
+    b.first_i.assign(spheres + 1, 0);
+    b.first_j.assign(spheres + 1, 0);
+    for (std::size_t k = 0; k < n; ++k) ++b.first_i[static_cast<std::size_t>(list.i[k]) + 1], ++b.first_j[static_cast<std::size_t>(list.j[k]) + 1];
+    for (std::size_t q = 0; q < spheres; ++q) b.first_i[q + 1] += b.first_i[q], b.first_j[q + 1] += b.first_j[q];
+    b.as_j.resize(n);
+    std::vector<std::int32_t> next(b.first_j.begin(), b.first_j.end() - 1);
+    for (std::size_t k = 0; k < n; ++k) b.as_j[static_cast<std::size_t>(next[static_cast<std::size_t>(list.j[k])]++)] = static_cast<std::int32_t>(k);
+    b.generation = list.generation;
+    b.spheres = spheres;
   }
 };
 
@@ -175,11 +256,17 @@ struct MaskedPairContacts : PairContacts<Fx> {
   const std::uint8_t* mask = nullptr;
   double sign = 1.0;
 
+  static constexpr bool kThreaded = false;  // add() sums as it goes, in list order
+
+  std::size_t positions() const { return this->list.size(); }
+  void prepare() {}
+  void finish() {}
+
   template <class Isa>
-  std::size_t select(Isa, std::int32_t* closed) const {
+  std::size_t select(Isa, std::int32_t* closed, std::size_t begin, std::size_t end) const {
     const PairList& l = this->list;
     std::size_t n = 0;
-    for (std::size_t k = 0; k < l.size(); ++k) {
+    for (std::size_t k = begin; k < end; ++k) {
       if (!mask[k]) continue;
       closed[n] = static_cast<std::int32_t>(k);
       n += (this->s.x[l.i[k]] - this->s.x[l.j[k]]).squaredNorm() < l.r_sum[k] * l.r_sum[k] ? 1 : 0;

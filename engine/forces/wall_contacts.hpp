@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "core/parallel.hpp"
 #include "forces/contact_loop.hpp"
 #include "forces/pair_contacts.hpp"
 #include "neighbor/contact_list.hpp"
@@ -27,16 +28,27 @@ struct WallContacts {
   SphereArrays s;
   WallLoad& load;
 
-  std::size_t size() const { return list.size(); }
+  bool direct = true;  ///< one thread: add() sums as it goes (as PairContacts::direct)
 
-  /// The indices of the entries whose sphere touches the wall (h > 0), in list order; with
-  /// friction the springs of the others are cleared.
+  static constexpr bool kThreaded = true;
+
+  std::size_t size() const { return list.size(); }
+  std::size_t positions() const { return list.size(); }
+  void prepare() {
+    list.results.resize(list.size());
+    direct = parallel::serial((positions() + kBlock - 1) / kBlock);
+  }
+
+  /// The indices of the entries among [begin, end) whose sphere touches the wall (h > 0), in list
+  /// order, each entry's `touched` set; with friction the springs of the others are cleared.
   template <class Isa>
-  std::size_t select(Isa, std::int32_t* closed) {
+  std::size_t select(Isa, std::int32_t* closed, std::size_t begin, std::size_t end) {
     std::size_t n = 0;
-    for (std::size_t k = 0; k < list.size(); ++k) {
+    for (std::size_t k = begin; k < end; ++k) {
       const int i = list.i[k];
-      if (wall.overlap(s.x[i], s.r[i]) <= 0.0) {
+      const bool touching = wall.overlap(s.x[i], s.r[i]) > 0.0;
+      list.results.touched[k] = touching ? 1 : 0;
+      if (!touching) {
         if constexpr (Fx.friction) list.spring[k].setZero();
         continue;
       }
@@ -68,18 +80,41 @@ struct WallContacts {
     return c;
   }
 
-  /// F_i += F, T_i -= ai n x Ft; the wall's load -= F with its torque; the springs back.
+  /// Each contact's force, the sphere's torque term ai n x Ft and the wall's torque kept; the springs back.
   [[gnu::always_inline]] void add(const ContactLanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
     const Vec3 ref = reference_point();
+    ContactResults& r = list.results;
     for (int m = 0; m < live; ++m) {
+      const auto kk = static_cast<std::size_t>(k[m]);
       const int i = c.i.v[m];
       const Vec3 F = lane(f.F, m), n = lane(c.geometry.n, m);
       const double ai = lane(c.ai, m);
-      s.F[i] += F;
-      if constexpr (Fx.rotation) s.T[i] -= ai * n.cross(lane(f.Ft, m));
-      load.force -= F;
-      load.torque += (s.x[i] - ai * n - ref).cross(-F);
-      if constexpr (Fx.friction) list.spring[k[m]] = lane(c.spring, m);
+      if (direct) {
+        s.F[i] += F;
+        if constexpr (Fx.rotation) s.T[i] -= ai * n.cross(lane(f.Ft, m));
+        load.force -= F;
+        load.torque += (s.x[i] - ai * n - ref).cross(-F);
+        if constexpr (Fx.friction) list.spring[kk] = lane(c.spring, m);
+        continue;
+      }
+      r.F[kk] = F;
+      if constexpr (Fx.rotation) r.T1[kk] = ai * n.cross(lane(f.Ft, m));
+      r.T2[kk] = (s.x[i] - ai * n - ref).cross(-F);
+      if constexpr (Fx.friction) list.spring[kk] = lane(c.spring, m);
+    }
+  }
+
+  /// F_i += F, T_i -= ai n x Ft; the wall's load -= F with its torque; in list order.
+  void finish() {
+    if (direct) return;
+    const ContactResults& r = list.results;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      if (!r.touched[k]) continue;
+      const auto i = static_cast<std::size_t>(list.i[k]);
+      s.F[i] += r.F[k];
+      if constexpr (Fx.rotation) s.T[i] -= r.T1[k];
+      load.force -= r.F[k];
+      load.torque += r.T2[k];
     }
   }
 

@@ -51,6 +51,7 @@ std::vector<std::size_t> PairList::replace(const std::vector<PairEntry>& fresh, 
   spring_live.clear();
   masked = false;
   live.clear();
+  ++generation;
   return new_ones;
 }
 

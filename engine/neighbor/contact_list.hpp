@@ -27,6 +27,26 @@ struct ConstantArrays {
   ContactConstants<double> at(std::size_t k) const { return {kn[k], kt0[k], gamma0[k], gamma_t0[k], mu[k]}; }
 };
 
+/// What the force loop leaves for each contact of a list at its last evaluation
+/// (forces/contact_loop.hpp), to be summed into the bodies afterwards in list order, whatever the
+/// threads: scratch, written anew at every step.
+struct ContactResults {
+  std::vector<std::uint8_t> touched;  ///< 1: evaluated and closed at this step
+  std::vector<Vec3> F;                ///< the force on body 1
+  std::vector<Vec3> T1;               ///< a1 n x Ft, subtracted from body 1's torque
+  std::vector<Vec3> T2;               ///< pairs: a2 n x Ft, subtracted from body 2's; walls: the wall's torque
+  void resize(std::size_t n) { touched.resize(n), F.resize(n), T1.resize(n), T2.resize(n); }
+};
+
+/// The pairs of each sphere s, for the force loop's sums in list order (forces/pair_contacts.hpp):
+/// as body 1, the list's range [first_i[s], first_i[s + 1]) (it is sorted by i); as body 2,
+/// as_j[first_j[s] .. first_j[s + 1]), ascending. Made for one generation of the list.
+struct PairsBySphere {
+  std::vector<std::int32_t> first_i, first_j, as_j;
+  std::uint64_t generation = ~std::uint64_t{0};
+  std::size_t spheres = 0;
+};
+
 /// A pair found by a neighbour search.
 struct PairEntry {
   std::int32_t i = 0, j = 0;
@@ -46,6 +66,11 @@ struct PairList {
   /// sleeping spheres, are kept by the active set. A rebuild unmasks the list.
   bool masked = false;
   std::vector<std::int32_t> live;
+  ContactResults results;  ///< the force loop's scratch
+  PairsBySphere by_sphere;  ///< the force loop's index
+  /// Counts the replacements: the force loop's index of the pairs by sphere (forces/pair_contacts.hpp)
+  /// is rebuilt when it changes.
+  std::uint64_t generation = 0;
 
   std::size_t size() const { return i.size(); }
   /// Replaces the list by `fresh` (sorted by (i, j)); pairs already listed keep their
@@ -58,6 +83,7 @@ struct WallList {
   std::vector<std::int32_t> i;
   ConstantArrays k;
   std::vector<Vec3> spring;  ///< empty without friction
+  ContactResults results;    ///< the force loop's scratch
 
   std::size_t size() const { return i.size(); }
   /// As PairList::replace, keyed by the sphere.

@@ -12,7 +12,8 @@
   5. a folder name is one wing's (includes are "folder/file.hpp" from the wings' roots);
   6. intrinsics (immintrin.h, _mm*, __m128/256/512, __mmask) only in engine/simd/;
   7. no #define in the wings (no macro that generates functions; headers use #pragma once);
-  8. no C++ source file over 400 lines, the tests', benchmarks' and fuzz targets' included.
+  8. no C++ source file over 400 lines, the tests', benchmarks' and fuzz targets' included;
+  9. OpenMP (#pragma omp, <omp.h>) only in engine/core/parallel.hpp: threads come from one place.
 
 usage: check_architecture.py ROOT   (the project's folder; exit 1 with one line per violation)
 """
@@ -25,7 +26,7 @@ WINGS = ["engine", "pipeline", "studies", "apps"]
 ENGINE_FACE = {
     "core/error.hpp", "core/types.hpp", "core/version.hpp", "core/stopwatch.hpp", "core/random.hpp",
     "core/text_input.hpp", "core/suggest.hpp", "core/material.hpp",
-    "config/yaml_node.hpp", "core/fnv1a.hpp",
+    "config/yaml_node.hpp", "core/fnv1a.hpp", "core/parallel.hpp",
     "scene/scene_def.hpp", "scene/scene_yaml.hpp", "scene/validate.hpp",
     "scene/limits.hpp",
     "contact/soft_particle_law.hpp", "walls/spherical_shell.hpp",
@@ -36,6 +37,7 @@ ENGINE_FACE = {
 }
 ENGINE_SYSTEM = re.compile(r"^(Eigen/|yaml-cpp/|fmt/|immintrin\.h$|time\.h$|[a-z_]+$)")
 MAX_LINES = 400
+OPENMP = re.compile(r"^\s*#\s*pragma\s+omp\b|<omp\.h>", re.M)
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 SYSTEM_INCLUDE = re.compile(r'^\s*#\s*include\s+<([^>]+)>', re.M)
 INTRINSIC = re.compile(r'\b(_mm\d*_\w+|__m(128|256|512)\w*|__mmask\d+)\b|<immintrin\.h>')
@@ -96,6 +98,8 @@ def main(root: Path) -> int:
             problems.append(f"{shown}: intrinsics outside engine/simd/ ({INTRINSIC.search(text).group(0)})")
         if DEFINE.search(text):
             problems.append(f"{shown}: #define (macros are not used in the wings)")
+        if shown != "engine/core/parallel.hpp" and OPENMP.search(text):
+            problems.append(f"{shown}: OpenMP outside engine/core/parallel.hpp (threads come from one place)")
         if wing == "engine":
             for inc in SYSTEM_INCLUDE.findall(text):
                 if not ENGINE_SYSTEM.match(inc):

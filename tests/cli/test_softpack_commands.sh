@@ -35,3 +35,13 @@ ln -s "$bin/softpack" "$tmp/softpack-bogus"
 set +e; "$tmp/softpack-bogus" 2> "$tmp/err"; code=$?; set -e
 [[ $code == 2 ]] && grep -q "'softpack-bogus' is not a command" "$tmp/err" || fail "a link of another name: exit $code, $(cat "$tmp/err")"
 echo "ok: a name that is no command: one line, exit 2"
+
+# SOFTPACK_THREADS (engine/core/parallel.hpp) is read before a command runs: a bad value is one
+# line and exit 2, even for a scene too small to be cut into blocks.
+for bad in 0 zero 2x 100000; do
+  set +e; SOFTPACK_THREADS=$bad "$bin/softpack-run" --scene "$source_dir/experiments/scenes/sphere-on-wall.yaml" > /dev/null 2> "$tmp/err"
+  code=$?; set -e
+  [[ $code == 2 ]] && [[ $(wc -l < "$tmp/err") == 1 ]] && grep -q "SOFTPACK_THREADS = '$bad' is not allowed" "$tmp/err" ||
+    fail "SOFTPACK_THREADS=$bad: exit $code, $(cat "$tmp/err")"
+done
+echo "ok: a bad SOFTPACK_THREADS: one line, exit 2"

@@ -298,13 +298,15 @@ void check_selection(Isa isa, const char* name) {
   const Particles& p = c.world.p;
   PairContacts<Effects{true, false, false, false}> pairs{list, SphereArrays{p.x.data(), p.v.data(), nullptr, p.r.data(), nullptr, nullptr}};
   std::vector<std::int32_t> closed(list.size() + simd::kLanes);
-  const std::size_t n = pairs.select(isa, closed.data());
+  pairs.prepare();
+  const std::size_t n = pairs.select(isa, closed.data(), 0, list.size());
   std::vector<std::int32_t> expected;
   for (std::size_t k = 0; k < list.size(); ++k) {
     const bool touching = (p.x[list.i[k]] - p.x[list.j[k]]).squaredNorm() < list.r_sum[k] * list.r_sum[k];
     if (touching) expected.push_back(static_cast<std::int32_t>(k));
     EXPECT_EQ(list.spring[k] == Vec3::Zero(), !touching) << name << ", pair " << k;
     EXPECT_EQ(list.spring_live[k], touching ? 1 : 0) << name << ", pair " << k;
+    EXPECT_EQ(list.results.touched[k], touching ? 1 : 0) << name << ", pair " << k;
   }
   ASSERT_EQ(n, expected.size()) << name;
   EXPECT_TRUE(std::equal(expected.begin(), expected.end(), closed.begin())) << name;

@@ -13,6 +13,8 @@
 
 #include <cstdint>
 
+#include "core/parallel.hpp"
+#include "forces/contact_loop.hpp"
 #include "sim/simulation.hpp"
 #include "state/state_digest.hpp"
 #include "support/scenes.hpp"
@@ -28,10 +30,10 @@ std::uint64_t digest_of(const SimulationState& s, const std::vector<WallLoad>& p
   return h.value;
 }
 
-SceneDef scene(int variant) {
+SceneDef scene(int variant, int grains = 300) {
   SceneDef s = testing::basic_scene();
   testing::Random rng(101);
-  s.particles = testing::random_spheres_in_shell(rng, 300, 0.016, 8e-4, 3e-3, 3.5, 200, 0);
+  s.particles = testing::random_spheres_in_shell(rng, grains, 0.016, grains == 300 ? 8e-4 : 4e-4, 3e-3, 3.5, 200, 0);
   std::vector<ParticleDef> kept;  // inflated into contact; the ones beyond the wall dropped
   for (auto p : s.particles) {
     p.r *= 1.15, p.v = rng.in_box(0.02), p.material = 0;
@@ -59,6 +61,34 @@ TEST(ResultBits, ThreeRunsKeepTheDigestsOfTheirRelease) {
     EXPECT_EQ(digest_of(sim.state(), sim.plane_loads(), sim.shell_loads()), recorded[variant])
         << "variant " << variant << ": the result bits changed (bump the release and re-archive, then record the digest)";
   }
+}
+
+// The threads (core/parallel.hpp) cut the contacts into blocks that depend on the list only and
+// sum in list order: the bits are the same for 1, 2, 3 and 8 threads -- the recorded ones, and
+// on a scene of three blocks or more those of one thread.
+TEST(ResultBits, TheSameBitsForAnyThreadCount) {
+  const std::uint64_t recorded[] = {0x417f6f7259abc408ull, 0x7e08532cde4b04aeull, 0x600235d049d47709ull};
+  const int before = parallel::threads();
+  std::uint64_t one_thread[3] = {0, 0, 0};
+  for (const int threads : {1, 2, 3, 8}) {
+    parallel::set_threads(threads);
+    for (int variant = 0; variant < 3; ++variant) {
+      Simulation sim(scene(variant));
+      sim.run_steps(100);
+      SceneDef many = scene(variant, 3000);
+      many.drivers.clear();  // state() is taken after 40 steps, when the wall would still be moving
+      Simulation big(many);
+      big.run_steps(40);
+      ASSERT_GT(big.residuals().contacts, 2 * kBlock) << "the scene must span three blocks or more";
+      const std::uint64_t d = digest_of(big.state(), big.plane_loads(), big.shell_loads());
+      if (threads == 1) one_thread[variant] = d;
+      EXPECT_EQ(d, one_thread[variant]) << threads << " threads, variant " << variant << ": not the bits of one thread";
+      sim.run_steps(300);
+      EXPECT_EQ(digest_of(sim.state(), sim.plane_loads(), sim.shell_loads()), recorded[variant])
+          << threads << " threads, variant " << variant << ": not the recorded bits";
+    }
+  }
+  parallel::set_threads(before);
 }
 
 }  // namespace
