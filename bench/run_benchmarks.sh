@@ -5,6 +5,7 @@
 #      identical contacts (SameState) and contact-detection cost;
 #   3. whole runs side by side, same packing, dt and steps: softpack-bench-scene vs LAMMPS
 #      (bench/lammps/run_confined.sh), frictional and frictionless, alternating, minimum time;
+#      softpack on 1 and 2 threads (SOFTPACK_THREADS), which must give the same state digest;
 #   4. a summary of the targets with PASS/MISS (informational: exit 0 when everything ran).
 # Environment: BENCH_STEPS (default 2000) steps per whole run, BENCH_REPEATS (default 3) runs per
 # code and scene. The packing is cached in BUILD/bench/confined-5000.txt (made once, ~40 s).
@@ -66,8 +67,17 @@ grep -v '^\*\*\*WARNING' "$tmp/engine.out" || true
 declare -A sp lm            # [mode,rep] -> loop time (s)
 declare -A sp_info lm_info  # [mode] -> extra columns of the last run
 for ((rep = 1; rep <= repeats; rep++)); do
-  for mode in frictional frictionless; do
+  for mode in frictional frictionless threads; do
     flag=(); [ "$mode" = frictionless ] && flag=(--frictionless)
+    if [ "$mode" = threads ]; then  # softpack on 2 threads (engine/core/parallel.hpp): the same bits, its time
+      run sp1 "$scene" --packing "$packing" --steps "$steps" --digest
+      SOFTPACK_THREADS=2 run sp "$scene" --packing "$packing" --steps "$steps" --digest
+      [ "$(field state_digest "$tmp/sp.out")" = "$(field state_digest "$tmp/sp1.out")" ] ||
+        die "2 threads gave other bits than 1 (state digests $(field state_digest "$tmp/sp.out") and $(field state_digest "$tmp/sp1.out"))"
+      sp[threads1,$rep]="$(field softpack_loop_time_s "$tmp/sp1.out")"
+      sp[threads,$rep]="$(field softpack_loop_time_s "$tmp/sp.out")"
+      continue
+    fi
     run sp "$scene" --packing "$packing" --steps "$steps" "${flag[@]}"
     sp[$mode,$rep]="$(field softpack_loop_time_s "$tmp/sp.out")"
     sp_info[$mode]="contacts=$(field contacts "$tmp/sp.out") rebuilds=$(field rebuilds "$tmp/sp.out")"
@@ -84,6 +94,7 @@ tmin() {
   echo "$out" | awk '{ m = $1; for (i = 2; i <= NF; i++) if ($i < m) m = $i; print m }'
 }
 sp_fr="$(tmin sp frictional)"; sp_fl="$(tmin sp frictionless)"
+sp_t1="$(tmin sp threads1)"; sp_t2="$(tmin sp threads)"
 lm_fr="$(tmin lm frictional)"; lm_fl="$(tmin lm frictionless)"
 
 echo
@@ -145,7 +156,7 @@ echo
 echo "== summary (targets are informational) =="
 awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
     -v q="$det_ratio" -v q1="$det1" -v q100="$det100" -v gb="$gb_ratio" -v same="$same_ratio" \
-    -v ps="$pack_s" -v pn="$pack_n" 'BEGIN {
+    -v ps="$pack_s" -v pn="$pack_n" -v t1="$sp_t1" -v t2="$sp_t2" 'BEGIN {
   f = "%-52s %8s %9s  %s\n"
   printf f, "measure", "value", "target", ""
   printf f, "LAMMPS time / softpack time, frictional", sprintf("%.2fx", b / a), ">= 2x", (b / a >= 2 ? "PASS" : "MISS")
@@ -153,6 +164,7 @@ awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
   printf f, "softpack frictional / frictionless, same contacts", sprintf("%.2fx", same), ">= 1.5x", (same >= 1.5 ? "PASS" : "MISS")
   printf f, "  same, whole runs (frictionless flows: 6x rebuilds)", sprintf("%.2fx", a / c), "-", ""
   printf f, "  same, Google Benchmark Confined (per step)", sprintf("%.2fx", gb), "-", ""
+  printf f, "softpack 1 thread / 2 threads, frictional (same bits)", sprintf("%.2fx", t1 / t2), ">= 1.8x", (t1 / t2 >= 1.8 ? "PASS" : "MISS")
   printf f, "contact detection s/sphere, Pi=100 / Pi=1", sprintf("%.2fx", q), "<= 2x", (q <= 2 ? "PASS" : "MISS")
   printf f, "softpack-pack, " pn " spheres (Pi = 10)", sprintf("%.1f s", ps), "< 60 s", (ps < 60 ? "PASS" : "MISS")
   printf "  (softpack %.4g / %.4g s, LAMMPS %.4g / %.4g s frictional / frictionless; detection %s / %s s per sphere)\n",
