@@ -167,6 +167,7 @@ awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
   printf f, "softpack 1 thread / 2 threads, frictional (same bits)", sprintf("%.2fx", t1 / t2), ">= 1.8x", (t1 / t2 >= 1.8 ? "PASS" : "MISS")
   printf f, "contact detection s/sphere, Pi=100 / Pi=1", sprintf("%.2fx", q), "<= 2x", (q <= 2 ? "PASS" : "MISS")
   printf f, "softpack-pack, " pn " spheres (Pi = 10)", sprintf("%.1f s", ps), "< 60 s", (ps < 60 ? "PASS" : "MISS")
-  printf "  (softpack %.4g / %.4g s, LAMMPS %.4g / %.4g s frictional / frictionless; detection %s / %s s per sphere)\n",
+  printf "  (softpack %.4g / %.4g s, LAMMPS %.4g / %.4g s frictional / frictionless; detection %s / %s s per sphere;\n",
     a, c, b, d, q100, q1
+  printf "   softpack frictional on 1 / 2 threads %.4g / %.4g s)\n", t1, t2
 }'
