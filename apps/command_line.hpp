@@ -82,6 +82,16 @@ inline std::optional<int> check_no_control_characters(const CLI::App& app, std::
 
 /// Parses the command line; the exit code when the program must stop (0 after --help, 2 for
 /// a bad command line), std::nullopt when it may go on.
+/// --threads N: the engine's threads for this command (core/parallel.hpp), over SOFTPACK_THREADS;
+/// for the commands that run simulations. The result bits do not depend on them.
+inline CLI::Option* add_threads_option(CLI::App& app) {
+  return app
+      .add_option_function<int>(
+          "--threads", [](const int& n) { parallel::set_threads(n); },
+          "threads of the engine's force loops (default: SOFTPACK_THREADS, else 1; the results are the same bits for any count)")
+      ->check(CLI::Range(1, 1024));
+}
+
 /// SOFTPACK_THREADS read now, so that a bad value stops the command before it runs (the engine
 /// reads it at its first threaded loop, which a small scene never reaches).
 inline std::optional<int> check_threads(std::string_view program) {

@@ -110,6 +110,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--medium", o.medium, "medium file (softpack-coarse medium)")->required();
   run_cmd->add_option("--out", o.out, "results file (HDF5)")->required();
   run_cmd->add_flag("--quiet", o.quiet, "no progress lines");
+  add_threads_option(*run_cmd);
   std::string probe_config, probe_out;
   std::uint64_t probe_seed = 0;
   std::vector<int> probe_walls{1, 2, 6};
@@ -120,6 +121,7 @@ int main(int argc, char** argv) {
   probe_cmd->add_option("--walls", probe_walls, "numbers of walls (1, 2, 6)");
   probe_cmd->add_option("--delta-n", probe_dn, "Delta_n of each wall, increasing");
   probe_cmd->add_option("--out", probe_out, "text file: walls delta_n Fn")->required();
+  add_threads_option(*probe_cmd);
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   seeds_cmd->add_option("--config", seeds_config, "settings, e.g. experiments/coarse-grain.yaml")->required();

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command_line.hpp"
+#include "core/parallel.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/text_input.hpp"
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
   app.add_option("--scene", scene_path, "scene file (YAML), see docs/scene-format.md")->required();
   app.add_option("--out", out_path, "write the JSON report here (atomically) instead of stdout");
   app.add_flag("--quiet", quiet, "no progress lines on stderr");
+  add_threads_option(app);
   if (const auto code = parse_command_line(app, argc, argv, "softpack-run")) return *code;
 
   try {
@@ -133,7 +135,11 @@ int main(int argc, char** argv) {
         {"walls", walls},
         {"relaxation", relaxation},
         {"final", residuals(sim.residuals())},
-        {"provenance", {{"code_version", code_version()}, {"config", read_text_input(scene_path, "a scene file (YAML)")}, {"seconds", seconds}}},
+        {"provenance",
+         {{"code_version", code_version()},
+          {"config", read_text_input(scene_path, "a scene file (YAML)")},
+          {"seconds", seconds},
+          {"threads", parallel::threads()}}},
     };
     if (out_path.empty()) std::cout << report.dump(2) << "\n";
     else write_file_atomically(out_path, report.dump(2) + "\n");

@@ -42,6 +42,7 @@ inline int stage_main(int argc, char** argv, const std::string& stage) {
                  "the stage's stamp make planned this run with (softpack-config PROFILE stamp " + stage +
                      "): refused when the profile has changed since");
   app.add_flag("--quiet", quiet, "no progress lines");
+  add_threads_option(app);
   app.add_option("--stop-after", o.stop_after, "stop after this many new points (tests of the resume)")->group("");
   const std::string program = "softpack-" + stage;
   if (const auto code = parse_command_line(app, argc, argv, program)) return *code;

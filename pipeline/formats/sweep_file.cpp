@@ -26,8 +26,8 @@ void each_provenance_field(P& p, F&& f) {
   f("provenance/config", p.config);
   f("provenance/code_version", p.code_version);
 }
-// Since stamps (issue 28): written always, read when there.
-constexpr const char* kPackingSha256 = "provenance/packing_sha256";
+// Since stamps (issue 28) and threads (issue 32): written always, read when there.
+constexpr const char *kPackingSha256 = "provenance/packing_sha256", *kThreads = "provenance/threads";
 
 // --- The point file ---------------------------------------------------------------------------
 
@@ -289,6 +289,7 @@ void write_point_file(const std::string& path, PointResult& r, const SimulationS
   write_wall_springs(f, kShellSprings, s.shell_springs);
   each_provenance_field(prov, writer(f));
   put(f, kProvenanceStamp, prov.stamp);
+  put(f, kThreads, prov.threads);
   r.timing.output = watch.elapsed();
   each_timing_field(r, writer(f));
   out.commit();
@@ -300,6 +301,7 @@ PointFile read_point_file(const std::string& path, bool with_state) {
   PointFile p;
   each_provenance_field(p.provenance, reader(f));
   if (f.exists(kProvenanceStamp)) get(f, kProvenanceStamp, p.provenance.stamp);
+  if (f.exists(kThreads)) get(f, kThreads, p.provenance.threads);
   if (p.provenance.stage != "normal" && p.provenance.stage != "tangential" && p.provenance.stage != "sliding")
     throw InputError(
         fmt::format("{}: /{}: '{}' is not allowed; allowed: normal, tangential, sliding", path, kPointStage, p.provenance.stage));
@@ -353,6 +355,7 @@ void write_sweep_results_file(const std::string& path, const std::vector<PointRe
   put(f, kCpuSeconds, s.total_cpu_seconds);
   put(f, kProvenanceStamp, s.provenance.stamp);
   put(f, kPackingSha256, s.packing_sha256);
+  put(f, kThreads, s.provenance.threads);
   out.commit();
 }
 
@@ -363,6 +366,7 @@ SweepResults read_sweep_results_file(const std::string& path, const std::string&
   s.path = path;
   each_sweep_provenance(s, reader(f));
   if (f.exists(kProvenanceStamp)) get(f, kProvenanceStamp, s.provenance.stamp);
+  if (f.exists(kThreads)) get(f, kThreads, s.provenance.threads);
   if (f.exists(kPackingSha256)) get(f, kPackingSha256, s.packing_sha256);
   // The timings (release 0.4.0 on): all of them or none.
   s.has_timing = f.exists(kReused);

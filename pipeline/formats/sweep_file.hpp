@@ -50,6 +50,9 @@ struct PointProvenance {
   std::string config;  ///< the configuration the point depends on (YAML)
   std::string code_version;
   std::string stamp;  ///< the stage's configuration stamp ("": a file from before stamps)
+  /// The engine's threads in the run that wrote the file (core/parallel.hpp; no result bit depends
+  /// on them; 0: a file from before they were recorded).
+  int threads = 0;
 };
 
 

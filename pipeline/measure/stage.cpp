@@ -8,6 +8,7 @@
 #include "profile/profile.hpp"
 #include "packing/packing_profile.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/stopwatch.hpp"
 #include "core/version.hpp"
 #include "formats/packing_file.hpp"
@@ -145,7 +146,7 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
   if (points.empty()) return StageSummary{0, 0.0, true};  // stopped on purpose (tests)
   // The stage's wall-clock time since it began, and its process's CPU time (with its start-up).
   const Elapsed stage_time{watch.elapsed().wall, process_cpu_seconds()};
-  write_sweep_results_file(o.out, points, PointProvenance{o.stage, o.scene, c.config, c.code_version, c.stamp}, packings,
+  write_sweep_results_file(o.out, points, PointProvenance{o.stage, o.scene, c.config, c.code_version, c.stamp, parallel::threads()}, packings,
                            own_packing_sha256, static_cast<std::uint64_t>(o.seed), stage_time);
   return StageSummary{points.size(), stage_time.wall, false};
 }

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/stopwatch.hpp"
 
 namespace softpack {
@@ -77,7 +78,7 @@ std::vector<PointResult> run_sweep(const SweepContext& c, const SweepStage& stag
   for (std::size_t chain = 0; chain < stage.chains(); ++chain) total += stage.points(chain);
   std::vector<PointResult> points;
   points.reserve(total);
-  const PointProvenance provenance{stage.name(), scene_name(c.setup.kind), c.config, c.code_version, c.stamp};
+  const PointProvenance provenance{stage.name(), scene_name(c.setup.kind), c.config, c.code_version, c.stamp, parallel::threads()};
   std::size_t computed = 0;
   for (std::size_t chain = 0; chain < stage.chains(); ++chain) {
     Chain ch;

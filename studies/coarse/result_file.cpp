@@ -1,6 +1,7 @@
 #include "coarse/result_file.hpp"
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/types.hpp"
 #include "core/version.hpp"
 #include "formats/h5_fields.hpp"
@@ -22,6 +23,7 @@ CoarseResult coarse_result(const CompressionRun& run, const Medium& m, CoarseMod
   r.grains_volume = m.grains_volume, r.packings_volume = m.packings_volume, r.target_volume = m.target_volume;
   for (std::uint64_t k : m.packing_seeds) r.packing_seeds.push_back(static_cast<std::int64_t>(k));
   r.steps = run.steps, r.dt = run.dt, r.seconds = run.time.wall, r.cpu_seconds = run.time.cpu;
+  r.threads = parallel::threads();
   r.beyond_range = run.soft.beyond_range, r.max_dn = run.soft.max_dn;
   r.rows = run.rows;
   return r;
@@ -76,6 +78,7 @@ void write_coarse_result(const std::string& path, const CoarseResult& r) {
   put(f, "provenance/settings", r.settings), put(f, "provenance/laws", r.laws), put(f, "provenance/code_version", r.code_version);
   put(f, "provenance/steps", r.steps), put(f, "provenance/dt", r.dt);
   put(f, "provenance/seconds", r.seconds), put(f, "provenance/cpu_seconds", r.cpu_seconds);
+  put(f, "provenance/threads", r.threads);
   out.commit();
 }
 
@@ -117,6 +120,7 @@ CoarseResult read_coarse_result(const std::string& path) {
   get(f, "provenance/settings", r.settings), get(f, "provenance/laws", r.laws), get(f, "provenance/code_version", r.code_version);
   get(f, "provenance/steps", r.steps), get(f, "provenance/dt", r.dt);
   get(f, "provenance/seconds", r.seconds), get(f, "provenance/cpu_seconds", r.cpu_seconds);
+  if (f.exists("provenance/threads")) get(f, "provenance/threads", r.threads);
   if (r.model != "resolved" && r.model != "soft")
     throw InputError(path + ": provenance/model: '" + r.model + "' is not allowed; allowed: resolved, soft");
   return r;

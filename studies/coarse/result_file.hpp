@@ -6,7 +6,7 @@
 //   /medium/{L, H, Rs, grains, sites, spheres, bodies, grains_volume, packings_volume,
 //            target_volume, packing_seeds}
 //   /soft/{beyond_range, max_dn}                                  (soft model)
-//   /provenance/{model, seed, settings, laws, code_version, steps, dt, seconds, cpu_seconds}
+//   /provenance/{model, seed, settings, laws, code_version, steps, dt, seconds, cpu_seconds, threads}
 //
 // `settings` is the coarse_grain section as read, `laws` the law file's path.
 #pragma once
@@ -26,6 +26,7 @@ struct CoarseResult {
   double grains_volume = 0.0, packings_volume = 0.0, target_volume = 0.0;
   std::vector<std::int64_t> packing_seeds;
   double dt = 0.0, seconds = 0.0, cpu_seconds = 0.0;
+  std::int64_t threads = 0;  ///< the engine's threads (provenance/threads; 0: a file from before they were recorded)
   std::int64_t beyond_range = 0;
   double max_dn = 0.0;
   std::vector<CurveRow> rows;

@@ -28,9 +28,14 @@ kill -9 "$pid" 2> /dev/null || true
 wait "$pid" 2> /dev/null || true
 [ ! -e "$tmp/b.h5" ] || rm "$tmp/b.h5"  # it may have finished before the kill
 ls "$tmp"/b 2> /dev/null | grep -q '\.tmp\.' && rm -f "$tmp"/b/*.tmp.*  # what a kill leaves: temporaries only
-normal --checkpoints "$tmp/b" --out "$tmp/b.h5" --quiet
+normal --checkpoints "$tmp/b" --out "$tmp/b.h5" --quiet --threads 2  # resumed on 2 threads (issue 32)
 numbers() { h5dump -d /Fn -d /force -d /force_first -d /contacts -d /steps -d /relaxation/checks/force_ratio "$1" | tail -n +2; }
-[ "$(numbers "$tmp/a.h5")" = "$(numbers "$tmp/b.h5")" ] || fail "resumed run differs from the uninterrupted one"
+[ "$(numbers "$tmp/a.h5")" = "$(numbers "$tmp/b.h5")" ] || fail "resumed run (2 threads) differs from the uninterrupted one (1)"
+threads_of() { h5dump -d /provenance/threads "$1" | awk '/\(0\)/ { print $2 }'; }
+[ "$(threads_of "$tmp/a.h5")" = 1 ] && [ "$(threads_of "$tmp/b.h5")" = 2 ] ||
+  fail "provenance/threads: $(threads_of "$tmp/a.h5") and $(threads_of "$tmp/b.h5"), expected 1 and 2"
+set +e; normal --checkpoints "$tmp/c" --out "$tmp/c.h5" --quiet --threads 0 2> "$tmp/err"; code=$?; set -e
+[ $code = 2 ] && grep -q -- "--threads" "$tmp/err" || fail "--threads 0: exit $code, $(cat "$tmp/err")"
 
 sed 's/^  trials: .*/  trials: 2999/' "$profile" > "$tmp/other.yaml"  # another packing configuration
 "$bin/softpack-pack" --config "$tmp/other.yaml" --seed 1 --out "$tmp/other.h5" --quiet
