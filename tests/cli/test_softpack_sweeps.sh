@@ -21,7 +21,10 @@ grep "point 1/5" "$tmp/progress" | grep -q "not loaded yet" || fail "the unloade
 grep "point 5/5" "$tmp/progress" | grep -q "force ratio" || fail "the loaded point has no force ratio: $(grep "point 5/5" "$tmp/progress")"
 
 # Killed at a random moment, then started again: the same numbers as an uninterrupted run.
-normal --checkpoints "$tmp/b" --out "$tmp/b.h5" --quiet &
+# (the command itself in the background, not the shell function: kill -9 of a function's subshell
+# left the command running, which could write b.h5 after the resumed run)
+"$bin/softpack-normal" --config "$profile" --scene soft-solid --seed 1 --packing "$tmp/p1.h5" --checkpoints "$tmp/b" \
+  --out "$tmp/b.h5" --quiet &
 pid=$!
 sleep "0.$((RANDOM % 3))"
 kill -9 "$pid" 2> /dev/null || true
