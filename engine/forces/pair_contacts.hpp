@@ -38,17 +38,18 @@ struct PairContacts {
 
   static constexpr bool kThreaded = true;
 
-  std::size_t size() const { return list.size(); }
   /// What the blocks cut: the list, or the live pairs of a masked one.
   std::size_t positions() const { return list.masked ? list.live.size() : list.size(); }
 
-  /// Before the blocks: the scratch sized; a masked list's pairs that are not live marked open.
+  /// Before the blocks: on threads, the scratch sized and a masked list's pairs that are not live
+  /// marked open (one thread keeps no results).
   void prepare() {
     if constexpr (Fx.friction)
       if (list.spring_live.size() != list.size()) list.spring_live.assign(list.size(), 1);  // a fresh list: any may be
+    direct = parallel::serial((positions() + kBlock - 1) / kBlock);
+    if (direct) return;
     list.results.resize(list.size());
     if (list.masked) std::fill(list.results.touched.begin(), list.results.touched.end(), std::uint8_t{0});
-    direct = parallel::serial((positions() + kBlock - 1) / kBlock);
   }
 
   // Clearing a spring is `spring *= 0.0`, not setZero(): it keeps the sign of each zero, as it
@@ -56,7 +57,7 @@ struct PairContacts {
   static void clear(Vec3& spring) { spring *= 0.0; }
 
   /// The indices of the touching pairs among positions [begin, end), in list order
-  /// (|d|^2 < (Ri + Rj)^2), each pair's `touched` set; with friction the springs of the others
+  /// (|d|^2 < (Ri + Rj)^2), each pair's `touched` set on threads; with friction the springs of the others
   /// are cleared where PairList::spring_live says they may be loaded. A masked list offers only
   /// its live pairs.
   template <class Isa>
@@ -71,7 +72,7 @@ struct PairContacts {
       const simd::Mask touch = dot(d, d) < r_sum * r_sum;
       n += static_cast<std::size_t>(simd::compress(isa, closed + n, touch, simd::iota(static_cast<std::int32_t>(k))));
       const unsigned t = simd::bits(touch);
-      simd::store_bits_as_bytes(isa, list.results.touched.data() + k, t);
+      if (!direct) simd::store_bits_as_bytes(isa, list.results.touched.data() + k, t);
       if constexpr (Fx.friction) {
         for (unsigned opened = simd::nonzero_bytes(isa, list.spring_live.data() + k) & ~t & 0xffu; opened != 0; opened &= opened - 1)
           clear(list.spring[k + static_cast<std::size_t>(std::countr_zero(opened))]);
@@ -99,7 +100,7 @@ struct PairContacts {
       for (int l = 0; l < simd::kLanes; ++l) {
         const auto kk = static_cast<std::size_t>(live[m + static_cast<std::size_t>(l)]);
         const bool touching = (t >> l) & 1u;
-        list.results.touched[kk] = touching ? 1 : 0;
+        if (!direct) list.results.touched[kk] = touching ? 1 : 0;
         if constexpr (Fx.friction) {
           if (list.spring_live[kk] && !touching) clear(list.spring[kk]);
           list.spring_live[kk] = touching ? 1 : 0;
@@ -115,7 +116,7 @@ struct PairContacts {
     const bool t = (s.x[list.i[k]] - s.x[list.j[k]]).squaredNorm() < list.r_sum[k] * list.r_sum[k];
     closed[n] = static_cast<std::int32_t>(k);
     n += t ? 1 : 0;
-    list.results.touched[k] = t ? 1 : 0;
+    if (!direct) list.results.touched[k] = t ? 1 : 0;
     if constexpr (Fx.friction) {
       if (list.spring_live[k] && !t) clear(list.spring[k]);
       list.spring_live[k] = t ? 1 : 0;

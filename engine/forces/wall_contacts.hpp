@@ -32,22 +32,21 @@ struct WallContacts {
 
   static constexpr bool kThreaded = true;
 
-  std::size_t size() const { return list.size(); }
   std::size_t positions() const { return list.size(); }
   void prepare() {
-    list.results.resize(list.size());
     direct = parallel::serial((positions() + kBlock - 1) / kBlock);
+    if (!direct) list.results.resize(list.size());
   }
 
   /// The indices of the entries among [begin, end) whose sphere touches the wall (h > 0), in list
-  /// order, each entry's `touched` set; with friction the springs of the others are cleared.
+  /// order, each entry's `touched` set on threads; with friction the springs of the others are cleared.
   template <class Isa>
   std::size_t select(Isa, std::int32_t* closed, std::size_t begin, std::size_t end) {
     std::size_t n = 0;
     for (std::size_t k = begin; k < end; ++k) {
       const int i = list.i[k];
       const bool touching = wall.overlap(s.x[i], s.r[i]) > 0.0;
-      list.results.touched[k] = touching ? 1 : 0;
+      if (!direct) list.results.touched[k] = touching ? 1 : 0;
       if (!touching) {
         if constexpr (Fx.friction) list.spring[k].setZero();
         continue;

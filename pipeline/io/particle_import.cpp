@@ -79,6 +79,18 @@ void add_sphere(ForeignSpheres& s, const Lines& l, std::size_t k, const Vec3& x,
 
 std::string strip_comment(const std::string& s) { return s.substr(0, s.find('#')); }
 
+// The entries of a LAMMPS section from line k: f(k, words) for each line that is not blank, up to
+// the next keyword (a line whose first word is not a number), where k is left.
+template <class F>
+void each_entry(const Lines& l, std::size_t& k, F&& f) {
+  for (; k < l.text.size(); ++k) {
+    const std::vector<std::string> e = split(strip_comment(l.text[k]));
+    if (e.empty()) continue;
+    if (!to_number(e[0])) break;
+    f(k, e);
+  }
+}
+
 void add_type(ForeignSpheres& s, std::size_t k, const std::string& type) {
   if (std::find(s.types.begin(), s.types.end(), type) != s.types.end()) return;
   s.types.push_back(type);
@@ -140,26 +152,19 @@ ForeignSpheres read_lammps(const Lines& l) {
     const std::size_t section = k++;
     if (w[0] == "Velocities") {  // atom_style sphere: id vx vy vz wx wy wz
       s.motion_source = "its Velocities section";
-      for (; k < l.text.size(); ++k) {
-        const std::vector<std::string> e = split(strip_comment(l.text[k]));
-        if (e.empty()) continue;
-        if (!to_number(e[0])) break;
+      each_entry(l, k, [&](std::size_t k, const std::vector<std::string>& e) {
         if (e.size() != 7 && e.size() != 4)
           l.fail(k, fmt::format("{} columns; a Velocities line of atom_style sphere has 7 (id vx vy vz wx wy wz)", e.size()));
         const auto at = [&](std::size_t c) { return number(l, k, e[c], "velocity"); };
         add_motion(s, k, Vec3(at(1), at(2), at(3)), e.size() == 7 ? std::optional<Vec3>(Vec3(at(4), at(5), at(6))) : std::nullopt);
-      }
+      });
       continue;
     }
     if (w[0] != "Atoms") {
       std::string keyword = w[0];
       for (std::size_t i = 1; i < w.size(); ++i) keyword += " " + w[i];
       s.not_read.push_back("section " + keyword);
-      while (k < l.text.size()) {  // skip its entries
-        const std::vector<std::string> e = split(strip_comment(l.text[k]));
-        if (!e.empty() && !to_number(e[0])) break;
-        ++k;
-      }
+      each_entry(l, k, [](std::size_t, const std::vector<std::string>&) {});  // skipped
       continue;
     }
     if (found) l.fail(section, "a second Atoms section");
@@ -169,10 +174,7 @@ ForeignSpheres read_lammps(const Lines& l) {
       if (!style.empty() && style[0] != "sphere")
         l.fail(section, fmt::format("atom_style {}: softpack-import reads atom_style sphere (id type diameter density x y z)", style[0]));
     }
-    for (; k < l.text.size(); ++k) {
-      const std::vector<std::string> e = split(strip_comment(l.text[k]));
-      if (e.empty()) continue;
-      if (!to_number(e[0])) break;
+    each_entry(l, k, [&](std::size_t k, const std::vector<std::string>& e) {
       if (e.size() != 7 && e.size() != 10)
         l.fail(k, fmt::format("{} columns; atom_style sphere has 7 (id type diameter density x y z) or 10 (and ix iy iz)", e.size()));
       Vec3 x(number(l, k, e[4], "x"), number(l, k, e[5], "y"), number(l, k, e[6], "z"));
@@ -189,7 +191,7 @@ ForeignSpheres read_lammps(const Lines& l) {
       add_type(s, k, e[1]);
       s.densities.push_back(number(l, k, e[3], "density"));
       if (!(s.densities.back() > 0.0)) l.fail(k, fmt::format("density {}: allowed, > 0", s.densities.back()));
-    }
+    });
   }
   if (!found) throw InputError(l.path + ": no Atoms section");
   if (static_cast<long>(s.radii.size()) != atoms)

@@ -20,6 +20,7 @@ import json
 import re
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 root = Path(__file__).resolve().parents[2]
@@ -33,14 +34,13 @@ archive = root / "data" / "archive" / version / "paper"
 
 def timing(**files):
     """softpack-timing's JSON for the files given (packings=[...], normal=[...], tangential=[...])."""
-    out = Path("/tmp") / f"readme-timing-{id(files)}.json"
-    args = [str(bin_dir / "softpack-timing"), "--json", str(out)]
-    for kind, paths in files.items():
-        args += [f"--{kind}"] + [str(p) for p in paths]
-    subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
-    data = json.loads(out.read_text())
-    out.unlink()
-    return data
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "timing.json"
+        args = [str(bin_dir / "softpack-timing"), "--json", str(out)]
+        for kind, paths in files.items():
+            args += [f"--{kind}"] + [str(p) for p in paths]
+        subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+        return json.loads(out.read_text())
 
 
 @functools.cache
@@ -129,7 +129,7 @@ def blank(m):
     return re.sub(r"[^\n]", " ", m.group(0))
 
 
-def find(phrase, text):
+def find(phrase):
     """The phrase in the text, whatever the line breaks and spaces between its words."""
     return re.compile(r"\s+".join(re.escape(w) for w in phrase.split()))
 
@@ -139,15 +139,15 @@ def main():
     bad = []
     for what, phrase, values in CLAIMS:
         now = phrase.format(*values())
-        if not find(now, text).search(text):
+        if not find(now).search(text):
             bad.append(f"{readme_path}: the claim '{what}' is not stated with today's value; the README should say: {now!r}")
-        text = find(now, text).sub(blank, text)
+        text = find(now).sub(blank, text)
     for phrase, holds in STATEMENTS:
-        if not find(phrase, text).search(text):
+        if not find(phrase).search(text):
             bad.append(f"{readme_path}: the sentence {phrase[:60]!r}... is missing (tests/docs/check_readme_numbers.py)")
         elif not holds():
             bad.append(f"{readme_path}: the data no longer say {phrase!r}")
-        text = find(phrase, text).sub(blank, text)
+        text = find(phrase).sub(blank, text)
     for pattern in REFERENCES:
         text = re.sub(pattern, blank, text, flags=re.S)
     allowed, given = allowed_list(root / "tests" / "docs" / "readme-numbers.yaml"), inputs()
