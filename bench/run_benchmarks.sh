@@ -5,10 +5,12 @@
 #      identical contacts (SameState) and contact-detection cost;
 #   3. whole runs side by side, same packing, dt and steps: softpack-bench-scene vs LAMMPS
 #      (bench/lammps/run_confined.sh), frictional and frictionless, alternating, minimum time;
-#      softpack on 1 and 2 threads (SOFTPACK_THREADS), which must give the same state digest;
+#      softpack on 1 and 2 threads (SOFTPACK_THREADS), which must give the same state digest, on
+#      that packing and on one of 1600 spheres (a paper-profile sweep point's size);
 #   4. a summary of the targets with PASS/MISS (informational: exit 0 when everything ran).
 # Environment: BENCH_STEPS (default 2000) steps per whole run, BENCH_REPEATS (default 3) runs per
-# code and scene. The packing is cached in BUILD/bench/confined-5000.txt (made once, ~40 s).
+# code and scene. The packings are cached in BUILD/bench/confined-{5000,1600}.txt (made once, ~40 s
+# and ~7 s); softpack runs their spheres in spatial order (engine/neighbor/spatial_order.hpp).
 set -euo pipefail
 
 die() { echo "run_benchmarks.sh: $*" >&2; exit 1; }
@@ -23,6 +25,7 @@ repeats="${BENCH_REPEATS:-3}"
 engine="$build/bench/bench_engine"
 scene="$build/bench/softpack-bench-scene"
 packing="$build/bench/confined-5000.txt"
+packing_small="$build/bench/confined-1600.txt"  # the size of one paper-profile sweep point
 for exe in "$engine" "$scene"; do [ -x "$exe" ] || die "$exe missing: make bench builds it"; done
 
 tmp="$(mktemp -d)"
@@ -70,12 +73,15 @@ for ((rep = 1; rep <= repeats; rep++)); do
   for mode in frictional frictionless threads; do
     flag=(); [ "$mode" = frictionless ] && flag=(--frictionless)
     if [ "$mode" = threads ]; then  # softpack on 2 threads (engine/core/parallel.hpp): the same bits, its time
-      run sp1 "$scene" --packing "$packing" --steps "$steps" --digest
-      SOFTPACK_THREADS=2 run sp "$scene" --packing "$packing" --steps "$steps" --digest
-      [ "$(field state_digest "$tmp/sp.out")" = "$(field state_digest "$tmp/sp1.out")" ] ||
-        die "2 threads gave other bits than 1 (state digests $(field state_digest "$tmp/sp.out") and $(field state_digest "$tmp/sp1.out"))"
-      sp[threads1,$rep]="$(field softpack_loop_time_s "$tmp/sp1.out")"
-      sp[threads,$rep]="$(field softpack_loop_time_s "$tmp/sp.out")"
+      for size in 5000 1600; do
+        p="$packing"; [ "$size" = 1600 ] && p="$packing_small"
+        run sp1 "$scene" --packing "$p" --spheres "$size" --steps "$steps" --digest
+        SOFTPACK_THREADS=2 run sp "$scene" --packing "$p" --steps "$steps" --digest
+        [ "$(field state_digest "$tmp/sp.out")" = "$(field state_digest "$tmp/sp1.out")" ] ||
+          die "$size spheres: 2 threads gave other bits than 1 (state digests $(field state_digest "$tmp/sp.out") and $(field state_digest "$tmp/sp1.out"))"
+        sp[threads1_$size,$rep]="$(field softpack_loop_time_s "$tmp/sp1.out")"
+        sp[threads2_$size,$rep]="$(field softpack_loop_time_s "$tmp/sp.out")"
+      done
       continue
     fi
     run sp "$scene" --packing "$packing" --steps "$steps" "${flag[@]}"
@@ -94,7 +100,8 @@ tmin() {
   echo "$out" | awk '{ m = $1; for (i = 2; i <= NF; i++) if ($i < m) m = $i; print m }'
 }
 sp_fr="$(tmin sp frictional)"; sp_fl="$(tmin sp frictionless)"
-sp_t1="$(tmin sp threads1)"; sp_t2="$(tmin sp threads)"
+sp_t1="$(tmin sp threads1_5000)"; sp_t2="$(tmin sp threads2_5000)"
+sp_s1="$(tmin sp threads1_1600)"; sp_s2="$(tmin sp threads2_1600)"
 lm_fr="$(tmin lm frictional)"; lm_fl="$(tmin lm frictionless)"
 
 echo
@@ -156,7 +163,7 @@ echo
 echo "== summary (targets are informational) =="
 awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
     -v q="$det_ratio" -v q1="$det1" -v q100="$det100" -v gb="$gb_ratio" -v same="$same_ratio" \
-    -v ps="$pack_s" -v pn="$pack_n" -v t1="$sp_t1" -v t2="$sp_t2" 'BEGIN {
+    -v ps="$pack_s" -v pn="$pack_n" -v t1="$sp_t1" -v t2="$sp_t2" -v s1="$sp_s1" -v s2="$sp_s2" 'BEGIN {
   f = "%-52s %8s %9s  %s\n"
   printf f, "measure", "value", "target", ""
   printf f, "LAMMPS time / softpack time, frictional", sprintf("%.2fx", b / a), ">= 2x", (b / a >= 2 ? "PASS" : "MISS")
@@ -164,10 +171,11 @@ awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
   printf f, "softpack frictional / frictionless, same contacts", sprintf("%.2fx", same), ">= 1.5x", (same >= 1.5 ? "PASS" : "MISS")
   printf f, "  same, whole runs (frictionless flows: 6x rebuilds)", sprintf("%.2fx", a / c), "-", ""
   printf f, "  same, Google Benchmark Confined (per step)", sprintf("%.2fx", gb), "-", ""
-  printf f, "softpack 1 thread / 2 threads, frictional (same bits)", sprintf("%.2fx", t1 / t2), ">= 1.8x", (t1 / t2 >= 1.8 ? "PASS" : "MISS")
+  printf f, "softpack 1 / 2 threads, 5000 spheres (same bits)", sprintf("%.2fx", t1 / t2), ">= 1.8x", (t1 / t2 >= 1.8 ? "PASS" : "MISS")
+  printf f, "softpack 1 / 2 threads, 1600 spheres (same bits)", sprintf("%.2fx", s1 / s2), ">= 1.5x", (s1 / s2 >= 1.5 ? "PASS" : "MISS")
   printf f, "contact detection s/sphere, Pi=100 / Pi=1", sprintf("%.2fx", q), "<= 2x", (q <= 2 ? "PASS" : "MISS")
   printf f, "softpack-pack, " pn " spheres (Pi = 10)", sprintf("%.1f s", ps), "< 60 s", (ps < 60 ? "PASS" : "MISS")
   printf "  (softpack %.4g / %.4g s, LAMMPS %.4g / %.4g s frictional / frictionless; detection %s / %s s per sphere;\n",
     a, c, b, d, q100, q1
-  printf "   softpack frictional on 1 / 2 threads %.4g / %.4g s)\n", t1, t2
+  printf "   softpack frictional on 1 / 2 threads %.4g / %.4g s (5000 spheres), %.4g / %.4g s (1600))\n", t1, t2, s1, s2
 }'

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "neighbor/spatial_order.hpp"
 #include "support/scenes.hpp"
 
 namespace softpack::bench {
@@ -41,7 +42,10 @@ SceneDef bench_scene(const std::vector<Sphere>& spheres, const BenchParameters& 
   s.integration.safety = p.safety;
   s.neighbor.skin = p.skin;
   s.neighbor.level_ratio = p.level_ratio;
-  for (const auto& sp : spheres) {
+  std::vector<Vec3> x;
+  for (const auto& sp : spheres) x.push_back(sp.x);
+  for (const std::int32_t k : spatial_order(x)) {  // in spatial order, as LAMMPS sorts its atoms
+    const Sphere& sp = spheres[static_cast<std::size_t>(k)];
     ParticleDef d;
     d.x = sp.x;
     d.r = sp.r;

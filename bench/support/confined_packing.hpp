@@ -35,7 +35,8 @@ std::vector<Sphere> read_spheres(const std::string& path);
 void write_spheres(const std::string& path, const std::vector<Sphere>& spheres);
 
 /// The scene softpack runs on these spheres: paper material, Hertz, and (when `friction`)
-/// Tsuji friction with rotation; Tsuji damping; the shell.
+/// Tsuji friction with rotation; Tsuji damping; the shell; the spheres in spatial order
+/// (neighbor/spatial_order.hpp).
 SceneDef bench_scene(const std::vector<Sphere>& spheres, const BenchParameters& p, bool friction);
 
 }  // namespace softpack::bench

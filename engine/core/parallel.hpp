@@ -1,15 +1,20 @@
-// Threads: the engine's one use of OpenMP (Debian's libgomp). Work is cut into blocks whose
-// number and bounds depend on the data only, never on the thread count, and every sum across
-// blocks is made afterwards in a fixed order (forces/contact_loop.hpp): the result bits are the
-// same for any number of threads (ResultBits.TheSameBitsForAnyThreadCount).
+// Threads: the engine's one use of OpenMP (Debian's libgomp). Work is cut in blocks or in shares
+// of the spheres, and every sum is made by one thread in a fixed order (forces/pair_contacts.hpp):
+// the result bits are the same for any number of threads (ResultBits.TheSameBitsForAnyThreadCount).
+// A share [n t / T, n (t + 1) / T) of the spheres goes to thread t at every stage (integration,
+// forces), so that a thread finds its spheres in its own cache: on the 2-vCPU machine of the
+// issue a cache line takes about 0.24 us from one core to the other and a parallel region costs
+// about 5 us, a barrier inside one about 1.7 us.
 //
-// The count: set_threads(), else the environment's SOFTPACK_THREADS, else 1. One is the default
-// while the threaded sums cost more than the threads gain: on the 2-core machine of the issue, 2
-// threads ran the 48 000-sphere coarse-grain medium 0.9 times as fast as one (issue 32: the sums
-// read each sphere's contacts out of order until the spheres are sorted in space). A build
-// without OpenMP runs every block on the calling thread.
+// The count: set_threads(), else the environment's SOFTPACK_THREADS, else 1. A build without
+// OpenMP runs everything on the calling thread.
 #pragma once
+#include <algorithm>
 #include <cstddef>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace softpack::parallel {
 
@@ -33,6 +38,49 @@ void for_each_block(std::size_t blocks, Body&& body) {
 #pragma omp parallel for schedule(static) num_threads(threads())
 #endif
   for (std::size_t b = 0; b < blocks; ++b) body(b);
+}
+
+/// phase(t) for t in [0, parts) of each phase in turn, on `parts` threads in one parallel region,
+/// share t on thread t (as for_each_block with `parts` blocks): every thread ends a phase before
+/// any starts the next. The phases must not throw.
+template <class... Phase>
+void run_phases(std::size_t parts, Phase&&... phase) {
+  const auto one_by_one = [&] { (..., [&] { for (std::size_t t = 0; t < parts; ++t) phase(t); }()); };
+  if (parts <= 1 || threads() == 1) return one_by_one();
+#ifdef _OPENMP
+#pragma omp parallel num_threads(static_cast<int>(parts))
+  {
+    if (static_cast<std::size_t>(omp_get_num_threads()) == parts) {
+      const auto t = static_cast<std::size_t>(omp_get_thread_num());
+      bool first = true;
+      (..., [&] {
+        if (!first) {
+#pragma omp barrier
+        }
+        first = false;
+        phase(t);
+      }());
+    } else if (omp_get_thread_num() == 0) {
+      one_by_one();  // fewer threads than asked for: the shares on one
+    }
+  }
+#else
+  one_by_one();
+#endif
+}
+
+/// Where share t of [0, n) cut in `parts` begins (share t ends where t + 1 begins).
+inline std::size_t share_begin(std::size_t n, std::size_t t, std::size_t parts) { return n * t / parts; }
+
+/// body(begin, end) over [0, n) cut in threads() nearly equal shares, [n t / T, n (t + 1) / T) on
+/// thread t: the static schedule gives share t to the same thread at every call, so that the
+/// stages of a step (integration, forces, sums) find their spheres in that thread's cache.
+/// Only for work whose result does not depend on the cut (each item on its own, or sums made in
+/// a fixed order per item).
+template <class Body>
+void for_each_share(std::size_t n, Body&& body) {
+  const auto parts = static_cast<std::size_t>(threads());
+  for_each_block(parts, [&](std::size_t t) { body(share_begin(n, t, parts), share_begin(n, t + 1, parts)); });
 }
 
 }  // namespace softpack::parallel

@@ -37,33 +37,71 @@ void block_portable(Contacts& c, double dt, std::int32_t* closed, std::size_t be
   contact_block<Law, Fx>(simd::Portable{}, c, dt, closed, begin, end);
 }
 
-/// The contacts of one kind, through the blocks of the instruction set chosen at run time.
-template <class Law, Effects Fx, class Contacts>
-void run_contacts(Contacts& contacts, double dt, std::vector<std::int32_t>& closed) {
-  bool avx512 = false;
-  if constexpr (build::kAvx512Loops) avx512 = cpu::vector_isa() == cpu::VectorIsa::avx512;
-  contact_loop(contacts, closed, [&](Contacts& c, std::int32_t* k, std::size_t begin, std::size_t end) {
-    if constexpr (build::kAvx512Loops)
-      if (avx512) return block_avx512<Law, Fx>(c, dt, k, begin, end);
-    block_portable<Law, Fx>(c, dt, k, begin, end);
-  });
-}
+/// One block of any kind of contact, on the instruction set chosen at run time.
+template <class Law, Effects Fx>
+struct BlockOf {
+  bool avx512 = build::kAvx512Loops && cpu::vector_isa() == cpu::VectorIsa::avx512;
 
+  template <class Contacts>
+  void operator()(Contacts& c, std::int32_t* closed, std::size_t begin, std::size_t end) const {
+    if constexpr (build::kAvx512Loops)
+      if (avx512) return block_avx512<Law, Fx>(c, dt, closed, begin, end);
+    block_portable<Law, Fx>(c, dt, closed, begin, end);
+  }
+  double dt = 0.0;
+};
+
+/// Every contact of a world: sphere pairs, then each plane, then each shell. On threads (one
+/// parallel region, core/parallel.hpp run_phases): each thread's ghost pairs, then its own pairs
+/// and its spheres' wall contacts; afterwards the walls' loads, in list order.
 template <class Law, Effects Fx>
 void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) {
   Particles& p = world.p;
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), p.F.data(),
                        Fx.rotation ? p.T.data() : nullptr};
+  BlockOf<Law, Fx> block;
+  block.dt = dt;
   PairContacts<Fx> pairs{lists.pairs, s, p.size()};
-  run_contacts<Law, Fx>(pairs, dt, closed);
-  for (std::size_t k = 0; k < world.planes.size(); ++k) {
-    WallContacts<Fx, PlaneWall> plane{lists.planes[k], world.planes[k], s, world.plane_loads[k]};
-    run_contacts<Law, Fx>(plane, dt, closed);
+  std::vector<WallContacts<Fx, PlaneWall>> planes;
+  std::vector<WallContacts<Fx, SphericalShell>> shells;
+  for (std::size_t k = 0; k < world.planes.size(); ++k) planes.push_back({lists.planes[k], world.planes[k], s, world.plane_loads[k], p.size()});
+  for (std::size_t k = 0; k < world.shells.size(); ++k) shells.push_back({lists.shells[k], world.shells[k], s, world.shell_loads[k], p.size()});
+  pairs.prepare();
+  for (auto& w : planes) w.prepare();
+  for (auto& w : shells) w.prepare();
+  if (parallel::threads() == 1) {
+    closed.resize(kScratch);
+    run_blocks(pairs, closed.data(), block);
+    for (auto& w : planes) run_blocks(w, closed.data(), block);
+    for (auto& w : shells) run_blocks(w, closed.data(), block);
+    return;
   }
-  for (std::size_t k = 0; k < world.shells.size(); ++k) {
-    WallContacts<Fx, SphericalShell> shell{lists.shells[k], world.shells[k], s, world.shell_loads[k]};
-    run_contacts<Law, Fx>(shell, dt, closed);
-  }
+  const auto parts = static_cast<std::size_t>(parallel::threads());
+  closed.resize(parts * kScratch);
+  if (pairs.direct) run_blocks(pairs, closed.data(), block);  // a masked list: on this thread
+  const auto walls = [&](auto& list, std::size_t t) {
+    for (auto& w : list) {
+      auto c = w.part(0, t, parts);
+      run_blocks(c, closed.data() + t * kScratch, block);
+    }
+  };
+  parallel::run_phases(
+      parts,
+      [&](std::size_t t) {
+        if (pairs.direct) return;
+        PairContacts<Fx> c = pairs.part(0, t, parts);
+        run_blocks(c, closed.data() + t * kScratch, block);
+      },
+      [&](std::size_t t) {
+        if (!pairs.direct) {
+          PairContacts<Fx> c = pairs.part(1, t, parts);
+          run_blocks(c, closed.data() + t * kScratch, block);
+        }
+        walls(planes, t);
+        walls(shells, t);
+      });
+  for (auto& w : planes) w.finish();
+  for (auto& w : shells) w.finish();
 }
 
 template <class Law, Effects Fx>
@@ -72,7 +110,8 @@ void masked_pairs(World& world, PairList& list, const std::uint8_t* mask, double
   Particles& p = world.p;
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), F, Fx.rotation ? T : nullptr};
   MaskedPairContacts<Fx> pairs{{list, s, p.size()}, mask, sign};
-  run_contacts<Law, Fx>(pairs, 0.0, closed);
+  BlockOf<Law, Fx> block;
+  contact_loop(pairs, closed, block);
 }
 
 template <class Law, Effects Fx>

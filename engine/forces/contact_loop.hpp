@@ -3,14 +3,14 @@
 //   select   which listed contacts of the block touch (the springs of the others are cleared)
 //   gather   their geometry, constants and springs into the lanes of simd::Wide values, eight at a time
 //   law      contact_force() of contact/contact_law.hpp
-//   add      each contact's force and torques kept by contact (ContactResults), springs written back
-//   finish   the kept results summed into the spheres (and the wall's load), in list order
+//   add      each contact's force and torques added to its spheres, springs written back
+//   finish   on threads, the kept terms summed into the wall's load, in list order
 //
 // A kind of contact (forces/pair_contacts.hpp; planes and shells: forces/wall_contacts.hpp) supplies
-// them; `Isa` is the data-movement back end of simd/isa.hpp. The blocks (kBlock contacts) depend on
-// the list only and run on the threads of core/parallel.hpp; every sum is made afterwards, one
-// contact after the other in list order, so the result bits do not depend on the thread count,
-// the lane count or the instruction set.
+// them; `Isa` is the data-movement back end of simd/isa.hpp. On threads (core/parallel.hpp) each
+// thread evaluates the contacts of its share of the spheres and makes their sums, each sphere's
+// terms in list order as one thread makes them (forces/pair_contacts.hpp says how), so the
+// result bits do not depend on the thread count, the lane count or the instruction set.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -35,7 +35,7 @@ struct ContactLanes {
 [[gnu::always_inline]] inline double lane(const simd::Wide& w, int m) { return w.v[m]; }
 [[gnu::always_inline]] inline Vec3 lane(const V3<simd::Wide>& v, int m) { return {v.x.v[m], v.y.v[m], v.z.v[m]}; }
 
-/// Contacts per block: a multiple of the lanes, so that a block's groups of eight are the list's.
+/// Contacts per block: what the scratch of closed indices holds.
 inline constexpr std::size_t kBlock = 1024;
 
 /// The contacts at positions [begin, end) of `contacts`: select, gather, law, add. `closed` has
@@ -55,18 +55,23 @@ template <class NormalLaw, Effects Fx, class Isa, class Contacts>
   }
 }
 
-/// Every contact of `contacts`: block(contacts, closed, begin, end) over the blocks of its
-/// positions (on the threads when Contacts::kThreaded: its add() writes only what belongs to
-/// the contact), then its finish().
+/// What the blocks of one thread need: kBlock closed indices and a group of lanes.
+inline constexpr std::size_t kScratch = kBlock + simd::kLanes;
+
+/// block(c, scratch, begin, end) over blocks of at most kBlock of c's positions [c.begin, c.end),
+/// in order.
+template <class Contacts, class Block>
+void run_blocks(Contacts& c, std::int32_t* scratch, Block& block) {
+  for (std::size_t b = c.begin; b < c.end; b += kBlock) block(c, scratch, b, std::min(c.end, b + kBlock));
+}
+
+/// Every contact of one kind on the calling thread: prepare(), its blocks in list order (add()
+/// sums as it goes), finish(). The loops of a world on threads: forces/compile_loops.hpp.
 template <class Contacts, class Block>
 void contact_loop(Contacts& contacts, std::vector<std::int32_t>& closed, Block&& block) {
-  const std::size_t n = contacts.positions(), blocks = (n + kBlock - 1) / kBlock, stride = kBlock + simd::kLanes;
-  closed.resize(blocks * stride);
   contacts.prepare();
-  const auto run = [&](std::size_t b) { block(contacts, closed.data() + b * stride, b * kBlock, std::min(n, (b + 1) * kBlock)); };
-  if constexpr (Contacts::kThreaded) parallel::for_each_block(blocks, run);
-  else
-    for (std::size_t b = 0; b < blocks; ++b) run(b);
+  closed.resize(kScratch);
+  run_blocks(contacts, closed.data(), block);
   contacts.finish();
 }
 

@@ -6,6 +6,15 @@
 //
 // With the synchronized history update the spring's frame is the half-step one: d - dt/2 (vi - vj)
 // and its contact-point velocity.
+//
+// Sums. One thread adds each pair's terms to spheres i and j as it goes, in list order (sorted by
+// (i, j)): sphere s receives its terms as body 2 (pairs (i', s), ascending i'), then as body 1.
+// T threads make the same sums in the same order: thread t owns a share of the spheres and the
+// pairs whose sphere i is its own; it first evaluates again, for their sphere j only, the pairs
+// of lower shares that reach into its own (its ghosts, which come first in list order), then its
+// own pairs in list order, adding to sphere j only when j is its own. A pair is computed by the
+// same arithmetic on either thread, so both get the same bits; the spheres in spatial order
+// (neighbor/spatial_order.hpp) keep the ghosts few.
 #pragma once
 #include <algorithm>
 #include <bit>
@@ -32,82 +41,94 @@ struct PairContacts {
   PairList& list;
   SphereArrays s;
   std::size_t spheres = 0;  ///< the length of the sphere arrays
-  /// One thread runs the blocks in order (parallel::serial): add() sums into the spheres as it
-  /// goes, in list order, and finish() has nothing left to do; the same bits either way.
+  /// One thread evaluates every pair in list order and makes every sum: F_i += F, F_j -= F as
+  /// it goes. On T threads (a copy per thread and phase, part()): first each thread evaluates
+  /// its ghosts for their sphere j only, then its own pairs, with the sums of sphere j only when
+  /// j is its own (j < j_end): each sphere's terms come in list order either way, so the bits
+  /// are the same.
   bool direct = true;
+  const std::int32_t* index = nullptr;  ///< positions -> pairs; null: position k is pair k
+  std::size_t begin = 0, end = 0;       ///< the positions evaluated
+  std::size_t j_end = 0;                ///< sphere j's sums are made here when j < j_end
+  bool ghost = false;                   ///< only sphere j's sums; nothing of the pair written
 
-  static constexpr bool kThreaded = true;
-
-  /// What the blocks cut: the list, or the live pairs of a masked one.
-  std::size_t positions() const { return list.masked ? list.live.size() : list.size(); }
-
-  /// Before the blocks: on threads, the scratch sized and a masked list's pairs that are not live
-  /// marked open (one thread keeps no results).
+  /// Before the evaluation: the springs' bookkeeping, the positions (a masked list offers only
+  /// its live pairs and runs on one thread) and on threads the cut (PairShares).
   void prepare() {
     if constexpr (Fx.friction)
       if (list.spring_live.size() != list.size()) list.spring_live.assign(list.size(), 1);  // a fresh list: any may be
-    direct = parallel::serial((positions() + kBlock - 1) / kBlock);
-    if (direct) return;
-    list.results.resize(list.size());
-    if (list.masked) std::fill(list.results.touched.begin(), list.results.touched.end(), std::uint8_t{0});
+    index = list.masked ? list.live.data() : nullptr;
+    begin = 0, end = list.masked ? list.live.size() : list.size(), j_end = spheres;
+    direct = parallel::threads() == 1 || list.masked;
+    if (!direct) cut(static_cast<std::size_t>(parallel::threads()));
   }
+
+  /// The copy that thread t of `parts` runs in `phase` (0: its ghosts, 1: its own pairs).
+  PairContacts part(std::size_t phase, std::size_t t, std::size_t) const {
+    PairContacts c = *this;
+    const PairShares& sh = list.shares;
+    c.j_end = sh.sphere[t + 1];
+    c.ghost = phase == 0;
+    if (c.ghost) c.index = sh.ghosts[t].data(), c.begin = 0, c.end = sh.ghosts[t].size();
+    else c.index = nullptr, c.begin = sh.first[t], c.end = sh.first[t + 1];
+    return c;
+  }
+  void finish() {}
 
   // Clearing a spring is `spring *= 0.0`, not setZero(): it keeps the sign of each zero, as it
   // always has for pairs (the archived results depend on these bits).
   static void clear(Vec3& spring) { spring *= 0.0; }
 
   /// The indices of the touching pairs among positions [begin, end), in list order
-  /// (|d|^2 < (Ri + Rj)^2), each pair's `touched` set on threads; with friction the springs of the others
-  /// are cleared where PairList::spring_live says they may be loaded. A masked list offers only
-  /// its live pairs.
+  /// (|d|^2 < (Ri + Rj)^2); with friction the springs of the others are cleared where
+  /// PairList::spring_live says they may be loaded (not by a ghost: the pair's own thread does).
   template <class Isa>
-  [[gnu::always_inline]] std::size_t select(Isa isa, std::int32_t* closed, std::size_t begin, std::size_t end) {
+  [[gnu::always_inline]] std::size_t select(Isa isa, std::int32_t* closed, std::size_t from, std::size_t to) {
     using simd::Wide;
-    if (list.masked) return select_live(isa, closed, begin, end);
-    std::size_t n = 0, k = begin;
-    for (; k + simd::kLanes <= end; k += simd::kLanes) {
+    if (index) return select_indexed(isa, closed, from, to);
+    std::size_t n = 0, k = from;
+    for (; k + simd::kLanes <= to; k += simd::kLanes) {
       const simd::Index i = simd::load(list.i.data() + k), j = simd::load(list.j.data() + k);
       const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
       const Wide r_sum = simd::load(list.r_sum.data() + k);
       const simd::Mask touch = dot(d, d) < r_sum * r_sum;
       n += static_cast<std::size_t>(simd::compress(isa, closed + n, touch, simd::iota(static_cast<std::int32_t>(k))));
-      const unsigned t = simd::bits(touch);
-      if (!direct) simd::store_bits_as_bytes(isa, list.results.touched.data() + k, t);
       if constexpr (Fx.friction) {
+        const unsigned t = simd::bits(touch);
         for (unsigned opened = simd::nonzero_bytes(isa, list.spring_live.data() + k) & ~t & 0xffu; opened != 0; opened &= opened - 1)
           clear(list.spring[k + static_cast<std::size_t>(std::countr_zero(opened))]);
         simd::store_bits_as_bytes(isa, list.spring_live.data() + k, t);
       }
     }
-    for (; k < end; ++k) touch_test(k, closed, n);
+    for (; k < to; ++k) touch_test(k, closed, n);
     return n;
   }
 
-  /// select() over the live pairs at positions [begin, end) of a masked list, eight at a time by their indices.
+  /// select() over the pairs `index` lists at positions [from, to) (a masked list's live pairs, a
+  /// thread's ghosts), eight at a time.
   template <class Isa>
-  [[gnu::always_inline]] std::size_t select_live(Isa isa, std::int32_t* closed, std::size_t begin, std::size_t end) {
+  [[gnu::always_inline]] std::size_t select_indexed(Isa isa, std::int32_t* closed, std::size_t from, std::size_t to) {
     using simd::Wide;
-    const std::int32_t* const live = list.live.data();
-    std::size_t n = 0, m = begin;
-    for (; m + simd::kLanes <= end; m += simd::kLanes) {
-      const simd::Index k = simd::load(live + m);
+    std::size_t n = 0, m = from;
+    for (; m + simd::kLanes <= to; m += simd::kLanes) {
+      const simd::Index k = simd::load(index + m);
       const simd::Index i = simd::gather(isa, list.i.data(), k), j = simd::gather(isa, list.j.data(), k);
       const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
       const Wide r_sum = simd::gather(isa, list.r_sum.data(), k);
       const simd::Mask touch = dot(d, d) < r_sum * r_sum;
       n += static_cast<std::size_t>(simd::compress(isa, closed + n, touch, k));
-      const unsigned t = simd::bits(touch);
-      for (int l = 0; l < simd::kLanes; ++l) {
-        const auto kk = static_cast<std::size_t>(live[m + static_cast<std::size_t>(l)]);
-        const bool touching = (t >> l) & 1u;
-        if (!direct) list.results.touched[kk] = touching ? 1 : 0;
-        if constexpr (Fx.friction) {
+      if constexpr (Fx.friction) {
+        if (ghost) continue;
+        const unsigned t = simd::bits(touch);
+        for (int l = 0; l < simd::kLanes; ++l) {
+          const auto kk = static_cast<std::size_t>(index[m + static_cast<std::size_t>(l)]);
+          const bool touching = (t >> l) & 1u;
           if (list.spring_live[kk] && !touching) clear(list.spring[kk]);
           list.spring_live[kk] = touching ? 1 : 0;
         }
       }
     }
-    for (; m < end; ++m) touch_test(static_cast<std::size_t>(live[m]), closed, n);
+    for (; m < to; ++m) touch_test(static_cast<std::size_t>(index[m]), closed, n);
     return n;
   }
 
@@ -116,8 +137,8 @@ struct PairContacts {
     const bool t = (s.x[list.i[k]] - s.x[list.j[k]]).squaredNorm() < list.r_sum[k] * list.r_sum[k];
     closed[n] = static_cast<std::int32_t>(k);
     n += t ? 1 : 0;
-    if (!direct) list.results.touched[k] = t ? 1 : 0;
     if constexpr (Fx.friction) {
+      if (ghost) return;
       if (list.spring_live[k] && !t) clear(list.spring[k]);
       list.spring_live[k] = t ? 1 : 0;
     }
@@ -165,85 +186,46 @@ struct PairContacts {
     return c;
   }
 
-  /// Each contact's force and torque terms kept (F, ai n x Ft, aj n x Ft), and the springs back,
-  /// for the first `live` lanes.
+  /// F_i += F, F_j -= F, T_i -= ai n x Ft, T_j -= aj n x Ft for the first `live` lanes in order
+  /// (sphere j's only when j < j_end; a ghost: sphere j's only), and the springs back.
   [[gnu::always_inline]] void add(const ContactLanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
     V3<simd::Wide> nxFt{};
     if constexpr (Fx.rotation) nxFt = cross(c.geometry.n, f.Ft);
-    if (direct) return add_to_spheres(c, f, nxFt, k, live);
-    ContactResults& r = list.results;
-    for (int m = 0; m < live; ++m) {
-      const auto kk = static_cast<std::size_t>(k[m]);
-      r.F[kk] = lane(f.F, m);
-      if constexpr (Fx.rotation) {
-        const Vec3 t = lane(nxFt, m);
-        r.T1[kk] = lane(c.ai, m) * t;
-        r.T2[kk] = lane(c.aj, m) * t;
-      }
-      if constexpr (Fx.friction) list.spring[kk] = lane(c.spring, m);
-    }
-  }
-
-  /// F_i += F, F_j -= F, T_i -= ai n x Ft, T_j -= aj n x Ft of every touching pair, sphere by
-  /// sphere (on the threads), each sphere's terms in list order: as body 2 (pairs (i', s), i' < s)
-  /// then as body 1 (pairs (s, j')), the order of the list sorted by (i, j).
-  void finish() {
-    if (direct) return;
-    index_by_sphere();
-    const PairsBySphere& b = list.by_sphere;
-    const ContactResults& r = list.results;
-    const std::size_t blocks = (spheres + kBlock - 1) / kBlock;
-    parallel::for_each_block(blocks, [&](std::size_t block) {
-      const std::size_t end = std::min(spheres, (block + 1) * kBlock);
-      for (std::size_t sphere = block * kBlock; sphere < end; ++sphere) {
-        for (auto m = b.first_j[sphere]; m < b.first_j[sphere + 1]; ++m) {
-          const auto k = static_cast<std::size_t>(b.as_j[static_cast<std::size_t>(m)]);
-          if (!r.touched[k]) continue;
-          s.F[sphere] -= r.F[k];
-          if constexpr (Fx.rotation) s.T[sphere] -= r.T2[k];
-        }
-        for (auto k = static_cast<std::size_t>(b.first_i[sphere]); k < static_cast<std::size_t>(b.first_i[sphere + 1]); ++k) {
-          if (!r.touched[k]) continue;
-          s.F[sphere] += r.F[k];
-          if constexpr (Fx.rotation) s.T[sphere] -= r.T1[k];
-        }
-      }
-    });
-  }
-
- private:
-  /// F_i += F, F_j -= F, T_i -= ai n x Ft, T_j -= aj n x Ft, and the springs back, for the
-  /// first `live` lanes in order (one thread).
-  [[gnu::always_inline]] void add_to_spheres(const ContactLanes& c, const ContactForce<simd::Wide>& f, const V3<simd::Wide>& nxFt,
-                                             const std::int32_t* k, int live) {
     for (int m = 0; m < live; ++m) {
       const int i = c.i.v[m], j = c.j.v[m];
       const Vec3 F = lane(f.F, m);
-      s.F[i] += F;
-      s.F[j] -= F;
-      if constexpr (Fx.rotation) {
-        const Vec3 t = lane(nxFt, m);
-        s.T[i] -= lane(c.ai, m) * t;
-        s.T[j] -= lane(c.aj, m) * t;
+      if (!ghost) {
+        s.F[i] += F;
+        if constexpr (Fx.rotation) s.T[i] -= lane(c.ai, m) * lane(nxFt, m);
+        if constexpr (Fx.friction) list.spring[static_cast<std::size_t>(k[m])] = lane(c.spring, m);
       }
-      if constexpr (Fx.friction) list.spring[static_cast<std::size_t>(k[m])] = lane(c.spring, m);
+      if (static_cast<std::size_t>(j) < j_end) {
+        s.F[j] -= F;
+        if constexpr (Fx.rotation) s.T[j] -= lane(c.aj, m) * lane(nxFt, m);
+      }
     }
   }
 
-  /// The list's pairs by sphere (PairsBySphere), made again when the list or the spheres changed.
-  void index_by_sphere() {
-    PairsBySphere& b = list.by_sphere;
-    if (b.generation == list.generation && b.spheres == spheres) return;
-    const std::size_t n = list.size();
-    b.first_i.assign(spheres + 1, 0);
-    b.first_j.assign(spheres + 1, 0);
-    for (std::size_t k = 0; k < n; ++k) ++b.first_i[static_cast<std::size_t>(list.i[k]) + 1], ++b.first_j[static_cast<std::size_t>(list.j[k]) + 1];
-    for (std::size_t q = 0; q < spheres; ++q) b.first_i[q + 1] += b.first_i[q], b.first_j[q + 1] += b.first_j[q];
-    b.as_j.resize(n);
-    std::vector<std::int32_t> next(b.first_j.begin(), b.first_j.end() - 1);
-    for (std::size_t k = 0; k < n; ++k) b.as_j[static_cast<std::size_t>(next[static_cast<std::size_t>(list.j[k])]++)] = static_cast<std::int32_t>(k);
-    b.generation = list.generation;
-    b.spheres = spheres;
+ private:
+  /// The list's cut for `parts` threads (PairShares), made again when the list, the count or
+  /// the spheres changed.
+  void cut(std::size_t parts) {
+    PairShares& sh = list.shares;
+    if (sh.generation == list.generation && sh.parts == parts && sh.spheres == spheres) return;
+    sh.sphere.resize(parts + 1), sh.first.resize(parts + 1);
+    for (std::size_t t = 0; t <= parts; ++t) {
+      sh.sphere[t] = parallel::share_begin(spheres, t, parts);
+      sh.first[t] = static_cast<std::size_t>(std::lower_bound(list.i.begin(), list.i.end(), static_cast<std::int32_t>(sh.sphere[t])) - list.i.begin());
+    }
+    sh.ghosts.assign(parts, {});
+    for (std::size_t t = 0, k = 0; t < parts; ++t)
+      for (; k < sh.first[t + 1]; ++k) {  // pair k is thread t's: a ghost of the share of j if that is another
+        const auto j = static_cast<std::size_t>(list.j[k]);
+        if (j < sh.sphere[t + 1]) continue;
+        const auto owner = static_cast<std::size_t>(std::upper_bound(sh.sphere.begin(), sh.sphere.end(), j) - sh.sphere.begin()) - 1;
+        sh.ghosts[owner].push_back(static_cast<std::int32_t>(k));
+      }
+    sh.generation = list.generation, sh.parts = parts, sh.spheres = spheres;
   }
 };
 
@@ -257,10 +239,7 @@ struct MaskedPairContacts : PairContacts<Fx> {
   const std::uint8_t* mask = nullptr;
   double sign = 1.0;
 
-  static constexpr bool kThreaded = false;  // add() sums as it goes, in list order
-
-  std::size_t positions() const { return this->list.size(); }
-  void prepare() {}
+  void prepare() { this->begin = 0, this->end = this->list.size(), this->direct = true; }
   void finish() {}
 
   template <class Isa>

@@ -10,6 +10,7 @@
 // the spring's frame is the half-step one (the sphere at x - dt/2 (v - u)). The wall receives
 // -F, with its torque about the wall's reference point (the plane's point, the shell's centre).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 
@@ -27,15 +28,28 @@ struct WallContacts {
   const Wall& wall;
   SphereArrays s;
   WallLoad& load;
+  std::size_t spheres = 0;  ///< the length of the sphere arrays
 
-  bool direct = true;  ///< one thread: add() sums as it goes (as PairContacts::direct)
+  /// One thread: add() sums as it goes, into the spheres and the wall's load. On T threads
+  /// (part()) thread t evaluates the entries of its share of the spheres (a sphere is listed
+  /// once per wall: its sums are its own) and keeps the wall's terms, which finish() sums in list
+  /// order.
+  bool direct = true;
+  std::size_t begin = 0, end = 0;  ///< the entries evaluated
 
-  static constexpr bool kThreaded = true;
-
-  std::size_t positions() const { return list.size(); }
   void prepare() {
-    direct = parallel::serial((positions() + kBlock - 1) / kBlock);
+    begin = 0, end = list.size();
+    direct = parallel::threads() == 1;
     if (!direct) list.results.resize(list.size());
+  }
+  WallContacts part(std::size_t, std::size_t t, std::size_t parts) const {
+    WallContacts c = *this;
+    const auto at = [&](std::size_t share) {
+      const auto first = static_cast<std::int32_t>(parallel::share_begin(spheres, share, parts));
+      return static_cast<std::size_t>(std::lower_bound(list.i.begin(), list.i.end(), first) - list.i.begin());
+    };
+    c.begin = at(t), c.end = at(t + 1);
+    return c;
   }
 
   /// The indices of the entries among [begin, end) whose sphere touches the wall (h > 0), in list
@@ -82,7 +96,7 @@ struct WallContacts {
   /// Each contact's force, the sphere's torque term ai n x Ft and the wall's torque kept; the springs back.
   [[gnu::always_inline]] void add(const ContactLanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
     const Vec3 ref = reference_point();
-    ContactResults& r = list.results;
+    WallResults& r = list.results;
     for (int m = 0; m < live; ++m) {
       const auto kk = static_cast<std::size_t>(k[m]);
       const int i = c.i.v[m];
@@ -96,24 +110,23 @@ struct WallContacts {
         if constexpr (Fx.friction) list.spring[kk] = lane(c.spring, m);
         continue;
       }
+      // A sphere is listed once per wall: its sums are its own; the wall's wait for finish().
+      s.F[i] += F;
+      if constexpr (Fx.rotation) s.T[i] -= ai * n.cross(lane(f.Ft, m));
       r.F[kk] = F;
-      if constexpr (Fx.rotation) r.T1[kk] = ai * n.cross(lane(f.Ft, m));
-      r.T2[kk] = (s.x[i] - ai * n - ref).cross(-F);
+      r.torque[kk] = (s.x[i] - ai * n - ref).cross(-F);
       if constexpr (Fx.friction) list.spring[kk] = lane(c.spring, m);
     }
   }
 
-  /// F_i += F, T_i -= ai n x Ft; the wall's load -= F with its torque; in list order.
+  /// The wall's load -= F with its torque, in list order.
   void finish() {
     if (direct) return;
-    const ContactResults& r = list.results;
+    const WallResults& r = list.results;
     for (std::size_t k = 0; k < list.size(); ++k) {
       if (!r.touched[k]) continue;
-      const auto i = static_cast<std::size_t>(list.i[k]);
-      s.F[i] += r.F[k];
-      if constexpr (Fx.rotation) s.T[i] -= r.T1[k];
       load.force -= r.F[k];
-      load.torque += r.T2[k];
+      load.torque += r.torque[k];
     }
   }
 

@@ -1,10 +1,13 @@
 #include "integrate/velocity_verlet.hpp"
 
+#include "core/parallel.hpp"
+
 namespace softpack {
 
 namespace {
 
-// Calls f(i) for every free sphere (not driven), or for the listed ones only.
+// Calls f(i) for every free sphere (not driven), or for the listed ones only; every sphere's
+// on the threads (core/parallel.hpp), block by block.
 template <class F>
 [[gnu::always_inline]] inline void for_free(const Particles& p, const Movers* movers, F&& f) {
   const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
@@ -15,9 +18,10 @@ template <class F>
     }
     return;
   }
-  const std::size_t n = p.size();
-  for (std::size_t i = 0; i < n; ++i)
-    if (!driven || !driven[i]) f(i);
+  parallel::for_each_share(p.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (!driven || !driven[i]) f(i);
+  });
 }
 
 }  // namespace
@@ -27,13 +31,14 @@ void half_kick(Particles& p, double dt, const Movers* movers) {
   Vec3* const v = p.v.data();
   const Vec3* const F = p.F.data();
   const double* const inv_m = p.inv_m.data();
-  for_free(p, movers, [&](std::size_t i) { v[i] += (half * inv_m[i]) * F[i]; });
-  if (p.rotates()) {
-    Vec3* const w = p.w.data();
-    const Vec3* const T = p.T.data();
-    const double* const inv_I = p.inv_I.data();
-    for_free(p, movers, [&](std::size_t i) { w[i] += (half * inv_I[i]) * T[i]; });
-  }
+  if (!p.rotates()) return for_free(p, movers, [&](std::size_t i) { v[i] += (half * inv_m[i]) * F[i]; });
+  Vec3* const w = p.w.data();
+  const Vec3* const T = p.T.data();
+  const double* const inv_I = p.inv_I.data();
+  for_free(p, movers, [&](std::size_t i) {
+    v[i] += (half * inv_m[i]) * F[i];
+    w[i] += (half * inv_I[i]) * T[i];
+  });
 }
 
 void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers) {
@@ -41,10 +46,28 @@ void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers
   const Vec3* const v = p.v.data();
   const Vec3* const x0 = neighbours.x_at_build().data();
   Neighbours::LargestTwo moved = movers ? movers->asleep_moved : Neighbours::LargestTwo{};
-  for_free(p, movers, [&](std::size_t i) {
-    x[i] += dt * v[i];
-    moved.add((x[i] - x0[i]).squaredNorm());
+  if (movers) {
+    for_free(p, movers, [&](std::size_t i) {
+      x[i] += dt * v[i];
+      moved.add((x[i] - x0[i]).squaredNorm());
+    });
+    neighbours.set_moved(moved);
+    return;
+  }
+  // Each share's two largest, then theirs: the same two values whatever the cut.
+  const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
+  const std::size_t n = p.size(), parts = static_cast<std::size_t>(parallel::threads());
+  std::vector<Neighbours::LargestTwo> of_share(parts);
+  parallel::for_each_block(parts, [&](std::size_t t) {
+    Neighbours::LargestTwo m;  // a local: the shares' records share a cache line
+    for (std::size_t i = parallel::share_begin(n, t, parts), end = parallel::share_begin(n, t + 1, parts); i < end; ++i) {
+      if (driven && driven[i]) continue;
+      x[i] += dt * v[i];
+      m.add((x[i] - x0[i]).squaredNorm());
+    }
+    of_share[t] = m;
   });
+  for (const Neighbours::LargestTwo& m : of_share) moved.add(m.first), moved.add(m.second);
   neighbours.set_moved(moved);
 }
 

@@ -27,24 +27,25 @@ struct ConstantArrays {
   ContactConstants<double> at(std::size_t k) const { return {kn[k], kt0[k], gamma0[k], gamma_t0[k], mu[k]}; }
 };
 
-/// What the force loop leaves for each contact of a list at its last evaluation
-/// (forces/contact_loop.hpp), to be summed into the bodies afterwards in list order, whatever the
-/// threads: scratch, written anew at every step.
-struct ContactResults {
+/// What the force loop leaves for each contact of a wall's list on threads (forces/wall_contacts.hpp),
+/// for the wall's load to be summed afterwards in list order: scratch, written anew at every step.
+struct WallResults {
   std::vector<std::uint8_t> touched;  ///< 1: evaluated and closed at this step
-  std::vector<Vec3> F;                ///< the force on body 1
-  std::vector<Vec3> T1;               ///< a1 n x Ft, subtracted from body 1's torque
-  std::vector<Vec3> T2;               ///< pairs: a2 n x Ft, subtracted from body 2's; walls: the wall's torque
-  void resize(std::size_t n) { touched.resize(n), F.resize(n), T1.resize(n), T2.resize(n); }
+  std::vector<Vec3> F;                ///< the force on the sphere
+  std::vector<Vec3> torque;           ///< the wall's torque
+  void resize(std::size_t n) { touched.resize(n), F.resize(n), torque.resize(n); }
 };
 
-/// The pairs of each sphere s, for the force loop's sums in list order (forces/pair_contacts.hpp):
-/// as body 1, the list's range [first_i[s], first_i[s + 1]) (it is sorted by i); as body 2,
-/// as_j[first_j[s] .. first_j[s + 1]), ascending. Made for one generation of the list.
-struct PairsBySphere {
-  std::vector<std::int32_t> first_i, first_j, as_j;
+/// A pair list cut for T threads (forces/pair_contacts.hpp): thread t evaluates the pairs whose
+/// sphere i is in its share of the spheres, [sphere[t], sphere[t + 1]) (core/parallel.hpp), list
+/// positions [first[t], first[t + 1]), and makes the sums of its spheres. Its `ghosts` are the
+/// pairs of lower shares whose sphere j is its own, ascending: it evaluates them again, before
+/// its own, for sphere j's sum. Made for one generation of the list, one count and one size.
+struct PairShares {
+  std::vector<std::size_t> sphere, first;
+  std::vector<std::vector<std::int32_t>> ghosts;
   std::uint64_t generation = ~std::uint64_t{0};
-  std::size_t spheres = 0;
+  std::size_t parts = 0, spheres = 0;
 };
 
 /// A pair found by a neighbour search.
@@ -66,10 +67,9 @@ struct PairList {
   /// sleeping spheres, are kept by the active set. A rebuild unmasks the list.
   bool masked = false;
   std::vector<std::int32_t> live;
-  ContactResults results;  ///< the force loop's scratch
-  PairsBySphere by_sphere;  ///< the force loop's index
-  /// Counts the replacements: the force loop's index of the pairs by sphere (forces/pair_contacts.hpp)
-  /// is rebuilt when it changes.
+  PairShares shares;  ///< the force loop's cut for threads
+  /// Counts the replacements: the force loop's cut for threads (forces/pair_contacts.hpp) is
+  /// made again when it changes.
   std::uint64_t generation = 0;
 
   std::size_t size() const { return i.size(); }
@@ -83,7 +83,7 @@ struct WallList {
   std::vector<std::int32_t> i;
   ConstantArrays k;
   std::vector<Vec3> spring;  ///< empty without friction
-  ContactResults results;    ///< the force loop's scratch
+  WallResults results;       ///< the force loop's scratch
 
   std::size_t size() const { return i.size(); }
   /// As PairList::replace, keyed by the sphere.

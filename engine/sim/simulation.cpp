@@ -1,5 +1,7 @@
 #include "sim/simulation.hpp"
 
+#include "core/parallel.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -131,13 +133,12 @@ void Simulation::rebuild_neighbours() {
 // the half-step velocities v(t + dt/2) of velocity Verlet.
 void Simulation::compute_forces(double spring_dt) {
   Particles& p = world_.p;
-  if (scene_.effects.gravity) {
-    const Vec3 g = *scene_.effects.gravity;
-    for (std::size_t i = 0; i < p.size(); ++i) p.F[i] = p.m[i] * g;
-  } else {
-    std::fill(p.F.begin(), p.F.end(), Vec3::Zero());
-  }
-  if (p.rotates()) std::fill(p.T.begin(), p.T.end(), Vec3::Zero());
+  const Vec3 g = scene_.effects.gravity.value_or(Vec3::Zero());
+  const bool gravity = scene_.effects.gravity.has_value(), rotates = p.rotates();
+  parallel::for_each_share(p.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) p.F[i] = gravity ? Vec3(p.m[i] * g) : Vec3::Zero();
+    if (rotates) std::fill(p.T.begin() + static_cast<std::ptrdiff_t>(begin), p.T.begin() + static_cast<std::ptrdiff_t>(end), Vec3::Zero());
+  });
   for (auto& l : world_.plane_loads) l = WallLoad{};
   for (auto& l : world_.shell_loads) l = WallLoad{};
   if (active_) active_->add_frozen(p);

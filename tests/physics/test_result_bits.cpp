@@ -63,9 +63,10 @@ TEST(ResultBits, ThreeRunsKeepTheDigestsOfTheirRelease) {
   }
 }
 
-// The threads (core/parallel.hpp) cut the contacts into blocks that depend on the list only and
-// sum in list order: the bits are the same for 1, 2, 3 and 8 threads -- the recorded ones, and
-// on a scene of three blocks or more those of one thread.
+// On threads (core/parallel.hpp) each sphere's sum is made by one thread in list order
+// (forces/pair_contacts.hpp): the bits are the same for 1, 2, 3 and 8 threads -- the recorded
+// ones, and on a scene large enough for every thread to have pairs, ghost pairs (the spheres are
+// in generation order: many) and wall contacts, those of one thread.
 TEST(ResultBits, TheSameBitsForAnyThreadCount) {
   const std::uint64_t recorded[] = {0x417f6f7259abc408ull, 0x7e08532cde4b04aeull, 0x600235d049d47709ull};
   const int before = parallel::threads();
@@ -79,7 +80,7 @@ TEST(ResultBits, TheSameBitsForAnyThreadCount) {
       many.drivers.clear();  // state() is taken after 40 steps, when the wall would still be moving
       Simulation big(many);
       big.run_steps(40);
-      ASSERT_GT(big.residuals().contacts, 2 * kBlock) << "the scene must span three blocks or more";
+      ASSERT_GT(big.residuals().contacts, 2 * kBlock) << "the scene must give every thread thousands of contacts";
       const std::uint64_t d = digest_of(big.state(), big.plane_loads(), big.shell_loads());
       if (threads == 1) one_thread[variant] = d;
       EXPECT_EQ(d, one_thread[variant]) << threads << " threads, variant " << variant << ": not the bits of one thread";
