@@ -1,12 +1,17 @@
 // softpack-bench-scene: the softpack side of the LAMMPS comparison. Runs the benchmark
 // packing (bench/support/confined_packing.hpp) for a number of steps and prints the loop time
-// and throughput, plus the parameters LAMMPS must be given to compute the same physics.
+// and throughput, plus the parameters LAMMPS must be given to compute the same physics; or, with
+// --lattice N, the scaling scene of about N spheres (lattice_ball there), and the memory the
+// simulation takes per sphere.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+
+#include <unistd.h>
 
 #include "contact/viscous_damping.hpp"
 #include "core/cpu_features.hpp"
@@ -15,6 +20,18 @@
 #include "state/state_digest.hpp"
 #include "support/confined_packing.hpp"
 
+namespace {
+
+// The process's resident memory [bytes] (/proc/self/statm), 0 where it cannot be read.
+double resident_bytes() {
+  std::ifstream in("/proc/self/statm");
+  double size = 0.0, resident = 0.0;
+  if (!(in >> size >> resident)) return 0.0;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace softpack;
   CLI::App app{"softpack-bench-scene: time softpack on the benchmark packing (make bench)"};
@@ -22,7 +39,14 @@ int main(int argc, char** argv) {
   long steps = 2000;
   bool frictionless = false, parameters_only = false, digest = false;
   int n = 5000;
-  app.add_option("--packing", packing_path, "x y z r file; made (about --spheres spheres) when missing")->required();
+  long lattice = 0;
+  std::string order = "spatial";
+  auto* packing_opt = app.add_option("--packing", packing_path, "x y z r file; made (about --spheres spheres) when missing");
+  app.add_option("--lattice", lattice, "instead of --packing: about N equal spheres on a lattice, 12 persistent contacts each")
+      ->check(CLI::Range(1L, 100000000L))
+      ->excludes(packing_opt);
+  app.add_option("--order", order, "the spheres' order in memory: spatial (Z-order, as the engine is meant to get them) or given")
+      ->check(CLI::IsMember({"spatial", "given"}));
   app.add_option("--spheres", n, "sphere count when the packing has to be made");
   app.add_option("--steps", steps, "velocity-Verlet steps to time");
   app.add_flag("--frictionless", frictionless, "Hertz + damping only (no friction, no rotation)");
@@ -33,10 +57,17 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"best", "avx512", "portable"}));
   CLI11_PARSE(app, argc, argv);
 
+  if (packing_path.empty() && lattice == 0) {
+    fmt::print(stderr, "softpack-bench-scene: give --packing FILE or --lattice N\n");
+    return 2;
+  }
   if (isa == "portable") cpu::limit_vector_isa(cpu::VectorIsa::portable);
   const bench::BenchParameters p;
-  const auto spheres = bench::confined_packing(n, p, packing_path);
-  const SceneDef scene = bench::bench_scene(spheres, p, !frictionless);
+  const bench::Lattice grid = lattice > 0 ? bench::lattice_cube(lattice, 0.5e-3, 1e-2) : bench::Lattice{};
+  const auto spheres = lattice > 0 ? grid.spheres : bench::confined_packing(n, p, packing_path);
+  const SceneDef scene =
+      lattice > 0 ? bench::lattice_scene(grid, p, order == "spatial") : bench::bench_scene(spheres, p, !frictionless, order == "spatial");
+  const double rss_before = resident_bytes();
   Simulation sim(scene);
   const Material& m = scene.materials[0];
   const double alpha = damping::zeta_from_restitution(p.restitution);  // LAMMPS calls the damping coefficient alpha
@@ -58,5 +89,10 @@ int main(int argc, char** argv) {
              static_cast<double>(spheres.size()) * static_cast<double>(steps) / seconds, meas.contacts, sim.pair_list().size(),
              sim.neighbour_rebuilds(), frictionless ? 0 : 1, cpu::name(cpu::vector_isa()));
   if (digest) fmt::print("state_digest={:016x}\n", state_digest(sim.state()));
+  if (lattice > 0)
+    fmt::print("ns_per_sphere_step={:.4g} contacts_per_sphere={:.3g} memory_per_sphere_B={:.0f}\n",
+               1e9 * seconds / (static_cast<double>(spheres.size()) * static_cast<double>(steps)),
+               2.0 * static_cast<double>(meas.contacts) / static_cast<double>(spheres.size()),
+               (resident_bytes() - rss_before) / static_cast<double>(spheres.size()));
   return 0;
 }

@@ -7,7 +7,9 @@
 #      (bench/lammps/run_confined.sh), frictional and frictionless, alternating, minimum time;
 #      softpack on 1 and 2 threads (SOFTPACK_THREADS), which must give the same state digest, on
 #      that packing and on one of 1600 spheres (a paper-profile sweep point's size);
-#   4. a summary of the targets with PASS/MISS (informational: exit 0 when everything ran).
+#   4. the cost per sphere-step and memory per sphere from 10^3 to 10^6 spheres (a lattice at rest);
+#   5. softpack-pack on 100 000 spheres;
+#   6. a summary of the targets with PASS/MISS (informational: exit 0 when everything ran).
 # Environment: BENCH_STEPS (default 2000) steps per whole run, BENCH_REPEATS (default 3) runs per
 # code and scene. The packings are cached in BUILD/bench/confined-{5000,1600}.txt (made once, ~40 s
 # and ~7 s); softpack runs their spheres in spatial order (engine/neighbor/spatial_order.hpp).
@@ -69,6 +71,7 @@ grep -v '^\*\*\*WARNING' "$tmp/engine.out" || true
 # 3. whole runs side by side; LAMMPS neighbour list: bin, skin = r_min (its best, README)
 declare -A sp lm            # [mode,rep] -> loop time (s)
 declare -A sp_info lm_info  # [mode] -> extra columns of the last run
+declare -A scale_mem        # [size] -> memory per sphere (B)
 for ((rep = 1; rep <= repeats; rep++)); do
   for mode in frictional frictionless threads; do
     flag=(); [ "$mode" = frictionless ] && flag=(--frictionless)
@@ -119,7 +122,24 @@ awk -v n="$n" -v s="$steps" -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_
   printf "  (last run: frictional softpack %s, LAMMPS %s; frictionless softpack %s, LAMMPS %s)\n", ia, ib, ic, id
 }'
 
-# 4. packing generator: a 100 000-sphere packing (Pi = 10), whole run of softpack-pack
+# 4. scaling: the cost per sphere-step from 10^3 to 10^6 spheres at equal contacts per sphere
+# (a lattice at rest, 12 persistent contacts inside: bench/support/confined_packing.hpp), one core,
+# the spheres in spatial order; at 10^5 also in the order given (shuffled), for the price of it
+echo
+echo "== scaling: lattice of N spheres at rest, one thread, about 2e7 sphere-steps each =="
+printf "%-9s %-8s %10s %18s %20s %20s\n" "spheres" "order" "steps" "ns/sphere-step" "contacts/sphere" "memory/sphere (B)"
+declare -A scale
+for size in 1000 10000 100000 1000000 100000-given; do
+  count="${size%-given}"; order=spatial; [ "$size" != "$count" ] && order=given
+  steps_n=$((20000000 / count)); [ "$steps_n" -lt 20 ] && steps_n=20
+  SOFTPACK_THREADS=1 run scale "$scene" --lattice "$count" --order "$order" --steps "$steps_n"
+  scale[$size]="$(field ns_per_sphere_step "$tmp/scale.out")"
+  scale_mem[$size]="$(field memory_per_sphere_B "$tmp/scale.out")"
+  printf "%-9s %-8s %10s %18s %20s %20s\n" "$(field spheres "$tmp/scale.out")" "$order" "$steps_n" "${scale[$size]}" \
+    "$(field contacts_per_sphere "$tmp/scale.out")" "${scale_mem[$size]}"
+done
+
+# 5. packing generator: a 100 000-sphere packing (Pi = 10), whole run of softpack-pack
 pack_start=$(date +%s.%N)
 run pack "$build/bin/softpack-pack" --config "$here/profiles/packing-100k.yaml" --seed 1 --out "$tmp/packing-100k.h5" --quiet
 pack_s=$(awk -v a="$pack_start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
@@ -128,7 +148,7 @@ echo
 echo "== packing generator: bench/profiles/packing-100k.yaml, seed 1 =="
 echo "softpack-pack: $pack_n spheres inserted in $pack_s s"
 
-# 5. summary
+# 6. summary
 det="$(/usr/bin/python3 - "$tmp/engine.json" <<'PY'
 import json, re, sys
 s, c, same, same_rebuilds = {}, {}, {}, {}
@@ -163,7 +183,9 @@ echo
 echo "== summary (targets are informational) =="
 awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
     -v q="$det_ratio" -v q1="$det1" -v q100="$det100" -v gb="$gb_ratio" -v same="$same_ratio" \
-    -v ps="$pack_s" -v pn="$pack_n" -v t1="$sp_t1" -v t2="$sp_t2" -v s1="$sp_s1" -v s2="$sp_s2" 'BEGIN {
+    -v ps="$pack_s" -v pn="$pack_n" -v t1="$sp_t1" -v t2="$sp_t2" -v s1="$sp_s1" -v s2="$sp_s2" \
+    -v k3="${scale[1000]}" -v k6="${scale[1000000]}" -v k5="${scale[100000]}" -v k5g="${scale[100000-given]}" \
+    -v m6="${scale_mem[1000000]}" 'BEGIN {
   f = "%-52s %8s %9s  %s\n"
   printf f, "measure", "value", "target", ""
   printf f, "LAMMPS time / softpack time, frictional", sprintf("%.2fx", b / a), ">= 2x", (b / a >= 2 ? "PASS" : "MISS")
@@ -174,6 +196,9 @@ awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
   printf f, "softpack 1 / 2 threads, 5000 spheres (same bits)", sprintf("%.2fx", t1 / t2), ">= 1.8x", (t1 / t2 >= 1.8 ? "PASS" : "MISS")
   printf f, "softpack 1 / 2 threads, 1600 spheres (same bits)", sprintf("%.2fx", s1 / s2), ">= 1.5x", (s1 / s2 >= 1.5 ? "PASS" : "MISS")
   printf f, "contact detection s/sphere, Pi=100 / Pi=1", sprintf("%.2fx", q), "<= 2x", (q <= 2 ? "PASS" : "MISS")
+  printf f, "cost per sphere-step, 10^6 / 10^3 spheres (lattice)", sprintf("%.2fx", k6 / k3), "<= 1.5x", (k6 / k3 <= 1.5 ? "PASS" : "MISS")
+  printf f, "  10^5 spheres: order given / spatial order", sprintf("%.2fx", k5g / k5), "-", ""
+  printf f, "  memory per sphere with its contacts, 10^6", sprintf("%.0f B", m6), "-", ""
   printf f, "softpack-pack, " pn " spheres (Pi = 10)", sprintf("%.1f s", ps), "< 60 s", (ps < 60 ? "PASS" : "MISS")
   printf "  (softpack %.4g / %.4g s, LAMMPS %.4g / %.4g s frictional / frictionless; detection %s / %s s per sphere;\n",
     a, c, b, d, q100, q1

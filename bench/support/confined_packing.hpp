@@ -35,8 +35,22 @@ std::vector<Sphere> read_spheres(const std::string& path);
 void write_spheres(const std::string& path, const std::vector<Sphere>& spheres);
 
 /// The scene softpack runs on these spheres: paper material, Hertz, and (when `friction`)
-/// Tsuji friction with rotation; Tsuji damping; the shell; the spheres in spatial order
-/// (neighbor/spatial_order.hpp).
-SceneDef bench_scene(const std::vector<Sphere>& spheres, const BenchParameters& p, bool friction);
+/// Tsuji friction with rotation; Tsuji damping; the shell of radius p.Rs; the spheres in spatial
+/// order (neighbor/spatial_order.hpp), or as given when `spatial` is false.
+SceneDef bench_scene(const std::vector<Sphere>& spheres, const BenchParameters& p, bool friction, bool spatial = true);
+
+/// The scaling scene: about n spheres of radius r on a face-centred cubic lattice filling a cube,
+/// neighbours overlapping by `overlap` r, between six planes that press each face's layer as
+/// much as its missing neighbours would (lattice_scene): twelve contacts inside, whose forces
+/// cancel, so that the packing stays at rest and its contacts persist. Shuffled with a fixed
+/// seed (a generator's order is no better). Made in seconds for a million.
+struct Lattice {
+  std::vector<Sphere> spheres;
+  double r = 0.0, overlap = 0.0, side = 0.0;  ///< the centres span [0, side] along each axis
+};
+Lattice lattice_cube(long n, double r, double overlap);
+/// bench_scene's physics on a lattice, with its six planes instead of the shell.
+SceneDef lattice_scene(const Lattice& lattice, const BenchParameters& p, bool spatial);
+
 
 }  // namespace softpack::bench
