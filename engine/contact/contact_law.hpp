@@ -31,7 +31,22 @@ struct ContactGeometry {
   /// The frame of the spring update and the contact-point velocity in it: n and vc with the
   /// `standard` history update, their half-step values with `synchronized` (friction only).
   V3<T> n_frame, vc_frame;
+  /// The two bodies' states from the per-body pass, for a law that declares one (a wall's: 0).
+  T body1, body2;
 };
+
+/// A normal law whose force reads the state of each body, accumulated over the body's closed
+/// contacts by a pass before the forces (contact/hertz_normal.hpp lists what it declares; the
+/// pattern of LAMMPS's EAM and MDR models).
+template <class NormalLaw>
+concept BodyStateLaw = NormalLaw::kBodyState;
+
+/// Fn of the normal law (Eq. 3 for Hertz), with the bodies' states when it reads them.
+template <class NormalLaw, class T>
+[[gnu::always_inline]] inline T normal_force(const T& kn, const ContactGeometry<T>& g, const T& sqrt_h) {
+  if constexpr (BodyStateLaw<NormalLaw>) return NormalLaw::force(kn, g.h, sqrt_h, g.body1, g.body2);
+  else return NormalLaw::force(kn, g.h, sqrt_h);
+}
 
 /// Constants of one contact, fixed while it lasts (contact/coefficients.hpp makes them).
 template <class T>
@@ -57,7 +72,7 @@ template <class NormalLaw, Effects Fx, class T>
                                                             double dt) {
   if constexpr (Fx.friction) tsuji::advance_spring(xi, g.n_frame, g.vc_frame, g.n, dt);
   const T sqrt_h = simd::sqrt(g.h);
-  const T Fn = NormalLaw::force(k.kn, g.h, sqrt_h);  // Eq. 3
+  const T Fn = normal_force<NormalLaw>(k.kn, g, sqrt_h);  // Eq. 3
   const T vn = dot(g.vc, g.n);
   T F_normal = Fn;
   T g_h{};

@@ -14,6 +14,15 @@
 //   damping_scale(sqrt_h)      g(h) of the normal damping gamma_n = gamma0 g(h)
 //   energy(kn, h)              elastic energy of the contact [J], the integral of Fn dh
 //   damping_coefficient(e)     the zeta of gamma0 = zeta sqrt(m12 kn) that gives restitution e
+//
+// A law whose force on one contact depends on all of a body's contacts declares a body state
+// (contact/contact_law.hpp BodyStateLaw), which a pass before the forces accumulates over each
+// sphere's closed contacts, in list order (forces/compile_loops.hpp):
+//   kBodyState = true
+//   body_term(h)                  what one closed contact adds to the state of each of its spheres
+//   force(kn, h, sqrt_h, s1, s2)  Fn with the states of body 1 and body 2 (a wall's: 0)
+//   energy(kn, h, s1, s2)         the elastic energy at those states
+// (tests/physics/test_normal_law_registry.cpp registers one.)
 #pragma once
 #include <cmath>
 

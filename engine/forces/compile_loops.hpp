@@ -12,6 +12,7 @@
 #pragma once
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include "core/cpu_features.hpp"
 #include "forces/contact_loop.hpp"
@@ -37,30 +38,53 @@ void block_portable(Contacts& c, double dt, std::int32_t* closed, std::size_t be
   contact_block<Law, Fx>(simd::Portable{}, c, dt, closed, begin, end);
 }
 
-/// One block of any kind of contact, on the instruction set chosen at run time.
-template <class Law, Effects Fx>
+// The per-body pass's block (forces/contact_loop.hpp body_block), likewise.
+template <class Law, class Contacts>
+[[gnu::target("arch=x86-64-v4")]] void body_avx512(Contacts& c, std::int32_t* closed, std::size_t begin, std::size_t end) {
+  body_block<Law>(simd::Avx512{}, c, closed, begin, end);
+}
+
+template <class Law, class Contacts>
+void body_portable(Contacts& c, std::int32_t* closed, std::size_t begin, std::size_t end) {
+  body_block<Law>(simd::Portable{}, c, closed, begin, end);
+}
+
+/// One block of any kind of contact, on the instruction set chosen at run time: of the force
+/// pass, or with `body` of the per-body pass.
+template <class Law, Effects Fx, bool body = false>
 struct BlockOf {
   bool avx512 = build::kAvx512Loops && cpu::vector_isa() == cpu::VectorIsa::avx512;
+  double dt = 0.0;
 
   template <class Contacts>
   void operator()(Contacts& c, std::int32_t* closed, std::size_t begin, std::size_t end) const {
-    if constexpr (build::kAvx512Loops)
-      if (avx512) return block_avx512<Law, Fx>(c, dt, closed, begin, end);
-    block_portable<Law, Fx>(c, dt, closed, begin, end);
+    if constexpr (body) {
+      if constexpr (build::kAvx512Loops)
+        if (avx512) return body_avx512<Law>(c, closed, begin, end);
+      body_portable<Law>(c, closed, begin, end);
+    } else {
+      if constexpr (build::kAvx512Loops)
+        if (avx512) return block_avx512<Law, Fx>(c, dt, closed, begin, end);
+      block_portable<Law, Fx>(c, dt, closed, begin, end);
+    }
   }
-  double dt = 0.0;
 };
 
 /// Every contact of a world: sphere pairs, then each plane, then each shell. On threads (one
 /// parallel region, core/parallel.hpp run_phases): each thread's ghost pairs, then its own pairs
-/// and its spheres' wall contacts; afterwards the walls' loads, in list order.
+/// and its spheres' wall contacts; afterwards the walls' loads, in list order. A law with a body
+/// state (contact/contact_law.hpp BodyStateLaw) has the per-body pass run first, in the same
+/// order: each sphere's state is summed as its force is.
 template <class Law, Effects Fx>
 void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) {
   Particles& p = world.p;
+  constexpr bool kBody = BodyStateLaw<Law>;
+  if constexpr (kBody) lists.body_state.resize(p.size());
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), p.F.data(),
-                       Fx.rotation ? p.T.data() : nullptr};
+                       Fx.rotation ? p.T.data() : nullptr, kBody ? lists.body_state.data() : nullptr};
   BlockOf<Law, Fx> block;
   block.dt = dt;
+  const BlockOf<Law, Fx, true> body_block;
   PairContacts<Fx> pairs{lists.pairs, s, p.size()};
   std::vector<WallContacts<Fx, PlaneWall>> planes;
   std::vector<WallContacts<Fx, SphericalShell>> shells;
@@ -71,35 +95,51 @@ void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std:
   for (auto& w : shells) w.prepare();
   if (parallel::threads() == 1) {
     closed.resize(kScratch);
-    run_blocks(pairs, closed.data(), block);
-    for (auto& w : planes) run_blocks(w, closed.data(), block);
-    for (auto& w : shells) run_blocks(w, closed.data(), block);
+    const auto pass = [&](const auto& b) {
+      run_blocks(pairs, closed.data(), b);
+      for (auto& w : planes) run_blocks(w, closed.data(), b);
+      for (auto& w : shells) run_blocks(w, closed.data(), b);
+    };
+    if constexpr (kBody) std::fill(lists.body_state.begin(), lists.body_state.end(), 0.0), pass(body_block);
+    pass(block);
     return;
   }
   const auto parts = static_cast<std::size_t>(parallel::threads());
   closed.resize(parts * kScratch);
-  if (pairs.direct) run_blocks(pairs, closed.data(), block);  // a masked list: on this thread
-  const auto walls = [&](auto& list, std::size_t t) {
-    for (auto& w : list) {
+  const auto scratch = [&](std::size_t t) { return closed.data() + t * kScratch; };
+  // A masked list (an active set: never with a body state) runs on this thread.
+  if (pairs.direct) run_blocks(pairs, closed.data(), block);
+  const auto ghosts = [&](std::size_t t, const auto& b) {
+    if (pairs.direct) return;
+    PairContacts<Fx> c = pairs.part(0, t, parts);
+    run_blocks(c, scratch(t), b);
+  };
+  const auto own = [&](std::size_t t, const auto& b) {
+    if (!pairs.direct) {
+      PairContacts<Fx> c = pairs.part(1, t, parts);
+      run_blocks(c, scratch(t), b);
+    }
+    for (auto& w : planes) {
       auto c = w.part(0, t, parts);
-      run_blocks(c, closed.data() + t * kScratch, block);
+      run_blocks(c, scratch(t), b);
+    }
+    for (auto& w : shells) {
+      auto c = w.part(0, t, parts);
+      run_blocks(c, scratch(t), b);
     }
   };
-  parallel::run_phases(
-      parts,
-      [&](std::size_t t) {
-        if (pairs.direct) return;
-        PairContacts<Fx> c = pairs.part(0, t, parts);
-        run_blocks(c, closed.data() + t * kScratch, block);
-      },
-      [&](std::size_t t) {
-        if (!pairs.direct) {
-          PairContacts<Fx> c = pairs.part(1, t, parts);
-          run_blocks(c, closed.data() + t * kScratch, block);
-        }
-        walls(planes, t);
-        walls(shells, t);
-      });
+  if constexpr (kBody) {
+    parallel::run_phases(
+        parts,
+        [&](std::size_t t) {
+          std::fill(lists.body_state.begin() + static_cast<std::ptrdiff_t>(parallel::share_begin(p.size(), t, parts)),
+                    lists.body_state.begin() + static_cast<std::ptrdiff_t>(parallel::share_begin(p.size(), t + 1, parts)), 0.0);
+          ghosts(t, body_block);
+        },
+        [&](std::size_t t) { own(t, body_block); }, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); });
+  } else {
+    parallel::run_phases(parts, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); });
+  }
   for (auto& w : planes) w.finish();
   for (auto& w : shells) w.finish();
 }
@@ -109,6 +149,7 @@ void masked_pairs(World& world, PairList& list, const std::uint8_t* mask, double
                   std::vector<std::int32_t>& closed) {
   Particles& p = world.p;
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), F, Fx.rotation ? T : nullptr};
+  if constexpr (BodyStateLaw<Law>) throw std::logic_error("an active set with a law that has a body state");  // refused on load
   MaskedPairContacts<Fx> pairs{{list, s, p.size()}, mask, sign};
   BlockOf<Law, Fx> block;
   contact_loop(pairs, closed, block);
@@ -133,8 +174,15 @@ NormalLaw make_normal_law() {
   NormalLaw n;
   n.name = Law::name;
   n.stiffness = [](double R12, double D) { return Law::stiffness(R12, D); };
-  n.force = [](double kn, double h) { return Law::force(kn, h, std::sqrt(h)); };
-  n.energy = [](double kn, double h) { return Law::energy(kn, h); };
+  n.force = [](double kn, double h, [[maybe_unused]] double s1, [[maybe_unused]] double s2) {
+    if constexpr (BodyStateLaw<Law>) return Law::force(kn, h, std::sqrt(h), s1, s2);
+    else return Law::force(kn, h, std::sqrt(h));
+  };
+  n.energy = [](double kn, double h, [[maybe_unused]] double s1, [[maybe_unused]] double s2) {
+    if constexpr (BodyStateLaw<Law>) return Law::energy(kn, h, s1, s2);
+    else return Law::energy(kn, h);
+  };
+  n.body_state = BodyStateLaw<Law>;
   n.damping_coefficient = [](double e) { return Law::damping_coefficient(e); };
   n.loops = [](Effects fx) {
     return with_effects(fx, []<Effects Fx>() -> std::unique_ptr<ForceLoops> { return std::make_unique<loops::LoopsOf<Law, Fx>>(); });

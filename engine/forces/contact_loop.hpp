@@ -50,9 +50,23 @@ template <class NormalLaw, Effects Fx, class Isa, class Contacts>
   for (std::size_t m = 0; m < touching; m += simd::kLanes) {
     const simd::Index k = simd::load(closed + m);
     ContactLanes c = contacts.gather(isa, k, dt);
+    if constexpr (BodyStateLaw<NormalLaw>) contacts.gather_body(isa, c);
     const ContactForce<simd::Wide> f = contact_force<NormalLaw, Fx>(c.geometry, c.constants, c.spring, dt);
     contacts.add(c, f, closed + m, static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
   }
+}
+
+/// The per-body pass over positions [begin, end) of `contacts`, for a law with a body state
+/// (contact/contact_law.hpp BodyStateLaw): select, then each closed contact's Law::body_term
+/// added to its spheres' states (add_body_terms). Its select() does what the force pass's will
+/// do again: the same springs cleared, the same flags.
+template <class NormalLaw, class Isa, class Contacts>
+[[gnu::always_inline]] inline void body_block(Isa isa, Contacts& contacts, std::int32_t* closed, std::size_t begin, std::size_t end) {
+  const std::size_t touching = contacts.select(isa, closed, begin, end);
+  if (touching == 0) return;
+  std::fill(closed + touching, closed + touching + simd::kLanes, closed[touching - 1]);
+  for (std::size_t m = 0; m < touching; m += simd::kLanes)
+    contacts.template add_body_terms<NormalLaw>(isa, simd::load(closed + m), static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
 }
 
 /// What the blocks of one thread need: kBlock closed indices and a group of lanes.

@@ -19,10 +19,13 @@ struct ClosedContact {
   double kn = 0.0, kt0 = 0.0;
   const Vec3* spring = nullptr;  ///< the tangential spring (null without friction)
   const SoftContactConstants* soft = nullptr;  ///< a soft-particle's contact: its law's constants
+  double body1 = 0.0, body2 = 0.0;  ///< the bodies' states at the last force evaluation (a law with one)
 
   /// The normal law's force [N] and elastic energy [J].
-  double Fn(const NormalLaw& law) const { return soft ? soft_Fn(*soft, h) : law.force(kn, h); }
-  double normal_energy(const NormalLaw& law) const { return soft ? soft_contact_energy(*soft, h, nullptr) : law.energy(kn, h); }
+  double Fn(const NormalLaw& law) const { return soft ? soft_Fn(*soft, h) : law.force(kn, h, body1, body2); }
+  double normal_energy(const NormalLaw& law) const {
+    return soft ? soft_contact_energy(*soft, h, nullptr) : law.energy(kn, h, body1, body2);
+  }
   /// The tangential stiffness kt [N/m] (Eq. 5; Eq. 8 for a soft-particle).
   double kt() const { return soft ? soft_kt(*soft, h) : kt0 * std::sqrt(h); }
   /// The spring's elastic energy, 1/2 kt |xi|^2 [J] (0 without friction).
@@ -34,11 +37,14 @@ template <class F>
 void for_each_closed_contact(const World& world, const ContactLists& lists, bool friction, F&& f) {
   const Particles& p = world.p;
   const PairList& pairs = lists.pairs;
+  const auto body = [&](int i) { return lists.body_state.empty() ? 0.0 : lists.body_state[static_cast<std::size_t>(i)]; };
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const int i = pairs.i[k], j = pairs.j[k];
     const double h = pairs.r_sum[k] - (p.x[i] - p.x[j]).norm();
     if (!(h > 0.0)) continue;
-    f(ClosedContact{ClosedContact::Kind::pair, i, j, -1, h, pairs.k.kn[k], pairs.k.kt0[k], friction ? &pairs.spring[k] : nullptr});
+    ClosedContact c{ClosedContact::Kind::pair, i, j, -1, h, pairs.k.kn[k], pairs.k.kt0[k], friction ? &pairs.spring[k] : nullptr};
+    c.body1 = body(i), c.body2 = body(j);
+    f(std::as_const(c));
   }
   const auto walls = [&](const auto& shapes, const std::vector<WallList>& wall_lists, ClosedContact::Kind kind) {
     for (std::size_t w = 0; w < shapes.size(); ++w) {
@@ -47,7 +53,9 @@ void for_each_closed_contact(const World& world, const ContactLists& lists, bool
         const int i = l.i[k];
         const double h = shapes[w].overlap(p.x[i], p.r[i]);
         if (!(h > 0.0)) continue;
-        f(ClosedContact{kind, i, -1, static_cast<int>(w), h, l.k.kn[k], l.k.kt0[k], friction ? &l.spring[k] : nullptr});
+        ClosedContact c{kind, i, -1, static_cast<int>(w), h, l.k.kn[k], l.k.kt0[k], friction ? &l.spring[k] : nullptr};
+        c.body1 = body(i);
+        f(std::as_const(c));
       }
     }
   };

@@ -34,8 +34,11 @@ class ForceLoops {
 struct NormalLaw {
   std::string name;  ///< the value of effects.normal
   double (*stiffness)(double R12, double D) = nullptr;  ///< the per-contact constant kn
-  double (*force)(double kn, double h) = nullptr;       ///< Fn [N]
-  double (*energy)(double kn, double h) = nullptr;      ///< elastic energy [J]
+  /// Fn [N] and the elastic energy [J] of a contact whose bodies have states s1, s2 (read
+  /// only by a law with a body state: contact/hertz_normal.hpp).
+  double (*force)(double kn, double h, double s1, double s2) = nullptr;
+  double (*energy)(double kn, double h, double s1, double s2) = nullptr;
+  bool body_state = false;  ///< the law declares a body state (contact/contact_law.hpp BodyStateLaw)
   double (*damping_coefficient)(double restitution) = nullptr;
   std::unique_ptr<ForceLoops> (*loops)(Effects fx) = nullptr;
 };

@@ -34,6 +34,7 @@ struct SphereArrays {
   const double* r = nullptr;
   Vec3* F = nullptr;
   Vec3* T = nullptr;
+  double* body = nullptr;  ///< the per-body pass's state (a law with one: contact/contact_law.hpp BodyStateLaw)
 };
 
 template <Effects Fx>
@@ -184,6 +185,27 @@ struct PairContacts {
       }
     }
     return c;
+  }
+
+  /// The per-body pass: Law::body_term(h) of pairs k added to the states of spheres i and j, for
+  /// the first `live` lanes in order, as add() adds forces (the same spheres, the same order).
+  template <class Law, class Isa>
+  [[gnu::always_inline]] void add_body_terms(Isa isa, simd::Index k, int live) {
+    using simd::Wide;
+    const simd::Index i = simd::gather(isa, list.i.data(), k), j = simd::gather(isa, list.j.data(), k);
+    const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
+    const Wide term = Law::body_term(simd::gather(isa, list.r_sum.data(), k) - simd::sqrt(dot(d, d)));
+    for (int m = 0; m < live; ++m) {
+      if (!ghost) s.body[i.v[m]] += lane(term, m);
+      if (static_cast<std::size_t>(j.v[m]) < j_end) s.body[j.v[m]] += lane(term, m);
+    }
+  }
+
+  /// The bodies' states of the lanes' pairs, for a law that reads them.
+  template <class Isa>
+  [[gnu::always_inline]] void gather_body(Isa isa, ContactLanes& c) const {
+    c.geometry.body1 = simd::gather(isa, s.body, c.i);
+    c.geometry.body2 = simd::gather(isa, s.body, c.j);
   }
 
   /// F_i += F, F_j -= F, T_i -= ai n x Ft, T_j -= aj n x Ft for the first `live` lanes in order

@@ -93,6 +93,24 @@ struct WallContacts {
     return c;
   }
 
+  /// The per-body pass: Law::body_term(h) of entries k added to their spheres' states.
+  template <class Law, class Isa>
+  [[gnu::always_inline]] void add_body_terms(Isa isa, simd::Index k, int live) {
+    const simd::Index i = simd::gather(isa, list.i.data(), k);
+    V3<W> n, u;
+    W h, ai;
+    geometry(gather_vec3(isa, s.x, i), simd::gather(isa, s.r, i), n, h, ai, u);
+    const W term = Law::body_term(h);
+    for (int m = 0; m < live; ++m) s.body[i.v[m]] += lane(term, m);
+  }
+
+  /// The sphere's state of the lanes' entries (the wall has none: 0), for a law that reads them.
+  template <class Isa>
+  [[gnu::always_inline]] void gather_body(Isa isa, ContactLanes& c) const {
+    c.geometry.body1 = simd::gather(isa, s.body, c.i);
+    c.geometry.body2 = W(0.0);
+  }
+
   /// Each contact's force, the sphere's torque term ai n x Ft and the wall's torque kept; the springs back.
   [[gnu::always_inline]] void add(const ContactLanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
     const Vec3 ref = reference_point();

@@ -107,6 +107,9 @@ struct ContactLists {
   PairList pairs;
   std::vector<WallList> planes, shells;
   std::optional<SoftLists> soft;
+  /// Each sphere's state from the per-body pass of the last force evaluation, when the normal
+  /// law declares one (contact/contact_law.hpp BodyStateLaw); empty otherwise.
+  std::vector<double> body_state;
 };
 
 }  // namespace softpack

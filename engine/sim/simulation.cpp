@@ -103,6 +103,10 @@ void Simulation::set_active_set(const std::optional<ActiveSetDef>& def) {
   if (active_) active_->wake_all(neighbours_.lists());
   active_.reset();
   if (!def) return;
+  if (forces_.active() && forces_.law().body_state)
+    throw InputError(fmt::format("active_set: not available with the normal law '{}', whose force reads every contact of a body "
+                                 "(a sleeping body's frozen forces would not follow its awake neighbours); drop one of them",
+                                 forces_.law().name));
   validate_active_set(*def, "active_set");
   if (scene_.effects.soft_particles)
     throw InputError("active_set: not available with soft-particle contacts (effects.soft_particles); drop one of them");

@@ -30,7 +30,7 @@ struct Lane {
 Lane random_lane(testing::Random& rng, int m) {
   Lane l;
   const Vec3 n = unit(rng), n_frame = (n + 1e-3 * unit(rng)).normalized();
-  l.g = {v3(n), rng.uniform(1e-7, 1e-4), v3(rng.in_box(0.05)), v3(n_frame), v3(rng.in_box(0.05))};
+  l.g = {v3(n), rng.uniform(1e-7, 1e-4), v3(rng.in_box(0.05)), v3(n_frame), v3(rng.in_box(0.05)), 0.0, 0.0};
   l.k = {rng.uniform(1e5, 2e5), rng.uniform(1e5, 2e5), rng.uniform(1e-3, 1e-2), rng.uniform(1e-3, 1e-2), rng.uniform(0.1, 0.5)};
   Vec3 t = rng.in_box(1.0);
   t -= t.dot(n) * n;
