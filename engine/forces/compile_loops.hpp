@@ -86,8 +86,13 @@ void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std:
   block.dt = dt;
   const BlockOf<Law, Fx, true> body_block;
   PairContacts<Fx> pairs{lists.pairs, s, p.size()};
-  std::vector<WallContacts<Fx, PlaneWall>> planes;
-  std::vector<WallContacts<Fx, SphericalShell>> shells;
+  // Kept from step to step (no allocation per step); the references, not the thread_local
+  // names, are what the threads' phases see.
+  thread_local std::vector<WallContacts<Fx, PlaneWall>> kept_planes;
+  thread_local std::vector<WallContacts<Fx, SphericalShell>> kept_shells;
+  auto& planes = kept_planes;
+  auto& shells = kept_shells;
+  planes.clear(), shells.clear();
   for (std::size_t k = 0; k < world.planes.size(); ++k) planes.push_back({lists.planes[k], world.planes[k], s, world.plane_loads[k], p.size()});
   for (std::size_t k = 0; k < world.shells.size(); ++k) shells.push_back({lists.shells[k], world.shells[k], s, world.shell_loads[k], p.size()});
   pairs.prepare();

@@ -46,7 +46,7 @@ void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers
   const Vec3* const v = p.v.data();
   const Vec3* const x0 = neighbours.x_at_build().data();
   Neighbours::LargestTwo moved = movers ? movers->asleep_moved : Neighbours::LargestTwo{};
-  if (movers) {
+  if (movers || parallel::threads() == 1) {
     for_free(p, movers, [&](std::size_t i) {
       x[i] += dt * v[i];
       moved.add((x[i] - x0[i]).squaredNorm());
