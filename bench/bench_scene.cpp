@@ -1,7 +1,7 @@
 // softpack-bench-scene: the softpack side of the LAMMPS comparison. Runs the benchmark
 // packing (bench/support/confined_packing.hpp) for a number of steps and prints the loop time
 // and throughput, plus the parameters LAMMPS must be given to compute the same physics; or, with
-// --lattice N, the scaling scene of about N spheres (lattice_ball there), and the memory the
+// --lattice N, the scaling scene of about N spheres (lattice_cube there), and the memory the
 // simulation takes per sphere.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
   const bench::Lattice grid = lattice > 0 ? bench::lattice_cube(lattice, 0.5e-3, 1e-2) : bench::Lattice{};
   const auto spheres = lattice > 0 ? grid.spheres : bench::confined_packing(n, p, packing_path);
   const SceneDef scene =
-      lattice > 0 ? bench::lattice_scene(grid, p, order == "spatial") : bench::bench_scene(spheres, p, !frictionless, order == "spatial");
+      lattice > 0 ? bench::lattice_scene(grid, p, !frictionless, order == "spatial") : bench::bench_scene(spheres, p, !frictionless, order == "spatial");
   const double rss_before = resident_bytes();
   Simulation sim(scene);
   const Material& m = scene.materials[0];

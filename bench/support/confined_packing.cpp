@@ -100,8 +100,8 @@ Lattice lattice_cube(long n, double r, double overlap) {
   return out;
 }
 
-SceneDef lattice_scene(const Lattice& lattice, const BenchParameters& p, bool spatial) {
-  SceneDef s = bench_scene(lattice.spheres, p, true, spatial);
+SceneDef lattice_scene(const Lattice& lattice, const BenchParameters& p, bool friction, bool spatial) {
+  SceneDef s = bench_scene(lattice.spheres, p, friction, spatial);
   s.shells.clear();
   // A face sphere misses four neighbours, whose normal forces would sum to 4 cos 45 deg = 2^(3/2)
   // times one along the face's normal; the plane's contact (R12 = r, a pair's r/2) gives that at

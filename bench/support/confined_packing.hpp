@@ -50,7 +50,6 @@ struct Lattice {
 };
 Lattice lattice_cube(long n, double r, double overlap);
 /// bench_scene's physics on a lattice, with its six planes instead of the shell.
-SceneDef lattice_scene(const Lattice& lattice, const BenchParameters& p, bool spatial);
-
+SceneDef lattice_scene(const Lattice& lattice, const BenchParameters& p, bool friction, bool spatial);
 
 }  // namespace softpack::bench

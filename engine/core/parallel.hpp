@@ -9,7 +9,6 @@
 // The count: set_threads(), else the environment's SOFTPACK_THREADS, else 1. A build without
 // OpenMP runs everything on the calling thread.
 #pragma once
-#include <algorithm>
 #include <cstddef>
 
 #ifdef _OPENMP

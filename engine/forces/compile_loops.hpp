@@ -84,7 +84,7 @@ void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std:
                        Fx.rotation ? p.T.data() : nullptr, kBody ? lists.body_state.data() : nullptr};
   BlockOf<Law, Fx> block;
   block.dt = dt;
-  const BlockOf<Law, Fx, true> body_block;
+  const BlockOf<Law, Fx, true> body_pass;
   PairContacts<Fx> pairs{lists.pairs, s, p.size()};
   // Kept from step to step (no allocation per step); the references, not the thread_local
   // names, are what the threads' phases see.
@@ -105,7 +105,7 @@ void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std:
       for (auto& w : planes) run_blocks(w, closed.data(), b);
       for (auto& w : shells) run_blocks(w, closed.data(), b);
     };
-    if constexpr (kBody) std::fill(lists.body_state.begin(), lists.body_state.end(), 0.0), pass(body_block);
+    if constexpr (kBody) std::fill(lists.body_state.begin(), lists.body_state.end(), 0.0), pass(body_pass);
     pass(block);
     return;
   }
@@ -139,9 +139,9 @@ void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std:
         [&](std::size_t t) {
           std::fill(lists.body_state.begin() + static_cast<std::ptrdiff_t>(parallel::share_begin(p.size(), t, parts)),
                     lists.body_state.begin() + static_cast<std::ptrdiff_t>(parallel::share_begin(p.size(), t + 1, parts)), 0.0);
-          ghosts(t, body_block);
+          ghosts(t, body_pass);
         },
-        [&](std::size_t t) { own(t, body_block); }, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); });
+        [&](std::size_t t) { own(t, body_pass); }, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); });
   } else {
     parallel::run_phases(parts, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); });
   }

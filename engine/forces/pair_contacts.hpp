@@ -261,7 +261,7 @@ struct MaskedPairContacts : PairContacts<Fx> {
   const std::uint8_t* mask = nullptr;
   double sign = 1.0;
 
-  void prepare() { this->begin = 0, this->end = this->list.size(), this->direct = true; }
+  void prepare() { this->begin = 0, this->end = this->list.size(); }
   void finish() {}
 
   template <class Isa>

@@ -6,22 +6,27 @@ namespace softpack {
 
 namespace {
 
-// Calls f(i) for every free sphere (not driven), or for the listed ones only; every sphere's
-// on the threads (core/parallel.hpp), block by block.
+// Calls f(i) for the free spheres (not driven) among [begin, end).
+template <class F>
+[[gnu::always_inline]] inline void for_free_in(const Particles& p, std::size_t begin, std::size_t end, F&& f) {
+  const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
+  for (std::size_t i = begin; i < end; ++i)
+    if (!driven || !driven[i]) f(i);
+}
+
+// Calls f(i) for every free sphere, on the threads by shares (core/parallel.hpp), or for the
+// listed ones only.
 template <class F>
 [[gnu::always_inline]] inline void for_free(const Particles& p, const Movers* movers, F&& f) {
-  const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
   if (movers) {
+    const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
     for (const std::int32_t k : *movers->awake) {
       const auto i = static_cast<std::size_t>(k);
       if (!driven || !driven[i]) f(i);
     }
     return;
   }
-  parallel::for_each_share(p.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      if (!driven || !driven[i]) f(i);
-  });
+  parallel::for_each_share(p.size(), [&](std::size_t begin, std::size_t end) { for_free_in(p, begin, end, f); });
 }
 
 }  // namespace
@@ -55,16 +60,14 @@ void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers
     return;
   }
   // Each share's two largest, then theirs: the same two values whatever the cut.
-  const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
   const std::size_t n = p.size(), parts = static_cast<std::size_t>(parallel::threads());
   std::vector<Neighbours::LargestTwo> of_share(parts);
   parallel::for_each_block(parts, [&](std::size_t t) {
     Neighbours::LargestTwo m;  // a local: the shares' records share a cache line
-    for (std::size_t i = parallel::share_begin(n, t, parts), end = parallel::share_begin(n, t + 1, parts); i < end; ++i) {
-      if (driven && driven[i]) continue;
+    for_free_in(p, parallel::share_begin(n, t, parts), parallel::share_begin(n, t + 1, parts), [&](std::size_t i) {
       x[i] += dt * v[i];
       m.add((x[i] - x0[i]).squaredNorm());
-    }
+    });
     of_share[t] = m;
   });
   for (const Neighbours::LargestTwo& m : of_share) moved.add(m.first), moved.add(m.second);

@@ -1,7 +1,5 @@
 #include "sim/simulation.hpp"
 
-#include "core/parallel.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "forces/contact_walk.hpp"
 #include "integrate/velocity_verlet.hpp"
 #include "scene/validate.hpp"
