@@ -1,5 +1,5 @@
 // Hertz normal contact law, paper Eq. 3-4: the normal law the engine runs (`effects.normal:
-// hertz`, registered in forces/normal_laws.cpp).
+// hertz`, registered in forces/contact_models.cpp as contact/tsuji_model.hpp TsujiModel<HertzNormal>).
 //
 //   Fn = sqrt(R12) h^(3/2) / D,   R12 = R1 R2 / (R1 + R2),   D from Eq. 4 (core/material.hpp)
 //
@@ -16,7 +16,7 @@
 //   damping_coefficient(e)     the zeta of gamma0 = zeta sqrt(m12 kn) that gives restitution e
 //
 // A law whose force on one contact depends on all of a body's contacts declares a body state
-// (contact/contact_law.hpp BodyStateLaw), which a pass before the forces accumulates over each
+// (contact/contact_model.hpp BodyStateModel), which a pass before the forces accumulates over each
 // sphere's closed contacts, in list order (forces/compile_loops.hpp):
 //   kBodyState = true
 //   body_term(h)                  what one closed contact adds to the state of each of its spheres

@@ -24,7 +24,8 @@
 // γt = ratio_t 2 ζ sqrt(mt kt), with ζ = -ln e / sqrt(π² + ln² e) from the scene's restitution e.
 //
 // The laws hold on the Δn range they were measured on; beyond it they are evaluated as written
-// and the contact is counted (SoftContactStats) or, with `beyond_range: stop`, stops the run.
+// and the contact is counted (forces/contact_models.hpp RangeStats) or, with `beyond_range: stop`,
+// stops the run.
 #pragma once
 #include <cmath>
 #include <limits>
@@ -32,7 +33,8 @@
 #include <string>
 #include <vector>
 
-#include "contact/contact_law.hpp"
+#include "contact/contact_model.hpp"
+#include "contact/tsuji_tangential.hpp"
 #include "core/types.hpp"
 
 namespace softpack {
@@ -65,8 +67,11 @@ struct SoftSceneLaw {
   double mu_at(double dn) const;
 };
 
+/// ζ of the linear spring's viscous damping that gives restitution e (0 < e <= 1).
+double linear_damping_ratio(double e);
+
 /// How a soft-particle meets a solid sphere (no measurement of that scene yet; see the header).
-enum class GrainContactRule { wall, reduced_radius };
+enum class GrainContactRule { wall, reduced_radius };  // int, as contact/contact_model.hpp declares it
 
 /// What the soft-particle contacts run on: the law file's content (and where it came from).
 struct SoftParticleLaws {
@@ -75,40 +80,120 @@ struct SoftParticleLaws {
   std::string source;  ///< the law file, for messages and provenance
 };
 
-enum class SoftContactKind : std::uint8_t { wall, grain, soft };
+/// The soft-particle contact model (contact/contact_model.hpp), written for one contact at a
+/// time (kScalarOnly): its normal sub-law (Eq. 7 at the contact's R), the linear spring's
+/// damping at the contact's current stiffness, and the measured tangential stiffness (Eq. 8)
+/// with mu_soft on the Tsuji spring.
+struct SoftNormal {
+  static constexpr const char* name = "soft-particle";
+  static constexpr bool kScalarOnly = true;
 
-/// Constants of one soft-particle contact, fixed while it lasts.
-struct SoftContactConstants {
-  const SoftSceneLaw* law = nullptr;
-  double R = 0.0;                     ///< Δn = h / R [m]
-  double F_scale = 1.0, kt_scale = 1.0;  ///< (R/R0)^n_F, (R/R0)^n_t
-  double m12 = 0.0, mt = 0.0;         ///< reduced mass, sliding-rolling mass [kg] (damping)
+  template <class T>
+  struct Constants {
+    T scene;    ///< the law: 0 soft-solid, 1 soft-soft
+    T R;        ///< Δn = h / R [m]
+    T F_scale;  ///< (R/R0)^n_F
+  };
+  template <class C, class F>
+  static constexpr void each_constant(C& c, F&& f) {
+    f(c.scene, Need::always);
+    f(c.R, Need::always);
+    f(c.F_scale, Need::always);
+  }
+  struct Params {
+    const SoftParticleLaws* laws = nullptr;
+    GrainContactRule grain_rule = GrainContactRule::wall;
+    bool stop_beyond_range = false;
+    const SoftSceneLaw& law(double scene) const { return scene == 0.0 ? *laws->soft_solid : *laws->soft_soft; }
+  };
+  static Params params(const ContactSetting& s) { return {s.soft_laws, s.grain_rule, s.stop_beyond_range}; }
+  /// Which law and which R (the header): body 1 or body 2 is a soft-particle.
+  static Constants<double> constants(const Params& p, const ContactPartners& b);
+
+  struct Eval {
+    double Fn;                        ///< Eq. 7 at R
+    double dn;                        ///< Δn
+    double stiffness;                 ///< dFn/dh [N/m] (the damping's)
+    const SoftSceneLaw* law;
+  };
+  static Eval evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {
+    const SoftSceneLaw& law = p.law(k.scene);
+    const double dn = g.h / k.R;
+    return {k.F_scale * law.normal(dn), dn, k.F_scale * law.normal.slope(dn) / k.R, &law};
+  }
+  /// ∫ Fn dh = S_F R ∫ X dΔn [J].
+  static double energy(const Params& p, const Constants<double>& k, double h, double, double) {
+    return k.F_scale * k.R * p.law(k.scene).normal.integral(h / k.R);
+  }
+  /// The length an overlap is measured against: Δn = h / R.
+  static double overlap_scale(const Constants<double>& k) { return k.R; }
+  /// The law whose Δn range (dn_min, dn_max) it was measured on: a contact beyond it is counted
+  /// (forces/contact_models.hpp RangeStats) or, with `beyond_range: stop`, stops the run.
+  static const SoftPowerLaw& measured(const Params& p, const Constants<double>& k) { return p.law(k.scene).normal; }
+  static const std::string& source(const Params& p) { return p.laws->source; }
+  static constexpr const char* kStopKey = "effects.soft_particles.beyond_range is 'stop'";
 };
 
-/// The law, R and scales of a contact of kind `kind` between a soft-particle of radius R1 and
-/// a body of radius R2 (ignored for a wall).
-SoftContactConstants soft_contact_constants(const SoftParticleLaws& laws, SoftContactKind kind, GrainContactRule grain_rule,
-                                            double R1, double R2, double m12, double mt);
-
-/// ζ of the linear spring's viscous damping that gives restitution e (0 < e <= 1).
-double linear_damping_ratio(double e);
-
-/// The declared effects a soft-particle contact runs (the scene's, read at run time).
-struct SoftEffects {
-  bool friction = false, damping = false;
-  double zeta = 0.0, tangential_ratio = 1.0;
+/// The damping of a soft-particle contact (when the scene declares it): the linear spring's at
+/// the contact's current stiffness, gamma_n = 2 zeta sqrt(m12 dFn/dh), gamma_t = ratio_t 2 zeta
+/// sqrt(mt kt), zeta = -ln e / sqrt(pi^2 + ln^2 e).
+struct SoftDamping {
+  template <class T>
+  struct Constants {
+    T m12;  ///< reduced mass [kg]
+    T mt;   ///< sliding-rolling mass [kg]
+  };
+  template <class C, class F>
+  static constexpr void each_constant(C& c, F&& f) {
+    f(c.m12, Need::damping);
+    f(c.mt, Need::friction_damping);
+  }
+  struct Params {
+    double zeta = 0.0, tangential_ratio = 1.0;
+  };
+  static Params params(const ContactSetting& s) { return {s.restitution ? linear_damping_ratio(*s.restitution) : 0.0, s.tangential_ratio}; }
+  template <class N, class Tg>
+  static Constants<double> constants(const Params&, const ContactPartners& b, const N&, const Tg&) {
+    return {b.m12, 1.0 / b.inv_mt};
+  }
+  template <class T>
+  struct Scale {
+    T stiffness;  ///< dFn/dh [N/m]
+  };
+  static Scale<double> scale(const SoftNormal::Eval& e) { return {e.stiffness}; }
+  static double normal(const Params& p, const Constants<double>& k, const Scale<double>& s, double vn) {
+    return 2.0 * p.zeta * std::sqrt(k.m12 * s.stiffness) * vn;
+  }
+  static double tangential(const Params& p, const Constants<double>& k, const Scale<double>&, double kt) {
+    return p.tangential_ratio * 2.0 * p.zeta * std::sqrt(k.mt * kt);
+  }
 };
 
-/// Force on body 1 of a closed soft-particle contact (conventions of contact/contact_law.hpp:
-/// n from body 2 to body 1, h > 0, vc of body 1 relative to body 2). `xi` is advanced by dt and
-/// shortened when the contact slides. Fn is the law's elastic force; `dn` receives Δn.
-ContactForce<double> soft_contact_force(const ContactGeometry<double>& g, const SoftContactConstants& k, const SoftEffects& fx,
-                                        V3<double>& xi, double dt, double& dn);
+/// The measured tangential stiffness kt = S_t (a' Δn^b' + c') (Eq. 8) on the Tsuji spring,
+/// capped at mu_soft(Δn) Fn; below δ (kt = 0) the contact carries nothing and keeps no spring.
+struct SoftTangential {
+  template <class T>
+  struct Constants {
+    T kt_scale;  ///< (R/R0)^n_t
+  };
+  template <class C, class F>
+  static constexpr void each_constant(C& c, F&& f) {
+    f(c.kt_scale, Need::friction);
+  }
+  struct Params {
+    const SoftParticleLaws* laws = nullptr;
+  };
+  static Params params(const ContactSetting& s) { return {s.soft_laws}; }
+  static Constants<double> constants(const Params& p, const ContactPartners& b, const SoftNormal::Constants<double>& normal);
+  static double stiffness(const Params&, const Constants<double>& k, const SoftNormal::Eval& e) {
+    return e.law->tangential ? k.kt_scale * (*e.law->tangential)(e.dn) : 0.0;
+  }
+  static void limit(const Params&, const Constants<double>&, const SoftNormal::Eval& e, double kt, V3<double>& Ft, V3<double>& xi) {
+    if (kt > 0.0) tsuji::coulomb_limit(Ft, xi, kt, e.law->mu_at(e.dn) * e.Fn);
+    else xi = {0.0, 0.0, 0.0}, Ft = {0.0, 0.0, 0.0};
+  }
+};
 
-/// Elastic energy of a soft-particle contact: ∫ Fn dh = S_F R ∫ X dΔn, plus 1/2 kt |ξ|² [J].
-double soft_contact_energy(const SoftContactConstants& k, double h, const Vec3* xi);
-/// The law's Fn [N] and kt [N/m] of a contact at overlap h.
-double soft_Fn(const SoftContactConstants& k, double h);
-double soft_kt(const SoftContactConstants& k, double h);
+using SoftParticleModel = ContactModel<SoftNormal, SoftDamping, SoftTangential>;
 
 }  // namespace softpack

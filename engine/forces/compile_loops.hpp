@@ -1,22 +1,25 @@
-// make_normal_law<Law>(): a normal law type (contact/hertz_normal.hpp shows the members one
-// needs) turned into the run-time record of forces/normal_law.hpp, with its force loops compiled
-// for every combination of effects (contact/effects.hpp) and two instruction sets:
+// make_contact_model<Model>(): a contact model type (contact/contact_model.hpp; the paper's is
+// contact/tsuji_model.hpp TsujiModel<HertzNormal>) turned into the run-time record of
+// forces/contact_models.hpp, with its force loops compiled for every combination of effects
+// (contact/effects.hpp) and two instruction sets:
 //
 //   AVX-512 (x86-64-v4)   simd::Avx512 data movement, eight lanes in one register
 //   baseline              portable data movement, the release flags' x86-64-v2
 //
 // chosen at run time (core/cpu_features.hpp), block by block; both give the same bits. A build
 // without SOFTPACK_AVX512 (the sanitizer's, CMakeLists.txt) compiles the baseline only. One step
-// of a world is: sphere pairs, then each plane, then each shell, each through
-// forces/contact_loop.hpp.
+// of a family of contacts is: sphere pairs, then each plane, then each shell, each through
+// forces/contact_loop.hpp; every model runs through these loops.
 #pragma once
 #include <cmath>
+#include <fmt/format.h>
 #include <memory>
 #include <stdexcept>
 
 #include "core/cpu_features.hpp"
+#include "core/error.hpp"
 #include "forces/contact_loop.hpp"
-#include "forces/normal_law.hpp"
+#include "forces/contact_models.hpp"
 #include "forces/pair_contacts.hpp"
 #include "forces/wall_contacts.hpp"
 #include "softpack_build.hpp"
@@ -27,64 +30,66 @@ namespace loops {
 // One block of a kind of contact (forces/contact_loop.hpp contact_block), compiled for each
 // instruction set: the threads of the loop call it, so that the target attribute (which a lambda
 // does not inherit) is on a function of its own.
-template <class Law, Effects Fx, class Contacts>
-[[gnu::target("arch=x86-64-v4")]] void block_avx512(Contacts& c, double dt, std::int32_t* closed, std::size_t begin,
-                                                   std::size_t end) {
-  contact_block<Law, Fx>(simd::Avx512{}, c, dt, closed, begin, end);
+template <class Model, Effects Fx, class Contacts>
+[[gnu::target("arch=x86-64-v4")]] void block_avx512(Contacts& c, const typename Model::Params& params, double dt, std::int32_t* closed,
+                                                   std::size_t begin, std::size_t end) {
+  contact_block<Model, Fx>(simd::Avx512{}, c, params, dt, closed, begin, end);
 }
 
-template <class Law, Effects Fx, class Contacts>
-void block_portable(Contacts& c, double dt, std::int32_t* closed, std::size_t begin, std::size_t end) {
-  contact_block<Law, Fx>(simd::Portable{}, c, dt, closed, begin, end);
+template <class Model, Effects Fx, class Contacts>
+void block_portable(Contacts& c, const typename Model::Params& params, double dt, std::int32_t* closed, std::size_t begin,
+                    std::size_t end) {
+  contact_block<Model, Fx>(simd::Portable{}, c, params, dt, closed, begin, end);
 }
 
 // The per-body pass's block (forces/contact_loop.hpp body_block), likewise.
-template <class Law, class Contacts>
+template <class Model, class Contacts>
 [[gnu::target("arch=x86-64-v4")]] void body_avx512(Contacts& c, std::int32_t* closed, std::size_t begin, std::size_t end) {
-  body_block<Law>(simd::Avx512{}, c, closed, begin, end);
+  body_block<Model>(simd::Avx512{}, c, closed, begin, end);
 }
 
-template <class Law, class Contacts>
+template <class Model, class Contacts>
 void body_portable(Contacts& c, std::int32_t* closed, std::size_t begin, std::size_t end) {
-  body_block<Law>(simd::Portable{}, c, closed, begin, end);
+  body_block<Model>(simd::Portable{}, c, closed, begin, end);
 }
 
 /// One block of any kind of contact, on the instruction set chosen at run time: of the force
 /// pass, or with `body` of the per-body pass.
-template <class Law, Effects Fx, bool body = false>
+template <class Model, Effects Fx, bool body = false>
 struct BlockOf {
   bool avx512 = build::kAvx512Loops && cpu::vector_isa() == cpu::VectorIsa::avx512;
+  const typename Model::Params* params = nullptr;
   double dt = 0.0;
 
   template <class Contacts>
   void operator()(Contacts& c, std::int32_t* closed, std::size_t begin, std::size_t end) const {
     if constexpr (body) {
       if constexpr (build::kAvx512Loops)
-        if (avx512) return body_avx512<Law>(c, closed, begin, end);
-      body_portable<Law>(c, closed, begin, end);
+        if (avx512) return body_avx512<Model>(c, closed, begin, end);
+      body_portable<Model>(c, closed, begin, end);
     } else {
       if constexpr (build::kAvx512Loops)
-        if (avx512) return block_avx512<Law, Fx>(c, dt, closed, begin, end);
-      block_portable<Law, Fx>(c, dt, closed, begin, end);
+        if (avx512) return block_avx512<Model, Fx>(c, *params, dt, closed, begin, end);
+      block_portable<Model, Fx>(c, *params, dt, closed, begin, end);
     }
   }
 };
 
-/// Every contact of a world: sphere pairs, then each plane, then each shell. On threads (one
+/// Every contact of one family: sphere pairs, then each plane, then each shell. On threads (one
 /// parallel region, core/parallel.hpp run_phases): each thread's ghost pairs, then its own pairs
-/// and its spheres' wall contacts; afterwards the walls' loads, in list order. A law with a body
-/// state (contact/contact_law.hpp BodyStateLaw) has the per-body pass run first, in the same
-/// order: each sphere's state is summed as its force is.
-template <class Law, Effects Fx>
-void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) {
+/// and its spheres' wall contacts; afterwards the walls' loads, in list order. A model with a
+/// body state (contact/contact_model.hpp BodyStateModel) has the per-body pass run first, in
+/// the same order: each sphere's state is summed as its force is.
+template <class Model, Effects Fx>
+void all_contacts(World& world, ContactFamily& lists, const typename Model::Params& params, double dt, std::vector<std::int32_t>& closed) {
   Particles& p = world.p;
-  constexpr bool kBody = BodyStateLaw<Law>;
+  constexpr bool kBody = BodyStateModel<Model>;
   if constexpr (kBody) lists.body_state.resize(p.size());
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), p.F.data(),
                        Fx.rotation ? p.T.data() : nullptr, kBody ? lists.body_state.data() : nullptr};
-  BlockOf<Law, Fx> block;
-  block.dt = dt;
-  const BlockOf<Law, Fx, true> body_pass;
+  BlockOf<Model, Fx> block;
+  block.params = &params, block.dt = dt;
+  const BlockOf<Model, Fx, true> body_pass;
   PairContacts<Fx> pairs{lists.pairs, s, p.size()};
   // Kept from step to step (no allocation per step); the references, not the thread_local
   // names, are what the threads' phases see.
@@ -149,50 +154,116 @@ void all_contacts(World& world, ContactLists& lists, double dt, std::vector<std:
   for (auto& w : shells) w.finish();
 }
 
-template <class Law, Effects Fx>
-void masked_pairs(World& world, PairList& list, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T,
-                  std::vector<std::int32_t>& closed) {
+template <class Model, Effects Fx>
+void masked_pairs(World& world, PairList& list, const typename Model::Params& params, const std::uint8_t* mask, double sign, Vec3* F,
+                  Vec3* T, std::vector<std::int32_t>& closed) {
   Particles& p = world.p;
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), F, Fx.rotation ? T : nullptr};
-  if constexpr (BodyStateLaw<Law>) throw std::logic_error("an active set with a law that has a body state");  // refused on load
+  if constexpr (BodyStateModel<Model>) throw std::logic_error("an active set with a model that has a body state");  // refused on load
   MaskedPairContacts<Fx> pairs{{list, s, p.size()}, mask, sign};
-  BlockOf<Law, Fx> block;
+  BlockOf<Model, Fx> block;
+  block.params = &params;
   contact_loop(pairs, closed, block);
 }
 
-template <class Law, Effects Fx>
-class LoopsOf final : public ForceLoops {
+/// A model with a measured range (its normal sub-law's measured()): the contacts of `lists`
+/// beyond it counted into `stats`, or with the scene's `stop` a NumericalError.
+template <class Model>
+void count_beyond_range(const World& world, const ContactFamily& lists, const typename Model::Params& params, RangeStats& stats) {
+  const Particles& p = world.p;
+  const auto count = [&](double h, std::size_t k, const ConstantArrays& a, int i, int j, int plane) {
+    const auto c = constants_at<Model>(a, k);
+    const double dn = h / Model::Normal::overlap_scale(c.normal);
+    if (dn > stats.max_dn) stats.max_dn = dn, stats.i = i, stats.j = j, stats.plane = plane;
+    const auto& law = Model::Normal::measured(params.normal, c.normal);
+    if (!(dn > law.dn_max)) return;
+    ++stats.beyond_range;
+    if (params.normal.stop_beyond_range)
+      throw NumericalError(fmt::format("{} contact of sphere {} with {} at dn = {:.4g}, beyond the range its law was measured on ({:.4g} to "
+                                       "{:.4g}, {}); {}",
+                                       Model::name, i, j >= 0 ? fmt::format("sphere {}", j) : fmt::format("plane {}", plane), dn,
+                                       law.dn_min, law.dn_max, Model::Normal::source(params.normal), Model::Normal::kStopKey));
+  };
+  const PairList& pairs = lists.pairs;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const int i = pairs.i[k], j = pairs.j[k];
+    const double h = pairs.r_sum[k] - (p.x[i] - p.x[j]).norm();
+    if (h > 0.0) count(h, k, pairs.k, i, j, -1);
+  }
+  for (std::size_t w = 0; w < world.planes.size(); ++w) {
+    const WallList& l = lists.planes[w];
+    for (std::size_t k = 0; k < l.size(); ++k) {
+      const int i = l.i[k];
+      const double h = world.planes[w].overlap(p.x[i], p.r[i]);
+      if (h > 0.0) count(h, k, l.k, i, -1, static_cast<int>(w));
+    }
+  }
+}
+
+template <class Model>
+concept MeasuredRangeModel = requires(const typename Model::Params& p, const typename Model::template Constants<double>& c) {
+  Model::Normal::measured(p.normal, c.normal);
+};
+
+/// A model type as a scene runs it (forces/contact_models.hpp SceneModel).
+template <class Model>
+class ModelOf final : public SceneModel {
  public:
-  void run(World& world, ContactLists& lists, double dt, std::vector<std::int32_t>& closed) const override {
-    all_contacts<Law, Fx>(world, lists, dt, closed);
+  ModelOf(const ContactSetting& setting, Effects fx) : params_(Model::params(setting)) {
+    with_effects(fx, [&]<Effects Fx>() {
+      run_ = &all_contacts<Model, Fx>;
+      masked_ = &masked_pairs<Model, Fx>;
+    });
+  }
+  const char* name() const override { return Model::name; }
+  std::size_t constants() const override { return Model::constant_count(); }
+  bool body_state() const override { return BodyStateModel<Model>; }
+  void set(ConstantArrays& a, std::size_t k, const ContactPartners& b) const override {
+    set_constants_at<Model>(a, k, Model::constants(params_, b));
+  }
+  void run(World& world, ContactFamily& lists, double dt, std::vector<std::int32_t>& closed) override {
+    run_(world, lists, params_, dt, closed);
+    if constexpr (MeasuredRangeModel<Model>) count_beyond_range<Model>(world, lists, params_, range_);
   }
   void add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T,
                        std::vector<std::int32_t>& closed) const override {
-    masked_pairs<Law, Fx>(world, pairs, mask, sign, F, T, closed);
+    masked_(world, pairs, params_, mask, sign, F, T, closed);
   }
+  double Fn(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const override {
+    return Model::Fn(params_, constants_at<Model>(a, k), h, s1, s2);
+  }
+  double normal_energy(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const override {
+    return Model::normal_energy(params_, constants_at<Model>(a, k), h, s1, s2);
+  }
+  double kt(const ConstantArrays& a, std::size_t k, double h) const override { return Model::kt(params_, constants_at<Model>(a, k), h); }
+  double overlap_scale(const ConstantArrays& a, std::size_t k, double r_min) const override {
+    if constexpr (MeasuredRangeModel<Model>) return Model::Normal::overlap_scale(constants_at<Model>(a, k).normal);
+    else return r_min;
+  }
+  const RangeStats& range() const override { return range_; }
+
+ private:
+  typename Model::Params params_;
+  void (*run_)(World&, ContactFamily&, const typename Model::Params&, double, std::vector<std::int32_t>&) = nullptr;
+  void (*masked_)(World&, PairList&, const typename Model::Params&, const std::uint8_t*, double, Vec3*, Vec3*,
+                  std::vector<std::int32_t>&) = nullptr;
+  RangeStats range_;
 };
 
 }  // namespace loops
 
-template <class Law>
-NormalLaw make_normal_law() {
-  NormalLaw n;
-  n.name = Law::name;
-  n.stiffness = [](double R12, double D) { return Law::stiffness(R12, D); };
-  n.force = [](double kn, double h, [[maybe_unused]] double s1, [[maybe_unused]] double s2) {
-    if constexpr (BodyStateLaw<Law>) return Law::force(kn, h, std::sqrt(h), s1, s2);
-    else return Law::force(kn, h, std::sqrt(h));
+/// The registry's record of a model type (forces/contact_models.hpp); `of_scene`: a scene may
+/// name it in effects.normal.
+template <class Model>
+ContactModelType make_contact_model(bool of_scene = true) {
+  ContactModelType m;
+  m.name = Model::name;
+  m.body_state = BodyStateModel<Model>;
+  m.of_scene = of_scene;
+  m.make = [](const ContactSetting& setting, Effects fx) -> std::unique_ptr<SceneModel> {
+    return std::make_unique<loops::ModelOf<Model>>(setting, fx);
   };
-  n.energy = [](double kn, double h, [[maybe_unused]] double s1, [[maybe_unused]] double s2) {
-    if constexpr (BodyStateLaw<Law>) return Law::energy(kn, h, s1, s2);
-    else return Law::energy(kn, h);
-  };
-  n.body_state = BodyStateLaw<Law>;
-  n.damping_coefficient = [](double e) { return Law::damping_coefficient(e); };
-  n.loops = [](Effects fx) {
-    return with_effects(fx, []<Effects Fx>() -> std::unique_ptr<ForceLoops> { return std::make_unique<loops::LoopsOf<Law, Fx>>(); });
-  };
-  return n;
+  return m;
 }
 
 }  // namespace softpack

@@ -2,7 +2,8 @@
 //
 //   select   which listed contacts of the block touch (the springs of the others are cleared)
 //   gather   their geometry, constants and springs into the lanes of simd::Wide values, eight at a time
-//   law      contact_force() of contact/contact_law.hpp
+//   law      the contact model's force() (contact/contact_model.hpp), lane by lane for a model
+//            written for one contact at a time
 //   add      each contact's force and torques added to its spheres, springs written back
 //   finish   on threads, the kept terms summed into the wall's load, in list order
 //
@@ -13,19 +14,23 @@
 // result bits do not depend on the thread count, the lane count or the instruction set.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
-#include "contact/contact_law.hpp"
+#include "contact/contact_model.hpp"
 #include "core/parallel.hpp"
+#include "neighbor/contact_list.hpp"
 #include "simd/isa.hpp"
 
 namespace softpack {
 
-/// The lanes of one group of eight contacts, as gather() leaves them.
+/// The lanes of one group of eight contacts, as gather() leaves them, with the constants of
+/// their model (Model::Constants<simd::Wide>).
+template <class Constants>
 struct ContactLanes {
   ContactGeometry<simd::Wide> geometry;
-  ContactConstants<simd::Wide> constants;
+  Constants constants;
   V3<simd::Wide> spring;
   simd::Index i, j;      ///< the spheres (j: pairs only)
   simd::Wide ai, aj;     ///< branch lengths r - h/2 from the centres to the contact point
@@ -34,39 +39,71 @@ struct ContactLanes {
 /// The value of lane m.
 [[gnu::always_inline]] inline double lane(const simd::Wide& w, int m) { return w.v[m]; }
 [[gnu::always_inline]] inline Vec3 lane(const V3<simd::Wide>& v, int m) { return {v.x.v[m], v.y.v[m], v.z.v[m]}; }
+[[gnu::always_inline]] inline V3<double> lane3(const V3<simd::Wide>& v, int m) { return {v.x.v[m], v.y.v[m], v.z.v[m]}; }
+[[gnu::always_inline]] inline void set_lane(V3<simd::Wide>& v, int m, const V3<double>& x) { v.x.v[m] = x.x, v.y.v[m] = x.y, v.z.v[m] = x.z; }
 
 /// Contacts per block: what the scratch of closed indices holds.
 inline constexpr std::size_t kBlock = 1024;
 
+/// The force of each lane of `c`: eight at once, or for a model written for one contact at a
+/// time (ScalarOnlyModel) one lane after the other (the live ones; the others are copies).
+template <class Model, Effects Fx, class Lanes>
+[[gnu::always_inline]] inline ContactForce<simd::Wide> lanes_force(const typename Model::Params& params, Lanes& c, double dt, int live) {
+  if constexpr (!ScalarOnlyModel<Model>) {
+    return Model::template force<Fx>(params, c.geometry, c.constants, c.spring, dt);
+  } else {
+    ContactForce<simd::Wide> f{};
+    for (int m = 0; m < live; ++m) {
+      const auto at = [m](const auto& w) { return lane3(w, m); };
+      const ContactGeometry<simd::Wide>& G = c.geometry;
+      ContactGeometry<double> g{at(G.n), G.h.v[m], at(G.vc), {}, {}, 0.0, 0.0};
+      if constexpr (Fx.friction) g.n_frame = at(G.n_frame), g.vc_frame = at(G.vc_frame);
+      if constexpr (BodyStateModel<Model>) g.body1 = G.body1.v[m], g.body2 = G.body2.v[m];
+      typename Model::template Constants<double> k{};
+      std::array<double*, Model::constant_count()> field{};
+      std::size_t n = 0;
+      Model::each_constant(k, [&](double& x, Need) { field[n++] = &x; });
+      n = 0;
+      Model::each_constant(c.constants, [&](const simd::Wide& x, Need) { *field[n++] = x.v[m]; });
+      V3<double> xi = Fx.friction ? at(c.spring) : V3<double>{0.0, 0.0, 0.0};
+      const ContactForce<double> one = Model::template force<Fx>(params, g, k, xi, dt);
+      set_lane(f.F, m, one.F), set_lane(f.Ft, m, one.Ft), f.Fn.v[m] = one.Fn;
+      if constexpr (Fx.friction) set_lane(c.spring, m, xi);
+    }
+    return f;
+  }
+}
+
 /// The contacts at positions [begin, end) of `contacts`: select, gather, law, add. `closed` has
 /// room for end - begin + kLanes indices.
-template <class NormalLaw, Effects Fx, class Isa, class Contacts>
-[[gnu::always_inline]] inline void contact_block(Isa isa, Contacts& contacts, double dt, std::int32_t* closed, std::size_t begin,
-                                                 std::size_t end) {
+template <class Model, Effects Fx, class Isa, class Contacts>
+[[gnu::always_inline]] inline void contact_block(Isa isa, Contacts& contacts, const typename Model::Params& params, double dt,
+                                                 std::int32_t* closed, std::size_t begin, std::size_t end) {
   const std::size_t touching = contacts.select(isa, closed, begin, end);
   if (touching == 0) return;
   // The last group is filled up with copies of the last contact; add() ignores them.
   std::fill(closed + touching, closed + touching + simd::kLanes, closed[touching - 1]);
   for (std::size_t m = 0; m < touching; m += simd::kLanes) {
     const simd::Index k = simd::load(closed + m);
-    ContactLanes c = contacts.gather(isa, k, dt);
-    if constexpr (BodyStateLaw<NormalLaw>) contacts.gather_body(isa, c);
-    const ContactForce<simd::Wide> f = contact_force<NormalLaw, Fx>(c.geometry, c.constants, c.spring, dt);
-    contacts.add(c, f, closed + m, static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
+    const int live = static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m));
+    auto c = contacts.template gather<Model>(isa, k, dt);
+    if constexpr (BodyStateModel<Model>) contacts.gather_body(isa, c);
+    const ContactForce<simd::Wide> f = lanes_force<Model, Fx>(params, c, dt, live);
+    contacts.add(c, f, closed + m, live);
   }
 }
 
-/// The per-body pass over positions [begin, end) of `contacts`, for a law with a body state
-/// (contact/contact_law.hpp BodyStateLaw): select, then each closed contact's Law::body_term
+/// The per-body pass over positions [begin, end) of `contacts`, for a model with a body state
+/// (contact/contact_model.hpp BodyStateModel): select, then each closed contact's body_term
 /// added to its spheres' states (add_body_terms). Its select() does what the force pass's will
 /// do again: the same springs cleared, the same flags.
-template <class NormalLaw, class Isa, class Contacts>
+template <class Model, class Isa, class Contacts>
 [[gnu::always_inline]] inline void body_block(Isa isa, Contacts& contacts, std::int32_t* closed, std::size_t begin, std::size_t end) {
   const std::size_t touching = contacts.select(isa, closed, begin, end);
   if (touching == 0) return;
   std::fill(closed + touching, closed + touching + simd::kLanes, closed[touching - 1]);
   for (std::size_t m = 0; m < touching; m += simd::kLanes)
-    contacts.template add_body_terms<NormalLaw>(isa, simd::load(closed + m), static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
+    contacts.template add_body_terms<Model>(isa, simd::load(closed + m), static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
 }
 
 /// What the blocks of one thread need: kBlock closed indices and a group of lanes.
@@ -89,15 +126,34 @@ void contact_loop(Contacts& contacts, std::vector<std::int32_t>& closed, Block&&
   contacts.finish();
 }
 
-/// The constants the declared effects read, gathered for contacts k.
-template <Effects Fx, class Isa, class Arrays>
-[[gnu::always_inline]] inline ContactConstants<simd::Wide> gather_constants(Isa isa, const Arrays& a, simd::Index k) {
-  ContactConstants<simd::Wide> c{0.0, 0.0, 0.0, 0.0, 0.0};
-  c.kn = simd::gather(isa, a.kn.data(), k);
-  if constexpr (Fx.damping) c.gamma0 = simd::gather(isa, a.gamma0.data(), k);
-  if constexpr (Fx.friction) c.kt0 = simd::gather(isa, a.kt0.data(), k), c.mu = simd::gather(isa, a.mu.data(), k);
-  if constexpr (Fx.friction && Fx.damping) c.gamma_t0 = simd::gather(isa, a.gamma_t0.data(), k);
+/// The constants of `Model` the declared effects read (contact/contact_model.hpp Need), gathered
+/// for contacts k from their arrays; the others stay 0.
+template <class Model, Effects Fx, class Isa>
+[[gnu::always_inline]] inline typename Model::template Constants<simd::Wide> gather_constants(Isa isa, const ConstantArrays& a,
+                                                                                              simd::Index k) {
+  typename Model::template Constants<simd::Wide> c{};
+  std::size_t field = 0;
+  Model::each_constant(c, [&](simd::Wide& x, Need need) {
+    if (needed<Fx>(need)) x = simd::gather(isa, a.field[field].data(), k);
+    else x = simd::Wide(0.0);
+    ++field;
+  });
   return c;
+}
+
+/// The constants of `Model` of contact k, and their setting.
+template <class Model>
+typename Model::template Constants<double> constants_at(const ConstantArrays& a, std::size_t k) {
+  typename Model::template Constants<double> c{};
+  std::size_t field = 0;
+  Model::each_constant(c, [&](double& x, Need) { x = a.field[field++][k]; });
+  return c;
+}
+template <class Model>
+void set_constants_at(ConstantArrays& a, std::size_t k, const typename Model::template Constants<double>& c) {
+  auto copy = c;
+  std::size_t field = 0;
+  Model::each_constant(copy, [&](double& x, Need) { a.field[field++][k] = x; });
 }
 
 /// Component c of the vectors base[idx] (Vec3 is three doubles: component c of vector i is

@@ -1,8 +1,6 @@
 #include "forces/force_field.hpp"
 
 #include "contact/hertz_normal.hpp"
-#include "contact/tsuji_tangential.hpp"
-#include "contact/viscous_damping.hpp"
 
 namespace softpack {
 
@@ -10,76 +8,101 @@ ForceField::ForceField(const SceneDef& scene) {
   const EffectsDef& e = scene.effects;
   fx_ = Effects{e.friction, e.damping(), e.rotation, scene.integration.history_update == HistoryUpdate::synchronized};
   if (e.normal.empty()) return;
-  law_ = &normal_law(e.normal);
-  if (e.soft_particles) soft_.emplace(scene);
-  loops_ = law_->loops(fx_);
-  if (e.damping()) zeta_ = law_->damping_coefficient(*e.restitution);
-  tangential_ratio_ = e.tangential_damping_ratio;
   materials_ = scene.materials.size();
-  D_.resize(materials_ * materials_);
-  Dt_.resize(materials_ * materials_);
-  mu_.resize(materials_ * materials_);
-  for (std::size_t a = 0; a < materials_; ++a)
-    for (std::size_t b = 0; b < materials_; ++b) {
-      D_[a * materials_ + b] = hertz_D(scene.materials[a], scene.materials[b]);
-      Dt_[a * materials_ + b] = tsuji_Dt(scene.materials[a], scene.materials[b]);
-      mu_[a * materials_ + b] = contact_mu(scene.materials[a], scene.materials[b]);
-    }
+  ContactSetting setting;
+  setting.materials = scene.materials;
+  setting.restitution = e.restitution;
+  setting.tangential_ratio = e.tangential_damping_ratio;
+  models_.push_back(contact_model(e.normal).make(setting, fx_));
+  if (e.soft_particles) {
+    setting.soft_laws = &e.soft_particles->laws;
+    setting.grain_rule = e.soft_particles->grain_contact;
+    setting.stop_beyond_range = e.soft_particles->beyond_range == SoftParticlesDef::BeyondRange::stop;
+    models_.push_back(contact_model("soft-particle", false).make(setting, fx_));
+  }
+}
+
+std::vector<std::size_t> ForceField::constants() const {
+  std::vector<std::size_t> n;
+  for (const auto& m : models_) n.push_back(m->constants());
+  return n;
+}
+
+RangeStats ForceField::range() const {
+  RangeStats all;
+  for (const auto& m : models_) {
+    const RangeStats& r = m->range();
+    all.beyond_range += r.beyond_range;
+    if (r.max_dn > all.max_dn) all.max_dn = r.max_dn, all.i = r.i, all.j = r.j, all.plane = r.plane;
+  }
+  return all;
 }
 
 void ForceField::add_contact_forces(World& world, ContactLists& lists, double spring_dt) {
-  if (loops_) loops_->run(world, lists, spring_dt, closed_);
-  if (soft_ && lists.soft) soft_->add_forces(world, *lists.soft, spring_dt);
+  for (std::size_t f = 0; f < models_.size(); ++f) models_[f]->run(world, lists.family[f], spring_dt, closed_);
 }
 
 void ForceField::add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T) {
-  if (loops_) loops_->add_pair_forces(world, pairs, mask, sign, F, T, closed_);
+  if (active()) models_[0]->add_pair_forces(world, pairs, mask, sign, F, T, closed_);
 }
 
-// The constants of a contact of materials `mm` with reduced radius R12, reduced mass m12 (a
-// sphere's mass against a wall, which has infinite mass) and the inverse mass of the
-// sliding-rolling mode, 1/mt = sum over the spheres of 1/m + r^2/I (1/m without rotation).
-ContactConstants<double> ForceField::constants(std::size_t mm, double R12, double m12, double inv_mt) const {
-  ContactConstants<double> k{};
-  k.kn = law_->stiffness(R12, D_[mm]);
-  k.kt0 = tsuji::stiffness_factor(R12, Dt_[mm]);
-  k.mu = mu_[mm];
-  k.gamma0 = damping::gamma_factor(zeta_, m12, k.kn);
-  k.gamma_t0 = tangential_ratio_ * damping::gamma_factor(zeta_, 1.0 / inv_mt, k.kt0);
-  return k;
+namespace {
+
+// 1/mt of the sliding-rolling mode of sphere i: 1/m + r^2/I (1/m without rotation).
+double inv_m_and_I(const Particles& p, int i) { return p.inv_m[i] + (p.rotates() ? p.r[i] * p.r[i] * p.inv_I[i] : 0.0); }
+
+// Sphere pair (i, j): reduced radius and mass, and 1/mt = the sum over both spheres of 1/m + r^2/I
+// (the two masses first, then the two rotations: the order the archived results were made in).
+ContactPartners pair_partners(const Particles& p, std::size_t materials, int i, int j) {
+  ContactPartners b;
+  b.kind = ContactPartners::Kind::pair;
+  b.R1 = p.r[i], b.R2 = p.r[j];
+  b.R12 = hertz::reduced_radius(p.r[i], p.r[j]);
+  b.m12 = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
+  b.inv_mt = p.inv_m[i] + p.inv_m[j];
+  if (p.rotates()) b.inv_mt += p.r[i] * p.r[i] * p.inv_I[i] + p.r[j] * p.r[j] * p.inv_I[j];
+  b.materials = static_cast<std::size_t>(p.material[i]) * materials + static_cast<std::size_t>(p.material[j]);
+  b.soft1 = p.family_of(static_cast<std::size_t>(i)) == kSoftParticleFamily;
+  b.soft2 = p.family_of(static_cast<std::size_t>(j)) == kSoftParticleFamily;
+  return b;
 }
 
-ContactConstants<double> ForceField::pair_constants(const Particles& p, int i, int j) const {
-  double inv_mt = p.inv_m[i] + p.inv_m[j];
-  if (p.rotates()) inv_mt += p.r[i] * p.r[i] * p.inv_I[i] + p.r[j] * p.r[j] * p.inv_I[j];
-  return constants(static_cast<std::size_t>(p.material[i]) * materials_ + p.material[j], hertz::reduced_radius(p.r[i], p.r[j]),
-                   p.m[i] * p.m[j] / (p.m[i] + p.m[j]), inv_mt);
+// Sphere i against a wall of material `wall_material` (infinite mass and radius), reduced radius R12.
+ContactPartners wall_partners(const Particles& p, std::size_t materials, int i, ContactPartners::Kind kind, int wall_material, double R12) {
+  ContactPartners b;
+  b.kind = kind;
+  b.R1 = p.r[i], b.R12 = R12;
+  b.m12 = p.m[i];
+  b.inv_mt = inv_m_and_I(p, i);
+  b.materials = static_cast<std::size_t>(p.material[i]) * materials + static_cast<std::size_t>(wall_material);
+  b.soft1 = p.family_of(static_cast<std::size_t>(i)) == kSoftParticleFamily;
+  return b;
 }
 
-ContactConstants<double> ForceField::wall_constants(const Particles& p, int i, int wall_material, double R12) const {
-  double inv_mt = p.inv_m[i];
-  if (p.rotates()) inv_mt += p.r[i] * p.r[i] * p.inv_I[i];
-  return constants(static_cast<std::size_t>(p.material[i]) * materials_ + wall_material, R12, p.m[i], inv_mt);
-}
+}  // namespace
 
-void ForceField::set_constants(const World& world, ContactLists& lists, const NewContacts& added) const {
+void ForceField::set_constants(const World& world, ContactLists& lists, const std::vector<NewContacts>& added) const {
   const Particles& p = world.p;
-  for (std::size_t k : added.pairs) lists.pairs.k.set(k, pair_constants(p, lists.pairs.i[k], lists.pairs.j[k]));
-  for (std::size_t w = 0; w < added.planes.size(); ++w) {
-    WallList& l = lists.planes[w];
-    for (std::size_t k : added.planes[w]) l.k.set(k, wall_constants(p, l.i[k], world.planes[w].material, p.r[l.i[k]]));
-  }
-  for (std::size_t w = 0; w < added.shells.size(); ++w) {
-    WallList& l = lists.shells[w];
-    for (std::size_t k : added.shells[w]) {
-      const int i = l.i[k];
+  for (std::size_t f = 0; f < added.size(); ++f) {
+    const SceneModel& model = *models_[f];
+    ContactFamily& l = lists.family[f];
+    for (std::size_t k : added[f].pairs) model.set(l.pairs.k, k, pair_partners(p, materials_, l.pairs.i[k], l.pairs.j[k]));
+    for (std::size_t w = 0; w < added[f].planes.size(); ++w) {
+      WallList& wl = l.planes[w];
+      for (std::size_t k : added[f].planes[w])
+        model.set(wl.k, k, wall_partners(p, materials_, wl.i[k], ContactPartners::Kind::plane, world.planes[w].material, p.r[wl.i[k]]));
+    }
+    for (std::size_t w = 0; w < added[f].shells.size(); ++w) {
+      WallList& wl = l.shells[w];
       const SphericalShell& shell = world.shells[w];
-      const double R12 =
-          shell.contact_radius == ShellContactRadius::concave ? hertz::reduced_radius_concave(p.r[i], shell.radius) : p.r[i];
-      l.k.set(k, wall_constants(p, i, shell.material, R12));
+      for (std::size_t k : added[f].shells[w]) {
+        const int i = wl.i[k];
+        const double R12 =
+            shell.contact_radius == ShellContactRadius::concave ? hertz::reduced_radius_concave(p.r[i], shell.radius) : p.r[i];
+        model.set(wl.k, k, wall_partners(p, materials_, i, ContactPartners::Kind::shell, shell.material, R12));
+      }
     }
   }
-  if (soft_ && added.soft) soft_->set_constants(world, *lists.soft);
 }
 
 }  // namespace softpack

@@ -34,7 +34,7 @@ struct SphereArrays {
   const double* r = nullptr;
   Vec3* F = nullptr;
   Vec3* T = nullptr;
-  double* body = nullptr;  ///< the per-body pass's state (a law with one: contact/contact_law.hpp BodyStateLaw)
+  double* body = nullptr;  ///< the per-body pass's state (a model with one: contact/contact_model.hpp BodyStateModel)
 };
 
 template <Effects Fx>
@@ -145,16 +145,16 @@ struct PairContacts {
     }
   }
 
-  template <class Isa>
-  [[gnu::always_inline]] ContactLanes gather(Isa isa, simd::Index k, double dt) const {
+  template <class Model, class Isa>
+  [[gnu::always_inline]] auto gather(Isa isa, simd::Index k, double dt) const {
     using simd::Wide;
-    ContactLanes c;
+    ContactLanes<typename Model::template Constants<Wide>> c;
     c.i = simd::gather(isa, list.i.data(), k);
     c.j = simd::gather(isa, list.j.data(), k);
     const V3<Wide> d = gather_vec3(isa, s.x, c.i) - gather_vec3(isa, s.x, c.j);
     const V3<Wide> vij = gather_vec3(isa, s.v, c.i) - gather_vec3(isa, s.v, c.j);
     const Wide r_sum = simd::gather(isa, list.r_sum.data(), k);
-    c.constants = gather_constants<Fx>(isa, list.k, k);
+    c.constants = gather_constants<Model, Fx>(isa, list.k, k);
     ContactGeometry<Wide>& g = c.geometry;
     const Wide dist = simd::sqrt(dot(d, d));
     g.n = d * (Wide(1.0) / dist);
@@ -187,14 +187,14 @@ struct PairContacts {
     return c;
   }
 
-  /// The per-body pass: Law::body_term(h) of pairs k added to the states of spheres i and j, for
+  /// The per-body pass: Model::Normal::body_term(h) of pairs k added to the states of spheres i and j, for
   /// the first `live` lanes in order, as add() adds forces (the same spheres, the same order).
-  template <class Law, class Isa>
+  template <class Model, class Isa>
   [[gnu::always_inline]] void add_body_terms(Isa isa, simd::Index k, int live) {
     using simd::Wide;
     const simd::Index i = simd::gather(isa, list.i.data(), k), j = simd::gather(isa, list.j.data(), k);
     const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
-    const Wide term = Law::body_term(simd::gather(isa, list.r_sum.data(), k) - simd::sqrt(dot(d, d)));
+    const Wide term = Model::Normal::body_term(simd::gather(isa, list.r_sum.data(), k) - simd::sqrt(dot(d, d)));
     for (int m = 0; m < live; ++m) {
       if (!ghost) s.body[i.v[m]] += lane(term, m);
       if (static_cast<std::size_t>(j.v[m]) < j_end) s.body[j.v[m]] += lane(term, m);
@@ -202,15 +202,16 @@ struct PairContacts {
   }
 
   /// The bodies' states of the lanes' pairs, for a law that reads them.
-  template <class Isa>
-  [[gnu::always_inline]] void gather_body(Isa isa, ContactLanes& c) const {
+  template <class Isa, class Lanes>
+  [[gnu::always_inline]] void gather_body(Isa isa, Lanes& c) const {
     c.geometry.body1 = simd::gather(isa, s.body, c.i);
     c.geometry.body2 = simd::gather(isa, s.body, c.j);
   }
 
   /// F_i += F, F_j -= F, T_i -= ai n x Ft, T_j -= aj n x Ft for the first `live` lanes in order
   /// (sphere j's only when j < j_end; a ghost: sphere j's only), and the springs back.
-  [[gnu::always_inline]] void add(const ContactLanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
+  template <class Lanes>
+  [[gnu::always_inline]] void add(const Lanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
     V3<simd::Wide> nxFt{};
     if constexpr (Fx.rotation) nxFt = cross(c.geometry.n, f.Ft);
     for (int m = 0; m < live; ++m) {
@@ -276,7 +277,8 @@ struct MaskedPairContacts : PairContacts<Fx> {
     return n;
   }
 
-  void add(const ContactLanes& c, const ContactForce<simd::Wide>& f, const std::int32_t*, int live) const {
+  template <class Lanes>
+  void add(const Lanes& c, const ContactForce<simd::Wide>& f, const std::int32_t*, int live) const {
     V3<simd::Wide> nxFt{};
     if constexpr (Fx.rotation) nxFt = cross(c.geometry.n, f.Ft);
     for (int m = 0; m < live; ++m) {

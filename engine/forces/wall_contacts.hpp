@@ -70,16 +70,16 @@ struct WallContacts {
     return n;
   }
 
-  template <class Isa>
-  [[gnu::always_inline]] ContactLanes gather(Isa isa, simd::Index k, double dt) const {
+  template <class Model, class Isa>
+  [[gnu::always_inline]] auto gather(Isa isa, simd::Index k, double dt) const {
     using simd::Wide;
-    ContactLanes c;
+    ContactLanes<typename Model::template Constants<Wide>> c;
     c.i = simd::gather(isa, list.i.data(), k);
     const V3<Wide> x = gather_vec3(isa, s.x, c.i), v = gather_vec3(isa, s.v, c.i);
     const Wide r = simd::gather(isa, s.r, c.i);
     V3<Wide> w{};
     if constexpr (Fx.rotation) w = gather_vec3(isa, s.w, c.i);
-    c.constants = gather_constants<Fx>(isa, list.k, k);
+    c.constants = gather_constants<Model, Fx>(isa, list.k, k);
     ContactGeometry<Wide>& g = c.geometry;
     V3<Wide> surface_velocity;
     geometry(x, r, g.n, g.h, c.ai, surface_velocity);
@@ -93,26 +93,27 @@ struct WallContacts {
     return c;
   }
 
-  /// The per-body pass: Law::body_term(h) of entries k added to their spheres' states.
-  template <class Law, class Isa>
+  /// The per-body pass: Model::Normal::body_term(h) of entries k added to their spheres' states.
+  template <class Model, class Isa>
   [[gnu::always_inline]] void add_body_terms(Isa isa, simd::Index k, int live) {
     const simd::Index i = simd::gather(isa, list.i.data(), k);
     V3<W> n, u;
     W h, ai;
     geometry(gather_vec3(isa, s.x, i), simd::gather(isa, s.r, i), n, h, ai, u);
-    const W term = Law::body_term(h);
+    const W term = Model::Normal::body_term(h);
     for (int m = 0; m < live; ++m) s.body[i.v[m]] += lane(term, m);
   }
 
   /// The sphere's state of the lanes' entries (the wall has none: 0), for a law that reads them.
-  template <class Isa>
-  [[gnu::always_inline]] void gather_body(Isa isa, ContactLanes& c) const {
+  template <class Isa, class Lanes>
+  [[gnu::always_inline]] void gather_body(Isa isa, Lanes& c) const {
     c.geometry.body1 = simd::gather(isa, s.body, c.i);
     c.geometry.body2 = W(0.0);
   }
 
   /// Each contact's force, the sphere's torque term ai n x Ft and the wall's torque kept; the springs back.
-  [[gnu::always_inline]] void add(const ContactLanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
+  template <class Lanes>
+  [[gnu::always_inline]] void add(const Lanes& c, const ContactForce<simd::Wide>& f, const std::int32_t* k, int live) {
     const Vec3 ref = reference_point();
     WallResults& r = list.results;
     for (int m = 0; m < live; ++m) {

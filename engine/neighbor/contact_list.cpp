@@ -25,23 +25,15 @@ std::uint64_t pair_key(std::int32_t i, std::int32_t j) {
 
 }  // namespace
 
-void ConstantArrays::resize(std::size_t n) {
-  for (auto* a : {&kn, &kt0, &gamma0, &gamma_t0, &mu}) a->resize(n);
-}
-
-void ConstantArrays::set(std::size_t k, const ContactConstants<double>& c) {
-  kn[k] = c.kn, kt0[k] = c.kt0, gamma0[k] = c.gamma0, gamma_t0[k] = c.gamma_t0, mu[k] = c.mu;
-}
-
 std::vector<std::size_t> PairList::replace(const std::vector<PairEntry>& fresh, bool keep_springs) {
   ConstantArrays constants;
-  constants.resize(fresh.size());
+  constants.resize(k.field.size(), fresh.size());
   std::vector<Vec3> springs(keep_springs ? fresh.size() : 0, Vec3::Zero());
   const auto new_ones = merge(
       size(), fresh.size(), [&](std::size_t a) { return pair_key(i[a], j[a]); },
       [&](std::size_t b) { return pair_key(fresh[b].i, fresh[b].j); },
       [&](std::size_t a, std::size_t b) {
-        constants.set(b, k.at(a));
+        constants.copy(k, a, b);
         if (keep_springs) springs[b] = spring[a];
       });
   i.resize(fresh.size()), j.resize(fresh.size()), r_sum.resize(fresh.size());
@@ -57,12 +49,12 @@ std::vector<std::size_t> PairList::replace(const std::vector<PairEntry>& fresh, 
 
 std::vector<std::size_t> WallList::replace(const std::vector<std::int32_t>& fresh, bool keep_springs) {
   ConstantArrays constants;
-  constants.resize(fresh.size());
+  constants.resize(k.field.size(), fresh.size());
   std::vector<Vec3> springs(keep_springs ? fresh.size() : 0, Vec3::Zero());
   const auto new_ones = merge(
       size(), fresh.size(), [&](std::size_t a) { return i[a]; }, [&](std::size_t b) { return fresh[b]; },
       [&](std::size_t a, std::size_t b) {
-        constants.set(b, k.at(a));
+        constants.copy(k, a, b);
         if (keep_springs) springs[b] = spring[a];
       });
   i = fresh;

@@ -8,23 +8,27 @@
 // is cleared the moment the contact opens (forces/contact_loop.hpp).
 #pragma once
 #include <cstdint>
-#include <optional>
 #include <vector>
 
-#include "contact/contact_law.hpp"
-#include "contact/soft_particle_law.hpp"
 #include "core/types.hpp"
 
 namespace softpack {
 
-/// The constants of a list's contacts (contact/contact_law.hpp ContactConstants), one array each.
+/// The per-contact constants of a list's contacts, one array per constant (the contact model's,
+/// contact/contact_model.hpp each_constant, in its order; forces/model_loops.hpp reads and writes them).
 struct ConstantArrays {
-  std::vector<double> kn, kt0, gamma0, gamma_t0, mu;
+  std::vector<std::vector<double>> field;
 
-  std::size_t size() const { return kn.size(); }
-  void resize(std::size_t n);
-  void set(std::size_t k, const ContactConstants<double>& c);
-  ContactConstants<double> at(std::size_t k) const { return {kn[k], kt0[k], gamma0[k], gamma_t0[k], mu[k]}; }
+  std::size_t size() const { return field.empty() ? 0 : field[0].size(); }
+  /// `fields` arrays of n contacts each.
+  void resize(std::size_t fields, std::size_t n) {
+    field.resize(fields);
+    for (auto& f : field) f.resize(n);
+  }
+  /// Contact a of `from` becomes contact b of this.
+  void copy(const ConstantArrays& from, std::size_t a, std::size_t b) {
+    for (std::size_t f = 0; f < field.size(); ++f) field[f][b] = from.field[f][a];
+  }
 };
 
 /// What the force loop leaves for each contact of a wall's list on threads (forces/wall_contacts.hpp),
@@ -57,7 +61,7 @@ struct PairEntry {
 struct PairList {
   std::vector<std::int32_t> i, j;  ///< the spheres, i < j, sorted by (i, j)
   std::vector<double> r_sum;       ///< Ri + Rj: what the every-step overlap test reads
-  ConstantArrays k;                ///< read for touching pairs only
+  ConstantArrays k;                ///< the model's constants, read for touching pairs only
   std::vector<Vec3> spring;        ///< tangential spring per pair; empty without friction
   /// 1 where the spring may be non-zero (the pair touched at the last force evaluation).
   /// Kept by the force loop (forces/pair_contacts.hpp); empty means every spring may be.
@@ -90,26 +94,22 @@ struct WallList {
   std::vector<std::size_t> replace(const std::vector<std::int32_t>& fresh, bool keep_springs);
 };
 
-/// The contacts of soft-particles (effects.soft_particles, contact/soft_particle_law.hpp): pairs
-/// with at least one soft-particle, and soft-particles near each plane. Their constants are
-/// computed again at every rebuild (they have no history); their springs are carried over.
-/// The lists' ConstantArrays stay unused.
-struct SoftLists {
-  PairList pairs;
-  std::vector<WallList> planes;
-  std::vector<SoftContactConstants> pair_k;               ///< per entry of `pairs`
-  std::vector<std::vector<SoftContactConstants>> plane_k;  ///< per plane, per entry
-};
-
-/// Every list of a scene: sphere pairs, and the candidates of each plane and each shell; the
-/// soft-particles' contacts apart, only when the scene has soft-particles.
-struct ContactLists {
+/// The lists of one contact model (a family): sphere pairs, and the candidates of each plane and
+/// each shell, whose contacts that model evaluates.
+struct ContactFamily {
   PairList pairs;
   std::vector<WallList> planes, shells;
-  std::optional<SoftLists> soft;
-  /// Each sphere's state from the per-body pass of the last force evaluation, when the normal
-  /// law declares one (contact/contact_law.hpp BodyStateLaw); empty otherwise.
+  /// Each sphere's state from the per-body pass of the last force evaluation, when the model
+  /// declares one (contact/contact_model.hpp BodyStateModel); empty otherwise.
   std::vector<double> body_state;
+};
+
+/// Every list of a scene, one family per contact model: family 0 the scene's model
+/// (effects.normal), family 1 the soft-particle model when the scene has soft-particles. A pair
+/// belongs to the higher family of its two spheres (Particles::family), a wall contact to its
+/// sphere's.
+struct ContactLists {
+  std::vector<ContactFamily> family;
 };
 
 }  // namespace softpack

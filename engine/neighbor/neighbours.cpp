@@ -6,17 +6,20 @@
 
 namespace softpack {
 
-Neighbours::Neighbours(const NeighborDef& def, const World& world, bool normal, bool friction,
+Neighbours::Neighbours(const NeighborDef& def, const World& world, const std::vector<std::size_t>& constants, bool friction,
                        std::vector<std::vector<int>> shell_members)
-    : def_(def), normal_(normal), friction_(friction), shell_members_(std::move(shell_members)) {
+    : def_(def), friction_(friction), shell_members_(std::move(shell_members)) {
   double r_min = std::numeric_limits<double>::max();
   for (double r : world.p.r) r_min = std::min(r_min, r);
   skin_ = def.skin * r_min;
-  lists_.planes.resize(world.planes.size());
-  lists_.shells.resize(world.shells.size());
-  if (!world.p.soft.empty()) {
-    lists_.soft.emplace();
-    lists_.soft->planes.resize(world.planes.size());
+  lists_.family.resize(constants.size());
+  for (std::size_t f = 0; f < constants.size(); ++f) {
+    ContactFamily& l = lists_.family[f];
+    l.pairs.k.resize(constants[f], 0);
+    l.planes.resize(world.planes.size());
+    l.shells.resize(world.shells.size());
+    for (auto* walls : {&l.planes, &l.shells})
+      for (WallList& w : *walls) w.k.resize(constants[f], 0);
   }
 }
 
@@ -30,11 +33,11 @@ bool Neighbours::need_rebuild(const World& world) const {
   return disp + std::sqrt(moved_.second) >= skin_ || disp + wall_disp >= skin_;
 }
 
-NewContacts Neighbours::rebuild(const World& world) {
+std::vector<NewContacts> Neighbours::rebuild(const World& world) {
   const Particles& p = world.p;
-  const std::size_t n = p.size();
-  NewContacts added;
-  if (normal_) {
+  const std::size_t n = p.size(), families = lists_.family.size();
+  std::vector<NewContacts> added(families);
+  if (families > 0) {
     // Pairs as (i, j) with i < j, sorted: a counting sort by i, then each sphere's few partners
     // sorted by j.
     grid_.build(p.x, p.r, skin_, def_.level_ratio);
@@ -51,30 +54,30 @@ NewContacts Neighbours::rebuild(const World& world) {
     for (std::size_t i = 0, begin = 0; i < n; begin = first_[i++])
       std::sort(fresh.begin() + static_cast<std::ptrdiff_t>(begin), fresh.begin() + static_cast<std::ptrdiff_t>(first_[i]),
                 [](const PairEntry& a, const PairEntry& b) { return a.j < b.j; });
-    if (lists_.soft) {
-      // A pair with a soft-particle goes to the soft lists; the order (i, j) is kept in both.
-      std::vector<PairEntry> solid_pairs, soft_pairs;
-      for (const PairEntry& e : fresh)
-        (p.is_soft(static_cast<std::size_t>(e.i)) || p.is_soft(static_cast<std::size_t>(e.j)) ? soft_pairs : solid_pairs).push_back(e);
-      fresh = std::move(solid_pairs);
-      lists_.soft->pairs.replace(soft_pairs, friction_);
-      added.soft = true;
+    // Each pair to the higher family of its spheres; the order (i, j) is kept in each.
+    const auto family_of_pair = [&](const PairEntry& e) {
+      return std::max(p.family_of(static_cast<std::size_t>(e.i)), p.family_of(static_cast<std::size_t>(e.j)));
+    };
+    if (families == 1) {
+      added[0].pairs = lists_.family[0].pairs.replace(fresh, friction_);
+    } else {
+      std::vector<std::vector<PairEntry>> split(families);
+      for (const PairEntry& e : fresh) split[family_of_pair(e)].push_back(e);
+      for (std::size_t f = 0; f < families; ++f) added[f].pairs = lists_.family[f].pairs.replace(split[f], friction_);
     }
-    added.pairs = lists_.pairs.replace(fresh, friction_);
-
+    std::vector<std::vector<std::int32_t>> near(families);
     for (std::size_t w = 0; w < world.planes.size(); ++w) {
-      std::vector<std::int32_t> near, near_soft;
+      for (auto& l : near) l.clear();
       for (std::size_t i = 0; i < n; ++i)
-        if (world.planes[w].distance(p.x[i]) - p.r[i] < skin_) (p.is_soft(i) ? near_soft : near).push_back(static_cast<std::int32_t>(i));
-      added.planes.push_back(lists_.planes[w].replace(near, friction_));
-      if (lists_.soft) lists_.soft->planes[w].replace(near_soft, friction_);
+        if (world.planes[w].distance(p.x[i]) - p.r[i] < skin_) near[p.family_of(i)].push_back(static_cast<std::int32_t>(i));
+      for (std::size_t f = 0; f < families; ++f) added[f].planes.push_back(lists_.family[f].planes[w].replace(near[f], friction_));
     }
     for (std::size_t w = 0; w < world.shells.size(); ++w) {
       const SphericalShell& s = world.shells[w];
-      std::vector<std::int32_t> near;
+      for (auto& l : near) l.clear();
       for (int i : shell_members_[w])
-        if (s.radius - (p.x[i] - s.centre).norm() - p.r[i] < skin_) near.push_back(i);
-      added.shells.push_back(lists_.shells[w].replace(near, friction_));
+        if (s.radius - (p.x[i] - s.centre).norm() - p.r[i] < skin_) near[p.family_of(static_cast<std::size_t>(i))].push_back(i);
+      for (std::size_t f = 0; f < families; ++f) added[f].shells.push_back(lists_.family[f].shells[w].replace(near[f], friction_));
     }
   }
   x_at_build_ = p.x;

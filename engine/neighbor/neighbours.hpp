@@ -17,20 +17,19 @@
 
 namespace softpack {
 
-/// The entries a rebuild added to each list (their constants are not set yet).
+/// The entries a rebuild added to each list of one family (their constants are not set yet).
 struct NewContacts {
   std::vector<std::size_t> pairs;
   std::vector<std::vector<std::size_t>> planes, shells;
-  /// Soft-particle contacts (ContactLists::soft): all of theirs need constants after a rebuild.
-  bool soft = false;
 };
 
 class Neighbours {
  public:
-  /// `normal`: the scene has a contact law (without one nothing is listed); `friction`: the lists
-  /// carry springs. `shell_members[k]`: the spheres shell k confines. With soft-particles
-  /// (world.p.soft) their contacts go to lists of their own (ContactLists::soft).
-  Neighbours(const NeighborDef& def, const World& world, bool normal, bool friction,
+  /// `constants[f]`: the number of per-contact constants of family f's contact model (none: the
+  /// scene has no contact law and nothing is listed); `friction`: the lists carry springs.
+  /// `shell_members[k]`: the spheres shell k confines. A contact goes to its spheres' family
+  /// (neighbor/contact_list.hpp ContactLists).
+  Neighbours(const NeighborDef& def, const World& world, const std::vector<std::size_t>& constants, bool friction,
              std::vector<std::vector<int>> shell_members);
 
   ContactLists& lists() { return lists_; }
@@ -55,14 +54,15 @@ class Neighbours {
   /// Whether the skin is used up (after the first rebuild, which the simulation makes at once).
   bool need_rebuild(const World& world) const;
   /// Rebuilds the lists at the world's positions; surviving entries keep their constants and
-  /// springs. std::invalid_argument from the grid when positions are unusable.
-  NewContacts rebuild(const World& world);
+  /// springs. Returns each family's new entries. std::invalid_argument from the grid when
+  /// positions are unusable.
+  std::vector<NewContacts> rebuild(const World& world);
 
  private:
   HierarchicalGrid grid_;
   NeighborDef def_;
   double skin_ = 0.0;
-  bool normal_ = false, friction_ = false;
+  bool friction_ = false;
   std::vector<std::vector<int>> shell_members_;
   ContactLists lists_;
   std::vector<Vec3> x_at_build_, plane_at_build_, shell_at_build_;

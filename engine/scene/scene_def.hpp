@@ -60,7 +60,7 @@ struct SoftParticlesDef {
 
 /// Effects a scene may declare. An undeclared effect costs nothing and allocates nothing.
 struct EffectsDef {
-  std::string normal;     ///< the normal law, by name (forces/normal_laws.cpp: hertz, Eq. 3-4); empty: none
+  std::string normal;     ///< the normal law, by name (forces/contact_models.cpp: hertz, Eq. 3-6); empty: none
   bool friction = false;  ///< Tsuji tangential spring with Coulomb limit, Eq. 5-6
   bool rotation = false;  ///< angular velocities and torques
   std::optional<double> restitution;             ///< damping declared: normal restitution e

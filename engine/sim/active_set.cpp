@@ -29,7 +29,7 @@ void ActiveSet::add_frozen(Particles& p) const {
 
 void ActiveSet::rebuild(World& world, ContactLists& lists, ForceField& forces) {
   asleep_moved_ = {};          // every sphere is where the new lists were built
-  lists.pairs.masked = false;  // a new numbering: update() starts from nothing frozen
+  lists.family[0].pairs.masked = false;  // a new numbering: update() starts from nothing frozen
   std::fill(frozen_F_.begin(), frozen_F_.end(), Vec3::Zero());
   std::fill(frozen_T_.begin(), frozen_T_.end(), Vec3::Zero());
   update(world, lists, forces);
@@ -40,8 +40,8 @@ std::size_t ActiveSet::sleep(World& world, ContactLists& lists, ForceField& forc
   Particles& p = world.p;
   std::fill(scale_.begin(), scale_.end(), 0.0);
   if (forces.active())
-    for_each_closed_contact(world, lists, forces.effects().friction, [&](const ClosedContact& c) {
-      const double Fn = c.Fn(forces.law());
+    for_each_closed_contact(world, lists, forces, [&](const ClosedContact& c) {
+      const double Fn = c.Fn();
       scale_[static_cast<std::size_t>(c.i)] += Fn;
       if (c.j >= 0) scale_[static_cast<std::size_t>(c.j)] += Fn;
     });
@@ -96,12 +96,12 @@ void ActiveSet::wake_all(ContactLists& lists) {
   sleeping_ = 0;
   asleep_moved_ = {};
   index();
-  lists.pairs.masked = false;
-  lists.pairs.live.clear();
+  lists.family[0].pairs.masked = false;
+  lists.family[0].pairs.live.clear();
 }
 
 void ActiveSet::update(World& world, ContactLists& lists, ForceField& forces) {
-  PairList& pl = lists.pairs;
+  PairList& pl = lists.family[0].pairs;
   const std::size_t n = pl.size();
   if (sleeping_ == 0) {  // nothing frozen: the loop evaluates every pair
     wake_all(lists);

@@ -8,7 +8,7 @@
 // with awake spheres and with walls are evaluated every step.
 //
 // The set changes at two moments, and each change updates the sums by the pairs that changed
-// side (forces/normal_law.hpp add_pair_forces, with the same law and the same bits as the loop):
+// side (forces/contact_models.hpp SceneModel::add_pair_forces, with the same law and the same bits as the loop):
 //
 //   sleep   at each check (every check_interval, and after each stop of the paper protocol):
 //           a free sphere with |F|, |T|/r <= sleep_force x S and |v|, |w| r <= sleep_speed

@@ -2,6 +2,7 @@
 // the world and the springs of the contact lists, and back.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -11,12 +12,16 @@
 namespace softpack {
 namespace {
 
-std::vector<std::vector<SimulationState::WallSpring>> wall_springs(const std::vector<WallList>& lists) {
-  std::vector<std::vector<SimulationState::WallSpring>> out;
-  for (const WallList& l : lists) {
-    out.emplace_back();
-    for (std::size_t k = 0; k < l.spring.size(); ++k)
-      if (l.spring[k] != Vec3::Zero()) out.back().push_back({l.i[k], l.spring[k]});
+// The non-zero springs of wall k's lists of every family, by sphere (a sphere is in one family).
+std::vector<std::vector<SimulationState::WallSpring>> wall_springs(const ContactLists& lists, bool shells, std::size_t walls) {
+  std::vector<std::vector<SimulationState::WallSpring>> out(walls);
+  for (std::size_t w = 0; w < walls; ++w) {
+    for (const ContactFamily& f : lists.family) {
+      const WallList& l = (shells ? f.shells : f.planes)[w];
+      for (std::size_t k = 0; k < l.spring.size(); ++k)
+        if (l.spring[k] != Vec3::Zero()) out[w].push_back({l.i[k], l.spring[k]});
+    }
+    std::sort(out[w].begin(), out[w].end(), [](const auto& a, const auto& b) { return a.i < b.i; });
   }
   return out;
 }
@@ -62,15 +67,14 @@ SimulationState Simulation::state() const {
       s.shell_velocities.push_back(world_.shells[k].velocity), s.shell_spins.push_back(world_.shells[k].spin);
       s.shell_forces.push_back(world_.shell_loads[k].force), s.shell_torques.push_back(world_.shell_loads[k].torque);
     }
-  for (std::size_t k = 0; k < lists.pairs.spring.size(); ++k)
-    if (lists.pairs.spring[k] != Vec3::Zero()) s.pair_springs.push_back({lists.pairs.i[k], lists.pairs.j[k], lists.pairs.spring[k]});
-  s.plane_springs = wall_springs(lists.planes);
-  s.shell_springs = wall_springs(lists.shells);
-  if (lists.soft) {
-    const PairList& sp = lists.soft->pairs;
-    for (std::size_t k = 0; k < sp.spring.size(); ++k)
-      if (sp.spring[k] != Vec3::Zero()) s.soft_pair_springs.push_back({sp.i[k], sp.j[k], sp.spring[k]});
-    s.soft_plane_springs = wall_springs(lists.soft->planes);
+  // The springs of every family (a pair or a sphere on a wall is in one), by spheres.
+  for (const ContactFamily& f : lists.family)
+    for (std::size_t k = 0; k < f.pairs.spring.size(); ++k)
+      if (f.pairs.spring[k] != Vec3::Zero()) s.pair_springs.push_back({f.pairs.i[k], f.pairs.j[k], f.pairs.spring[k]});
+  std::sort(s.pair_springs.begin(), s.pair_springs.end(), [](const auto& a, const auto& b) { return std::pair(a.i, a.j) < std::pair(b.i, b.j); });
+  if (!lists.family.empty()) {
+    s.plane_springs = wall_springs(lists, false, world_.planes.size());
+    s.shell_springs = wall_springs(lists, true, world_.shells.size());
   }
   return s;
 }
@@ -95,21 +99,28 @@ void Simulation::restore(const SimulationState& s) {
   }
   rebuild_neighbours();
   // Install the springs; a saved spring whose pair is not listed cannot be: it was touching.
-  if (scene_.effects.friction) {
+  if (scene_.effects.friction && !neighbours_.lists().family.empty()) {
     ContactLists& lists = neighbours_.lists();
-    std::fill(lists.pairs.spring.begin(), lists.pairs.spring.end(), Vec3::Zero());
-    for (auto* walls : {&lists.planes, &lists.shells})
-      for (WallList& l : *walls) std::fill(l.spring.begin(), l.spring.end(), Vec3::Zero());
-    install(lists.pairs, s.pair_springs);
-    install(lists.planes, s.plane_springs);
-    install(lists.shells, s.shell_springs);
-    if (lists.soft) {
-      for (WallList& l : lists.soft->planes) std::fill(l.spring.begin(), l.spring.end(), Vec3::Zero());
-      std::fill(lists.soft->pairs.spring.begin(), lists.soft->pairs.spring.end(), Vec3::Zero());
-      install(lists.soft->pairs, s.soft_pair_springs);
-      install(lists.soft->planes, s.soft_plane_springs);
-    } else if (!s.soft_pair_springs.empty() || !s.soft_plane_springs.empty()) {
-      throw InputError("the saved state has soft-particle springs and this scene has no soft-particles");
+    // Each saved spring to the family of its spheres (neighbor/contact_list.hpp ContactLists).
+    const auto family = [&](int i) { return p.family_of(static_cast<std::size_t>(i)); };
+    for (std::size_t f = 0; f < lists.family.size(); ++f) {
+      ContactFamily& l = lists.family[f];
+      std::fill(l.pairs.spring.begin(), l.pairs.spring.end(), Vec3::Zero());
+      for (auto* walls : {&l.planes, &l.shells})
+        for (WallList& wl : *walls) std::fill(wl.spring.begin(), wl.spring.end(), Vec3::Zero());
+      std::vector<SimulationState::PairSpring> pairs;
+      for (const auto& sp : s.pair_springs)
+        if (std::max(family(sp.i), family(sp.j)) == f) pairs.push_back(sp);
+      const auto walls = [&](const std::vector<std::vector<SimulationState::WallSpring>>& saved) {
+        std::vector<std::vector<SimulationState::WallSpring>> mine(saved.size());
+        for (std::size_t w = 0; w < saved.size(); ++w)
+          for (const auto& sp : saved[w])
+            if (family(sp.i) == f) mine[w].push_back(sp);
+        return mine;
+      };
+      install(l.pairs, pairs);
+      install(l.planes, walls(s.plane_springs));
+      install(l.shells, walls(s.shell_springs));
     }
   }
   watchdog_.start(world_, residuals());

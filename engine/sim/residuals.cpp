@@ -12,10 +12,7 @@ namespace {
 
 // The radius an overlap is measured against: the smaller sphere's (a sphere's own against a
 // wall); for a soft-particle's contact its law's R, so that the fraction is its Δn.
-double contact_radius(const Particles& p, const ClosedContact& c) {
-  if (c.soft) return c.soft->R;
-  return c.j >= 0 ? std::min(p.r[c.i], p.r[c.j]) : p.r[c.i];
-}
+double contact_radius(const Particles& p, const ClosedContact& c) { return c.overlap_scale(p); }
 
 }  // namespace
 
@@ -35,12 +32,11 @@ Measurement residuals(const World& world, const ContactLists& lists, const Force
   Measurement m;
   const Particles& p = world.p;
   if (forces.active()) {
-    const NormalLaw& law = forces.law();
     double sum_Fn = 0.0;
-    for_each_closed_contact(world, lists, forces.effects().friction, [&](const ClosedContact& c) {
-      m.elastic_energy += c.normal_energy(law);
+    for_each_closed_contact(world, lists, forces, [&](const ClosedContact& c) {
+      m.elastic_energy += c.normal_energy();
       if (c.spring) m.elastic_energy += c.spring_energy();
-      sum_Fn += c.Fn(law);
+      sum_Fn += c.Fn();
       ++m.contacts;
       const double radius = contact_radius(p, c);
       if (!(c.h / radius > m.deepest.fraction)) return;
@@ -67,7 +63,7 @@ double overlap_quantile(const World& world, const ContactLists& lists, const For
   if (!forces.active()) return 0.0;
   const Particles& p = world.p;
   std::vector<double> fraction;
-  for_each_closed_contact(world, lists, forces.effects().friction, [&](const ClosedContact& c) {
+  for_each_closed_contact(world, lists, forces, [&](const ClosedContact& c) {
     fraction.push_back(c.h / contact_radius(p, c));
   });
   if (fraction.empty()) return 0.0;

@@ -49,7 +49,7 @@ Simulation::Simulation(const SceneDef& scene)
       stable_(softpack::stable_limit(scene_)),
       world_(make_world(scene_)),
       forces_(scene_),
-      neighbours_(scene_.neighbor, world_, forces_.active(), scene_.effects.friction, shell_members(world_)),
+      neighbours_(scene_.neighbor, world_, forces_.constants(), scene_.effects.friction, shell_members(world_)),
       drivers_(scene_, world_),
       watchdog_(scene_.watchdog, watchdog_context(scene_, dt_, stable_)) {
   for (std::size_t k = 0; k < scene_.drivers.size(); ++k) validate_steps(scene_.drivers[k], dt_, fmt::format("drivers[{}]", k));
@@ -102,10 +102,10 @@ void Simulation::set_active_set(const std::optional<ActiveSetDef>& def) {
   if (active_) active_->wake_all(neighbours_.lists());
   active_.reset();
   if (!def) return;
-  if (forces_.active() && forces_.law().body_state)
+  if (forces_.active() && forces_.model(0).body_state())
     throw InputError(fmt::format("active_set: not available with the normal law '{}', whose force reads every contact of a body "
                                  "(a sleeping body's frozen forces would not follow its awake neighbours); drop one of them",
-                                 forces_.law().name));
+                                 forces_.model(0).name()));
   validate_active_set(*def, "active_set");
   if (scene_.effects.soft_particles)
     throw InputError("active_set: not available with soft-particle contacts (effects.soft_particles); drop one of them");
@@ -121,7 +121,7 @@ void Simulation::update_neighbours() {
 }
 
 void Simulation::rebuild_neighbours() {
-  NewContacts added;
+  std::vector<NewContacts> added;
   try {
     added = neighbours_.rebuild(world_);
   } catch (const std::invalid_argument&) {
@@ -194,13 +194,13 @@ Vec3 Simulation::force_between(int from, int on) const {
   Vec3 total = Vec3::Zero();
   if (!forces_.active()) return total;
   const Particles& p = world_.p;
-  for_each_closed_contact(world_, neighbours_.lists(), scene_.effects.friction, [&](const ClosedContact& c) {
+  for_each_closed_contact(world_, neighbours_.lists(), forces_, [&](const ClosedContact& c) {
     if (c.kind != ClosedContact::Kind::pair) return;
     const int bi = p.body[c.i], bj = p.body[c.j];
     if (!((bi == from && bj == on) || (bi == on && bj == from))) return;
     const Vec3 d = p.x[c.i] - p.x[c.j];
     const Vec3 n = d / d.norm();
-    Vec3 F = c.Fn(forces_.law()) * n;  // on sphere i
+    Vec3 F = c.Fn() * n;  // on sphere i
     if (c.spring) F -= c.kt() * *c.spring;
     total += bi == on ? F : Vec3(-F);
   });

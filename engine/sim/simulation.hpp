@@ -102,13 +102,12 @@ class Simulation {
   const std::vector<WallLoad>& shell_loads() const { return world_.shell_loads; }
   /// Load on the plane or shell of that name; throws InputError if there is none.
   const WallLoad& wall_load(const std::string& name) const;
-  const PairList& pair_list() const { return neighbours_.lists().pairs; }
-  const std::vector<WallList>& plane_lists() const { return neighbours_.lists().planes; }
-  const std::vector<WallList>& shell_lists() const { return neighbours_.lists().shells; }
+  /// The lists of family 0 (the scene's model; neighbor/contact_list.hpp ContactLists).
+  const PairList& pair_list() const { return neighbours_.lists().family.at(0).pairs; }
+  const std::vector<WallList>& plane_lists() const { return neighbours_.lists().family.at(0).planes; }
+  const std::vector<WallList>& shell_lists() const { return neighbours_.lists().family.at(0).shells; }
   /// Every contact list (forces/contact_walk.hpp walks them).
   const ContactLists& contact_lists() const { return neighbours_.lists(); }
-  /// The soft-particles' contacts, or null in a scene without soft-particles.
-  const SoftLists* soft_lists() const { return neighbours_.lists().soft ? &*neighbours_.lists().soft : nullptr; }
   long neighbour_rebuilds() const { return neighbours_.rebuilds(); }
   const ForceField& force_field() const { return forces_; }
   const Watchdog& watchdog() const { return watchdog_; }

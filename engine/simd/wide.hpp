@@ -1,6 +1,6 @@
 // The wide-number vocabulary of the force loops (in the manner of Box2D v3's b2FloatW): eight
 // doubles operated on lane by lane, with the operators and functions the contact law uses. The
-// law (contact/contact_law.hpp) is a template over its number type and runs on `double` for one
+// law (contact/contact_model.hpp) is a template over its number type and runs on `double` for one
 // contact and on `Wide` for eight; the functions below have a `double` overload each, so the
 // same source reads the same for both.
 //

@@ -9,6 +9,9 @@
 
 namespace softpack {
 
+/// The family of a soft-particle's contacts (effects.soft_particles).
+inline constexpr std::uint8_t kSoftParticleFamily = 1;
+
 struct Particles {
   std::vector<Vec3> x;       ///< centre [m]
   std::vector<Vec3> v;       ///< velocity [m/s]
@@ -27,13 +30,15 @@ struct Particles {
   // Drivers only: 1 while a kinematic driver prescribes the sphere's motion.
   std::vector<std::uint8_t> driven;
 
-  // Soft-particle contacts only (effects.soft_particles): 1 for a soft-particle.
-  std::vector<std::uint8_t> soft;
+  // The contact model of each sphere's contacts (neighbor/contact_list.hpp ContactLists): the
+  // scene's (0), or the soft-particle model (kSoftParticleFamily) for a soft-particle. Empty:
+  // every sphere's is the scene's.
+  std::vector<std::uint8_t> family;
 
   std::size_t size() const { return x.size(); }
   bool rotates() const { return !w.empty(); }
   bool is_driven(std::size_t i) const { return !driven.empty() && driven[i] != 0; }
-  bool is_soft(std::size_t i) const { return !soft.empty() && soft[i] != 0; }
+  std::size_t family_of(std::size_t i) const { return family.empty() ? 0 : family[i]; }
 };
 
 }  // namespace softpack

@@ -25,11 +25,9 @@ struct SimulationState {
     int i = 0;
     Vec3 xi = Vec3::Zero();
   };
+  /// Every contact model's (a pair, a sphere on a wall, has one), sorted by spheres.
   std::vector<PairSpring> pair_springs;
   std::vector<std::vector<WallSpring>> plane_springs, shell_springs;
-  /// Soft-particles' contacts (effects.soft_particles only; empty otherwise).
-  std::vector<PairSpring> soft_pair_springs;
-  std::vector<std::vector<WallSpring>> soft_plane_springs;
 };
 
 }  // namespace softpack

@@ -14,15 +14,11 @@ inline void add_bits(Fnv1a& h, const SimulationState& s) {
   for (const auto* lists : {&s.plane_springs, &s.shell_springs})
     for (const auto& l : *lists)
       for (const auto& sp : l) h.add(&sp.i, sizeof sp.i), h.add(&sp.xi, sizeof sp.xi);
-  // Free shells' centres and motion, soft-particles' springs: nothing to add in a scene without
-  // them, whose digest is unchanged.
+  // Free shells' centres and motion: nothing to add in a scene without them, whose digest is
+  // unchanged.
   if (!s.shell_velocities.empty())
     for (const auto* a : {&s.shell_centres, &s.shell_velocities, &s.shell_spins, &s.shell_forces, &s.shell_torques})
       h.add(a->data(), a->size() * sizeof(Vec3));
-  // Soft-particles' springs: nothing to add in a scene without them, whose digest is unchanged.
-  for (const auto& sp : s.soft_pair_springs) h.add(&sp.i, sizeof sp.i), h.add(&sp.j, sizeof sp.j), h.add(&sp.xi, sizeof sp.xi);
-  for (const auto& l : s.soft_plane_springs)
-    for (const auto& sp : l) h.add(&sp.i, sizeof sp.i), h.add(&sp.xi, sizeof sp.xi);
 }
 
 inline std::uint64_t state_digest(const SimulationState& s) {

@@ -17,7 +17,7 @@ World make_world(const SceneDef& scene) {
   p.inv_m.resize(n);
   p.body.resize(n);
   p.material.resize(n);
-  if (scene.effects.soft_particles) p.soft.resize(n);
+  if (scene.effects.soft_particles) p.family.resize(n);
   if (rotation) {
     p.w.resize(n);
     p.T.assign(n, Vec3::Zero());
@@ -33,7 +33,7 @@ World make_world(const SceneDef& scene) {
     p.inv_m[i] = 1.0 / p.m[i];
     p.body[i] = d.body;
     p.material[i] = d.material;
-    if (!p.soft.empty()) p.soft[i] = d.soft ? 1 : 0;
+    if (!p.family.empty()) p.family[i] = d.soft ? kSoftParticleFamily : 0;
     if (rotation) {
       p.w[i] = d.w;
       p.inv_I[i] = 1.0 / (0.4 * p.m[i] * d.r * d.r);  // solid sphere, I = 2/5 m r^2

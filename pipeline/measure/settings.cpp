@@ -8,7 +8,7 @@
 
 #include "profile/profile.hpp"
 #include "core/error.hpp"
-#include "forces/normal_law.hpp"
+#include "forces/contact_models.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene_yaml.hpp"
 #include "scene/validate.hpp"
@@ -90,7 +90,7 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
   // The law effects.normal names, from the engine's registry: when the profile is read (so by
   // softpack-config, before anything runs), not when the first simulation is built.
   try {
-    (void)normal_law(s.effects.normal);
+    (void)contact_model(s.effects.normal);
   } catch (const InputError& e) {
     const ConfigNode effects = sim.at("effects");
     if (const auto n = effects.find("normal")) n->fail(std::string(e.what()).substr(std::string("effects.normal: ").size()));

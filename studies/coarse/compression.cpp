@@ -27,8 +27,8 @@ CurveRow curve_row(const Simulation& sim, const Medium& m, const std::vector<int
   const int grains = static_cast<int>(m.grain_x.size());
   std::vector<std::pair<int, int>> touching;
   const ForceField& ff = sim.force_field();
-  for_each_closed_contact(sim.world(), sim.contact_lists(), false, [&](const ClosedContact& c) {
-    if (c.kind != ClosedContact::Kind::pair || !(c.Fn(ff.law()) > 0.0)) return;
+  for_each_closed_contact(sim.world(), sim.contact_lists(), ff, [&](const ClosedContact& c) {
+    if (c.kind != ClosedContact::Kind::pair || !(c.Fn() > 0.0)) return;
     const int a = body_of[static_cast<std::size_t>(c.i)], b = body_of[static_cast<std::size_t>(c.j)];
     if (a != b) touching.emplace_back(std::min(a, b), std::max(a, b));
   });
@@ -85,7 +85,7 @@ CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseMod
   phase(s.unload_strain, -1);
   phase(s.shear, 2);
   run.steps = sim.step_count();
-  if (const SoftContacts* soft = sim.force_field().soft()) run.soft = soft->stats();
+  run.soft = sim.force_field().range();
   run.time = clock.elapsed();
   return run;
 }

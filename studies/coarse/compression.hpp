@@ -20,7 +20,7 @@
 
 #include "coarse/medium.hpp"
 #include "core/stopwatch.hpp"
-#include "forces/soft_contacts.hpp"
+#include "forces/contact_models.hpp"
 #include "sim/simulation.hpp"
 
 namespace softpack {
@@ -41,7 +41,7 @@ struct CompressionRun {
   long steps = 0;
   double dt = 0.0;
   std::size_t spheres = 0, bodies = 0;
-  SoftContactStats soft;  ///< soft model only
+  RangeStats soft;  ///< soft model only: its contacts beyond the laws' measured range
   Elapsed time;           ///< of the simulation (the scene's construction and the steps)
 };
 

@@ -31,7 +31,7 @@ ENGINE_FACE = {
     "scene/limits.hpp",
     "contact/soft_particle_law.hpp", "walls/spherical_shell.hpp",
     "state/simulation_state.hpp",
-    "forces/normal_law.hpp", "forces/soft_contacts.hpp", "forces/contact_walk.hpp",
+    "forces/contact_models.hpp", "forces/contact_walk.hpp",
     "integrate/time_step.hpp",
     "sim/simulation.hpp", "relax/relaxation.hpp",
 }
@@ -42,6 +42,10 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 SYSTEM_INCLUDE = re.compile(r'^\s*#\s*include\s+<([^>]+)>', re.M)
 INTRINSIC = re.compile(r'\b(_mm\d*_\w+|__m(128|256|512)\w*|__mmask\d+)\b|<immintrin\.h>')
 DEFINE = re.compile(r'^\s*#\s*define\b', re.M)
+# One force loop (issue 32): a contact model's force (ContactForce, contact/contact_model.hpp) is
+# evaluated only by the loop every model and every kind of contact go through.
+FORCE_RESULT = re.compile(r'\bContactForce<')
+FORCE_LOOP_FILES = {"engine/forces/contact_loop.hpp", "engine/forces/pair_contacts.hpp", "engine/forces/wall_contacts.hpp"}
 SOURCES = (".hpp", ".cpp")
 
 
@@ -96,6 +100,9 @@ def main(root: Path) -> int:
             problems.append(f"{shown}: {text.count(chr(10))} lines, more than {MAX_LINES}")
         if not shown.startswith("engine/simd/") and INTRINSIC.search(text):
             problems.append(f"{shown}: intrinsics outside engine/simd/ ({INTRINSIC.search(text).group(0)})")
+        if FORCE_RESULT.search(text) and not shown.startswith("engine/contact/") and shown not in FORCE_LOOP_FILES:
+            problems.append(f"{shown}: evaluates a contact model's force (ContactForce) outside the one force loop "
+                            f"(engine/forces/contact_loop.hpp and the kinds of contact it runs): a second force path")
         if DEFINE.search(text):
             problems.append(f"{shown}: #define (macros are not used in the wings)")
         if shown != "engine/core/parallel.hpp" and OPENMP.search(text):

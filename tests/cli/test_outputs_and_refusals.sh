@@ -83,7 +83,7 @@ refused() {  # refused WHAT SED_EXPRESSION MESSAGE
 }
 refused "a scene twice" 's/scenes: \[soft-solid, soft-soft\]/scenes: [soft-solid, soft-solid]/' "listed twice"
 refused "no scene" 's/scenes: \[soft-solid, soft-soft\]/scenes: []/' "at least one scene"
-refused "an unknown normal law" 's/normal: hertz/normal: bogus/' "'bogus' is not a normal law"
+refused "an unknown normal law" 's/normal: hertz/normal: bogus/' "'bogus' is not a contact model"
 echo "ok: defect 12: softpack-config refuses a scene twice, no scene, an unknown law (exit 2, file:line)"
 
 # --- defect 18 ------------------------------------------------------------------------------------------

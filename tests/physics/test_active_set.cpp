@@ -82,8 +82,8 @@ std::vector<Vec3> full_forces(const Simulation& sim, ForceField& field) {
   const double half = 0.5 * sim.dt();
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!p.is_driven(i) && !(sim.active_set() && sim.active_set()->asleep(i))) p.v[i] -= (half * p.inv_m[i]) * p.F[i];
-  ContactLists lists{sim.pair_list(), sim.plane_lists(), sim.shell_lists(), std::nullopt, {}};
-  lists.pairs.masked = false;
+  ContactLists lists = sim.contact_lists();
+  lists.family[0].pairs.masked = false;
   std::fill(p.F.begin(), p.F.end(), Vec3::Zero());
   field.add_contact_forces(w, lists, 0.0);
   return p.F;

@@ -1,4 +1,4 @@
-// The contact law (contact/contact_law.hpp) is written once and runs on one double and on the
+// The contact model (contact/contact_model.hpp, the paper's: contact/tsuji_model.hpp) is written once and runs on one double and on the
 // eight lanes of a simd::Wide: every lane must get the bits the scalar evaluation gives, for every
 // combination of effects and for each case of the spring (zero, along the normal, tilted beyond
 // the series of rotate_into_tangent_plane, sticking, sliding). And what the law must satisfy
@@ -8,8 +8,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "contact/contact_law.hpp"
+#include "contact/contact_model.hpp"
 #include "contact/hertz_normal.hpp"
+#include "contact/tsuji_model.hpp"
 #include "support/effect_combinations.hpp"
 #include "support/scenes.hpp"
 
@@ -20,9 +21,28 @@ using simd::Wide;
 
 Vec3 unit(testing::Random& rng) { return rng.in_box(1.0).normalized(); }
 
+using Hertz = TsujiModel<HertzNormal>;
+
+struct LaneConstants {
+  double kn, kt0, gamma0, gamma_t0, mu;
+};
+
+template <class T>
+typename Hertz::Constants<T> hertz_constants(T kn, T kt0, T gamma0, T gamma_t0, T mu) {
+  typename Hertz::Constants<T> c{};
+  c.normal.kn = kn, c.tangential.kt0 = kt0, c.tangential.mu = mu, c.damping.gamma0 = gamma0, c.damping.gamma_t0 = gamma_t0;
+  return c;
+}
+Hertz::Constants<double> hertz_constants(const LaneConstants& k) { return hertz_constants(k.kn, k.kt0, k.gamma0, k.gamma_t0, k.mu); }
+
+template <Effects Fx, class T>
+ContactForce<T> contact_force(const ContactGeometry<T>& g, const typename Hertz::Constants<T>& k, V3<T>& xi, double dt) {
+  return Hertz::force<Fx>(Hertz::Params{}, g, k, xi, dt);
+}
+
 struct Lane {
   ContactGeometry<double> g;
-  ContactConstants<double> k;
+  LaneConstants k;
   V3<double> xi;
 };
 
@@ -65,7 +85,6 @@ class ContactLaw : public ::testing::TestWithParam<std::size_t> {};
 template <Effects Fx>
 void check_lanes(const Lane* lanes, double dt) {
   ContactGeometry<Wide> g;
-  ContactConstants<Wide> k;
   V3<Wide> xi;
   g.n = pack_v3(lanes, [](const Lane& l) { return l.g.n; });
   g.vc = pack_v3(lanes, [](const Lane& l) { return l.g.vc; });
@@ -73,15 +92,13 @@ void check_lanes(const Lane* lanes, double dt) {
   g.vc_frame = pack_v3(lanes, [](const Lane& l) { return l.g.vc_frame; });
   xi = pack_v3(lanes, [](const Lane& l) { return l.xi; });
   g.h = pack(lanes, [](const Lane& l) { return l.g.h; });
-  k.kn = pack(lanes, [](const Lane& l) { return l.k.kn; });
-  k.kt0 = pack(lanes, [](const Lane& l) { return l.k.kt0; });
-  k.gamma0 = pack(lanes, [](const Lane& l) { return l.k.gamma0; });
-  k.gamma_t0 = pack(lanes, [](const Lane& l) { return l.k.gamma_t0; });
-  k.mu = pack(lanes, [](const Lane& l) { return l.k.mu; });
-  const ContactForce<Wide> wide = contact_force<HertzNormal, Fx>(g, k, xi, dt);
+  const auto k = hertz_constants(pack(lanes, [](const Lane& l) { return l.k.kn; }), pack(lanes, [](const Lane& l) { return l.k.kt0; }),
+                                 pack(lanes, [](const Lane& l) { return l.k.gamma0; }), pack(lanes, [](const Lane& l) { return l.k.gamma_t0; }),
+                                 pack(lanes, [](const Lane& l) { return l.k.mu; }));
+  const ContactForce<Wide> wide = contact_force<Fx>(g, k, xi, dt);
   for (int m = 0; m < simd::kLanes; ++m) {
     Lane l = lanes[m];
-    const ContactForce<double> one = contact_force<HertzNormal, Fx>(l.g, l.k, l.xi, dt);
+    const ContactForce<double> one = contact_force<Fx>(l.g, hertz_constants(l.k), l.xi, dt);
     const auto expect_same = [&](double a, double b, const char* what) {
       EXPECT_TRUE(same(a, b)) << what << " of lane " << m << " (spring case " << m % 6 << "): " << a << " vs " << b;
     };
@@ -121,7 +138,7 @@ TEST(ContactLaw, ForceFollowsEquation3AndStaysInTheCoulombCone) {
     still.vc = still.vc_frame = {0.0, 0.0, 0.0};
     still.n_frame = still.n;
     V3<double> xi = l.xi;
-    const ContactForce<double> f = contact_force<HertzNormal, fx>(still, l.k, xi, 1e-5);
+    const ContactForce<double> f = contact_force<fx>(still, hertz_constants(l.k), xi, 1e-5);
     EXPECT_NEAR(f.Fn, l.k.kn * std::pow(l.g.h, 1.5), 1e-14 * f.Fn);  // Eq. 3
     const double Ft = std::sqrt(dot(f.Ft, f.Ft));
     EXPECT_LE(Ft, l.k.mu * f.Fn * (1.0 + 1e-14));  // |Ft| <= mu Fn (Eq. 5)

@@ -12,7 +12,9 @@
 
 #include "contact/hertz_normal.hpp"
 #include "core/cpu_features.hpp"
-#include "forces/normal_law.hpp"
+#include "contact/tsuji_model.hpp"
+#include "forces/contact_loop.hpp"
+#include "forces/contact_models.hpp"
 #include "forces/pair_contacts.hpp"
 #include "support/effect_combinations.hpp"
 #include "support/scenes.hpp"
@@ -24,13 +26,31 @@ constexpr double kLoopTolerance = 1e-12;  // relative to the largest value; only
 
 struct Case {
   World world;
-  ContactLists lists;
+  ContactFamily lists;
 };
 
-ContactConstants<double> random_constants(testing::Random& rng, double scale) {
+// The constants of the paper's model (contact/tsuji_model.hpp), as the reference reads them.
+using Hertz = TsujiModel<HertzNormal>;
+struct LoopConstants {
+  double kn, kt0, gamma0, gamma_t0, mu;
+};
+void set_k(ConstantArrays& a, std::size_t k, const LoopConstants& c) {
+  Hertz::Constants<double> h{};
+  h.normal.kn = c.kn, h.tangential.kt0 = c.kt0, h.tangential.mu = c.mu, h.damping.gamma0 = c.gamma0, h.damping.gamma_t0 = c.gamma_t0;
+  set_constants_at<Hertz>(a, k, h);
+}
+LoopConstants k_at(const ConstantArrays& a, std::size_t k) {
+  const Hertz::Constants<double> h = constants_at<Hertz>(a, k);
+  return {h.normal.kn, h.tangential.kt0, h.damping.gamma0, h.damping.gamma_t0, h.tangential.mu};
+}
+
+LoopConstants random_constants(testing::Random& rng, double scale) {
   return {scale * rng.uniform(1.0, 2.0), scale * rng.uniform(1.0, 2.0), 1e-3 * scale * rng.uniform(0.1, 1.0),
           1e-3 * scale * rng.uniform(0.1, 1.0), rng.uniform(0.1, 0.5)};
 }
+
+// The engine's model `hertz` for effects fx (no material is read: the constants are set by hand).
+std::unique_ptr<SceneModel> hertz_model(const Effects& fx) { return contact_model("hertz").make(ContactSetting{}, fx); }
 
 Case random_case(bool friction, bool rotation) {
   testing::Random rng(17);
@@ -51,9 +71,10 @@ Case random_case(bool friction, bool rotation) {
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
       if ((p.x[i] - p.x[j]).norm() - p.r[i] - p.r[j] < 5e-4) pairs.push_back({i, j, p.r[i] + p.r[j]});  // touching, or within a skin
+  c.lists.pairs.k.resize(Hertz::constant_count(), 0);
   c.lists.pairs.replace(pairs, friction);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    c.lists.pairs.k.set(k, random_constants(rng, 1.0));
+    set_k(c.lists.pairs.k, k, random_constants(rng, 1.0));
     if (friction) c.lists.pairs.spring[k] = spring(static_cast<int>(k));
   }
   c.world.planes.push_back(PlaneWall{Vec3(0, 0, -0.009), Vec3(0, 0, 1), Vec3(0.01, -0.02, 0.005), 0});
@@ -61,11 +82,12 @@ Case random_case(bool friction, bool rotation) {
                                           ShellContactRadius::concave});
   for (auto* walls : {&c.lists.planes, &c.lists.shells}) {
     walls->emplace_back();
+    walls->back().k.resize(Hertz::constant_count(), 0);
     std::vector<std::int32_t> all(n);
     for (int i = 0; i < n; ++i) all[i] = i;
     walls->back().replace(all, friction);
     for (int i = 0; i < n; ++i) {
-      walls->back().k.set(i, random_constants(rng, 1e6));
+      set_k(walls->back().k, static_cast<std::size_t>(i), random_constants(rng, 1e6));
       if (friction) walls->back().spring[i] = spring(i);
     }
   }
@@ -88,7 +110,7 @@ struct Contact {
 };
 
 // Returns the force on body 1 and its tangential part; advances and caps the spring.
-std::pair<Vec3, Vec3> reference_force(const Effects& fx, const Contact& c, const ContactConstants<double>& k, Vec3& xi,
+std::pair<Vec3, Vec3> reference_force(const Effects& fx, const Contact& c, const LoopConstants& k, Vec3& xi,
                                       double dt) {
   if (fx.friction) {
     rotate_into_plane(xi, c.n_frame);
@@ -137,7 +159,7 @@ void reference_step(Case& c, const Effects& fx, double dt) {
       ct.n_frame = dh / dh.norm();
       ct.vc_frame = vij - ((p.r[i] - 0.5 * hh) * spin(i) + (p.r[j] - 0.5 * hh) * spin(j)).cross(ct.n_frame);
     }
-    const auto [F, Ft] = reference_force(fx, ct, pl.k.at(k), xi, dt);
+    const auto [F, Ft] = reference_force(fx, ct, k_at(pl.k, k), xi, dt);
     p.F[i] += F, p.F[j] -= F;
     if (fx.rotation) p.T[i] -= ai * ct.n.cross(Ft), p.T[j] -= aj * ct.n.cross(Ft);
   }
@@ -162,7 +184,7 @@ void reference_step(Case& c, const Effects& fx, double dt) {
         geometry(p.x[i] - 0.5 * dt * (p.v[i] - u), p.r[i], ct.n_frame, h_half, sv);
         ct.vc_frame = p.v[i] - sv - ((p.r[i] - 0.5 * h_half) * spin(i)).cross(ct.n_frame);
       }
-      const auto [F, Ft] = reference_force(fx, ct, l.k.at(k), xi, dt);
+      const auto [F, Ft] = reference_force(fx, ct, k_at(l.k, k), xi, dt);
       p.F[i] += F;
       if (fx.rotation) p.T[i] -= ai * ct.n.cross(Ft);
       load.force -= F;
@@ -199,7 +221,7 @@ class ForceLoops : public ::testing::TestWithParam<std::size_t> {};
 TEST_P(ForceLoops, LoopsComputeTheEquationsContactByContact) {
   const Effects fx = testing::effects_of(GetParam());
   Case ref = random_case(fx.friction, fx.rotation), loop = ref;
-  const auto loops = normal_law("hertz").loops(fx);
+  const auto loops = hertz_model(fx);
   std::vector<std::int32_t> scratch;
   const double dt = 1e-6;
   for (int step = 0; step < 3; ++step) {  // springs advanced by the loop are advanced again
@@ -247,7 +269,7 @@ TEST_P(IsaPaths, EveryInstructionSetGivesTheSameBits) {
   if (cpu::best_vector_isa() == cpu::VectorIsa::portable) GTEST_SKIP() << "this processor (or this build, without SOFTPACK_AVX512) runs the portable loops only";
   const std::vector<cpu::VectorIsa> isas{cpu::VectorIsa::portable, cpu::VectorIsa::avx512};
   std::vector<Case> cases(isas.size(), random_case(fx.friction, fx.rotation));
-  const auto loops = normal_law("hertz").loops(fx);
+  const auto loops = hertz_model(fx);
   std::vector<std::int32_t> scratch;
   testing::Random rng(5);
   std::size_t opened = 0, closed_again = 0;

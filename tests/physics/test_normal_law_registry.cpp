@@ -15,6 +15,7 @@
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "contact/tsuji_model.hpp"
 #include "forces/compile_loops.hpp"
 #include "scene/scene_yaml.hpp"
 #include "sim/simulation.hpp"
@@ -65,8 +66,8 @@ struct CountingTestNormal {
 };
 
 // The registration lines.
-const bool registered = (add_normal_law(make_normal_law<LinearTestNormal>()), true);
-const bool registered_counting = (add_normal_law(make_normal_law<CountingTestNormal>()), true);
+const bool registered = (add_contact_model(make_contact_model<TsujiModel<LinearTestNormal>>()), true);
+const bool registered_counting = (add_contact_model(make_contact_model<TsujiModel<CountingTestNormal>>()), true);
 
 // Two equal spheres approaching head-on at relative speed 2 v0 along x; returns the relative
 // speed after they part and the time they touched.
@@ -147,12 +148,12 @@ neighbor: {skin: 0.2, level_ratio: 2.0}
     const Simulation sim(bad);
     FAIL() << "an unknown law was accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("effects.normal: 'herts' is not a normal law of this engine (did you mean 'hertz'?); "
+    EXPECT_NE(std::string(e.what()).find("effects.normal: 'herts' is not a contact model of this engine (did you mean 'hertz'?); "
                                          "allowed: hertz, linear-test, counting-test"),
               std::string::npos)
         << e.what();
   }
-  EXPECT_THROW(add_normal_law(make_normal_law<LinearTestNormal>()), std::invalid_argument);  // the name is taken
+  EXPECT_THROW(add_contact_model(make_contact_model<TsujiModel<LinearTestNormal>>()), std::invalid_argument);  // the name is taken
 }
 
 // Three spheres in a row, B - A - C, and a plane under C: A has two contacts, B one, C two (A

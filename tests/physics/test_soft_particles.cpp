@@ -93,7 +93,7 @@ TEST(SoftParticles, OnAWallTheTangentialSpringIsTheLawFilesEq8AndSlidesAtMuSoft)
         Simulation sim(on_a_wall(R, dn, true));
         SimulationState st = sim.state();
         const double ht = fraction * mu * Fn / kt;
-        st.soft_plane_springs = {{SimulationState::WallSpring{0, Vec3(ht, 0, 0)}}};
+        st.plane_springs = {{SimulationState::WallSpring{0, Vec3(ht, 0, 0)}}};
         sim.restore(st);
         sim.run_steps(1);  // held: the spring does not move; the force is the law's
         const Vec3 F = sim.particles().F[0];
@@ -172,7 +172,8 @@ TEST(SoftParticles, MomentaOfAMixedCloudAreConserved) {
   long soft_contacts = 0;
   for (int chunk = 0; chunk < 40; ++chunk) {
     sim.run_steps(200);
-    for (std::size_t k = 0; k < sim.soft_lists()->pairs.size(); ++k) soft_contacts += sim.soft_lists()->pairs.spring[k] != Vec3::Zero();
+    const PairList& soft_pairs = sim.contact_lists().family.at(kSoftParticleFamily).pairs;
+    for (std::size_t k = 0; k < soft_pairs.size(); ++k) soft_contacts += soft_pairs.spring[k] != Vec3::Zero();
   }
   const auto [P1, L1, sP1, sL1] = momenta();
   EXPECT_GT(soft_contacts, 0) << "the cloud must have closed soft contacts with sliding springs";
@@ -209,7 +210,7 @@ TEST(SoftParticles, AnElasticSoftCollisionConservesEnergyAndTheWatchdogHolds) {
     EXPECT_GT(deepest, 0.2) << "the collision must go deep into the law";
     EXPECT_LT(max_drift, 2e-3 * E0) << (pair ? "two soft-particles" : "soft-particle on a wall");
     EXPECT_NEAR(sim.particles().v[0].z(), 0.2, 1e-3 * 0.2) << "it comes back with its speed";
-    EXPECT_EQ(sim.force_field().soft()->stats().beyond_range, 0);
+    EXPECT_EQ(sim.force_field().range().beyond_range, 0);
   }
 }
 
@@ -220,7 +221,7 @@ TEST(SoftParticles, BeyondTheMeasuredRangeAContactIsCountedOrStopsTheRun) {
   {
     Simulation sim(s);
     sim.run_steps(3);
-    const SoftContactStats& stats = sim.force_field().soft()->stats();
+    const RangeStats stats = sim.force_field().range();
     EXPECT_EQ(stats.beyond_range, 4);  // the construction's evaluation and three steps
     EXPECT_NEAR(stats.max_dn, top + 0.1, 1e-12);
     EXPECT_EQ(stats.plane, 0);
@@ -253,7 +254,7 @@ TEST(SoftParticles, ARunWithSoftSpringsContinuesBitForBitFromItsState) {
   Simulation first(s);
   first.run_steps(300);
   const SimulationState st = first.state();
-  ASSERT_FALSE(st.soft_plane_springs.at(0).empty()) << "the wall contact must carry a spring";
+  ASSERT_FALSE(st.plane_springs.at(0).empty()) << "the wall contact must carry a spring";
   Simulation second(s);
   second.restore(st);
   first.run_steps(300);
@@ -261,17 +262,15 @@ TEST(SoftParticles, ARunWithSoftSpringsContinuesBitForBitFromItsState) {
   EXPECT_EQ(state_digest(first.state()), state_digest(second.state()));
 }
 
-// A scene without soft-particles has none of their state: no flags, no lists, no force term
+// A scene without soft-particles has none of their state: no flags, no lists, no model
 // (its result bits are ResultBits.ThreeRunsKeepTheDigestsOfTheirRelease's, unchanged).
 TEST(SoftParticles, ASceneWithoutThemAllocatesNothingForThem) {
   SceneDef s = testing::basic_scene();
   testing::Random rng(3);
   s.particles = testing::random_spheres_in_shell(rng, 50, 0.02, 1e-3, 2e-3, 3.5, 100, kNoBody);
   Simulation sim(s);
-  EXPECT_TRUE(sim.particles().soft.empty());
-  EXPECT_EQ(sim.soft_lists(), nullptr);
-  EXPECT_EQ(sim.force_field().soft(), nullptr);
-  EXPECT_TRUE(sim.state().soft_pair_springs.empty());
+  EXPECT_TRUE(sim.particles().family.empty());
+  EXPECT_EQ(sim.contact_lists().family.size(), 1u);
 }
 
 TEST(SoftParticles, TheSceneRulesNameTheKey) {
