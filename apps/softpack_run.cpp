@@ -16,7 +16,7 @@
 #include "core/error.hpp"
 #include "core/text_input.hpp"
 #include "core/version.hpp"
-#include "formats/law_file.hpp"
+#include "formats/scene_laws.hpp"
 #include "io/atomic_file.hpp"
 #include "relax/relaxation.hpp"
 #include "scene/scene_yaml.hpp"

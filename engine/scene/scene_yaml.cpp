@@ -92,7 +92,7 @@ DriverDef parse_driver(const ConfigNode& d) {
 // effects.soft_particles of a scene file: the law file, a relative path taken from the scene file's
 // folder (a scene travels with its laws, as a profile with its packings: packing/import.cpp), and
 // the rules of contact/soft_particle_law.hpp. The engine reads no JSON: `laws` stay empty until
-// the program reads the file (formats/law_file.hpp load_scene_laws).
+// the program reads the file (formats/scene_laws.hpp load_scene_laws).
 SoftParticlesDef parse_soft_particles(const ConfigNode& n) {
   n.allow_only({"laws", "grain_contact", "beyond_range"});
   SoftParticlesDef d;

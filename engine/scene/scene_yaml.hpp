@@ -28,7 +28,7 @@ struct SceneFile {
 /// Parses and validates a scene document. Soft-particle laws are not read here (the engine
 /// reads no JSON): effects.soft_particles holds the law file's path (SoftParticlesDef::law_file)
 /// and empty laws, which a Simulation refuses until the program has read them
-/// (formats/law_file.hpp load_scene_laws).
+/// (formats/scene_laws.hpp load_scene_laws).
 SceneFile parse_scene(const ConfigNode& root);
 SceneFile load_scene_file(const std::string& path);
 

@@ -13,7 +13,7 @@ namespace softpack {
 
 /// Whether a scene's soft-particle laws must be there. A scene file's reader (scene/scene_yaml.hpp)
 /// checks its scene before the program has read the law file it names (SoftParticlesDef::law_file,
-/// formats/law_file.hpp load_scene_laws, which then checks the rest): `pending` skips the rules
+/// formats/scene_laws.hpp load_scene_laws, which then checks the rest): `pending` skips the rules
 /// that need the laws while they are empty. Everything else, Simulation first, uses `loaded`, so
 /// that no scene runs soft-particles without laws.
 enum class SoftLaws { loaded, pending };

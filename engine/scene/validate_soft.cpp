@@ -68,13 +68,13 @@ void validate_soft_particles(const SceneDef& s, SoftLaws laws) {
               "effects.soft_particles");
   if (!def.laws.soft_solid && !def.laws.soft_soft) {
     // A scene file's laws are read after its scene, by the program (the engine reads no JSON),
-    // which then checks the rules below (formats/law_file.hpp load_scene_laws). Simulation asks
+    // which then checks the rules below (formats/scene_laws.hpp load_scene_laws). Simulation asks
     // for them (SoftLaws::loaded): empty laws are refused here, not run.
     if (laws == SoftLaws::pending && !def.law_file.empty()) return;
     if (def.law_file.empty())
       fail(key + ".laws", "no laws: soft-particle contacts need a law file's laws (formats/law_file.hpp)");
     fail(key + ".laws", fmt::format("the law file {} has not been read: a program that runs a scene file reads its laws "
-                                    "first (formats/law_file.hpp load_scene_laws)",
+                                    "first (formats/scene_laws.hpp load_scene_laws)",
                                     def.law_file));
   }
   if (!(std::isfinite(def.laws.R0) && def.laws.R0 > 0.0)) fail(key + ".laws", "the law file's reference radius must be > 0");

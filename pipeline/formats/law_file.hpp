@@ -27,21 +27,14 @@
 // another length than mu (or empty), a variant or rule not listed above, a radius_range not
 // 0 < R_min <= R_max, a checked_ratio <= 0.
 #pragma once
-#include <fmt/format.h>
-
 #include <cstdint>
-#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "contact/soft_particle_law.hpp"
-#include "core/error.hpp"
 #include "core/types.hpp"
-#include "scene/scene_yaml.hpp"
-#include "scene/validate.hpp"
 
 namespace softpack {
 
@@ -120,34 +113,5 @@ LawFile read_law_file(const std::string& path);
 /// file in messages. The scaling is used whatever its variant: with "fixed" a larger
 /// soft-particle holds more grains of the same size, with "self-similar" larger grains.
 SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source);
-
-/// The laws of a scene file's soft-particles: reads the law file it names
-/// (effects.soft_particles.laws, SoftParticlesDef::law_file) into SoftParticlesDef::laws, then
-/// checks the rules that need them (scene/validate.hpp). The engine reads no JSON, so every
-/// program that runs a scene file calls this before it builds the Simulation, which refuses
-/// soft-particles without laws; nothing to do in a scene without soft-particles or without a law
-/// file (its laws given in code). InputError placed at the key in the scene file: a law file that
-/// does not exist or cannot be read, a bad one (read_law_file's field and rule), laws that do not
-/// cover the scene (its contacts, its radii). Inline: law_file.cpp is at the size limit.
-inline void load_scene_laws(SceneFile& file) {
-  if (!file.scene.effects.soft_particles || file.scene.effects.soft_particles->law_file.empty()) return;
-  SoftParticlesDef& def = *file.scene.effects.soft_particles;
-  const std::string key = "effects.soft_particles.laws";
-  try {
-    std::error_code ec;
-    if (!std::filesystem::exists(def.law_file, ec) && !ec)  // other failures: read_law_file's message
-      throw InputError(fmt::format("{}: '{}' does not exist; allowed: a law file (JSON, \"format\": \"softpack-laws\"), its "
-                                   "path absolute or relative to the scene file's folder",
-                                   key, def.law_file));
-    try {
-      def.laws = soft_particle_laws(read_law_file(def.law_file), def.law_file);
-    } catch (const InputError& e) {
-      throw InputError(key + ": " + e.what());
-    }
-    validate_soft_particles(file.scene);
-  } catch (const InputError& e) {
-    throw file.root.locate(e);
-  }
-}
 
 }  // namespace softpack

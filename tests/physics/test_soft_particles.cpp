@@ -10,6 +10,7 @@
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
 #include "formats/law_file.hpp"
+#include "formats/scene_laws.hpp"
 #include "scene/scene_yaml.hpp"
 #include "sim/simulation.hpp"
 #include "state/state_digest.hpp"
