@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/text_input.hpp"
 #include "core/version.hpp"
+#include "formats/scene_laws.hpp"
 #include "io/atomic_file.hpp"
 #include "relax/relaxation.hpp"
 #include "scene/scene_yaml.hpp"
@@ -70,7 +71,8 @@ int main(int argc, char** argv) {
 
   try {
     const auto wall_start = Clock::now();
-    const SceneFile file = load_scene_file(scene_path);
+    SceneFile file = load_scene_file(scene_path);
+    load_scene_laws(file);  // its soft-particles' law file: the engine reads no JSON
     if (!file.run.duration && !file.run.relaxation)
       throw InputError(scene_path + ": run: nothing to do; give run.duration and/or run.relaxation");
     // The rules that need the time step (the steps of each duration), placed in the file.

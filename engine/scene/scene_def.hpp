@@ -56,6 +56,12 @@ struct SoftParticlesDef {
   SoftParticleLaws laws;  ///< formats/law_file.hpp soft_particle_laws() makes it from a law file
   GrainContactRule grain_contact = GrainContactRule::wall;
   enum class BeyondRange { report, stop } beyond_range = BeyondRange::report;
+  /// The law file a scene file names (effects.soft_particles.laws), relative paths taken from the
+  /// scene file's folder; empty for a scene built in code. The engine reads no JSON: its reader
+  /// leaves `laws` empty and the program fills them (formats/scene_laws.hpp load_scene_laws); a
+  /// Simulation refuses soft-particles without laws (scene/validate.hpp). Its initializer keeps
+  /// the three-member aggregate initializations of the code free of -Wmissing-field-initializers.
+  std::string law_file{};
 };
 
 /// Effects a scene may declare. An undeclared effect costs nothing and allocates nothing.

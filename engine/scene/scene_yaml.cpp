@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "core/error.hpp"
@@ -88,6 +89,27 @@ DriverDef parse_driver(const ConfigNode& d) {
   return HoldGroupDef{parse_group(d.at("group"))};
 }
 
+// effects.soft_particles of a scene file: the law file, a relative path taken from the scene file's
+// folder (a scene travels with its laws, as a profile with its packings: packing/import.cpp), and
+// the rules of contact/soft_particle_law.hpp. The engine reads no JSON: `laws` stay empty until
+// the program reads the file (formats/scene_laws.hpp load_scene_laws).
+SoftParticlesDef parse_soft_particles(const ConfigNode& n) {
+  n.allow_only({"laws", "grain_contact", "beyond_range"});
+  SoftParticlesDef d;
+  const ConfigNode laws = n.at("laws");
+  std::filesystem::path path = laws.string();
+  if (path.empty()) laws.fail("'' is not allowed; allowed: the path of a law file (JSON, \"format\": \"softpack-laws\")");
+  if (path.is_relative() && std::filesystem::is_regular_file(laws.file()))
+    path = (std::filesystem::path(laws.file()).parent_path() / path).lexically_normal();
+  d.law_file = path.string();
+  if (auto c = n.find("grain_contact"))
+    d.grain_contact = c->choice({"wall", "reduced-radius"}) == "wall" ? GrainContactRule::wall : GrainContactRule::reduced_radius;
+  if (auto c = n.find("beyond_range"))
+    d.beyond_range = c->choice({"report", "stop"}) == "stop" ? SoftParticlesDef::BeyondRange::stop
+                                                             : SoftParticlesDef::BeyondRange::report;
+  return d;
+}
+
 // An int: the integer the file gives must fit one (the range of the value is validate()'s).
 int int_of(const ConfigNode& n) {
   const long v = n.integer();
@@ -105,9 +127,11 @@ Material parse_material(const ConfigNode& m, const std::string& name, const std:
   return Material{name, m.at("E").number(), m.at("nu").number(), m.at("mu").number(), m.at("density").number()};
 }
 
-EffectsDef parse_effects(const ConfigNode& n) {
+EffectsDef parse_effects(const ConfigNode& n, const std::vector<std::string>& also) {
   EffectsDef e;
-  n.allow_only({"normal", "friction", "rotation", "damping", "gravity"});
+  std::vector<std::string> keys{"normal", "friction", "rotation", "damping", "gravity"};
+  keys.insert(keys.end(), also.begin(), also.end());
+  n.allow_only(keys);
   if (auto c = n.find("normal")) e.normal = c->string();  // a registered law: checked when the simulation is built
   if (auto c = n.find("friction")) e.friction = c->choice({"tsuji"}) == "tsuji";
   if (auto c = n.find("rotation")) e.rotation = c->boolean();
@@ -192,10 +216,13 @@ SceneFile parse_scene(const ConfigNode& root) {
   const ConfigNode mats = root.at("materials");
   mats.allow_only(mats.keys());  // any names, but it must be a map
   for (const std::string& name : mats.keys()) s.materials.push_back(parse_material(mats.at(name), name));
-  s.effects = parse_effects(root.at("effects"));
+  // Soft-particles in a scene file only: a profile's spheres are the packings' grains.
+  const ConfigNode effects = root.at("effects");
+  s.effects = parse_effects(effects, {"soft_particles"});
+  if (auto c = effects.find("soft_particles")) s.effects.soft_particles = parse_soft_particles(*c);
 
   for (const ConfigNode& p : root.at("particles").items()) {
-    p.allow_only({"x", "r", "material", "body", "v", "w", "mass"});
+    p.allow_only({"x", "r", "material", "body", "v", "w", "mass", "soft"});
     ParticleDef d;
     d.x = p.at("x").vec3();
     d.r = p.at("r").number();
@@ -204,6 +231,7 @@ SceneFile parse_scene(const ConfigNode& root) {
     if (auto v = p.find("v")) d.v = v->vec3();
     if (auto w = p.find("w")) d.w = w->vec3();
     if (auto m = p.find("mass")) d.mass = m->number();
+    if (auto soft = p.find("soft")) d.soft = soft->boolean();
     s.particles.push_back(d);
   }
 
@@ -246,9 +274,10 @@ SceneFile parse_scene(const ConfigNode& root) {
     if (auto r = run->find("relaxation")) out.run.relaxation = parse_relaxation(*r);
   }
 
-  // Ranges, references and contradictions: validate()'s, located in the file by their key.
+  // Ranges, references and contradictions: validate()'s, located in the file by their key; the
+  // rules that need the soft-particle laws when the program has read them (load_scene_laws).
   try {
-    validate(s);
+    validate(s, SoftLaws::pending);
     if (out.run.duration && !(*out.run.duration > 0.0 && std::isfinite(*out.run.duration)))
       throw InputError(fmt::format("run.duration: {} s is not allowed; allowed: > 0", *out.run.duration));
     if (out.run.relaxation) validate(*out.run.relaxation, "run.relaxation");

@@ -25,7 +25,10 @@ struct SceneFile {
   ConfigNode root;  ///< the document, to place later errors in it (ConfigNode::locate)
 };
 
-/// Parses and validates a scene document.
+/// Parses and validates a scene document. Soft-particle laws are not read here (the engine
+/// reads no JSON): effects.soft_particles holds the law file's path (SoftParticlesDef::law_file)
+/// and empty laws, which a Simulation refuses until the program has read them
+/// (formats/scene_laws.hpp load_scene_laws).
 SceneFile parse_scene(const ConfigNode& root);
 SceneFile load_scene_file(const std::string& path);
 
@@ -33,7 +36,8 @@ SceneFile load_scene_file(const std::string& path);
 // keys only; the ranges are validate()'s (scene/validate.hpp).
 /// `also`: keys the caller reads itself besides E, nu, mu, density (the profile's `wall`).
 Material parse_material(const ConfigNode& node, const std::string& name, const std::vector<std::string>& also = {});
-EffectsDef parse_effects(const ConfigNode& node);
+/// `also`: keys the caller reads itself (a scene file's `soft_particles`).
+EffectsDef parse_effects(const ConfigNode& node, const std::vector<std::string>& also = {});
 IntegrationDef parse_integration(const ConfigNode& node);
 NeighborDef parse_neighbor(const ConfigNode& node);
 ShellContactRadius parse_contact_radius(const ConfigNode& node);

@@ -205,7 +205,7 @@ void check_drivers(const SceneDef& s, const std::vector<DriverDef>& drivers) {
 
 }  // namespace
 
-void validate(const SceneDef& s) {
+void validate(const SceneDef& s, SoftLaws laws) {
   check_materials(s);
   if (s.particles.empty()) fail("particles", "the scene has no spheres");
   for (std::size_t i = 0; i < s.particles.size(); ++i) {
@@ -222,7 +222,7 @@ void validate(const SceneDef& s) {
   check_distinct_centres(s);
 
   validate_effects(s.effects, s.materials);
-  validate_soft_particles(s);
+  validate_soft_particles(s, laws);
 
   std::set<std::string> wall_names;
   std::set<int> shell_bodies;

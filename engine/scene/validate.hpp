@@ -11,14 +11,21 @@
 
 namespace softpack {
 
-void validate(const SceneDef& scene);
+/// Whether a scene's soft-particle laws must be there. A scene file's reader (scene/scene_yaml.hpp)
+/// checks its scene before the program has read the law file it names (SoftParticlesDef::law_file,
+/// formats/scene_laws.hpp load_scene_laws, which then checks the rest): `pending` skips the rules
+/// that need the laws while they are empty. Everything else, Simulation first, uses `loaded`, so
+/// that no scene runs soft-particles without laws.
+enum class SoftLaws { loaded, pending };
+
+void validate(const SceneDef& scene, SoftLaws laws = SoftLaws::loaded);
 
 /// The checks of each part, for a part held elsewhere (a profile's sections): `key` is the part's
 /// key path, which the messages name ("simulation.effects.damping.restitution: ...").
 void validate_material(const Material& m, const std::string& key);
 /// Soft-particle contacts: the laws the scene's contacts need, the radii they were measured at
 /// (scene/validate_soft.cpp).
-void validate_soft_particles(const SceneDef& scene);
+void validate_soft_particles(const SceneDef& scene, SoftLaws laws = SoftLaws::loaded);
 void validate_effects(const EffectsDef& e, const std::vector<Material>& materials, const std::string& key = "effects");
 void validate_integration(const IntegrationDef& in, const std::string& key = "integration");
 void validate_neighbor(const NeighborDef& nb, const std::string& key = "neighbor");

@@ -42,7 +42,7 @@ void check_radius(const SoftParticleLaws& laws, const SoftSceneLaw& law, const s
 
 }  // namespace
 
-void validate_soft_particles(const SceneDef& s) {
+void validate_soft_particles(const SceneDef& s, SoftLaws laws) {
   std::size_t soft = 0, solid = 0;
   for (std::size_t i = 0; i < s.particles.size(); ++i) {
     const ParticleDef& p = s.particles[i];
@@ -54,7 +54,8 @@ void validate_soft_particles(const SceneDef& s) {
     }
     ++soft;
     if (!s.effects.soft_particles)
-      fail(key + ".soft", "a soft-particle needs effects.soft_particles (the law file its contacts follow)");
+      fail(key + ".soft", "a soft-particle needs effects.soft_particles (the law file its contacts follow); allowed: "
+                          "soft: true with effects.soft_particles declared, or soft: false");
     if (p.body != kNoBody)
       fail(key + ".body", "a soft-particle is one sphere, not a grain of a shell's body: give it no body");
   }
@@ -62,7 +63,20 @@ void validate_soft_particles(const SceneDef& s) {
   const SoftParticlesDef& def = *s.effects.soft_particles;
   const std::string key = "effects.soft_particles";
   if (s.effects.normal.empty()) fail(key, "soft-particle contacts run with the solid spheres' law: declare effects.normal");
-  if (soft == 0) fail(key, "declared, but no sphere is soft (particles[i].soft: true)");
+  if (soft == 0)
+    fail(key, "declared, but no sphere is soft; allowed: at least one sphere with soft: true (particles[i].soft), or no "
+              "effects.soft_particles");
+  if (!def.laws.soft_solid && !def.laws.soft_soft) {
+    // A scene file's laws are read after its scene, by the program (the engine reads no JSON),
+    // which then checks the rules below (formats/scene_laws.hpp load_scene_laws). Simulation asks
+    // for them (SoftLaws::loaded): empty laws are refused here, not run.
+    if (laws == SoftLaws::pending && !def.law_file.empty()) return;
+    if (def.law_file.empty())
+      fail(key + ".laws", "no laws: soft-particle contacts need a law file's laws (formats/law_file.hpp)");
+    fail(key + ".laws", fmt::format("the law file {} has not been read: a program that runs a scene file reads its laws "
+                                    "first (formats/scene_laws.hpp load_scene_laws)",
+                                    def.law_file));
+  }
   if (!(std::isfinite(def.laws.R0) && def.laws.R0 > 0.0)) fail(key + ".laws", "the law file's reference radius must be > 0");
   const bool friction = s.effects.friction;
   const bool need_solid = !s.planes.empty() || solid > 0, need_soft = soft > 1;

@@ -7,8 +7,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "config/yaml_node.hpp"
 #include "core/error.hpp"
 #include "formats/law_file.hpp"
+#include "formats/scene_laws.hpp"
+#include "scene/scene_yaml.hpp"
 #include "sim/simulation.hpp"
 #include "state/state_digest.hpp"
 #include "support/scenes.hpp"
@@ -302,6 +305,41 @@ TEST(SoftParticles, TheSceneRulesNameTheKey) {
   s.integration.safety.reset();
   s.integration.dt = 1e-2;
   EXPECT_NE(refusal(s).find("soft-particle contacts' limit"), std::string::npos) << refusal(s);
+}
+
+// A scene file names its law file; the engine reads no JSON, so its reader leaves the laws empty
+// and a Simulation refuses them until the program has read them (load_scene_laws).
+TEST(SoftParticles, ASceneFileRunsOnlyWithTheLawsItNames) {
+  const std::string text = "materials:\n  grain: {E: 5.0e5, nu: 0.3, mu: 0.3, density: 2500.0}\n"
+                           "effects:\n  normal: hertz\n"
+                           "  soft_particles: {laws: " + kLaws + ", grain_contact: reduced-radius, beyond_range: stop}\n"
+                           "particles:\n  - {x: [0.0, 0.0, 0.0112], r: 0.016, material: grain, mass: 0.02, soft: true}\n"
+                           "planes:\n  - {name: floor, point: [0.0, 0.0, 0.0], normal: [0.0, 0.0, 1.0], material: grain}\n"
+                           "drivers:\n  - {type: hold, group: all}\n"
+                           "integration: {safety: 0.2, tangential_history: synchronized}\n"
+                           "neighbor: {skin: 0.2, level_ratio: 2.0}\n";
+  SceneFile f = parse_scene(ConfigNode::load_string(text, "scene.yaml"));
+  ASSERT_TRUE(f.scene.effects.soft_particles);
+  const SoftParticlesDef& def = *f.scene.effects.soft_particles;
+  EXPECT_EQ(def.law_file, kLaws);
+  EXPECT_EQ(def.grain_contact, GrainContactRule::reduced_radius);
+  EXPECT_EQ(def.beyond_range, SoftParticlesDef::BeyondRange::stop);
+  EXPECT_TRUE(f.scene.particles[0].soft);
+  EXPECT_FALSE(def.laws.soft_solid || def.laws.soft_soft);
+  try {
+    Simulation sim(f.scene);
+    ADD_FAILURE() << "a Simulation was built without the soft-particle laws";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("effects.soft_particles.laws: the law file " + kLaws + " has not been read"),
+              std::string::npos)
+        << e.what();
+  }
+  load_scene_laws(f);
+  EXPECT_EQ(def.laws.source, kLaws);
+  EXPECT_EQ(def.laws.R0, law_file().reference_radius);
+  Simulation sim(f.scene);
+  const double expected = eq7(scene_laws("soft-solid").normal, 0.3);  // R = R0, h = 0.3 R0
+  EXPECT_NEAR(-sim.plane_loads()[0].force.z(), expected, 1e-9 * expected);
 }
 
 }  // namespace
