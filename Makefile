@@ -123,8 +123,10 @@ scenes: | build-tools  ## run the example scenes of experiments/scenes/ (DATA/sc
 	  $(RUN) $(BUILD)/bin/softpack-run --scene $$scene --out $$out --quiet || exit 1; \
 	done
 
+# ctest runs $(JOBS) tests at once: each on one engine thread unless SOFTPACK_THREADS says
+# otherwise (the tests of threads ask for theirs; core/parallel.hpp).
 test: build  ## build and run the test suite (ctest)
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	cd $(BUILD) && SOFTPACK_THREADS=$${SOFTPACK_THREADS:-1} ctest --output-on-failure -j $(JOBS)
 
 # The sanitizer build checks our C++ for memory errors and undefined behaviour: -O1 (what
 # AddressSanitizer is made for), -g1 (line tables for the reports' stacks; full debug info tripled
@@ -138,7 +140,7 @@ test-sanitize:  ## the tests of our C++ under AddressSanitizer + UndefinedBehavi
 	  -DSOFTPACK_SANITIZE=ON -DSOFTPACK_BENCH=OFF -DSOFTPACK_AVX512=OFF \
 	  $(if $(filter true,$(CI)),-DSOFTPACK_WERROR=ON)
 	cmake --build $(BUILD_SANITIZE) -j $(JOBS)
-	cd $(BUILD_SANITIZE) && ctest --output-on-failure -j $(JOBS) $(if $(SANITIZE_SKIPS),-LE "$(SANITIZE_SKIPS)")
+	cd $(BUILD_SANITIZE) && SOFTPACK_THREADS=$${SOFTPACK_THREADS:-1} ctest --output-on-failure -j $(JOBS) $(if $(SANITIZE_SKIPS),-LE "$(SANITIZE_SKIPS)")
 
 .PHONY: test-all
 test-all: test  ## on demand: make test, then every label under the sanitizers too (tests/README.md)

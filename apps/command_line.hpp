@@ -88,7 +88,9 @@ inline CLI::Option* add_threads_option(CLI::App& app) {
   return app
       .add_option_function<int>(
           "--threads", [](const int& n) { parallel::set_threads(n); },
-          "threads of the engine's force loops (default: SOFTPACK_THREADS, else 1; the results are the same bits for any count)")
+          fmt::format("threads of the engine (default: SOFTPACK_THREADS, else the cores this process may use, one per {} spheres at "
+                      "most, 1 under make -j; the results are the same bits for any count)",
+                      parallel::kSpheresPerThread))
       ->check(CLI::Range(1, 1024));
 }
 

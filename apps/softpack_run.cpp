@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
          {{"code_version", code_version()},
           {"config", read_text_input(scene_path, "a scene file (YAML)")},
           {"seconds", seconds},
-          {"threads", parallel::threads()}}},
+          {"threads", parallel::threads_for(file.scene.particles.size())}}},
     };
     if (out_path.empty()) std::cout << report.dump(2) << "\n";
     else write_file_atomically(out_path, report.dump(2) + "\n");

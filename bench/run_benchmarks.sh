@@ -64,7 +64,7 @@ skin="$(field skin "$tmp/params.out")"
 # 2. Google Benchmark (tables on stdout; its JSON copy feeds the summary)
 echo
 echo "== bench_engine (Google Benchmark) =="
-SOFTPACK_BENCH_PACKING="$packing" run engine "$engine" --benchmark_counters_tabular=true \
+SOFTPACK_THREADS=1 SOFTPACK_BENCH_PACKING="$packing" run engine "$engine" --benchmark_counters_tabular=true \
   --benchmark_out="$tmp/engine.json" --benchmark_out_format=json
 grep -v '^\*\*\*WARNING' "$tmp/engine.out" || true
 
@@ -78,7 +78,7 @@ for ((rep = 1; rep <= repeats; rep++)); do
     if [ "$mode" = threads ]; then  # softpack on 2 threads (engine/core/parallel.hpp): the same bits, its time
       for size in 5000 1600; do
         p="$packing"; [ "$size" = 1600 ] && p="$packing_small"
-        run sp1 "$scene" --packing "$p" --spheres "$size" --steps "$steps" --digest
+        SOFTPACK_THREADS=1 run sp1 "$scene" --packing "$p" --spheres "$size" --steps "$steps" --digest
         SOFTPACK_THREADS=2 run sp "$scene" --packing "$p" --steps "$steps" --digest
         [ "$(field state_digest "$tmp/sp.out")" = "$(field state_digest "$tmp/sp1.out")" ] ||
           die "$size spheres: 2 threads gave other bits than 1 (state digests $(field state_digest "$tmp/sp.out") and $(field state_digest "$tmp/sp1.out"))"
@@ -87,7 +87,7 @@ for ((rep = 1; rep <= repeats; rep++)); do
       done
       continue
     fi
-    run sp "$scene" --packing "$packing" --steps "$steps" "${flag[@]}"
+    SOFTPACK_THREADS=1 run sp "$scene" --packing "$packing" --steps "$steps" "${flag[@]}"
     sp[$mode,$rep]="$(field softpack_loop_time_s "$tmp/sp.out")"
     sp_info[$mode]="contacts=$(field contacts "$tmp/sp.out") rebuilds=$(field rebuilds "$tmp/sp.out")"
     run lm "$here/lammps/run_confined.sh" "$packing" --Rs "$Rs" --dt "$dt" --nsteps "$steps" \

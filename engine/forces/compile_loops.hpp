@@ -103,7 +103,7 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
   pairs.prepare();
   for (auto& w : planes) w.prepare();
   for (auto& w : shells) w.prepare();
-  if (parallel::threads() == 1) {
+  if (parallel::threads_for(p.size()) == 1) {
     closed.resize(kScratch);
     const auto pass = [&](const auto& b) {
       run_blocks(pairs, closed.data(), b);
@@ -114,7 +114,7 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
     pass(block);
     return;
   }
-  const auto parts = static_cast<std::size_t>(parallel::threads());
+  const auto parts = static_cast<std::size_t>(parallel::threads_for(p.size()));
   closed.resize(parts * kScratch);
   const auto scratch = [&](std::size_t t) { return closed.data() + t * kScratch; };
   // A masked list (an active set: never with a body state) runs on this thread.

@@ -60,8 +60,8 @@ struct PairContacts {
       if (list.spring_live.size() != list.size()) list.spring_live.assign(list.size(), 1);  // a fresh list: any may be
     index = list.masked ? list.live.data() : nullptr;
     begin = 0, end = list.masked ? list.live.size() : list.size(), j_end = spheres;
-    direct = parallel::threads() == 1 || list.masked;
-    if (!direct) cut(static_cast<std::size_t>(parallel::threads()));
+    direct = parallel::threads_for(spheres) == 1 || list.masked;
+    if (!direct) cut(static_cast<std::size_t>(parallel::threads_for(spheres)));
   }
 
   /// The copy that thread t of `parts` runs in `phase` (0: its ghosts, 1: its own pairs).

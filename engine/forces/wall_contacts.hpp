@@ -39,7 +39,7 @@ struct WallContacts {
 
   void prepare() {
     begin = 0, end = list.size();
-    direct = parallel::threads() == 1;
+    direct = parallel::threads_for(spheres) == 1;
     if (!direct) list.results.resize(list.size());
   }
   WallContacts part(std::size_t, std::size_t t, std::size_t parts) const {

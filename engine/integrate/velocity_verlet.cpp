@@ -51,7 +51,7 @@ void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers
   const Vec3* const v = p.v.data();
   const Vec3* const x0 = neighbours.x_at_build().data();
   Neighbours::LargestTwo moved = movers ? movers->asleep_moved : Neighbours::LargestTwo{};
-  if (movers || parallel::threads() == 1) {
+  if (movers || parallel::threads_for(p.size()) == 1) {
     for_free(p, movers, [&](std::size_t i) {
       x[i] += dt * v[i];
       moved.add((x[i] - x0[i]).squaredNorm());
@@ -60,7 +60,7 @@ void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers
     return;
   }
   // Each share's two largest, then theirs: the same two values whatever the cut.
-  const std::size_t n = p.size(), parts = static_cast<std::size_t>(parallel::threads());
+  const std::size_t n = p.size(), parts = static_cast<std::size_t>(parallel::threads_for(n));
   std::vector<Neighbours::LargestTwo> of_share(parts);
   parallel::for_each_block(parts, [&](std::size_t t) {
     Neighbours::LargestTwo m;  // a local: the shares' records share a cache line

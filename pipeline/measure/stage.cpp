@@ -146,7 +146,7 @@ StageSummary run(const StageOptions& o, const StageProgress& progress) {
   if (points.empty()) return StageSummary{0, 0.0, true};  // stopped on purpose (tests)
   // The stage's wall-clock time since it began, and its process's CPU time (with its start-up).
   const Elapsed stage_time{watch.elapsed().wall, process_cpu_seconds()};
-  write_sweep_results_file(o.out, points, PointProvenance{o.stage, o.scene, c.config, c.code_version, c.stamp, parallel::threads()}, packings,
+  write_sweep_results_file(o.out, points, PointProvenance{o.stage, o.scene, c.config, c.code_version, c.stamp, parallel::threads_for(c.setup.scene.particles.size())}, packings,
                            own_packing_sha256, static_cast<std::uint64_t>(o.seed), stage_time);
   return StageSummary{points.size(), stage_time.wall, false};
 }

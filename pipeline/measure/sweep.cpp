@@ -78,7 +78,8 @@ std::vector<PointResult> run_sweep(const SweepContext& c, const SweepStage& stag
   for (std::size_t chain = 0; chain < stage.chains(); ++chain) total += stage.points(chain);
   std::vector<PointResult> points;
   points.reserve(total);
-  const PointProvenance provenance{stage.name(), scene_name(c.setup.kind), c.config, c.code_version, c.stamp, parallel::threads()};
+  const PointProvenance provenance{stage.name(), scene_name(c.setup.kind), c.config, c.code_version, c.stamp,
+                                     parallel::threads_for(c.setup.scene.particles.size())};
   std::size_t computed = 0;
   for (std::size_t chain = 0; chain < stage.chains(); ++chain) {
     Chain ch;

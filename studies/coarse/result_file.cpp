@@ -23,7 +23,7 @@ CoarseResult coarse_result(const CompressionRun& run, const Medium& m, CoarseMod
   r.grains_volume = m.grains_volume, r.packings_volume = m.packings_volume, r.target_volume = m.target_volume;
   for (std::uint64_t k : m.packing_seeds) r.packing_seeds.push_back(static_cast<std::int64_t>(k));
   r.steps = run.steps, r.dt = run.dt, r.seconds = run.time.wall, r.cpu_seconds = run.time.cpu;
-  r.threads = parallel::threads();
+  r.threads = parallel::threads_for(run.spheres);  // what the run used (core/parallel.hpp)
   r.beyond_range = run.soft.beyond_range, r.max_dn = run.soft.max_dn;
   r.rows = run.rows;
   return r;
