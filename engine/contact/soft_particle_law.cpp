@@ -29,12 +29,12 @@ SoftNormal::Constants<double> SoftNormal::constants(const Params& p, const Conta
   Constants<double> k{};
   const SoftSceneLaw* law = nullptr;
   if (b.kind != ContactPartners::Kind::pair) {
-    k.scene = 0.0, law = &*laws.soft_solid, k.R = R1;
+    k.scene = kSoftSolid, law = &*laws.soft_solid, k.R = R1;
   } else if (!(b.soft1 && b.soft2)) {
-    k.scene = 0.0, law = &*laws.soft_solid;
+    k.scene = kSoftSolid, law = &*laws.soft_solid;
     k.R = p.grain_rule == GrainContactRule::wall ? R1 : R1 * R2 / (R1 + R2);
   } else {
-    k.scene = 1.0, law = &*laws.soft_soft;
+    k.scene = kSoftSoft, law = &*laws.soft_soft;
     k.R = R1 == R2 ? R1 : 2.0 * R1 * R2 / (R1 + R2);
   }
   k.F_scale = law->normal_exponent ? std::pow(k.R / laws.R0, *law->normal_exponent) : 1.0;
@@ -43,7 +43,7 @@ SoftNormal::Constants<double> SoftNormal::constants(const Params& p, const Conta
 
 SoftTangential::Constants<double> SoftTangential::constants(const Params& p, const ContactPartners&,
                                                             const SoftNormal::Constants<double>& normal) {
-  const SoftSceneLaw& law = normal.scene == 0.0 ? *p.laws->soft_solid : *p.laws->soft_soft;
+  const SoftSceneLaw& law = normal.scene == SoftNormal::kSoftSoft ? *p.laws->soft_soft : *p.laws->soft_solid;
   return {law.tangential_exponent ? std::pow(normal.R / p.laws->R0, *law.tangential_exponent) : 1.0};
 }
 

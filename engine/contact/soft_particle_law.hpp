@@ -87,10 +87,11 @@ struct SoftParticleLaws {
 struct SoftNormal {
   static constexpr const char* name = "soft-particle";
   static constexpr bool kScalarOnly = true;
+  static constexpr double kSoftSolid = 0.0, kSoftSoft = 1.0;  ///< Constants::scene: which measured law
 
   template <class T>
   struct Constants {
-    T scene;    ///< the law: 0 soft-solid, 1 soft-soft
+    T scene;    ///< the law: kSoftSolid or kSoftSoft (a constant like the others, so a double)
     T R;        ///< Δn = h / R [m]
     T F_scale;  ///< (R/R0)^n_F
   };
@@ -104,22 +105,24 @@ struct SoftNormal {
     const SoftParticleLaws* laws = nullptr;
     GrainContactRule grain_rule = GrainContactRule::wall;
     bool stop_beyond_range = false;
-    const SoftSceneLaw& law(double scene) const { return scene == 0.0 ? *laws->soft_solid : *laws->soft_soft; }
+    const SoftSceneLaw& law(double scene) const { return scene == kSoftSoft ? *laws->soft_soft : *laws->soft_solid; }
   };
   static Params params(const ContactSetting& s) { return {s.soft_laws, s.grain_rule, s.stop_beyond_range}; }
   /// Which law and which R (the header): body 1 or body 2 is a soft-particle.
   static Constants<double> constants(const Params& p, const ContactPartners& b);
 
   struct Eval {
-    double Fn;                        ///< Eq. 7 at R
-    double dn;                        ///< Δn
-    double stiffness;                 ///< dFn/dh [N/m] (the damping's)
+    double Fn;  ///< Eq. 7 at R
+    double dn;  ///< Δn
     const SoftSceneLaw* law;
+    const Constants<double>* k;
+    /// dFn/dh [N/m] (the damping's).
+    double stiffness() const { return k->F_scale * law->normal.slope(dn) / k->R; }
   };
   static Eval evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {
     const SoftSceneLaw& law = p.law(k.scene);
     const double dn = g.h / k.R;
-    return {k.F_scale * law.normal(dn), dn, k.F_scale * law.normal.slope(dn) / k.R, &law};
+    return {k.F_scale * law.normal(dn), dn, &law, &k};
   }
   /// ∫ Fn dh = S_F R ∫ X dΔn [J].
   static double energy(const Params& p, const Constants<double>& k, double h, double, double) {
@@ -160,7 +163,7 @@ struct SoftDamping {
   struct Scale {
     T stiffness;  ///< dFn/dh [N/m]
   };
-  static Scale<double> scale(const SoftNormal::Eval& e) { return {e.stiffness}; }
+  static Scale<double> scale(const SoftNormal::Eval& e) { return {e.stiffness()}; }
   static double normal(const Params& p, const Constants<double>& k, const Scale<double>& s, double vn) {
     return 2.0 * p.zeta * std::sqrt(k.m12 * s.stiffness) * vn;
   }

@@ -29,7 +29,8 @@ bool under_parallel_make() {
 
 int cores() {
 #ifdef _OPENMP
-  return omp_get_num_procs();  // the processors this process may run on (its affinity)
+  // The processors this process may run on (its affinity), or fewer when OMP_NUM_THREADS says so.
+  return std::min(omp_get_num_procs(), omp_get_max_threads());
 #else
   return 1;
 #endif
@@ -57,11 +58,6 @@ void set_threads(int n) {
   if (n < 1 || n > 1024) throw InputError(fmt::format("--threads {} is not allowed; allowed: 1 to 1024", n));
   threads_ = n;
   asked_ = true;
-}
-
-bool threads_asked() {
-  threads();
-  return asked_;
 }
 
 int threads_for(std::size_t spheres) {

@@ -23,8 +23,6 @@ namespace softpack::parallel {
 /// it is not a whole number from 1 to 1024), else the cores this process may use (1 under a
 /// parallel make).
 int threads();
-/// Whether threads() was asked for (set_threads, SOFTPACK_THREADS) rather than the default.
-bool threads_asked();
 /// A default thread has at least this many spheres: on the 2-core machine of issue 32, two
 /// threads ran 1 600 spheres 0.72-1.20x as fast as one, 5 000 spheres 0.88-1.46x, 48 000
 /// spheres 1.38-1.60x (make bench; the same bits for any count).

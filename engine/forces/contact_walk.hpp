@@ -72,7 +72,8 @@ void for_each_closed_in_family(const World& world, const ContactFamily& lists, c
 /// Calls f(const ClosedContact&) for every contact with h > 0, family by family.
 template <class F>
 void for_each_closed_contact(const World& world, const ContactLists& lists, const ForceField& forces, F&& f) {
-  for (std::size_t m = 0; m < lists.family.size(); ++m) for_each_closed_in_family(world, lists.family[m], forces.model(m), f);
+  for (std::size_t m = 0; m < lists.family.size() && m < forces.models(); ++m)
+    for_each_closed_in_family(world, lists.family[m], forces.model(m), f);
 }
 
 }  // namespace softpack

@@ -28,6 +28,8 @@ class ForceField {
   const Effects& effects() const { return fx_; }
   /// The model of family f (0: the scene's; 1: the soft-particles').
   const SceneModel& model(std::size_t f) const { return *models_[f]; }
+  /// The number of models (0 without a normal law; the lists then have one empty family).
+  std::size_t models() const { return models_.size(); }
   /// The number of constants of each family's model (what the lists are made for).
   std::vector<std::size_t> constants() const;
   /// How far contacts went beyond the range their law was measured on, over all families.

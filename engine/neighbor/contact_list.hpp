@@ -15,7 +15,7 @@
 namespace softpack {
 
 /// The per-contact constants of a list's contacts, one array per constant (the contact model's,
-/// contact/contact_model.hpp each_constant, in its order; forces/model_loops.hpp reads and writes them).
+/// contact/contact_model.hpp each_constant, in its order; forces/contact_loop.hpp reads and writes them).
 struct ConstantArrays {
   std::vector<std::vector<double>> field;
 

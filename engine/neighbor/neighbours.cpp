@@ -12,14 +12,16 @@ Neighbours::Neighbours(const NeighborDef& def, const World& world, const std::ve
   double r_min = std::numeric_limits<double>::max();
   for (double r : world.p.r) r_min = std::min(r_min, r);
   skin_ = def.skin * r_min;
-  lists_.family.resize(constants.size());
-  for (std::size_t f = 0; f < constants.size(); ++f) {
+  // Family 0 always exists (empty without a contact law: nothing is listed).
+  listing_ = !constants.empty();
+  lists_.family.resize(std::max<std::size_t>(1, constants.size()));
+  for (std::size_t f = 0; f < lists_.family.size(); ++f) {
     ContactFamily& l = lists_.family[f];
-    l.pairs.k.resize(constants[f], 0);
+    l.pairs.k.resize(listing_ ? constants[f] : 0, 0);
     l.planes.resize(world.planes.size());
     l.shells.resize(world.shells.size());
     for (auto* walls : {&l.planes, &l.shells})
-      for (WallList& w : *walls) w.k.resize(constants[f], 0);
+      for (WallList& w : *walls) w.k.resize(listing_ ? constants[f] : 0, 0);
   }
 }
 
@@ -37,7 +39,7 @@ std::vector<NewContacts> Neighbours::rebuild(const World& world) {
   const Particles& p = world.p;
   const std::size_t n = p.size(), families = lists_.family.size();
   std::vector<NewContacts> added(families);
-  if (families > 0) {
+  if (listing_) {
     // Pairs as (i, j) with i < j, sorted: a counting sort by i, then each sphere's few partners
     // sorted by j.
     grid_.build(p.x, p.r, skin_, def_.level_ratio);

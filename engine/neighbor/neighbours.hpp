@@ -62,7 +62,7 @@ class Neighbours {
   HierarchicalGrid grid_;
   NeighborDef def_;
   double skin_ = 0.0;
-  bool friction_ = false;
+  bool friction_ = false, listing_ = false;
   std::vector<std::vector<int>> shell_members_;
   ContactLists lists_;
   std::vector<Vec3> x_at_build_, plane_at_build_, shell_at_build_;

@@ -102,7 +102,11 @@ void Simulation::restore(const SimulationState& s) {
   if (scene_.effects.friction && !neighbours_.lists().family.empty()) {
     ContactLists& lists = neighbours_.lists();
     // Each saved spring to the family of its spheres (neighbor/contact_list.hpp ContactLists).
-    const auto family = [&](int i) { return p.family_of(static_cast<std::size_t>(i)); };
+    const auto family = [&](int i) {
+      if (i < 0 || static_cast<std::size_t>(i) >= n)
+        throw InputError(fmt::format("the saved state has a spring for sphere {}, which this scene of {} spheres does not have", i, n));
+      return p.family_of(static_cast<std::size_t>(i));
+    };
     for (std::size_t f = 0; f < lists.family.size(); ++f) {
       ContactFamily& l = lists.family[f];
       std::fill(l.pairs.spring.begin(), l.pairs.spring.end(), Vec3::Zero());

@@ -132,8 +132,8 @@ void Simulation::rebuild_neighbours() {
   if (active_) active_->rebuild(world_, neighbours_.lists(), forces_);
 }
 
-// Gravity (or zero), then every contact's force through the normal law's loops. Velocities are
-// the half-step velocities v(t + dt/2) of velocity Verlet.
+// Gravity (or zero), then every contact's force, family by family through its model's loops.
+// Velocities are the half-step velocities v(t + dt/2) of velocity Verlet.
 void Simulation::compute_forces(double spring_dt) {
   Particles& p = world_.p;
   const Vec3 g = scene_.effects.gravity.value_or(Vec3::Zero());

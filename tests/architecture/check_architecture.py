@@ -44,7 +44,7 @@ INTRINSIC = re.compile(r'\b(_mm\d*_\w+|__m(128|256|512)\w*|__mmask\d+)\b|<immint
 DEFINE = re.compile(r'^\s*#\s*define\b', re.M)
 # One force loop (issue 32): a contact model's force (ContactForce, contact/contact_model.hpp) is
 # evaluated only by the loop every model and every kind of contact go through.
-FORCE_RESULT = re.compile(r'\bContactForce<')
+FORCE_RESULT = re.compile(r'\bContactForce<|\btemplate\s+force<')
 FORCE_LOOP_FILES = {"engine/forces/contact_loop.hpp", "engine/forces/pair_contacts.hpp", "engine/forces/wall_contacts.hpp"}
 SOURCES = (".hpp", ".cpp")
 

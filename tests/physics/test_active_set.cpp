@@ -216,5 +216,27 @@ TEST(ActiveSet, RefusesBadDefinitions) {
   EXPECT_EQ(sim.active_set(), nullptr);
 }
 
+// A scene without a contact law lists nothing (one empty family of lists): an active set on it
+// puts its still spheres to sleep and leaves the falling one awake, reading no list beyond its end.
+TEST(ActiveSet, WithoutAContactLawSleepsOnEmptyLists) {
+  SceneDef scene = testing::basic_scene();
+  scene.effects.normal.clear();
+  scene.effects.friction = false, scene.effects.rotation = false;
+  scene.effects.restitution.reset();
+  ParticleDef a, b;
+  a.r = b.r = 1e-3;
+  b.x = Vec3(0.01, 0, 0);
+  b.v = Vec3(0.1, 0, 0);
+  scene.particles = {a, b};
+  Simulation sim(scene);
+  EXPECT_EQ(sim.contact_lists().family.size(), 1u);
+  EXPECT_EQ(sim.pair_list().size(), 0u);
+  sim.set_active_set(active_set(1e-3, 1e-2));
+  sim.run_steps(sim.steps_for(0.012));  // past the first sleep check (0.01 s)
+  ASSERT_NE(sim.active_set(), nullptr);
+  EXPECT_TRUE(sim.active_set()->asleep(0));
+  EXPECT_FALSE(sim.active_set()->asleep(1));
+}
+
 }  // namespace
 }  // namespace softpack
