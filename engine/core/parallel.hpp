@@ -23,9 +23,9 @@ namespace softpack::parallel {
 /// it is not a whole number from 1 to 1024), else the cores this process may use (1 under a
 /// parallel make).
 int threads();
-/// A default thread has at least this many spheres: on the 2-core machine of issue 32, two
-/// threads ran 1 600 spheres 0.72-1.20x as fast as one, 5 000 spheres 0.88-1.46x, 48 000
-/// spheres 1.38-1.60x (make bench; the same bits for any count).
+/// A default thread has at least this many spheres: on the 2-core machine of issue 32 two threads
+/// ran slower than one on make bench's 1 600- and 5 000-sphere scenes and faster on the 48 000-sphere
+/// coarse-grain medium (the same bits for any count).
 inline constexpr std::size_t kSpheresPerThread = 8000;
 /// The threads a world of `spheres` spheres runs on: threads() when asked for, else no more than
 /// one per kSpheresPerThread spheres. Every stage of a world uses this count.

@@ -20,6 +20,7 @@
 #include "core/error.hpp"
 #include "forces/contact_loop.hpp"
 #include "forces/contact_models.hpp"
+#include "forces/contact_walk.hpp"
 #include "forces/pair_contacts.hpp"
 #include "forces/wall_contacts.hpp"
 #include "softpack_build.hpp"
@@ -166,38 +167,27 @@ void masked_pairs(World& world, PairList& list, const typename Model::Params& pa
   contact_loop(pairs, closed, block);
 }
 
-/// A model with a measured range (its normal sub-law's measured()): the contacts of `lists`
-/// beyond it counted into `stats`, or with the scene's `stop` a NumericalError.
+/// A model with a measured range (its normal sub-law's measured()): the closed contacts of
+/// `lists` beyond it counted into `stats`, in the walk's order, or with the scene's `stop` a
+/// NumericalError.
 template <class Model>
-void count_beyond_range(const World& world, const ContactFamily& lists, const typename Model::Params& params, RangeStats& stats) {
-  const Particles& p = world.p;
-  const auto count = [&](double h, std::size_t k, const ConstantArrays& a, int i, int j, int plane) {
-    const auto c = constants_at<Model>(a, k);
-    const double dn = h / Model::Normal::overlap_scale(c.normal);
-    if (dn > stats.max_dn) stats.max_dn = dn, stats.i = i, stats.j = j, stats.plane = plane;
-    const auto& law = Model::Normal::measured(params.normal, c.normal);
+void count_beyond_range(const World& world, const ContactFamily& lists, const SceneModel& model, const typename Model::Params& params,
+                        RangeStats& stats) {
+  for_each_closed_in_family(world, lists, model, [&](const ClosedContact& c) {
+    const double dn = c.h / c.overlap_scale(world.p);
+    const int plane = c.kind == ClosedContact::Kind::plane ? c.wall : -1;
+    if (dn > stats.max_dn) stats.max_dn = dn, stats.i = c.i, stats.j = c.j, stats.plane = plane;
+    const auto& law = Model::Normal::measured(params.normal, constants_at<Model>(*c.constants, c.k).normal);
     if (!(dn > law.dn_max)) return;
     ++stats.beyond_range;
     if (params.normal.stop_beyond_range)
       throw NumericalError(fmt::format("{} contact of sphere {} with {} at dn = {:.4g}, beyond the range its law was measured on ({:.4g} to "
                                        "{:.4g}, {}); {}",
-                                       Model::name, i, j >= 0 ? fmt::format("sphere {}", j) : fmt::format("plane {}", plane), dn,
-                                       law.dn_min, law.dn_max, Model::Normal::source(params.normal), Model::Normal::kStopKey));
-  };
-  const PairList& pairs = lists.pairs;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const int i = pairs.i[k], j = pairs.j[k];
-    const double h = pairs.r_sum[k] - (p.x[i] - p.x[j]).norm();
-    if (h > 0.0) count(h, k, pairs.k, i, j, -1);
-  }
-  for (std::size_t w = 0; w < world.planes.size(); ++w) {
-    const WallList& l = lists.planes[w];
-    for (std::size_t k = 0; k < l.size(); ++k) {
-      const int i = l.i[k];
-      const double h = world.planes[w].overlap(p.x[i], p.r[i]);
-      if (h > 0.0) count(h, k, l.k, i, -1, static_cast<int>(w));
-    }
-  }
+                                       Model::name, c.i,
+                                       c.j >= 0 ? fmt::format("sphere {}", c.j)
+                                                : fmt::format("{} {}", c.kind == ClosedContact::Kind::plane ? "plane" : "shell", c.wall),
+                                       dn, law.dn_min, law.dn_max, Model::Normal::source(params.normal), Model::Normal::kStopKey));
+  });
 }
 
 template <class Model>
@@ -223,7 +213,7 @@ class ModelOf final : public SceneModel {
   }
   void run(World& world, ContactFamily& lists, double dt, std::vector<std::int32_t>& closed) override {
     run_(world, lists, params_, dt, closed);
-    if constexpr (MeasuredRangeModel<Model>) count_beyond_range<Model>(world, lists, params_, range_);
+    if constexpr (MeasuredRangeModel<Model>) count_beyond_range<Model>(world, lists, *this, params_, range_);
   }
   void add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T,
                        std::vector<std::int32_t>& closed) const override {
@@ -258,7 +248,6 @@ template <class Model>
 ContactModelType make_contact_model(bool of_scene = true) {
   ContactModelType m;
   m.name = Model::name;
-  m.body_state = BodyStateModel<Model>;
   m.of_scene = of_scene;
   m.make = [](const ContactSetting& setting, Effects fx) -> std::unique_ptr<SceneModel> {
     return std::make_unique<loops::ModelOf<Model>>(setting, fx);

@@ -39,7 +39,6 @@ struct ContactLanes {
 /// The value of lane m.
 [[gnu::always_inline]] inline double lane(const simd::Wide& w, int m) { return w.v[m]; }
 [[gnu::always_inline]] inline Vec3 lane(const V3<simd::Wide>& v, int m) { return {v.x.v[m], v.y.v[m], v.z.v[m]}; }
-[[gnu::always_inline]] inline V3<double> lane3(const V3<simd::Wide>& v, int m) { return {v.x.v[m], v.y.v[m], v.z.v[m]}; }
 [[gnu::always_inline]] inline void set_lane(V3<simd::Wide>& v, int m, const V3<double>& x) { v.x.v[m] = x.x, v.y.v[m] = x.y, v.z.v[m] = x.z; }
 
 /// Contacts per block: what the scratch of closed indices holds.
@@ -54,7 +53,7 @@ template <class Model, Effects Fx, class Lanes>
   } else {
     ContactForce<simd::Wide> f{};
     for (int m = 0; m < live; ++m) {
-      const auto at = [m](const auto& w) { return lane3(w, m); };
+      const auto at = [m](const V3<simd::Wide>& w) { return v3(lane(w, m)); };
       const ContactGeometry<simd::Wide>& G = c.geometry;
       ContactGeometry<double> g{at(G.n), G.h.v[m], at(G.vc), {}, {}, 0.0, 0.0};
       if constexpr (Fx.friction) g.n_frame = at(G.n_frame), g.vc_frame = at(G.vc_frame);

@@ -67,7 +67,6 @@ class SceneModel {
 
 struct ContactModelType {
   std::string name;         ///< the value of effects.normal
-  bool body_state = false;  ///< the model declares a body state
   /// A model a scene may name in effects.normal (false: the soft-particle model, which runs the
   /// contacts of the spheres a scene marks soft).
   bool of_scene = true;

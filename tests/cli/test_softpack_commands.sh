@@ -61,9 +61,9 @@ threads_of() { python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))[
 cores=$(nproc)
 expect_default=$(( cores < 2 ? cores : 2 ))
 run_cloud() { "$bin/softpack-run" --scene "$tmp/cloud.yaml" --out "$tmp/cloud.json" --quiet "$@" || fail "softpack-run on the cloud: exit $?"; }
-env -u SOFTPACK_THREADS -u MAKEFLAGS "$bin/softpack-run" --scene "$tmp/cloud.yaml" --out "$tmp/cloud.json" --quiet || fail "the cloud, by default"
+env -u SOFTPACK_THREADS -u MAKEFLAGS -u OMP_NUM_THREADS "$bin/softpack-run" --scene "$tmp/cloud.yaml" --out "$tmp/cloud.json" --quiet || fail "the cloud, by default"
 [[ $(threads_of "$tmp/cloud.json") == "$expect_default" ]] || fail "16 000 spheres on $cores cores, by default: $(threads_of "$tmp/cloud.json") threads, not $expect_default"
-env -u SOFTPACK_THREADS MAKEFLAGS=" -j2 --jobserver-auth=3,4" "$bin/softpack-run" --scene "$tmp/cloud.yaml" --out "$tmp/cloud.json" --quiet ||
+env -u SOFTPACK_THREADS -u OMP_NUM_THREADS MAKEFLAGS=" -j2 --jobserver-auth=3,4" "$bin/softpack-run" --scene "$tmp/cloud.yaml" --out "$tmp/cloud.json" --quiet ||
   fail "the cloud under make -j2"
 [[ $(threads_of "$tmp/cloud.json") == 1 ]] || fail "under make -j2: $(threads_of "$tmp/cloud.json") threads, not 1"
 env -u SOFTPACK_THREADS -u MAKEFLAGS "$bin/softpack-run" --scene "$source_dir/experiments/scenes/sphere-on-wall.yaml" --out "$tmp/one.json" --quiet ||
