@@ -89,18 +89,18 @@ void drift_shells(std::vector<SphericalShell>& shells, double dt) {
 }
 
 void quench(Particles& p) {
-  const std::size_t n = p.size();
   const std::uint8_t* const driven = p.driven.empty() ? nullptr : p.driven.data();
   Vec3* const v = p.v.data();
   const Vec3* const F = p.F.data();
-  for (std::size_t i = 0; i < n; ++i)
-    if ((!driven || !driven[i]) && F[i].dot(v[i]) < 0.0) v[i].setZero();
-  if (p.rotates()) {
-    Vec3* const w = p.w.data();
-    const Vec3* const T = p.T.data();
-    for (std::size_t i = 0; i < n; ++i)
-      if ((!driven || !driven[i]) && T[i].dot(w[i]) < 0.0) w[i].setZero();
-  }
+  Vec3* const w = p.rotates() ? p.w.data() : nullptr;
+  const Vec3* const T = p.rotates() ? p.T.data() : nullptr;
+  parallel::for_each_share(p.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      if ((!driven || !driven[i]) && F[i].dot(v[i]) < 0.0) v[i].setZero();
+    if (w)
+      for (std::size_t i = begin; i < end; ++i)
+        if ((!driven || !driven[i]) && T[i].dot(w[i]) < 0.0) w[i].setZero();
+  });
 }
 
 }  // namespace softpack

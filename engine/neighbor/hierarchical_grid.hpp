@@ -48,9 +48,12 @@ class HierarchicalGrid {
   void build(std::span<const Vec3> x, std::span<const double> r, double skin, double level_ratio,
              Indexing indexing = Indexing::automatic);
 
-  /// Calls f(i, j) once for every unordered pair with |xi - xj| < ri + rj + skin.
+  /// Calls f(i, j) once for every unordered pair with |xi - xj| < ri + rj + skin. With `parts`
+  /// > 1, only the pairs of part `part`: the parts 0 .. parts - 1 together report every pair
+  /// once, and may be searched on threads at once (each a share of the spheres and of each
+  /// level's entries).
   template <class F>
-  void for_each_pair(F&& f) const;
+  void for_each_pair(F&& f, std::size_t part = 0, std::size_t parts = 1) const;
 
   std::size_t level_count() const { return levels_.size(); }
   /// Number of spheres stored on level l.
@@ -123,7 +126,7 @@ class HierarchicalGrid {
 };
 
 template <class F>
-void HierarchicalGrid::for_each_pair(F&& f) const {
+void HierarchicalGrid::for_each_pair(F&& f, std::size_t part, std::size_t parts) const {
   // Half stencil: the own cell (pairs j > i) and the 13 neighbours that follow it in
   // lexicographic order, so each pair of neighbouring cells is visited once.
   static constexpr std::array<std::array<int, 3>, 13> kHalfStencil = {{{1, 0, 0},
@@ -157,7 +160,9 @@ void HierarchicalGrid::for_each_pair(F&& f) const {
          k < end; ++k)
       visit(L.entries[k]);
   };
-  for (int i = 0; i < n; ++i) {
+  const auto share = [&](std::size_t count, std::size_t t) { return count * t / parts; };
+  for (int i = static_cast<int>(share(static_cast<std::size_t>(n), part)), i_end = static_cast<int>(share(static_cast<std::size_t>(n), part + 1));
+       i < i_end; ++i) {
     const Vec3 xi = x_[i];
     const double ri_skin = r_[i] + skin_;
     const auto test = [&](const Entry& e) {
@@ -207,8 +212,9 @@ void HierarchicalGrid::for_each_pair(F&& f) const {
   // The other pairs of levels, from the coarse side: each sphere j of level lc against the dense
   // rows of level lf within its reach. The test is the one above with the finer sphere as i.
   for (std::size_t lc = 1; lc < levels_.size(); ++lc)
-    for (const Entry& ej : levels_[lc].entries)
+    for (std::size_t k = share(levels_[lc].entries.size(), part), k_end = share(levels_[lc].entries.size(), part + 1); k < k_end; ++k)
       for (std::size_t lf = 0; lf < lc; ++lf) {
+        const Entry& ej = levels_[lc].entries[k];
         if (!searched_from_coarse(lf, lc)) continue;
         const Level& L = levels_[lf];
         const double range = ej.r + skin_ + L.r_max;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/parallel.hpp"
+
 namespace softpack {
 
 Neighbours::Neighbours(const NeighborDef& def, const World& world, const std::vector<std::size_t>& constants, bool friction,
@@ -40,22 +42,29 @@ std::vector<NewContacts> Neighbours::rebuild(const World& world) {
   const std::size_t n = p.size(), families = lists_.family.size();
   std::vector<NewContacts> added(families);
   if (listing_) {
-    // Pairs as (i, j) with i < j, sorted: a counting sort by i, then each sphere's few partners
-    // sorted by j.
+    // Pairs as (i, j) with i < j, sorted: the grid searched by parts on the threads, a counting
+    // sort by i, then each sphere's few partners sorted by j (on the threads by shares of i).
+    // The order the parts report their pairs in does not matter: the sort's is the only one.
     grid_.build(p.x, p.r, skin_, def_.level_ratio);
-    found_.clear();
-    first_.assign(n + 1, 0);
-    grid_.for_each_pair([&](int i, int j) {
-      const auto [a, b] = std::minmax(i, j);
-      found_.emplace_back(a, b);
-      ++first_[static_cast<std::size_t>(a) + 1];
+    const auto parts = static_cast<std::size_t>(parallel::threads_for(n));
+    found_.resize(parts);
+    parallel::for_each_block(parts, [&](std::size_t t) {
+      found_[t].clear();
+      grid_.for_each_pair([&](int i, int j) { found_[t].push_back(std::minmax(i, j)); }, t, parts);
     });
+    first_.assign(n + 1, 0);
+    for (const auto& found : found_)
+      for (const auto& [a, b] : found) ++first_[static_cast<std::size_t>(a) + 1];
     for (std::size_t i = 0; i < n; ++i) first_[i + 1] += first_[i];
-    std::vector<PairEntry> fresh(found_.size());
-    for (const auto& [a, b] : found_) fresh[first_[a]++] = PairEntry{a, b, p.r[a] + p.r[b]};
-    for (std::size_t i = 0, begin = 0; i < n; begin = first_[i++])
-      std::sort(fresh.begin() + static_cast<std::ptrdiff_t>(begin), fresh.begin() + static_cast<std::ptrdiff_t>(first_[i]),
-                [](const PairEntry& a, const PairEntry& b) { return a.j < b.j; });
+    std::vector<PairEntry> fresh(first_[n]);
+    for (const auto& found : found_)
+      for (const auto& [a, b] : found) fresh[first_[static_cast<std::size_t>(a)]++] = PairEntry{a, b, p.r[a] + p.r[b]};
+    // Sphere i's pairs are now [first_[i - 1], first_[i]) (from 0 for i = 0).
+    parallel::for_each_share(n, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        std::sort(fresh.begin() + static_cast<std::ptrdiff_t>(i == 0 ? 0 : first_[i - 1]), fresh.begin() + static_cast<std::ptrdiff_t>(first_[i]),
+                  [](const PairEntry& a, const PairEntry& b) { return a.j < b.j; });
+    });
     // Each pair to the higher family of its spheres; the order (i, j) is kept in each.
     const auto family_of_pair = [&](const PairEntry& e) {
       return std::max(p.family_of(static_cast<std::size_t>(e.i)), p.family_of(static_cast<std::size_t>(e.j)));
@@ -67,12 +76,23 @@ std::vector<NewContacts> Neighbours::rebuild(const World& world) {
       for (const PairEntry& e : fresh) split[family_of_pair(e)].push_back(e);
       for (std::size_t f = 0; f < families; ++f) added[f].pairs = lists_.family[f].pairs.replace(split[f], friction_);
     }
+    // The spheres near each plane, in ascending order: each share's on its thread, then the
+    // shares in order.
     std::vector<std::vector<std::int32_t>> near(families);
+    near_.resize(parts);
     for (std::size_t w = 0; w < world.planes.size(); ++w) {
-      for (auto& l : near) l.clear();
-      for (std::size_t i = 0; i < n; ++i)
-        if (world.planes[w].distance(p.x[i]) - p.r[i] < skin_) near[p.family_of(i)].push_back(static_cast<std::int32_t>(i));
-      for (std::size_t f = 0; f < families; ++f) added[f].planes.push_back(lists_.family[f].planes[w].replace(near[f], friction_));
+      const PlaneWall& plane = world.planes[w];
+      parallel::for_each_block(parts, [&](std::size_t t) {
+        near_[t].resize(families);
+        for (auto& l : near_[t]) l.clear();
+        for (std::size_t i = parallel::share_begin(n, t, parts), end = parallel::share_begin(n, t + 1, parts); i < end; ++i)
+          if (plane.distance(p.x[i]) - p.r[i] < skin_) near_[t][p.family_of(i)].push_back(static_cast<std::int32_t>(i));
+      });
+      for (std::size_t f = 0; f < families; ++f) {
+        near[f].clear();
+        for (const auto& of_share : near_) near[f].insert(near[f].end(), of_share[f].begin(), of_share[f].end());
+        added[f].planes.push_back(lists_.family[f].planes[w].replace(near[f], friction_));
+      }
     }
     for (std::size_t w = 0; w < world.shells.size(); ++w) {
       const SphericalShell& s = world.shells[w];

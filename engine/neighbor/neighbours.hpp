@@ -68,8 +68,9 @@ class Neighbours {
   std::vector<Vec3> x_at_build_, plane_at_build_, shell_at_build_;
   LargestTwo moved_;
   long rebuilds_ = 0;
-  std::vector<std::pair<int, int>> found_;  ///< scratch: pairs found
-  std::vector<std::size_t> first_;          ///< scratch: counting sort
+  std::vector<std::vector<std::pair<int, int>>> found_;  ///< scratch: pairs found, per part of the search
+  std::vector<std::size_t> first_;                       ///< scratch: counting sort
+  std::vector<std::vector<std::vector<std::int32_t>>> near_;  ///< scratch: [share][family] spheres near a plane
 };
 
 }  // namespace softpack

@@ -110,6 +110,16 @@ TEST(HierarchicalGrid, SparseCoarseLevelsAreSearchedFromTheCoarseSide) {
   PairSet found;
   grid.for_each_pair([&](int i, int j) { found.insert({std::min(i, j), std::max(i, j)}); });
   EXPECT_EQ(found, brute_force(x, r, 0.2 * r_min));
+  // Searched in parts (the threads' cut of a rebuild): together every pair, each once, with the
+  // coarse-side search on (from_coarse above).
+  for (const std::size_t parts : {2u, 3u, 7u}) {
+    PairSet of_parts;
+    std::size_t reported = 0;
+    for (std::size_t t = 0; t < parts; ++t)
+      grid.for_each_pair([&](int i, int j) { of_parts.insert({std::min(i, j), std::max(i, j)}), ++reported; }, t, parts);
+    EXPECT_EQ(of_parts, found) << parts << " parts";
+    EXPECT_EQ(reported, found.size()) << parts << " parts";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Polydispersity, GridMatchesBruteForce,
