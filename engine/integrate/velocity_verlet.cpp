@@ -31,47 +31,85 @@ template <class F>
 
 }  // namespace
 
-void half_kick(Particles& p, double dt, const Movers* movers) {
+void half_kick(Particles& p, double dt, const Movers* movers, bool then_quench) {
   const double half = 0.5 * dt;
   Vec3* const v = p.v.data();
   const Vec3* const F = p.F.data();
   const double* const inv_m = p.inv_m.data();
-  if (!p.rotates()) return for_free(p, movers, [&](std::size_t i) { v[i] += (half * inv_m[i]) * F[i]; });
-  Vec3* const w = p.w.data();
-  const Vec3* const T = p.T.data();
-  const double* const inv_I = p.inv_I.data();
-  for_free(p, movers, [&](std::size_t i) {
+  Vec3* const w = p.rotates() ? p.w.data() : nullptr;
+  const Vec3* const T = p.rotates() ? p.T.data() : nullptr;
+  const double* const inv_I = p.rotates() ? p.inv_I.data() : nullptr;
+  if (then_quench && movers) {  // the quench is of every free sphere, not only the movers
+    half_kick(p, dt, movers, false);
+    return quench(p);
+  }
+  // Sphere by sphere, as the separate passes would: the kick, then the quench of what it gave.
+  const auto kick = [&](std::size_t i) {
     v[i] += (half * inv_m[i]) * F[i];
+    if (then_quench && F[i].dot(v[i]) < 0.0) v[i].setZero();
+  };
+  if (!w) return for_free(p, movers, kick);
+  for_free(p, movers, [&](std::size_t i) {
+    kick(i);
     w[i] += (half * inv_I[i]) * T[i];
+    if (then_quench && T[i].dot(w[i]) < 0.0) w[i].setZero();
   });
 }
 
-void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers) {
-  Vec3* const x = p.x.data();
-  const Vec3* const v = p.v.data();
+namespace {
+
+// Calls move(i) for each free sphere (it advances x[i]), then records |x[i] - x_at_build[i]|^2:
+// for the listed movers on this thread, else by shares on the threads, each share's two largest,
+// then theirs (the same two values whatever the cut).
+template <class Move>
+void move_and_record(Particles& p, Neighbours& neighbours, const Movers* movers, Move&& move) {
+  const Vec3* const x = p.x.data();
   const Vec3* const x0 = neighbours.x_at_build().data();
   Neighbours::LargestTwo moved = movers ? movers->asleep_moved : Neighbours::LargestTwo{};
-  if (movers || parallel::threads_for(p.size()) == 1) {
+  if (movers) {
     for_free(p, movers, [&](std::size_t i) {
-      x[i] += dt * v[i];
+      move(i);
       moved.add((x[i] - x0[i]).squaredNorm());
     });
-    neighbours.set_moved(moved);
-    return;
+    return neighbours.set_moved(moved);
   }
-  // Each share's two largest, then theirs: the same two values whatever the cut.
   const std::size_t n = p.size(), parts = static_cast<std::size_t>(parallel::threads_for(n));
   std::vector<Neighbours::LargestTwo> of_share(parts);
   parallel::for_each_block(parts, [&](std::size_t t) {
     Neighbours::LargestTwo m;  // a local: the shares' records share a cache line
     for_free_in(p, parallel::share_begin(n, t, parts), parallel::share_begin(n, t + 1, parts), [&](std::size_t i) {
-      x[i] += dt * v[i];
+      move(i);
       m.add((x[i] - x0[i]).squaredNorm());
     });
     of_share[t] = m;
   });
   for (const Neighbours::LargestTwo& m : of_share) moved.add(m.first), moved.add(m.second);
   neighbours.set_moved(moved);
+}
+
+}  // namespace
+
+void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers) {
+  Vec3* const x = p.x.data();
+  const Vec3* const v = p.v.data();
+  move_and_record(p, neighbours, movers, [&](std::size_t i) { x[i] += dt * v[i]; });
+}
+
+void kick_drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers) {
+  // Sphere by sphere, v(t + dt/2) then x(t + dt) from it: the values of the two passes.
+  const double half = 0.5 * dt;
+  Vec3* const x = p.x.data();
+  Vec3* const v = p.v.data();
+  const Vec3* const F = p.F.data();
+  const double* const inv_m = p.inv_m.data();
+  Vec3* const w = p.rotates() ? p.w.data() : nullptr;
+  const Vec3* const T = p.rotates() ? p.T.data() : nullptr;
+  const double* const inv_I = p.rotates() ? p.inv_I.data() : nullptr;
+  move_and_record(p, neighbours, movers, [&](std::size_t i) {
+    v[i] += (half * inv_m[i]) * F[i];
+    if (w) w[i] += (half * inv_I[i]) * T[i];
+    x[i] += dt * v[i];
+  });
 }
 
 void half_kick_shells(std::vector<SphericalShell>& shells, const std::vector<WallLoad>& loads, double dt, bool rotation) {

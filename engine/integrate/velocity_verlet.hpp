@@ -3,6 +3,7 @@
 //
 //   half_kick   v += F/m dt/2,  w += T/I dt/2
 //   drift       x += v dt
+//   kick_drift  the two in one pass (a step's first half: one read of the spheres instead of two)
 //
 // and the optional phase of a quenched relaxation (relax/, scene/relaxation_def.hpp):
 //
@@ -25,8 +26,12 @@ struct Movers {
   Neighbours::LargestTwo asleep_moved;
 };
 
-/// `movers`: null for every free sphere.
-void half_kick(Particles& p, double dt, const Movers* movers = nullptr);
+/// `movers`: null for every free sphere. `then_quench`: and quench() (in the same pass without
+/// movers: the same values).
+void half_kick(Particles& p, double dt, const Movers* movers = nullptr, bool then_quench = false);
+
+/// half_kick() then drift(), in one pass over the spheres without movers (the same values).
+void kick_drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers = nullptr);
 
 /// Also starts the step's record of displacements since the last neighbour build
 /// (neighbours.moved(); the drivers add their spheres' to it); sleeping spheres' count too.

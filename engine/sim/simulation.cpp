@@ -64,18 +64,16 @@ Simulation::Simulation(const SceneDef& scene)
 
 void Simulation::step() {
   const Movers movers = active_ ? active_->movers() : Movers{};
-  half_kick(world_.p, dt_, active_ ? &movers : nullptr);
+  kick_drift(world_.p, dt_, neighbours_, active_ ? &movers : nullptr);
   if (free_shells_) half_kick_shells(world_.shells, world_.shell_loads, dt_, scene_.effects.rotation);
-  drift(world_.p, dt_, neighbours_, active_ ? &movers : nullptr);
   if (free_shells_) drift_shells(world_.shells, dt_);
   if (!drivers_.empty()) drivers_.advance(world_, dt_, neighbours_);
   update_neighbours();
   compute_forces(dt_);
   if (active_) wake_now();
   const Movers after_wake = active_ ? active_->movers() : Movers{};  // the spheres that woke move from now on
-  half_kick(world_.p, dt_, active_ ? &after_wake : nullptr);
+  half_kick(world_.p, dt_, active_ ? &after_wake : nullptr, quench_);
   if (free_shells_) half_kick_shells(world_.shells, world_.shell_loads, dt_, scene_.effects.rotation);
-  if (quench_) quench(world_.p);
   if (quench_ && free_shells_) quench_shells(world_);
   if (!drivers_.empty()) {
     watchdog_.add_driver_work(drivers_.work(world_, dt_));

@@ -9,14 +9,14 @@
 //
 // One step runs these phases, one function each:
 //
-//   half_kick           v += F/m dt/2, w += T/I dt/2 (free spheres)     integrate/velocity_verlet
-//   drift               x += v dt                                         integrate/velocity_verlet
+//   kick_drift          v += F/m dt/2, w += T/I dt/2, then x += v dt    integrate/velocity_verlet
+//                       (free spheres; one pass: half_kick, then drift)
 //   advance_drivers     kinematic spheres and walls at t + dt            drivers/drivers
 //   update_neighbours   rebuild the Verlet lists when the skin is used up neighbor/neighbours
 //   compute_forces      gravity, then the contact law of every contact   forces/force_field
 //   (wake)              only with an active set: sleeping spheres whose force grew wake  sim/active_set
-//   half_kick
-//   quench              only while set_quench(true): v = 0 where F·v < 0 (relaxation)
+//   half_kick           with the quench, only while set_quench(true): v = 0 where F·v < 0
+//                       (relaxation), in the same pass
 //   finish_drivers      the drivers' work (watchdog budget); drivers that arrived stop
 //   (sleep)             with an active set, every check_interval: spheres at rest fall asleep
 //
