@@ -81,7 +81,7 @@ struct BlockOf {
 
 /// Every contact of one family: sphere pairs, then each plane, then each shell. On threads (one
 /// parallel region, core/parallel.hpp run_phases): each thread's ghost pairs, then its own pairs
-/// and its spheres' wall contacts; afterwards the walls' loads, in list order. A model with a
+/// and its spheres' wall contacts, then the loads of its walls, each in list order. A model with a
 /// body state (contact/contact_model.hpp BodyStateModel) has the per-body pass run first, in
 /// the same order: each sphere's state is summed as its force is.
 template <class Model, Effects Fx>
@@ -142,6 +142,11 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
       run_blocks(c, scratch(t), b);
     }
   };
+  // Each wall's load summed in list order by one thread (wall k by thread k mod parts).
+  const auto finish = [&](std::size_t t) {
+    for (std::size_t k = t; k < planes.size(); k += parts) planes[k].finish();
+    for (std::size_t k = t; k < shells.size(); k += parts) shells[k].finish();
+  };
   if constexpr (kBody) {
     parallel::run_phases(
         parts,
@@ -150,12 +155,11 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
                     lists.body_state.begin() + static_cast<std::ptrdiff_t>(parallel::share_begin(p.size(), t + 1, parts)), 0.0);
           ghosts(t, body_pass);
         },
-        [&](std::size_t t) { own(t, body_pass); }, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); });
+        [&](std::size_t t) { own(t, body_pass); }, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); },
+        finish);
   } else {
-    parallel::run_phases(parts, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); });
+    parallel::run_phases(parts, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); }, finish);
   }
-  for (auto& w : planes) w.finish();
-  for (auto& w : shells) w.finish();
 }
 
 template <class Model, Effects Fx>
