@@ -29,30 +29,38 @@ template <class F>
   parallel::for_each_share(p.size(), [&](std::size_t begin, std::size_t end) { for_free_in(p, begin, end, f); });
 }
 
+// The half kick of sphere i: v += F/m dt/2, and w += T/I dt/2 with rotation.
+struct Kick {
+  double half;
+  Vec3* v;
+  const Vec3* F;
+  const double* inv_m;
+  Vec3* w;  ///< null without rotation
+  const Vec3* T;
+  const double* inv_I;
+  Kick(Particles& p, double dt)
+      : half(0.5 * dt), v(p.v.data()), F(p.F.data()), inv_m(p.inv_m.data()), w(p.rotates() ? p.w.data() : nullptr),
+        T(p.rotates() ? p.T.data() : nullptr), inv_I(p.rotates() ? p.inv_I.data() : nullptr) {}
+  [[gnu::always_inline]] void operator()(std::size_t i) const {
+    v[i] += (half * inv_m[i]) * F[i];
+    if (w) w[i] += (half * inv_I[i]) * T[i];
+  }
+};
+
 }  // namespace
 
 void half_kick(Particles& p, double dt, const Movers* movers, bool then_quench) {
-  const double half = 0.5 * dt;
-  Vec3* const v = p.v.data();
-  const Vec3* const F = p.F.data();
-  const double* const inv_m = p.inv_m.data();
-  Vec3* const w = p.rotates() ? p.w.data() : nullptr;
-  const Vec3* const T = p.rotates() ? p.T.data() : nullptr;
-  const double* const inv_I = p.rotates() ? p.inv_I.data() : nullptr;
   if (then_quench && movers) {  // the quench is of every free sphere, not only the movers
     half_kick(p, dt, movers, false);
     return quench(p);
   }
   // Sphere by sphere, as the separate passes would: the kick, then the quench of what it gave.
-  const auto kick = [&](std::size_t i) {
-    v[i] += (half * inv_m[i]) * F[i];
-    if (then_quench && F[i].dot(v[i]) < 0.0) v[i].setZero();
-  };
-  if (!w) return for_free(p, movers, kick);
+  const Kick kick(p, dt);
+  if (!then_quench) return for_free(p, movers, kick);
   for_free(p, movers, [&](std::size_t i) {
     kick(i);
-    w[i] += (half * inv_I[i]) * T[i];
-    if (then_quench && T[i].dot(w[i]) < 0.0) w[i].setZero();
+    if (kick.F[i].dot(kick.v[i]) < 0.0) kick.v[i].setZero();
+    if (kick.w && kick.T[i].dot(kick.w[i]) < 0.0) kick.w[i].setZero();
   });
 }
 
@@ -97,18 +105,11 @@ void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers
 
 void kick_drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers) {
   // Sphere by sphere, v(t + dt/2) then x(t + dt) from it: the values of the two passes.
-  const double half = 0.5 * dt;
+  const Kick kick(p, dt);
   Vec3* const x = p.x.data();
-  Vec3* const v = p.v.data();
-  const Vec3* const F = p.F.data();
-  const double* const inv_m = p.inv_m.data();
-  Vec3* const w = p.rotates() ? p.w.data() : nullptr;
-  const Vec3* const T = p.rotates() ? p.T.data() : nullptr;
-  const double* const inv_I = p.rotates() ? p.inv_I.data() : nullptr;
   move_and_record(p, neighbours, movers, [&](std::size_t i) {
-    v[i] += (half * inv_m[i]) * F[i];
-    if (w) w[i] += (half * inv_I[i]) * T[i];
-    x[i] += dt * v[i];
+    kick(i);
+    x[i] += dt * kick.v[i];
   });
 }
 
