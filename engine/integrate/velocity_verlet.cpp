@@ -64,53 +64,32 @@ void half_kick(Particles& p, double dt, const Movers* movers, bool then_quench) 
   });
 }
 
-namespace {
-
-// Calls move(i) for each free sphere (it advances x[i]), then records |x[i] - x_at_build[i]|^2:
-// for the listed movers on this thread, else by shares on the threads, each share's two largest,
-// then theirs (the same two values whatever the cut).
-template <class Move>
-void move_and_record(Particles& p, Neighbours& neighbours, const Movers* movers, Move&& move) {
-  const Vec3* const x = p.x.data();
+void kick_drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers) {
+  // Sphere by sphere: v(t + dt/2), then x(t + dt) from it, then |x - x_at_build|^2 recorded: for
+  // the listed movers on this thread, else by shares on the threads, each share's two largest,
+  // then theirs (the same two values whatever the cut).
+  const Kick kick(p, dt);
+  Vec3* const x = p.x.data();
   const Vec3* const x0 = neighbours.x_at_build().data();
+  const auto move = [&](std::size_t i, Neighbours::LargestTwo& m) {
+    kick(i);
+    x[i] += dt * kick.v[i];
+    m.add((x[i] - x0[i]).squaredNorm());
+  };
   Neighbours::LargestTwo moved = movers ? movers->asleep_moved : Neighbours::LargestTwo{};
   if (movers) {
-    for_free(p, movers, [&](std::size_t i) {
-      move(i);
-      moved.add((x[i] - x0[i]).squaredNorm());
-    });
+    for_free(p, movers, [&](std::size_t i) { move(i, moved); });
     return neighbours.set_moved(moved);
   }
   const std::size_t n = p.size(), parts = static_cast<std::size_t>(parallel::threads_for(n));
   std::vector<Neighbours::LargestTwo> of_share(parts);
   parallel::for_each_block(parts, [&](std::size_t t) {
     Neighbours::LargestTwo m;  // a local: the shares' records share a cache line
-    for_free_in(p, parallel::share_begin(n, t, parts), parallel::share_begin(n, t + 1, parts), [&](std::size_t i) {
-      move(i);
-      m.add((x[i] - x0[i]).squaredNorm());
-    });
+    for_free_in(p, parallel::share_begin(n, t, parts), parallel::share_begin(n, t + 1, parts), [&](std::size_t i) { move(i, m); });
     of_share[t] = m;
   });
   for (const Neighbours::LargestTwo& m : of_share) moved.add(m.first), moved.add(m.second);
   neighbours.set_moved(moved);
-}
-
-}  // namespace
-
-void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers) {
-  Vec3* const x = p.x.data();
-  const Vec3* const v = p.v.data();
-  move_and_record(p, neighbours, movers, [&](std::size_t i) { x[i] += dt * v[i]; });
-}
-
-void kick_drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers) {
-  // Sphere by sphere, v(t + dt/2) then x(t + dt) from it: the values of the two passes.
-  const Kick kick(p, dt);
-  Vec3* const x = p.x.data();
-  move_and_record(p, neighbours, movers, [&](std::size_t i) {
-    kick(i);
-    x[i] += dt * kick.v[i];
-  });
 }
 
 void half_kick_shells(std::vector<SphericalShell>& shells, const std::vector<WallLoad>& loads, double dt, bool rotation) {

@@ -1,9 +1,8 @@
 // The two integration phases of velocity Verlet over the free spheres (a driven sphere's motion
 // is prescribed by its driver, drivers/drivers.hpp):
 //
-//   half_kick   v += F/m dt/2,  w += T/I dt/2
-//   drift       x += v dt
-//   kick_drift  the two in one pass (a step's first half: one read of the spheres instead of two)
+//   kick_drift  v += F/m dt/2,  w += T/I dt/2, then x += v dt (a step's first half, one pass)
+//   half_kick   v += F/m dt/2,  w += T/I dt/2                  (its second half)
 //
 // and the optional phase of a quenched relaxation (relax/, scene/relaxation_def.hpp):
 //
@@ -30,12 +29,10 @@ struct Movers {
 /// movers: the same values).
 void half_kick(Particles& p, double dt, const Movers* movers = nullptr, bool then_quench = false);
 
-/// half_kick() then drift(), in one pass over the spheres without movers (the same values).
+/// The half kick, then x += v dt, sphere by sphere. Also starts the step's record of
+/// displacements since the last neighbour build (neighbours.moved(); the drivers add their
+/// spheres' to it); sleeping spheres' count too.
 void kick_drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers = nullptr);
-
-/// Also starts the step's record of displacements since the last neighbour build
-/// (neighbours.moved(); the drivers add their spheres' to it); sleeping spheres' count too.
-void drift(Particles& p, double dt, Neighbours& neighbours, const Movers* movers = nullptr);
 
 /// Per-grain velocity quench of the free spheres (after the second half kick).
 void quench(Particles& p);

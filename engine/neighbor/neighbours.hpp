@@ -4,7 +4,7 @@
 // A pair's gap shrinks by at most the sum of both spheres' displacements since the last build,
 // at most the two largest of them; a wall gap by the sphere's plus the wall's. The lists are
 // rebuilt before either can exceed the skin, so no contact is ever missed. The phases that
-// move spheres (drift, the drivers) report each displacement with moved().
+// move spheres (kick_drift, the drivers) report each displacement with moved().
 #pragma once
 #include <cstddef>
 #include <utility>
@@ -37,7 +37,7 @@ class Neighbours {
   double skin() const { return skin_; }  ///< [m]
   long rebuilds() const { return rebuilds_; }
 
-  /// Where the spheres were at the last build (drift and the drivers measure displacements from it).
+  /// Where the spheres were at the last build (kick_drift and the drivers measure displacements from it).
   const std::vector<Vec3>& x_at_build() const { return x_at_build_; }
   /// The two largest squared displacements since the last build (of different spheres).
   struct LargestTwo {
@@ -47,7 +47,7 @@ class Neighbours {
       else if (d2 > second) second = d2;
     }
   };
-  /// Starts a new step's record (drift calls it) and adds to it (drift, the drivers).
+  /// Starts a new step's record (kick_drift calls it) and adds to it (kick_drift, the drivers).
   LargestTwo& moved() { return moved_; }
   void set_moved(const LargestTwo& m) { moved_ = m; }
 

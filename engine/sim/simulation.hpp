@@ -10,7 +10,7 @@
 // One step runs these phases, one function each:
 //
 //   kick_drift          v += F/m dt/2, w += T/I dt/2, then x += v dt    integrate/velocity_verlet
-//                       (free spheres; one pass: half_kick, then drift)
+//                       (free spheres, one pass)
 //   advance_drivers     kinematic spheres and walls at t + dt            drivers/drivers
 //   update_neighbours   rebuild the Verlet lists when the skin is used up neighbor/neighbours
 //   compute_forces      gravity, then the contact law of every contact   forces/force_field
