@@ -73,12 +73,16 @@ template <class Model, Effects Fx, class Lanes>
   }
 }
 
+/// What select() is told comes after it when no gather() does (the per-body pass): it then
+/// prefetches nothing for a gather (forces/pair_contacts.hpp).
+struct SelectOnly {};
+
 /// The contacts at positions [begin, end) of `contacts`: select, gather, law, add. `closed` has
 /// room for end - begin + kLanes indices.
 template <class Model, Effects Fx, class Isa, class Contacts>
 [[gnu::always_inline]] inline void contact_block(Isa isa, Contacts& contacts, const typename Model::Params& params, double dt,
                                                  std::int32_t* closed, std::size_t begin, std::size_t end) {
-  const std::size_t touching = contacts.select(isa, closed, begin, end);
+  const std::size_t touching = contacts.template select<Model>(isa, closed, begin, end);
   if (touching == 0) return;
   // The last group is filled up with copies of the last contact; add() ignores them.
   std::fill(closed + touching, closed + touching + simd::kLanes, closed[touching - 1]);
@@ -98,7 +102,7 @@ template <class Model, Effects Fx, class Isa, class Contacts>
 /// do again: the same springs cleared, the same flags.
 template <class Model, class Isa, class Contacts>
 [[gnu::always_inline]] inline void body_block(Isa isa, Contacts& contacts, std::int32_t* closed, std::size_t begin, std::size_t end) {
-  const std::size_t touching = contacts.select(isa, closed, begin, end);
+  const std::size_t touching = contacts.template select<SelectOnly>(isa, closed, begin, end);
   if (touching == 0) return;
   std::fill(closed + touching, closed + touching + simd::kLanes, closed[touching - 1]);
   for (std::size_t m = 0; m < touching; m += simd::kLanes)
@@ -138,6 +142,19 @@ template <class Model, Effects Fx, class Isa>
     ++field;
   });
   return c;
+}
+
+/// Asks the memory for the constants of `Model` the declared effects read, of the contacts at
+/// k, ..., k + kLanes - 1 (one cache line of each array, or the start of a second): a hint, no
+/// result depends on it.
+template <class Model, Effects Fx>
+[[gnu::always_inline]] inline void prefetch_constants(const ConstantArrays& a, std::size_t k) {
+  typename Model::template Constants<double> c{};
+  std::size_t field = 0;
+  Model::each_constant(c, [&](double&, Need need) {
+    if (needed<Fx>(need)) __builtin_prefetch(a.field[field].data() + k);
+    ++field;
+  });
 }
 
 /// The constants of `Model` of contact k, and their setting.

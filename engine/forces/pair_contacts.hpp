@@ -15,10 +15,17 @@
 // own pairs in list order, adding to sphere j only when j is its own. A pair is computed by the
 // same arithmetic on either thread, so both get the same bits; the spheres in spatial order
 // (neighbor/spatial_order.hpp) keep the ghosts few.
+//
+// Memory. Beyond the caches (kPrefetchSpheres), a pair's constants, spring and sphere j are
+// misses the hardware does not foresee (gathers, and spheres j far from i), so select() asks for
+// them (a prefetch) as it tests the pairs, before gather() and add() read them: a sphere-step of
+// the bench's 10^6-sphere lattice took about two thirds of the time, one of 3 000 spheres (in the
+// caches) 3 % more, hence the threshold.
 #pragma once
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <type_traits>
 
 #include "core/parallel.hpp"
 #include "forces/contact_loop.hpp"
@@ -52,6 +59,12 @@ struct PairContacts {
   std::size_t begin = 0, end = 0;       ///< the positions evaluated
   std::size_t j_end = 0;                ///< sphere j's sums are made here when j < j_end
   bool ghost = false;                   ///< only sphere j's sums; nothing of the pair written
+  bool prefetch = false;                ///< select() prefetches (a hint: no bit depends on it)
+
+  /// From this many spheres on, select() prefetches.
+  static constexpr std::size_t kPrefetchSpheres = 5000;
+  /// How far ahead of the pairs it tests select() prefetches their spheres j's positions.
+  static constexpr std::size_t kAhead = 4 * simd::kLanes;
 
   /// Before the evaluation: the springs' bookkeeping, the positions (a masked list offers only
   /// its live pairs and runs on one thread) and on threads the cut (PairShares).
@@ -61,6 +74,7 @@ struct PairContacts {
     index = list.masked ? list.live.data() : nullptr;
     begin = 0, end = list.masked ? list.live.size() : list.size(), j_end = spheres;
     direct = parallel::threads_for(spheres) == 1 || list.masked;
+    prefetch = spheres >= kPrefetchSpheres;
     if (!direct) cut(static_cast<std::size_t>(parallel::threads_for(spheres)));
   }
 
@@ -83,12 +97,14 @@ struct PairContacts {
   /// The indices of the touching pairs among positions [begin, end), in list order
   /// (|d|^2 < (Ri + Rj)^2); with friction the springs of the others are cleared where
   /// PairList::spring_live says they may be loaded (not by a ghost: the pair's own thread does).
-  template <class Isa>
+  /// `Gather`: the model whose gather() follows (its constants prefetched), or SelectOnly.
+  template <class Gather, class Isa>
   [[gnu::always_inline]] std::size_t select(Isa isa, std::int32_t* closed, std::size_t from, std::size_t to) {
     using simd::Wide;
     if (index) return select_indexed(isa, closed, from, to);
     std::size_t n = 0, k = from;
     for (; k + simd::kLanes <= to; k += simd::kLanes) {
+      if (prefetch) prefetch_group<Gather>(k);
       const simd::Index i = simd::load(list.i.data() + k), j = simd::load(list.j.data() + k);
       const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
       const Wide r_sum = simd::load(list.r_sum.data() + k);
@@ -103,6 +119,32 @@ struct PairContacts {
     }
     for (; k < to; ++k) touch_test(k, closed, n);
     return n;
+  }
+
+  /// The prefetches of select() at the group of pairs k, ..., k + kLanes - 1: the positions of
+  /// the spheres j of the group kAhead further on, which select() itself reads; for a `Gather`
+  /// model what gather() and add() read of this group: its constants, its springs (to be
+  /// written), and sphere j's velocities, spins, radius, force and torque (sphere i's are read in
+  /// order, which the hardware foresees).
+  template <class Gather>
+  [[gnu::always_inline]] void prefetch_group(std::size_t k) const {
+    if (k + kAhead + simd::kLanes <= list.size())
+      for (std::size_t l = 0; l < simd::kLanes; ++l) __builtin_prefetch(s.x + list.j[k + kAhead + l]);
+    if constexpr (!std::is_same_v<Gather, SelectOnly>) {
+      prefetch_constants<Gather, Fx>(list.k, k);
+      if constexpr (Fx.friction) {
+        const char* const spring = reinterpret_cast<const char*>(list.spring.data() + k);
+        constexpr std::size_t bytes = simd::kLanes * sizeof(Vec3);
+        for (std::size_t b = 0; b < bytes; b += 64) __builtin_prefetch(spring + b, 1);
+        __builtin_prefetch(spring + bytes - 1, 1);
+      }
+      for (std::size_t l = 0; l < simd::kLanes; ++l) {
+        const std::int32_t j = list.j[k + l];
+        __builtin_prefetch(s.v + j);
+        __builtin_prefetch(s.F + j, 1);
+        if constexpr (Fx.rotation) __builtin_prefetch(s.w + j), __builtin_prefetch(s.r + j), __builtin_prefetch(s.T + j, 1);
+      }
+    }
   }
 
   /// select() over the pairs `index` lists at positions [from, to) (a masked list's live pairs, a
@@ -265,7 +307,7 @@ struct MaskedPairContacts : PairContacts<Fx> {
   void prepare() { this->begin = 0, this->end = this->list.size(); }
   void finish() {}
 
-  template <class Isa>
+  template <class Gather, class Isa>
   std::size_t select(Isa, std::int32_t* closed, std::size_t begin, std::size_t end) const {
     const PairList& l = this->list;
     std::size_t n = 0;

@@ -54,7 +54,7 @@ struct WallContacts {
 
   /// The indices of the entries among [begin, end) whose sphere touches the wall (h > 0), in list
   /// order, each entry's `touched` set on threads; with friction the springs of the others are cleared.
-  template <class Isa>
+  template <class Gather, class Isa>
   std::size_t select(Isa, std::int32_t* closed, std::size_t begin, std::size_t end) {
     std::size_t n = 0;
     for (std::size_t k = begin; k < end; ++k) {
