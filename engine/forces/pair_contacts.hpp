@@ -19,8 +19,9 @@
 // Memory. Beyond the caches (kPrefetchSpheres), a pair's constants, spring and sphere j are
 // misses the hardware does not foresee (gathers, and spheres j far from i), so select() asks for
 // them (a prefetch) as it tests the pairs, before gather() and add() read them: a sphere-step of
-// the bench's 10^6-sphere lattice took about two thirds of the time, one of 3 000 spheres (in the
-// caches) 3 % more, hence the threshold.
+// the bench's 10^6-sphere lattice took about two thirds of the time, 10^4 spheres some 5 % less,
+// but the bench's 5 000-sphere packing and a 3 000-sphere lattice (in the caches) 3-4 % more,
+// hence the threshold.
 #pragma once
 #include <algorithm>
 #include <bit>
@@ -62,7 +63,7 @@ struct PairContacts {
   bool prefetch = false;                ///< select() prefetches (a hint: no bit depends on it)
 
   /// From this many spheres on, select() prefetches.
-  static constexpr std::size_t kPrefetchSpheres = 5000;
+  static constexpr std::size_t kPrefetchSpheres = 10000;
   /// How far ahead of the pairs it tests select() prefetches their spheres j's positions.
   static constexpr std::size_t kAhead = 4 * simd::kLanes;
 
