@@ -142,8 +142,10 @@ struct PairContacts {
       for (std::size_t l = 0; l < simd::kLanes; ++l) {
         const std::int32_t j = list.j[k + l];
         __builtin_prefetch(s.v + j);
+        if constexpr (Fx.rotation) __builtin_prefetch(s.w + j), __builtin_prefetch(s.r + j);
+        if (static_cast<std::size_t>(j) >= j_end) continue;  // another thread's sphere: its lines stay in its cache
         __builtin_prefetch(s.F + j, 1);
-        if constexpr (Fx.rotation) __builtin_prefetch(s.w + j), __builtin_prefetch(s.r + j), __builtin_prefetch(s.T + j, 1);
+        if constexpr (Fx.rotation) __builtin_prefetch(s.T + j, 1);
       }
     }
   }
