@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 
 #include <unistd.h>
@@ -42,13 +43,13 @@ int main(int argc, char** argv) {
   int n = 5000;
   long lattice = 0;
   std::string order = "spatial";
-  auto* packing_opt = app.add_option("--packing", packing_path, "x y z r file; made (about --spheres spheres) when missing");
+  auto* packing_opt = app.add_option("--packing", packing_path, "x y z r file; made (about --spheres spheres) when missing and --spheres is given");
   app.add_option("--lattice", lattice, "instead of --packing: about N equal spheres on a lattice, 12 persistent contacts each")
       ->check(CLI::Range(1L, 100000000L))
       ->excludes(packing_opt);
   app.add_option("--order", order, "the spheres' order in memory: spatial (Z-order, as the engine is meant to get them) or given")
       ->check(CLI::IsMember({"spatial", "given"}));
-  app.add_option("--spheres", n, "sphere count when the packing has to be made");
+  auto* spheres_opt = app.add_option("--spheres", n, "sphere count when the packing has to be made")->check(CLI::Range(1, 100000000));
   app.add_option("--steps", steps, "velocity-Verlet steps to time (with --lattice, after one untimed set-up step)");
   app.add_flag("--frictionless", frictionless, "Hertz + damping only (no friction, no rotation)");
   app.add_flag("--parameters", parameters_only, "print the physical parameters (for LAMMPS) and exit");
@@ -60,6 +61,12 @@ int main(int argc, char** argv) {
 
   if (packing_path.empty() && lattice == 0) {
     fmt::print(stderr, "softpack-bench-scene: give --packing FILE or --lattice N\n");
+    return 2;
+  }
+  // A missing file is made only when asked: made at the default size, a file named for another
+  // (confined-1600.txt) held 5 000 spheres and every later run timed the wrong scene.
+  if (lattice == 0 && !std::filesystem::exists(packing_path) && spheres_opt->count() == 0) {
+    fmt::print(stderr, "softpack-bench-scene: {}: no such packing; give --spheres N to make one of about N spheres there\n", packing_path);
     return 2;
   }
   if (isa == "portable") cpu::limit_vector_isa(cpu::VectorIsa::portable);

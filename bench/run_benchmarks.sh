@@ -59,7 +59,7 @@ run check "$here/lammps/check_contact_laws.sh"
 echo "LAMMPS contact laws vs softpack (bench/lammps/check_contact_laws.sh): $(tail -1 "$tmp/check.out")"
 
 # the packing (made and cached on the first call) and the parameters LAMMPS needs
-run params "$scene" --packing "$packing" --parameters
+run params "$scene" --packing "$packing" --spheres 5000 --parameters
 n="$(field spheres "$tmp/params.out")"; r_min="$(field r_min "$tmp/params.out")"
 Rs="$(field Rs "$tmp/params.out")"; dt="$(field dt "$tmp/params.out")"
 alpha="$(field alpha "$tmp/params.out")"; xgammat="$(field xgammat "$tmp/params.out")"
