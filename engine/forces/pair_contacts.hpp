@@ -19,9 +19,9 @@
 // Memory. Beyond the caches (kPrefetchSpheres), a pair's constants, spring and sphere j are
 // misses the hardware does not foresee (gathers, and spheres j far from i), so select() asks for
 // them (a prefetch) as it tests the pairs, before gather() and add() read them: a sphere-step of
-// the bench's 10^6-sphere lattice took about two thirds of the time, 10^4 spheres some 5 % less,
-// but the bench's 5 000-sphere packing and a 3 000-sphere lattice (in the caches) 3-4 % more,
-// hence the threshold.
+// the bench's 10^6-sphere lattice took about two thirds of the time and 10^4 spheres about as
+// long (151-159 ns against 152-171), but the bench's 5 000-sphere packing 4-5 % more and a
+// 3 000-sphere lattice 3 % more (both in the caches), hence the threshold.
 #pragma once
 #include <algorithm>
 #include <bit>
@@ -105,8 +105,8 @@ struct PairContacts {
     if (index) return select_indexed(isa, closed, from, to);
     std::size_t n = 0, k = from;
     for (; k + simd::kLanes <= to; k += simd::kLanes) {
-      if (prefetch) prefetch_group<Gather>(k);
       const simd::Index i = simd::load(list.i.data() + k), j = simd::load(list.j.data() + k);
+      if (prefetch) prefetch_group<Gather>(k, j);
       const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
       const Wide r_sum = simd::load(list.r_sum.data() + k);
       const simd::Mask touch = dot(d, d) < r_sum * r_sum;
@@ -122,13 +122,13 @@ struct PairContacts {
     return n;
   }
 
-  /// The prefetches of select() at the group of pairs k, ..., k + kLanes - 1: the positions of
+  /// The prefetches of select() at the group of pairs k, ..., k + kLanes - 1 (spheres j): the positions of
   /// the spheres j of the group kAhead further on, which select() itself reads; for a `Gather`
   /// model what gather() and add() read of this group: its constants, its springs (to be
   /// written), and sphere j's velocities, spins, radius, force and torque (sphere i's are read in
   /// order, which the hardware foresees).
   template <class Gather>
-  [[gnu::always_inline]] void prefetch_group(std::size_t k) const {
+  [[gnu::always_inline]] void prefetch_group(std::size_t k, const simd::Index& j_group) const {
     if (k + kAhead + simd::kLanes <= list.size())
       for (std::size_t l = 0; l < simd::kLanes; ++l) __builtin_prefetch(s.x + list.j[k + kAhead + l]);
     if constexpr (!std::is_same_v<Gather, SelectOnly>) {
@@ -140,7 +140,7 @@ struct PairContacts {
         __builtin_prefetch(spring + bytes - 1, 1);
       }
       for (std::size_t l = 0; l < simd::kLanes; ++l) {
-        const std::int32_t j = list.j[k + l];
+        const std::int32_t j = j_group.v[l];
         __builtin_prefetch(s.v + j);
         if constexpr (Fx.rotation) __builtin_prefetch(s.w + j), __builtin_prefetch(s.r + j);
         if (static_cast<std::size_t>(j) >= j_end) continue;  // another thread's sphere: its lines stay in its cache
