@@ -18,6 +18,7 @@
 #include "coarse/compression.hpp"
 #include "coarse/medium_file.hpp"
 #include "coarse/multi_contact.hpp"
+#include "coarse/probe_settings.hpp"
 #include "io/atomic_file.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
@@ -113,18 +114,29 @@ int main(int argc, char** argv) {
   add_threads_option(*run_cmd);
   std::string probe_config, probe_out;
   std::uint64_t probe_seed = 0;
-  std::vector<int> probe_walls{1, 2, 6};
+  std::vector<std::string> probe_arrangements{"one", "opposite", "cube"};
   std::vector<double> probe_dn{0.1, 0.2, 0.3, 0.4};
-  CLI::App* probe_cmd = app.add_subcommand("multi-contact", "one resolved soft-particle pressed by 1, 2 or 6 walls at once (coarse/multi_contact.hpp)");
-  probe_cmd->add_option("--config", probe_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
-  probe_cmd->add_option("--packing-seed", probe_seed, "seed of the packing")->required()->check(seed_check());
-  probe_cmd->add_option("--walls", probe_walls, "numbers of walls (1, 2, 6)");
-  probe_cmd->add_option("--delta-n", probe_dn, "Delta_n of each wall, increasing");
-  probe_cmd->add_option("--out", probe_out, "text file: walls delta_n Fn")->required();
+  CLI::App* probe_cmd =
+      app.add_subcommand("multi-contact", "one resolved soft-particle pressed by several walls at once (arrangements: coarse/multi_contact.hpp)");
+  std::string probe_plan, probe_radius;
+  auto* probe_config_opt = probe_cmd->add_option("--config", probe_config, "settings, e.g. experiments/coarse-grain.yaml (or --probe)");
+  auto* probe_plan_opt = probe_cmd->add_option("--probe", probe_plan,
+                                               "the many-body probe's plan, e.g. experiments/many-body.yaml: its settings, arrangements and "
+                                               "delta_n (coarse/probe_settings.hpp)")
+                             ->excludes(probe_config_opt);
+  probe_cmd->add_option("--radius", probe_radius, "with --probe: the name of one of its radii")->needs(probe_plan_opt);
+  probe_cmd->add_option("--packing-seed", probe_seed, "seed of the packing (and of random-N's directions)")->required()->check(seed_check());
+  probe_cmd->add_option("--arrangements", probe_arrangements,
+                        "one, opposite, orthogonal, triangle, tetrahedral, square, pyramid, cube, opposite-half, orthogonal-half, random-N (N = 2-6)");
+  probe_cmd->add_option("--delta-n", probe_dn, "Delta_n of the arrangement, increasing (wall k's: w_k Delta_n)");
+  probe_cmd->add_option("--out", probe_out, "text file: a block per arrangement, rows: walls delta_n Fn_1 ... Fn_walls")->required();
   add_threads_option(*probe_cmd);
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
-  seeds_cmd->add_option("--config", seeds_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
+  std::string seeds_probe;
+  auto* seeds_config_opt = seeds_cmd->add_option("--config", seeds_config, "settings, e.g. experiments/coarse-grain.yaml");
+  seeds_cmd->add_option("--probe", seeds_probe, "instead: the many-body probe's runs, RADIUS/seed-S (e.g. experiments/many-body.yaml)")
+      ->excludes(seeds_config_opt);
   bool medium_text = false;  // what a medium depends on, as the medium file records it (maintenance)
   seeds_cmd->add_flag("--medium-text", medium_text)->group("");
   std::string stamp_config, release;
@@ -134,6 +146,14 @@ int main(int argc, char** argv) {
   if (const auto code = parse_command_line(app, argc, argv, program)) return *code;
   try {
     if (*seeds_cmd) {
+      if (seeds_probe.empty() == seeds_config.empty()) throw InputError("seeds: give --config or --probe");
+      if (!seeds_probe.empty()) {
+        const ManyBodyProbe plan = read_many_body_probe(seeds_probe);
+        for (const auto& [radius, Rs] : plan.radii)
+          for (std::uint64_t seed : plan.seeds) fmt::print("{}/seed-{} ", radius, seed);
+        fmt::print("\n");
+        return 0;
+      }
       if (medium_text) {
         fmt::print("{}", read_coarse_grain_settings(seeds_config).medium_text);
         return 0;
@@ -148,13 +168,49 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*probe_cmd) {
-      const CoarseGrainSettings s = read_coarse_grain_settings(probe_config);
-      std::string text = fmt::format("# softpack-coarse multi-contact: {}, packing seed {}, {}\n# walls delta_n Fn_first_wall[N]\n",
-                                     probe_config, probe_seed, code_version());
-      for (const MultiContactPoint& p : measure_multi_contact(s, probe_seed, probe_walls, probe_dn, [&](const MultiContactPoint& p) {
-             fmt::print(stderr, "{} multi-contact: {} walls, delta_n {:.3f}: Fn {:.5g} N\n", program, p.walls, p.delta_n, p.Fn);
-           }))
-        text += fmt::format("{} {:.4f} {:.6e}\n", p.walls, p.delta_n, p.Fn);
+      if (probe_plan.empty() == probe_config.empty()) throw InputError("multi-contact: give --config or --probe");
+      CoarseGrainSettings s;
+      std::string source = probe_config;
+      if (!probe_plan.empty()) {
+        if (probe_radius.empty()) throw InputError("multi-contact: --probe needs --radius (one of the plan's radii)");
+        const ManyBodyProbe plan = read_many_body_probe(probe_plan);
+        s = plan.settings_at(probe_radius);
+        probe_arrangements = plan.arrangements(), probe_dn = plan.delta_n;
+        source = fmt::format("{} (radius {}: Rs = {} m)", probe_plan, probe_radius, s.packing.Rs);
+      } else {
+        s = read_coarse_grain_settings(probe_config);
+      }
+      std::vector<ProbeArrangement> arrangements;
+      for (const std::string& name : probe_arrangements) {
+        for (const ProbeArrangement& a : arrangements)
+          if (a.name == name) throw InputError(fmt::format("--arrangements: '{}' is given twice", name));
+        arrangements.push_back(builtin_arrangement(name, probe_seed));
+      }
+      const Stopwatch clock;
+      std::size_t done = 0;
+      const std::size_t points = arrangements.size() * probe_dn.size();
+      const auto points_of = measure_multi_contact(s, probe_seed, arrangements, probe_dn, [&](const MultiContactPoint& p) {
+        const double t = clock.elapsed().wall;
+        ++done;
+        fmt::print(stderr, "{} multi-contact: {} ({} walls), delta_n {:.3f}: Fn {:.5g} N on the first wall ({}/{}, {:.0f} s, ETA {:.0f} s)\n", program,
+                   p.arrangement, p.Fn.size(), p.delta_n, p.Fn[0], done, points, t, t / static_cast<double>(done) * static_cast<double>(points - done));
+      });
+      std::string text = fmt::format(
+          "# softpack-coarse multi-contact: {}, packing seed {}, {}, {:.1f} CPU-s\n"
+          "# one block per arrangement; wall k along u_k (from the centre), moved in by w_k delta_n Rs\n"
+          "# walls delta_n Fn_1 ... Fn_walls [N]\n",
+          source, probe_seed, code_version(), clock.elapsed().cpu);
+      for (const ProbeArrangement& a : arrangements) {
+        text += fmt::format("\n# arrangement {}:", a.name);
+        for (const ProbeWall& w : a.walls) text += fmt::format(" u=({:.6f} {:.6f} {:.6f}) w={}", w.u.x() + 0.0, w.u.y() + 0.0, w.u.z() + 0.0, w.w);  // + 0.0: no -0
+        text += "\n";
+        for (const MultiContactPoint& p : points_of) {
+          if (p.arrangement != a.name) continue;
+          text += fmt::format("{} {:.4f}", p.Fn.size(), p.delta_n);
+          for (const double F : p.Fn) text += fmt::format(" {:.6e}", F + 0.0);
+          text += "\n";
+        }
+      }
       write_file_atomically(probe_out, text);
       return 0;
     }

@@ -57,6 +57,21 @@ COARSE_PROBE_DN := 0.1 0.15 0.2 0.25 0.3 0.35
 coarse-grain-multi-contact: $(foreach s,$(COARSE_SEEDS),$(COARSE_DIR)/multi-contact/seed-$(s)000.dat)  ## one soft-particle pressed by 1, 2, 6 walls at once (COARSE_DIR/multi-contact/)
 $(COARSE_DIR)/multi-contact/seed-%.dat: $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOLS)
 	@mkdir -p $(@D)
-	@$(RUN) $(COARSE_TOOL) multi-contact --config $(COARSE_CONFIG) --packing-seed $* --walls 1 2 6 --delta-n $(COARSE_PROBE_DN) --out $@ \
+	@$(RUN) $(COARSE_TOOL) multi-contact --config $(COARSE_CONFIG) --packing-seed $* --arrangements one opposite cube --delta-n $(COARSE_PROBE_DN) --out $@ \
 	  2> $(@D)/seed-$*.log || { echo "coarse-grain: multi-contact $* FAILED (log: $(@D)/seed-$*.log)"; tail -2 $(@D)/seed-$*.log; exit 1; }
 	@echo "coarse-grain: $@"
+
+# The many-body probe (issue 33, paper/many-body.md): one resolved soft-particle pressed by 1 to 6
+# walls in each arrangement of the plan (experiments/many-body.yaml, read and checked by the tool),
+# for each of its radii and packing seeds: PROBE_DIR/RADIUS/seed-S.dat (a block per arrangement).
+PROBE_PLAN ?= experiments/many-body.yaml
+PROBE_DIR ?= $(DATA)/many-body/probe
+PROBE_RUNS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN))
+.PHONY: many-body-probe
+many-body-probe: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat)  ## the many-body probe's runs (PROBE_DIR/RADIUS/seed-S.dat)
+$(PROBE_DIR)/%.dat: $(PROBE_PLAN) $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOLS)
+	@mkdir -p $(@D)
+	@$(RUN) $(COARSE_TOOL) multi-contact --probe $(PROBE_PLAN) --radius $(patsubst %/,%,$(dir $*)) \
+	  --packing-seed $(patsubst seed-%,%,$(notdir $*)) --out $@ 2> $(basename $@).log \
+	  || { echo "many-body probe: $* FAILED (log: $(basename $@).log)"; tail -2 $(basename $@).log; exit 1; }
+	@echo "many-body probe: $@ ($$(head -1 $@ | grep -o '[0-9.]* CPU-s'))"

@@ -1,28 +1,60 @@
-// The multi-contact probe (docs/coarse-grain.md, "Why"): one soft-particle resolved — a packing
-// of the medium's generator in its shell, the shell held — pressed by k plane walls at once,
-// each moved towards the centre by Δn Rs (k = 1: the soft-solid measurement itself; 2: two
-// opposite walls; 6: the six faces of a cube), with the laws' own approach speed and relaxation
-// (the profile's normal.speed and relaxation). The force on the first wall against Δn says
-// whether a soft-particle answers each contact as if it were alone (the pairwise laws of the
-// law file), or stiffer, its packing being compressed by all of them.
+// The multi-contact probe (docs/coarse-grain.md, "Why"; issue 33's many-body probe): one
+// soft-particle resolved — a packing of the medium's generator in its shell, the shell held —
+// pressed by plane walls at once in an arrangement: wall k, its normal towards the centre along
+// -u_k, moved in by Δn_k Rs = w_k Δn Rs (u_k a unit direction, w_k in (0, 1] its share of the
+// arrangement's Δn), with the laws' own approach speed and relaxation (the profile's
+// normal.speed and relaxation). Each wall's force along u_k after the relaxation says whether a
+// soft-particle answers each contact as if it were alone (the pairwise laws of the law file:
+// the arrangement `one` is the soft-solid measurement itself), or stiffer, its packing being
+// compressed by all of them.
+//
+// Arrangements (builtin_arrangement; the first wall is always +z, with w = 1):
+//   one            +z
+//   opposite       +z, -z
+//   orthogonal     +z, +x
+//   triangle       three in the x-z plane at 120 degrees
+//   tetrahedral    the four vertices of a regular tetrahedron
+//   square         +z, +x, -z, -x (four in a plane)
+//   pyramid        the cube's faces but -y (five)
+//   cube           the six faces of a cube: +z, -z, +x, -x, +y, -y
+//   opposite-half, orthogonal-half   as opposite, orthogonal with the second wall at w = 1/2
+//   random-N       N directions (2 <= N <= 6) drawn uniformly on the sphere from the packing's
+//                  seed, each at least 60 degrees from the others, the first turned onto +z
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "coarse/settings.hpp"
+#include "core/types.hpp"
 
 namespace softpack {
 
-struct MultiContactPoint {
-  int walls = 1;
-  double delta_n = 0.0;
-  double Fn = 0.0;  ///< on the first wall (+z), after the relaxation [N]
+struct ProbeWall {
+  Vec3 u = Vec3::UnitZ();  ///< unit direction from the centre to the wall
+  double w = 1.0;          ///< Δn of this wall / Δn of the arrangement, in (0, 1]
 };
 
-/// For each k of `walls` (1, 2 or 6) and each Δn of `delta_n` (increasing, from contact).
+struct ProbeArrangement {
+  std::string name;
+  std::vector<ProbeWall> walls;
+};
+
+/// The arrangement named `name` (above); `seed` draws random-N's directions. InputError naming
+/// the allowed names otherwise.
+ProbeArrangement builtin_arrangement(const std::string& name, std::uint64_t seed);
+
+struct MultiContactPoint {
+  std::string arrangement;
+  double delta_n = 0.0;     ///< the arrangement's Δn (wall k's is w_k Δn)
+  std::vector<double> Fn;   ///< each wall's force along its u, after the relaxation [N]
+};
+
+/// For each arrangement and each Δn of `delta_n` (increasing, from contact), the walls' forces.
 std::vector<MultiContactPoint> measure_multi_contact(const CoarseGrainSettings& s, std::uint64_t packing_seed,
-                                                     const std::vector<int>& walls, const std::vector<double>& delta_n,
+                                                     const std::vector<ProbeArrangement>& arrangements,
+                                                     const std::vector<double>& delta_n,
                                                      const std::function<void(const MultiContactPoint&)>& progress = {});
 
 }  // namespace softpack

@@ -61,7 +61,7 @@ std::string write_coarse_study_report(const Study& study, const std::string& dat
     double cpu = 0.0;
     for (double t : c->cpu[0]) cpu += t;
     std::string seeds;
-    for (auto seed : c->seeds) seeds += (seeds.empty() ? "" : " ") + std::to_string(seed);
+    for (auto seed : c->seeds) seeds += fmt::format("{}{}", seeds.empty() ? "" : " ", seed);  // not "x" + string: GCC 12's -Wrestrict
     const auto tau_ratio = [&](int m) { return shear ? fmt::format("{:.3f}", shear->tau[m].mean / shear->sigma[m].mean) : std::string("–"); };
     md += fmt::format("| {} | {} | {} | {:.3f} | {} | {} | {} | {} | {} | {} | {:.0f} |\n", s->name, changes, seeds, c->agreement_strain,
                       ratio_cell(load ? &load->sigma[1] : nullptr, load ? &load->sigma[0] : nullptr),

@@ -2,11 +2,16 @@
 // models, its files round-trip, the comparison reads curves as it says.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 #include "coarse/medium_file.hpp"
+#include "coarse/multi_contact.hpp"
+#include "coarse/probe_settings.hpp"
 #include "coarse/report.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
@@ -151,6 +156,102 @@ TEST(CoarseGrain, TheComparisonFindsWhereTheCurvesPart) {
   EXPECT_NEAR(c.points[3].sigma[0].error, 10.0, 1e-9);  // two seeds at +-10: standard error 10
   EXPECT_NEAR(c.points[3].K0[1].mean, 0.3, 1e-12);
   EXPECT_NEAR(c.mean_speedup.mean, 75.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace softpack
+
+namespace softpack {
+namespace {
+
+// The many-body probe's arrangements (coarse/multi_contact.hpp): unit directions, the first +z at
+// its full Δn, the angles each names, random-N's directions apart by 60 degrees and the same for a seed.
+TEST(MultiContactProbe, TheArrangementsAreWhatTheirNamesSay) {
+  const auto angle = [](const ProbeWall& a, const ProbeWall& b) { return std::acos(std::clamp(a.u.dot(b.u), -1.0, 1.0)) * 180.0 / std::numbers::pi; };
+  const std::pair<const char*, std::size_t> walls[] = {{"one", 1},     {"opposite", 2}, {"orthogonal", 2},    {"triangle", 3},
+                                                       {"tetrahedral", 4}, {"square", 4},   {"pyramid", 5},       {"cube", 6},
+                                                       {"opposite-half", 2}, {"orthogonal-half", 2}, {"random-2", 2}, {"random-6", 6}};
+  for (const auto& [name, n] : walls) {
+    const ProbeArrangement a = builtin_arrangement(name, 7);
+    ASSERT_EQ(a.walls.size(), n) << name;
+    EXPECT_EQ(a.walls[0].u, Vec3::UnitZ()) << name;
+    EXPECT_EQ(a.walls[0].w, 1.0) << name;
+    for (const ProbeWall& w : a.walls) EXPECT_NEAR(w.u.norm(), 1.0, 1e-12) << name;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) EXPECT_GE(angle(a.walls[i], a.walls[j]), 60.0 - 1e-9) << name << " walls " << i << ", " << j;
+  }
+  const ProbeArrangement t = builtin_arrangement("tetrahedral", 0);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = i + 1; j < 4; ++j) EXPECT_NEAR(t.walls[i].u.dot(t.walls[j].u), -1.0 / 3.0, 1e-12);
+  const ProbeArrangement tri = builtin_arrangement("triangle", 0);
+  EXPECT_NEAR(angle(tri.walls[1], tri.walls[2]), 120.0, 1e-9);
+  EXPECT_NEAR(angle(builtin_arrangement("orthogonal-half", 0).walls[0], builtin_arrangement("orthogonal-half", 0).walls[1]), 90.0, 1e-9);
+  EXPECT_EQ(builtin_arrangement("opposite-half", 0).walls[1].w, 0.5);
+  const ProbeArrangement r1 = builtin_arrangement("random-5", 11), r2 = builtin_arrangement("random-5", 11), r3 = builtin_arrangement("random-5", 12);
+  for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(r1.walls[k].u, r2.walls[k].u);
+  EXPECT_NE(r1.walls[1].u, r3.walls[1].u);
+  for (const char* bad : {"two", "random-1", "random-7", "random-", "Cube"}) {
+    try {
+      builtin_arrangement(bad, 0);
+      ADD_FAILURE() << bad << " was taken";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("allowed: one, opposite"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// On the tiny settings: one force per wall and point, each a push (>= 0), and Δn out of order refused.
+TEST(MultiContactProbe, EachWallOfAnArrangementReportsItsPush) {
+  const std::vector<ProbeArrangement> a{builtin_arrangement("orthogonal-half", 3)};
+  const auto points = measure_multi_contact(tiny(), 3, a, {0.3, 0.5});
+  ASSERT_EQ(points.size(), 2u);
+  for (const MultiContactPoint& p : points) {
+    ASSERT_EQ(p.Fn.size(), 2u);
+    for (const double F : p.Fn) EXPECT_TRUE(std::isfinite(F) && F >= 0.0) << F;
+  }
+  EXPECT_GT(points[1].Fn[0], 0.0);
+  EXPECT_GT(points[1].Fn[1], 0.0);
+  EXPECT_THROW(measure_multi_contact(tiny(), 3, a, {0.2, 0.1}), InputError);
+  EXPECT_THROW(measure_multi_contact(tiny(), 3, a, {1.0}), InputError);
+}
+
+}  // namespace
+}  // namespace softpack
+
+namespace softpack {
+namespace {
+
+// The many-body probe's plan (coarse/probe_settings.hpp): the committed one reads; a plan that
+// fits and holds out one arrangement, names an unknown one, or lets Δn fall is refused, naming the key.
+TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
+  const ManyBodyProbe plan = read_many_body_probe(kRoot + "/experiments/many-body.yaml", kRoot);
+  EXPECT_EQ(plan.radii.size(), 2u);
+  EXPECT_GE(plan.seeds.size(), 4u);
+  for (std::uint64_t seed : plan.seeds) EXPECT_GE(seed, 101u);  // never the paper's seeds 1-7
+  EXPECT_EQ(plan.settings_at("half").packing.Rs, plan.radii.at("half"));
+  EXPECT_THROW(plan.settings_at("double"), InputError);
+  const std::string text = [&] {
+    std::ifstream in(kRoot + "/experiments/many-body.yaml");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  const auto refused = [&](const std::string& from, const std::string& to, const std::string& says) {
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    const std::string bad_text = std::string(text).replace(at, from.size(), to);
+    const std::string path = ::testing::TempDir() + "/many-body-bad.yaml";
+    std::ofstream(path) << bad_text;
+    try {
+      read_many_body_probe(path, kRoot);
+      ADD_FAILURE() << "taken: " << to;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  };
+  refused("held_out: [triangle", "held_out: [cube, triangle", "also in fit");
+  refused("held_out: [triangle", "held_out: [hexagon", "allowed: one, opposite");
+  refused("delta_n: [0.05, 0.1", "delta_n: [0.1, 0.05", "must increase");
+  refused("  candidates:", "  colour: red\n  candidates:", "colour");
+  refused("fit: [one, ", "fit: [", "'one'");
 }
 
 }  // namespace

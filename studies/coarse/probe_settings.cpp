@@ -1,0 +1,121 @@
+#include "coarse/probe_settings.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "coarse/multi_contact.hpp"
+#include "config/yaml_node.hpp"
+#include "core/error.hpp"
+#include "profile/profile.hpp"
+
+namespace softpack {
+namespace {
+
+double number_in(const ConfigNode& n, double lo, double hi, bool lo_open, bool hi_open) {
+  const double v = n.number();
+  if (!((lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi)))
+    n.fail(fmt::format("{} is not allowed; allowed: {} {} value {} {}", v, lo, lo_open ? "<" : "<=", hi_open ? "<" : "<=", hi));
+  return v;
+}
+
+std::vector<std::string> names(const ConfigNode& n, const std::vector<std::string>& allowed = {}) {
+  std::vector<std::string> out;
+  for (const ConfigNode& item : n.items()) {
+    const std::string s = allowed.empty() ? item.string() : item.choice(allowed);
+    if (allowed.empty()) {
+      try {
+        builtin_arrangement(s, 0);
+      } catch (const InputError& e) {
+        item.fail(e.what());
+      }
+    }
+    if (std::find(out.begin(), out.end(), s) != out.end()) item.fail(fmt::format("'{}' is listed twice", s));
+    out.push_back(s);
+  }
+  if (out.empty()) n.fail("an empty list is not allowed; give at least one");
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> ManyBodyProbe::arrangements() const {
+  std::vector<std::string> out = fit;
+  out.insert(out.end(), held_out.begin(), held_out.end());
+  return out;
+}
+
+CoarseGrainSettings ManyBodyProbe::settings_at(const std::string& radius) const {
+  const auto it = radii.find(radius);
+  if (it == radii.end()) {
+    std::string allowed;
+    for (const auto& [name, Rs] : radii) {
+      if (!allowed.empty()) allowed += ", ";
+      allowed += name;
+    }
+    throw InputError(fmt::format("radius '{}' is not allowed; allowed: {}", radius, allowed));
+  }
+  CoarseGrainSettings s = settings;
+  s.packing.Rs = it->second;
+  validate(s.packing);
+  return s;
+}
+
+ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& root_dir) {
+  const ConfigNode root = ConfigNode::load_file(path);
+  root.allow_only({"many_body_probe"});
+  const ConfigNode c = root.at("many_body_probe");
+  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "validation"});
+  ManyBodyProbe p;
+  std::ostringstream text;
+  text << c.yaml();
+  p.section_text = text.str();
+  p.settings_path = c.at("settings").string();
+  const std::filesystem::path settings_file =
+      std::filesystem::path(p.settings_path).is_absolute() ? std::filesystem::path(p.settings_path) : std::filesystem::path(root_dir) / p.settings_path;
+  p.settings = read_coarse_grain_settings(settings_file.string(), root_dir);
+  p.seeds = parse_seeds(c);
+  const ConfigNode radii = c.at("radii");
+  for (const std::string& name : radii.keys()) {
+    if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
+      radii.fail(fmt::format("radius name '{}' is not allowed; allowed: lower-case letters, digits and '-'", name));
+    p.radii[name] = number_in(radii.at(name), 0.0, 1.0, true, false);
+    try {
+      p.settings_at(name);
+    } catch (const InputError& e) {
+      radii.at(name).fail(e.what());
+    }
+  }
+  if (p.radii.empty()) radii.fail("no radius; give at least one, e.g. reference: 0.016");
+  const ConfigNode dn = c.at("delta_n");
+  for (const ConfigNode& v : dn.items()) {
+    p.delta_n.push_back(number_in(v, 0.0, 1.0, true, true));
+    if (p.delta_n.size() > 1 && !(p.delta_n.back() > p.delta_n[p.delta_n.size() - 2])) v.fail("delta_n must increase");
+  }
+  if (p.delta_n.empty()) dn.fail("an empty list is not allowed; give at least one");
+  p.fit = names(c.at("fit"));
+  p.held_out = names(c.at("held_out"));
+  for (const std::string& a : p.held_out)
+    if (std::find(p.fit.begin(), p.fit.end(), a) != p.fit.end())
+      c.at("held_out").fail(fmt::format("'{}' is also in fit: an arrangement is fitted or held out, not both", a));
+  if (std::find(p.fit.begin(), p.fit.end(), "one") == p.fit.end()) c.at("fit").fail("'one' (the single contact, F1 of every candidate) must be in fit");
+  p.candidates = names(c.at("candidates"), {"pairwise", "volumetric", "ratio"});
+  const ConfigNode sel = c.at("selection");
+  sel.allow_only({"force_floor", "tie_factor"});
+  p.force_floor = number_in(sel.at("force_floor"), 0.0, 1.0, true, true);
+  p.tie_factor = number_in(sel.at("tie_factor"), 1.0, 10.0, false, false);
+  const ConfigNode val = c.at("validation");
+  val.allow_only({"media_seeds", "strain_range", "bound_in_standard_errors"});
+  p.media_seeds = parse_seeds(val, "media_seeds");
+  const std::vector<ConfigNode> range = val.at("strain_range").items();
+  if (range.size() != 2) val.at("strain_range").fail("give two strains, [from, to]");
+  p.strain_lo = number_in(range[0], 0.0, 1.0, false, true);
+  p.strain_hi = number_in(range[1], 0.0, 1.0, true, true);
+  if (!(p.strain_hi > p.strain_lo)) val.at("strain_range").fail("the second strain must exceed the first");
+  p.bound_in_standard_errors = number_in(val.at("bound_in_standard_errors"), 0.0, 10.0, true, false);
+  return p;
+}
+
+}  // namespace softpack

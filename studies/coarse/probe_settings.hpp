@@ -1,0 +1,41 @@
+// The many-body probe's plan (issue 33; experiments/many-body.yaml, section `many_body_probe`;
+// paper/many-body.md): which soft-particles (the coarse-grain settings' generator, packing seeds,
+// radii) are pressed in which arrangements (coarse/multi_contact.hpp) to which Δn, which
+// arrangements fit the candidate laws and which are only predicted, the selection rule and the
+// media validation's criterion — all read and checked here, before any run.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "coarse/settings.hpp"
+
+namespace softpack {
+
+struct ManyBodyProbe {
+  std::string settings_path;          ///< the coarse-grain settings (the soft-particle)
+  CoarseGrainSettings settings;
+  std::vector<std::uint64_t> seeds;   ///< packing seeds
+  std::map<std::string, double> radii;  ///< name -> Rs [m] (the settings' grains)
+  std::vector<double> delta_n;        ///< increasing, in (0, 1)
+  std::vector<std::string> fit, held_out;  ///< arrangement names, disjoint
+  std::vector<std::string> candidates;     ///< pairwise, volumetric, ratio
+  double force_floor = 0.0;           ///< of F1(largest Δn), in (0, 1)
+  double tie_factor = 0.0;            ///< >= 1
+  std::vector<std::uint64_t> media_seeds;
+  double strain_lo = 0.0, strain_hi = 0.0;
+  double bound_in_standard_errors = 0.0;
+  std::string section_text;           ///< the section as read (provenance)
+
+  /// The fit arrangements, then the held-out ones.
+  std::vector<std::string> arrangements() const;
+  /// The settings with the shell of radius `radius` (a name of `radii`; InputError otherwise).
+  CoarseGrainSettings settings_at(const std::string& radius) const;
+};
+
+/// Reads and checks the plan; InputError names the file, the key and what is allowed.
+/// `root_dir`: where the settings path starts.
+ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& root_dir = ".");
+
+}  // namespace softpack
