@@ -18,6 +18,7 @@
 #include "coarse/compression.hpp"
 #include "coarse/medium_file.hpp"
 #include "coarse/multi_contact.hpp"
+#include "coarse/probe_report.hpp"
 #include "coarse/probe_settings.hpp"
 #include "io/atomic_file.hpp"
 #include "coarse/result_file.hpp"
@@ -131,6 +132,11 @@ int main(int argc, char** argv) {
   probe_cmd->add_option("--delta-n", probe_dn, "Delta_n of the arrangement, increasing (wall k's: w_k Delta_n)");
   probe_cmd->add_option("--out", probe_out, "text file: a block per arrangement, rows: walls delta_n Fn_1 ... Fn_walls")->required();
   add_threads_option(*probe_cmd);
+  std::string report_plan, report_dir, report_out;
+  CLI::App* report_cmd = app.add_subcommand("probe-report", "the many-body probe's analysis: candidate laws fitted and judged by the plan's rule (coarse/probe_fit.hpp)");
+  report_cmd->add_option("--probe", report_plan, "the plan, e.g. experiments/many-body.yaml")->required();
+  report_cmd->add_option("--dir", report_dir, "the probe files' folder (RADIUS/seed-S.dat), e.g. data/many-body/probe")->required();
+  report_cmd->add_option("--out", report_out, "folder of probe.md, probe.json, probe.dat")->required();
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;
@@ -167,6 +173,11 @@ int main(int argc, char** argv) {
       fmt::print("medium={}\nresolved={}\nsoft={}\n", st.medium, st.resolved, st.soft);
       return 0;
     }
+    if (*report_cmd) {
+      const ProbeAnalysis a = write_probe_report(read_many_body_probe(report_plan), report_plan, report_dir, report_out);
+      fmt::print(stderr, "{} probe-report: chosen {}, enters the engine: {} -> {}/probe.md\n", program, a.chosen, a.enters_engine ? "yes" : "no", report_out);
+      return 0;
+    }
     if (*probe_cmd) {
       if (probe_plan.empty() == probe_config.empty()) throw InputError("multi-contact: give --config or --probe");
       CoarseGrainSettings s;
@@ -192,6 +203,11 @@ int main(int argc, char** argv) {
       const auto points_of = measure_multi_contact(s, probe_seed, arrangements, probe_dn, [&](const MultiContactPoint& p) {
         const double t = clock.elapsed().wall;
         ++done;
+        if (!p.failed.empty()) {
+          fmt::print(stderr, "{} multi-contact: {}, delta_n {:.3f}: not measured, and its larger delta_n not tried: {}\n", program, p.arrangement,
+                     p.delta_n, p.failed);
+          return;
+        }
         fmt::print(stderr, "{} multi-contact: {} ({} walls), delta_n {:.3f}: Fn {:.5g} N on the first wall ({}/{}, {:.0f} s, ETA {:.0f} s)\n", program,
                    p.arrangement, p.Fn.size(), p.delta_n, p.Fn[0], done, points, t, t / static_cast<double>(done) * static_cast<double>(points - done));
       });
@@ -206,6 +222,10 @@ int main(int argc, char** argv) {
         text += "\n";
         for (const MultiContactPoint& p : points_of) {
           if (p.arrangement != a.name) continue;
+          if (!p.failed.empty()) {
+            text += fmt::format("# delta_n {:.4f} not measured (nor the larger): {}\n", p.delta_n, p.failed);
+            continue;
+          }
           text += fmt::format("{} {:.4f}", p.Fn.size(), p.delta_n);
           for (const double F : p.Fn) text += fmt::format(" {:.6e}", F + 0.0);
           text += "\n";

@@ -75,3 +75,9 @@ $(PROBE_DIR)/%.dat: $(PROBE_PLAN) $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOLS)
 	  --packing-seed $(patsubst seed-%,%,$(notdir $*)) --out $@ 2> $(basename $@).log \
 	  || { echo "many-body probe: $* FAILED (log: $(basename $@).log)"; tail -2 $(basename $@).log; exit 1; }
 	@echo "many-body probe: $@ ($$(head -1 $@ | grep -o '[0-9.]* CPU-s'))"
+
+# Its analysis (coarse/probe_fit.hpp): the candidate laws fitted and judged by the plan's rule.
+PROBE_REPORT ?= $(DATA)/many-body/report
+.PHONY: many-body-report
+many-body-report: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat) | $(TOOLS)  ## the many-body probe's report (PROBE_REPORT/probe.md)
+	@$(RUN) $(COARSE_TOOL) probe-report --probe $(PROBE_PLAN) --dir $(PROBE_DIR) --out $(PROBE_REPORT)

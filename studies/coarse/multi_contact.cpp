@@ -93,7 +93,7 @@ std::vector<MultiContactPoint> measure_multi_contact(const CoarseGrainSettings& 
       scene.planes.push_back(PlaneDef{fmt::format("wall{}", k), Rs * a.walls[k].u, -a.walls[k].u, 1});
     Simulation simulation(scene);
     double at = 0.0;
-    for (const double dn : delta_n) {
+    for (const double dn : delta_n) try {
       bool moved = false;
       for (std::size_t k = 0; k < n; ++k) {
         const double step = a.walls[k].w * (dn - at) * Rs;
@@ -107,10 +107,14 @@ std::vector<MultiContactPoint> measure_multi_contact(const CoarseGrainSettings& 
       }
       at = dn;
       relax(simulation, s.relaxation, {}, [&] { return -simulation.plane_loads()[0].force; });
-      MultiContactPoint p{a.name, dn, {}};
+      MultiContactPoint p{a.name, dn, {}, {}};
       for (std::size_t k = 0; k < n; ++k) p.Fn.push_back(simulation.plane_loads()[k].force.dot(a.walls[k].u));
       out.push_back(p);
       if (progress) progress(out.back());
+    } catch (const NumericalError& e) {
+      out.push_back({a.name, dn, {}, e.what()});
+      if (progress) progress(out.back());
+      break;
     }
   }
   return out;

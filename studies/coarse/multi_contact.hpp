@@ -49,9 +49,13 @@ struct MultiContactPoint {
   std::string arrangement;
   double delta_n = 0.0;     ///< the arrangement's Δn (wall k's is w_k Δn)
   std::vector<double> Fn;   ///< each wall's force along its u, after the relaxation [N]
+  /// Empty, or why the point has no forces: the run stopped (the watchdog's NumericalError, e.g. a
+  /// grain pressed beyond the overlap limit), and the arrangement's larger Δn were not tried.
+  std::string failed;
 };
 
-/// For each arrangement and each Δn of `delta_n` (increasing, from contact), the walls' forces.
+/// For each arrangement and each Δn of `delta_n` (increasing, from contact), the walls' forces; a
+/// point whose run stops is returned with `failed` set and ends its arrangement.
 std::vector<MultiContactPoint> measure_multi_contact(const CoarseGrainSettings& s, std::uint64_t packing_seed,
                                                      const std::vector<ProbeArrangement>& arrangements,
                                                      const std::vector<double>& delta_n,

@@ -1,0 +1,218 @@
+#include "coarse/probe_fit.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace softpack {
+
+std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::string& radius, std::uint64_t seed) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot read the probe file (make many-body-probe writes it)", path));
+  std::vector<ProbeWallForce> out;
+  std::string arrangement;
+  std::vector<double> w;
+  int line_no = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_no;
+    const auto fail = [&](const std::string& what) { return InputError(fmt::format("{}:{}: {}", path, line_no, what)); };
+    if (line.rfind("# arrangement ", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon == std::string::npos) throw fail("an arrangement line without ':'");
+      arrangement = line.substr(14, colon - 14);
+      w.clear();
+      for (auto at = line.find(" w=", colon); at != std::string::npos; at = line.find(" w=", at + 3)) w.push_back(std::stod(line.substr(at + 3)));
+      if (w.empty()) throw fail("an arrangement without walls");
+      continue;
+    }
+    if (line.empty() || line[0] == '#') continue;
+    if (arrangement.empty()) throw fail("a row before any '# arrangement' line");
+    std::istringstream s(line);
+    std::size_t n = 0;
+    double dn = 0.0;
+    if (!(s >> n >> dn) || n != w.size()) throw fail(fmt::format("expected '{} delta_n' and {} forces", w.size(), w.size()));
+    std::vector<double> delta_n;
+    for (const double wk : w) delta_n.push_back(wk * dn);
+    for (std::size_t k = 0; k < n; ++k) {
+      double F = 0.0;
+      if (!(s >> F) || !std::isfinite(F)) throw fail(fmt::format("wall {}: no finite force", k + 1));
+      out.push_back({radius, arrangement, seed, delta_n, k, F});
+    }
+  }
+  return out;
+}
+
+double cap_volume(double d) { return d * d * (3.0 - d) / 4.0; }
+double cap_area(double d) { return 2.0 * d - d * d; }
+
+double cap_depth(double eps) {
+  double lo = 0.0, hi = 2.0;
+  if (!(eps > 0.0)) return 0.0;
+  if (eps >= 1.0) return 2.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (cap_volume(mid) < eps ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+double ProbeLaw::predict(const ProbeWallForce& w) const {
+  const fit::PowerLawFit& f1 = F1.at(w.radius);
+  const double dk = w.delta_n[w.wall];
+  if (name == "pairwise") return fit::evaluate(f1, dk);
+  double others = 0.0;
+  for (std::size_t l = 0; l < w.delta_n.size(); ++l)
+    if (l != w.wall) others += cap_volume(w.delta_n[l]);
+  const double vk = cap_volume(dk);
+  if (!(vk > 0.0)) return 0.0;
+  if (name == "ratio") return fit::evaluate(f1, dk) * std::pow((vk + others) / vk, parameter);
+  const double star = cap_depth(std::min(1.0, vk + parameter * others));  // volumetric
+  return star > 0.0 && star < 2.0 ? fit::evaluate(f1, star) / cap_area(star) * cap_area(dk) : 0.0;
+}
+
+namespace {
+
+// The floor of each radius: force_floor x F1 at the plan's largest Δn.
+double floor_of(const ProbeLaw& law, const std::string& radius, const ManyBodyProbe& plan) {
+  return plan.force_floor * fit::evaluate(law.F1.at(radius), plan.delta_n.back());
+}
+
+// F1 of each radius: Eq. 7 on the mean over the seeds of `one`'s wall (relative residuals).
+std::map<std::string, fit::PowerLawFit> fit_single_contact(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls) {
+  std::map<std::string, fit::PowerLawFit> out;
+  for (const auto& [radius, Rs] : plan.radii) {
+    std::vector<double> dn, mean, se;
+    for (const double d : plan.delta_n) {
+      std::vector<double> F;
+      for (const ProbeWallForce& w : walls)
+        if (w.radius == radius && w.arrangement == "one" && std::abs(w.delta_n[0] - d) < 1e-9) F.push_back(w.Fn);
+      if (F.empty()) continue;
+      double m = 0.0, v = 0.0;
+      for (const double f : F) m += f / static_cast<double>(F.size());
+      for (const double f : F) v += (f - m) * (f - m);
+      dn.push_back(d), mean.push_back(m);
+      se.push_back(F.size() > 1 ? std::sqrt(v / static_cast<double>(F.size() - 1) / static_cast<double>(F.size())) : 0.0);
+    }
+    fit::FitOptions o;
+    o.weighting = fit::FitOptions::Weighting::relative;
+    o.onset_force = plan.force_floor;
+    try {
+      out[radius] = fit::fit_normal_law(dn, mean, se, o);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("radius {}: the single contact ('one') cannot be fitted: {}", radius, e.what()));
+    }
+  }
+  return out;
+}
+
+std::size_t parameters(const std::string& name) { return name == "pairwise" ? 0 : 1; }
+
+// The parameter in [0, hi] with the least error on the fit arrangements: a grid of 1/1000 of the
+// range, then golden sections about its best point.
+double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>& walls, const ManyBodyProbe& plan) {
+  const auto error = [&](double x) {
+    law.parameter = x;
+    return probe_error(law, walls, plan.fit, plan).rms_log;
+  };
+  double best = 0.0, best_e = error(0.0);
+  for (int i = 1; i <= 1000; ++i) {
+    const double x = hi * i / 1000.0, e = error(x);
+    if (e < best_e) best = x, best_e = e;
+  }
+  double a = std::max(0.0, best - hi / 1000.0), b = std::min(hi, best + hi / 1000.0);
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  for (int i = 0; i < 60; ++i) {
+    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    (error(x1) < error(x2) ? b : a) = (error(x1) < error(x2) ? x2 : x1);
+  }
+  const double x = 0.5 * (a + b);
+  return error(x) < best_e ? x : best;
+}
+
+}  // namespace
+
+ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
+                       const ManyBodyProbe& plan) {
+  ProbeError e;
+  double sum = 0.0, sum2 = 0.0;
+  std::map<std::string, double> floors;
+  for (const auto& [radius, f] : law.F1) floors[radius] = floor_of(law, radius, plan);
+  for (const ProbeWallForce& w : walls) {
+    if (!arrangements.empty() && std::find(arrangements.begin(), arrangements.end(), w.arrangement) == arrangements.end()) continue;
+    const double floor = floors.at(w.radius);
+    if (!(w.Fn > floor)) continue;
+    const double r = std::log(std::max(law.predict(w), floor) / w.Fn);
+    sum += r, sum2 += r * r, ++e.points;
+  }
+  if (e.points > 0) e.mean_log = sum / static_cast<double>(e.points), e.rms_log = std::sqrt(sum2 / static_cast<double>(e.points));
+  return e;
+}
+
+ProbeAnalysis analyse_probe(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls) {
+  ProbeAnalysis out;
+  const auto F1 = fit_single_contact(plan, walls);
+  const std::vector<std::string> all = plan.arrangements();
+  for (const std::string& name : plan.candidates) {
+    ProbeCandidate c;
+    c.law = ProbeLaw{name, 0.0, F1};
+    const double hi = name == "volumetric" ? 1.5 : 3.0;
+    if (parameters(name) > 0) {
+      c.law.parameter = fit_parameter(c.law, hi, walls, plan);
+      std::vector<double> theta;  // the jackknife over the seeds: F1 and the parameter again without each
+      for (const std::uint64_t seed : plan.seeds) {
+        std::vector<ProbeWallForce> rest;
+        for (const ProbeWallForce& w : walls)
+          if (w.seed != seed) rest.push_back(w);
+        theta.push_back(fit_parameter(ProbeLaw{name, 0.0, fit_single_contact(plan, rest)}, hi, rest, plan));
+      }
+      double m = 0.0, v = 0.0;
+      for (const double t : theta) m += t / static_cast<double>(theta.size());
+      for (const double t : theta) v += (t - m) * (t - m);
+      c.parameter_error = std::sqrt(v * static_cast<double>(theta.size() - 1) / static_cast<double>(theta.size()));
+    }
+    c.fit = probe_error(c.law, walls, plan.fit, plan);
+    c.held_out = probe_error(c.law, walls, plan.held_out, plan);
+    for (const std::string& a : all) c.by_arrangement[a] = probe_error(c.law, walls, {a}, plan);
+    for (const auto& [radius, Rs] : plan.radii) {
+      std::vector<ProbeWallForce> of_radius;
+      for (const ProbeWallForce& w : walls)
+        if (w.radius == radius) of_radius.push_back(w);
+      c.by_radius[radius] = probe_error(c.law, of_radius, plan.held_out, plan);
+    }
+    out.candidates.push_back(c);
+  }
+  // The rule: the least held-out error; fewer parameters win within tie_factor of it.
+  double least = 0.0;
+  for (const ProbeCandidate& c : out.candidates) least = (&c == &out.candidates[0] || c.held_out.rms_log < least) ? c.held_out.rms_log : least;
+  const ProbeCandidate* chosen = nullptr;
+  for (const ProbeCandidate& c : out.candidates) {
+    if (!(c.held_out.rms_log <= plan.tie_factor * least)) continue;
+    if (!chosen || parameters(c.law.name) < parameters(chosen->law.name) ||
+        (parameters(c.law.name) == parameters(chosen->law.name) && c.held_out.rms_log < chosen->held_out.rms_log))
+      chosen = &c;
+  }
+  out.chosen = chosen->law.name;
+  const ProbeCandidate* pairwise = nullptr;
+  for (const ProbeCandidate& c : out.candidates)
+    if (c.law.name == "pairwise") pairwise = &c;
+  out.enters_engine = chosen->law.name != "pairwise" && pairwise != nullptr;
+  if (!pairwise) out.notes.push_back("pairwise is not among the candidates: the engine condition cannot be judged");
+  std::set<std::string> several;
+  for (const ProbeWallForce& w : walls)
+    if (w.delta_n.size() >= 2) several.insert(w.arrangement);
+  for (const std::string& a : plan.held_out)
+    if (pairwise && several.count(a) && !(chosen->by_arrangement.at(a).rms_log < pairwise->by_arrangement.at(a).rms_log)) {
+      out.enters_engine = false;
+      out.notes.push_back(fmt::format("held-out {}: {} is not better than pairwise", a, out.chosen));
+    }
+  return out;
+}
+
+}  // namespace softpack

@@ -1,0 +1,82 @@
+// The many-body probe's analysis (issue 33; paper/many-body.md, "Preregistration"): the candidate
+// laws fitted on the plan's fit arrangements and judged on its held-out ones, by the rule of
+// experiments/many-body.yaml.
+//
+// For wall k of an arrangement with intrusions Δn_1..Δn_n (a probe file's row, coarse/multi_contact.hpp),
+// F1 the single-contact force (Eq. 7 fitted to the seeds' mean of the arrangement `one` of the radius),
+// v(δ) = δ² (3 − δ) / 4 (a cap's volume over the soft-particle's), a(δ) = 2δ − δ² (its base over π Rs²),
+// p(v(δ)) = F1(δ) / a(δ):
+//
+//   pairwise     F_k = F1(Δn_k)
+//   volumetric   F_k = p(ε_k) a(Δn_k),  ε_k = v(Δn_k) + β Σ_{l≠k} v(Δn_l)
+//   ratio        F_k = F1(Δn_k) (Σ_l v(Δn_l) / v(Δn_k))^α
+//
+// A candidate's error on a set of points: the root mean square of ln(F_predicted / F_measured) over
+// the points whose measured force exceeds force_floor × F1(largest Δn), a prediction below that floor
+// counted as the floor.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "analysis/power_fit.hpp"
+#include "coarse/probe_settings.hpp"
+
+namespace softpack {
+
+/// One wall of one point of a probe file.
+struct ProbeWallForce {
+  std::string radius, arrangement;
+  std::uint64_t seed = 0;
+  std::vector<double> delta_n;  ///< every wall's Δn of the point (w_k Δn)
+  std::size_t wall = 0;         ///< which of them this is
+  double Fn = 0.0;              ///< [N]
+};
+
+/// The walls of a probe file (PROBE_DIR/RADIUS/seed-S.dat); InputError naming the file and line.
+std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::string& radius, std::uint64_t seed);
+
+// The candidates' geometry.
+double cap_volume(double delta);  ///< v(δ)
+double cap_area(double delta);    ///< a(δ)
+/// δ with v(δ) = eps, for 0 <= eps <= 1 (bisection on [0, 2], to the last bit).
+double cap_depth(double eps);
+
+/// A candidate with its parameter (β or α; none for pairwise) and the F1 of each radius.
+struct ProbeLaw {
+  std::string name;  ///< pairwise, volumetric, ratio
+  double parameter = 0.0;
+  std::map<std::string, fit::PowerLawFit> F1;
+  /// The force of wall w.wall of w's point.
+  double predict(const ProbeWallForce& w) const;
+};
+
+struct ProbeError {
+  double rms_log = 0.0;     ///< root mean square of ln(pred / meas)
+  double mean_log = 0.0;    ///< their mean (> 0: the law overpredicts)
+  std::size_t points = 0;
+};
+
+struct ProbeCandidate {
+  ProbeLaw law;
+  double parameter_error = 0.0;  ///< jackknife over the seeds
+  ProbeError fit, held_out;
+  std::map<std::string, ProbeError> by_arrangement;  ///< every arrangement (fit and held out)
+  std::map<std::string, ProbeError> by_radius;       ///< held-out points of each radius
+};
+
+struct ProbeAnalysis {
+  std::vector<ProbeCandidate> candidates;
+  std::string chosen;          ///< by the selection rule
+  bool enters_engine = false;  ///< beats pairwise on every held-out arrangement of >= 2 walls
+  std::vector<std::string> notes;
+};
+
+/// The points' error under `law`, for the points of the listed arrangements (all when empty).
+ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
+                       const ManyBodyProbe& plan);
+
+/// Everything the rule asks, on the walls of every probe file of the plan.
+ProbeAnalysis analyse_probe(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls);
+
+}  // namespace softpack
