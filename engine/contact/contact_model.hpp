@@ -104,7 +104,7 @@ struct ContactPartners {
 
 /// A model whose normal law reads the state of each body, accumulated over the body's closed
 /// contacts by a pass before the forces (the pattern of LAMMPS's EAM and MDR models): its normal
-/// sub-law declares kBodyState, body_term(h) and reads g.body1, g.body2 in evaluate().
+/// sub-law declares kBodyState, body_term(h, its constants) and reads g.body1, g.body2 in evaluate().
 template <class Model>
 concept BodyStateModel = requires { Model::Normal::kBodyState; } && Model::Normal::kBodyState;
 

@@ -47,6 +47,56 @@ SoftTangential::Constants<double> SoftTangential::constants(const Params& p, con
   return {law.tangential_exponent ? std::pow(normal.R / p.laws->R0, *law.tangential_exponent) : 1.0};
 }
 
+double cap_depth(double eps) {
+  if (!(eps > 0.0)) return 0.0;
+  if (!(eps < 1.0)) return 2.0;
+  // δ³ − 3δ² + 4ε = 0 with δ = 1 + t: t³ − 3t + 4ε − 2 = 0, whose root in [−1, 1] is
+  // t = 2 cos(acos(1 − 2ε) / 3 − 2π/3)
+  double d = 1.0 + 2.0 * std::cos(std::acos(1.0 - 2.0 * eps) / 3.0 - 2.0 * std::numbers::pi / 3.0);
+  for (int i = 0; i < 3; ++i) {  // Newton on v(δ) − ε, v' = 3δ (2 − δ) / 4
+    const double slope = 0.75 * d * (2.0 - d);
+    if (!(slope > 0.0)) break;
+    d = std::clamp(d - (cap_volume(d) - eps) / slope, 0.0, 2.0);
+  }
+  return d;
+}
+
+SoftManyBodyNormal::Constants<double> SoftManyBodyNormal::constants(const Params& p, const ContactPartners& b) {
+  Constants<double> k{};
+  static_cast<SoftNormal::Constants<double>&>(k) = SoftNormal::constants(p, b);
+  k.soft = b.soft1 && b.soft2 ? kBoth : b.soft1 ? kBody1 : kBody2;
+  return k;
+}
+
+double SoftManyBodyNormal::others(const Constants<double>& k, double v, double s1, double s2) {
+  if (k.soft == kBoth) return 0.5 * ((s1 - v) + (s2 - v));
+  return (k.soft == kBody1 ? s1 : s2) - v;
+}
+
+double SoftManyBodyNormal::force(const Params& p, const Constants<double>& k, double dn, double others) {
+  const SoftSceneLaw& law = p.law(k.scene);
+  if (!(others > 0.0) || !(dn > 0.0)) return k.F_scale * law.normal(dn);  // one contact: Eq. 7 as it is
+  const double star = cap_depth(cap_volume(dn) + p.laws->many_body->beta * others);
+  return star > 0.0 && star < 2.0 ? k.F_scale * law.normal(star) * cap_area(dn) / cap_area(star) : k.F_scale * law.normal(dn);
+}
+
+SoftNormal::Eval SoftManyBodyNormal::evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {
+  Eval e = SoftNormal::evaluate(p, k, g);
+  const double pairwise = e.Fn;
+  e.Fn = force(p, k, e.dn, others(k, cap_volume(e.dn), g.body1, g.body2));
+  e.gain = pairwise > 0.0 ? e.Fn / pairwise : 1.0;
+  return e;
+}
+
+double SoftManyBodyNormal::energy(const Params& p, const Constants<double>& k, double h, double s1, double s2) {
+  if (!(h > 0.0)) return 0.0;
+  const double dn = h / k.R, rest = others(k, cap_volume(dn), s1, s2);
+  constexpr int n = 64;
+  double sum = 0.0;
+  for (int i = 0; i <= n; ++i) sum += (i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0) * force(p, k, dn * i / n, rest);
+  return sum * (h / n) / 3.0;
+}
+
 double linear_damping_ratio(double e) {
   const double l = std::log(e);
   return -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l);

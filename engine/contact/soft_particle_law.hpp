@@ -73,10 +73,37 @@ double linear_damping_ratio(double e);
 /// How a soft-particle meets a solid sphere (no measurement of that scene yet; see the header).
 enum class GrainContactRule { wall, reduced_radius };  // int, as contact/contact_model.hpp declares it
 
+/// The many-body law (issue 33; paper/many-body.md; the law file's `many_body`, version 2): a
+/// soft-particle's contacts share its volumetric strain. With v(δ) = δ² (3 − δ) / 4 the volume of
+/// a cap of depth δ R over the soft-particle's, a(δ) = 2δ − δ² its base over π R², and E the sum
+/// of v(Δn) over the soft-particle's closed contacts (the per-body pass), contact k carries
+///
+///   Fn_k = S_F X(δ*) a(Δn_k) / a(δ*),   v(δ*) = v(Δn_k) + β (E − v(Δn_k))
+///
+/// (X: Eq. 7 of the contact's scene): the pressure p(v(δ)) = X(δ) / a(δ) that one contact of
+/// volume v(δ) makes, at the strain of all the contacts, β of the others' counted, on this
+/// contact's cap. One contact (E = v(Δn_k)) gives Eq. 7 exactly. Measured against walls (the probe,
+/// `make many-body-probe`); between two soft-particles ε is the mean of their two, unmeasured.
+struct ManyBodyLaw {
+  double beta = 0.0;  ///< β, of the other contacts' cap volumes counted
+};
+
+/// v(δ) = δ² (3 − δ) / 4: a cap of depth δ R of a sphere of radius R, over the sphere's volume.
+template <class T>
+[[gnu::always_inline]] inline T cap_volume(const T& d) {
+  return d * d * (T(3.0) - d) / T(4.0);
+}
+/// a(δ) = 2δ − δ²: the cap's base area over π R².
+inline double cap_area(double d) { return 2.0 * d - d * d; }
+/// δ in [0, 2] with v(δ) = eps (0 for eps <= 0, 2 for eps >= 1): the cubic's trigonometric root,
+/// polished by Newton's method to within a few units of the last place.
+double cap_depth(double eps);
+
 /// What the soft-particle contacts run on: the law file's content (and where it came from).
 struct SoftParticleLaws {
   double R0 = 0.0;  ///< reference radius [m]
   std::optional<SoftSceneLaw> soft_solid, soft_soft;
+  std::optional<ManyBodyLaw> many_body;  ///< the law file's (version 2); none: the pairwise laws
   std::string source;  ///< the law file, for messages and provenance
 };
 
@@ -116,13 +143,14 @@ struct SoftNormal {
     double dn;  ///< Δn
     const SoftSceneLaw* law;
     const Constants<double>* k;
-    /// dFn/dh [N/m] (the damping's).
-    double stiffness() const { return k->F_scale * law->normal.slope(dn) / k->R; }
+    double gain;  ///< Fn over Eq. 7's (the many-body law's; 1 here)
+    /// dFn/dh [N/m] (the damping's): Eq. 7's, times the gain.
+    double stiffness() const { return gain * (k->F_scale * law->normal.slope(dn) / k->R); }
   };
   static Eval evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {
     const SoftSceneLaw& law = p.law(k.scene);
     const double dn = g.h / k.R;
-    return {k.F_scale * law.normal(dn), dn, &law, &k};
+    return {k.F_scale * law.normal(dn), dn, &law, &k, 1.0};
   }
   /// ∫ Fn dh = S_F R ∫ X dΔn [J].
   static double energy(const Params& p, const Constants<double>& k, double h, double, double) {
@@ -135,6 +163,40 @@ struct SoftNormal {
   static const SoftPowerLaw& measured(const Params& p, const Constants<double>& k) { return p.law(k.scene).normal; }
   static const std::string& source(const Params& p) { return p.laws->source; }
   static constexpr const char* kStopKey = "effects.soft_particles.beyond_range is 'stop'";
+};
+
+/// The many-body soft-particle contact model's normal sub-law (ManyBodyLaw above): the
+/// soft-particle law's constants and one more, which body is a soft-particle, and a body state,
+/// each body's E, summed over its closed contacts before the forces.
+struct SoftManyBodyNormal : SoftNormal {
+  static constexpr const char* name = "soft-particle-many-body";
+  static constexpr bool kBodyState = true;
+  static constexpr double kBody1 = 1.0, kBody2 = 2.0, kBoth = 3.0;  ///< Constants::soft
+
+  template <class T>
+  struct Constants : SoftNormal::Constants<T> {
+    T soft;  ///< the soft-particle: body 1, body 2 or both (kBody1, kBody2, kBoth)
+  };
+  template <class C, class F>
+  static constexpr void each_constant(C& c, F&& f) {
+    SoftNormal::each_constant(c, f);
+    f(c.soft, Need::always);
+  }
+  static Constants<double> constants(const Params& p, const ContactPartners& b);
+  /// What a closed contact adds to each of its bodies' E: v(Δn).
+  template <class T>
+  [[gnu::always_inline]] static T body_term(const T& h, const Constants<T>& k) {
+    return cap_volume(h / k.R);
+  }
+  static Eval evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g);
+  /// ∫ Fn dh from 0 to h with the other contacts' caps as they are (Simpson's rule, 64 intervals).
+  static double energy(const Params& p, const Constants<double>& k, double h, double s1, double s2);
+
+ private:
+  /// Σ of the other contacts' v over the soft body (the mean of the two for two soft-particles).
+  static double others(const Constants<double>& k, double v, double s1, double s2);
+  /// Fn at Δn = dn with the other contacts' caps `others`.
+  static double force(const Params& p, const Constants<double>& k, double dn, double others);
 };
 
 /// The damping of a soft-particle contact (when the scene declares it): the linear spring's at
@@ -198,5 +260,6 @@ struct SoftTangential {
 };
 
 using SoftParticleModel = ContactModel<SoftNormal, SoftDamping, SoftTangential>;
+using SoftManyBodyModel = ContactModel<SoftManyBodyNormal, SoftDamping, SoftTangential>;
 
 }  // namespace softpack

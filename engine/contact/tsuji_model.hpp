@@ -74,7 +74,7 @@ struct MaterialNormal {
     else return Law::energy(k.kn, h);
   }
   template <class T>
-  [[gnu::always_inline]] static T body_term(const T& h) {
+  [[gnu::always_inline]] static T body_term(const T& h, const Constants<T>&) {
     return Law::body_term(h);
   }
 };

@@ -144,6 +144,16 @@ template <class Model, Effects Fx, class Isa>
   return c;
 }
 
+/// Every constant of `Model`'s normal sub-law for contacts k (the per-body pass's body_term reads them).
+template <class Model, class Isa>
+[[gnu::always_inline]] inline typename Model::Normal::template Constants<simd::Wide> gather_normal_constants(Isa isa, const ConstantArrays& a,
+                                                                                                           simd::Index k) {
+  typename Model::Normal::template Constants<simd::Wide> c{};
+  std::size_t field = 0;
+  Model::Normal::each_constant(c, [&](simd::Wide& x, Need) { x = simd::gather(isa, a.field[field++].data(), k); });
+  return c;
+}
+
 /// Asks the memory for the constants of `Model` the declared effects read, of the contacts at
 /// k, ..., k + kLanes - 1 (one cache line of each array, or the start of a second): a hint, no
 /// result depends on it.

@@ -24,6 +24,7 @@ struct Registry {
   Registry() {
     models.push_back(make_contact_model<TsujiModel<HertzNormal>>());  // effects.normal: hertz (paper Eq. 3-6)
     models.push_back(make_contact_model<SoftParticleModel>(false));    // the spheres marked soft (Eq. 7-8)
+    models.push_back(make_contact_model<SoftManyBodyModel>(false));    // the same, a law file with many_body (issue 33)
   }
 };
 

@@ -18,7 +18,8 @@ ForceField::ForceField(const SceneDef& scene) {
     setting.soft_laws = &e.soft_particles->laws;
     setting.grain_rule = e.soft_particles->grain_contact;
     setting.stop_beyond_range = e.soft_particles->beyond_range == SoftParticlesDef::BeyondRange::stop;
-    models_.push_back(contact_model("soft-particle", false).make(setting, fx_));
+    // the pairwise laws, or with a law file's many-body law its model and per-body pass
+    models_.push_back(contact_model(e.soft_particles->laws.many_body ? "soft-particle-many-body" : "soft-particle", false).make(setting, fx_));
   }
 }
 

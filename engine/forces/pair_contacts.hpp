@@ -232,14 +232,15 @@ struct PairContacts {
     return c;
   }
 
-  /// The per-body pass: Model::Normal::body_term(h) of pairs k added to the states of spheres i and j, for
+  /// The per-body pass: Model::Normal::body_term(h, normal constants) of pairs k added to the states of spheres i and j, for
   /// the first `live` lanes in order, as add() adds forces (the same spheres, the same order).
   template <class Model, class Isa>
   [[gnu::always_inline]] void add_body_terms(Isa isa, simd::Index k, int live) {
     using simd::Wide;
     const simd::Index i = simd::gather(isa, list.i.data(), k), j = simd::gather(isa, list.j.data(), k);
     const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
-    const Wide term = Model::Normal::body_term(simd::gather(isa, list.r_sum.data(), k) - simd::sqrt(dot(d, d)));
+    const Wide term =
+        Model::Normal::body_term(simd::gather(isa, list.r_sum.data(), k) - simd::sqrt(dot(d, d)), gather_normal_constants<Model>(isa, list.k, k));
     for (int m = 0; m < live; ++m) {
       if (!ghost) s.body[i.v[m]] += lane(term, m);
       if (static_cast<std::size_t>(j.v[m]) < j_end) s.body[j.v[m]] += lane(term, m);

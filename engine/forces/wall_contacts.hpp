@@ -93,14 +93,14 @@ struct WallContacts {
     return c;
   }
 
-  /// The per-body pass: Model::Normal::body_term(h) of entries k added to their spheres' states.
+  /// The per-body pass: Model::Normal::body_term(h, normal constants) of entries k added to their spheres' states.
   template <class Model, class Isa>
   [[gnu::always_inline]] void add_body_terms(Isa isa, simd::Index k, int live) {
     const simd::Index i = simd::gather(isa, list.i.data(), k);
     V3<W> n, u;
     W h, ai;
     geometry(gather_vec3(isa, s.x, i), simd::gather(isa, s.r, i), n, h, ai, u);
-    const W term = Model::Normal::body_term(h);
+    const W term = Model::Normal::body_term(h, gather_normal_constants<Model>(isa, list.k, k));
     for (int m = 0; m < live; ++m) s.body[i.v[m]] += lane(term, m);
   }
 

@@ -25,7 +25,9 @@ using Keys = std::vector<std::string>;
 
 constexpr const char* kFormat = "softpack-laws";
 constexpr const char *kForce = "N", *kStiffness = "N/m", *kOne = "1", *kMetre = "m";
-const Keys kTopKeys = {"format", "version", "reference_radius", "models", "scenes", "mixing", "provenance"};
+const Keys kTopKeys = {"format", "version", "reference_radius", "models", "scenes", "mixing", "many_body", "provenance"};
+const Keys kManyBodyKeys = {"form", "beta", "source"};
+const Keys kManyBodyForms = {"volumetric"};
 const Keys kSceneNames = {"soft-solid", "soft-soft"};
 const Keys kSceneKeys = {"normal", "tangential", "friction", "normal_scaling", "tangential_scaling"};
 const Keys kLawKeys = {"a", "b", "c", "delta", "delta_n_range"};
@@ -71,6 +73,10 @@ json file_json(const LawFile& f) {
       {"friction", "mu_soft = |Ft| / Fn while the contact slides, measured at each dn"},
       {"radius_scaling", "X(R) = X(R0) (R/R0)^exponent at fixed dn"},
       {"mixing", "radii R1 != R2: the soft-soft law at R_eq = 2 R1 R2 / (R1 + R2)"}};
+  if (f.many_body)
+    out["models"]["many_body"] =
+        "volumetric: Fn_k = X(d*) a(dn_k) / a(d*), v(d*) = v(dn_k) + beta (E - v(dn_k)), v(d) = d^2 (3 - d) / 4, a(d) = 2d - d^2, "
+        "E the sum of v over the soft-particle's contacts";
   json scenes = json::object();
   for (const auto& [name, s] : f.scenes) {
     json j;
@@ -92,6 +98,7 @@ json file_json(const LawFile& f) {
     out["mixing"] = {{"rule", f.mixing->rule},
                      {"checked_ratio", num(f.mixing->checked_ratio)},
                      {"deviation", value_json(f.mixing->deviation, kOne)}};
+  if (f.many_body) out["many_body"] = {{"form", f.many_body->form}, {"beta", value_json(f.many_body->beta, kOne)}, {"source", f.many_body->source}};
   const LawFileProvenance& p = f.provenance;
   out["provenance"] = {{"study", p.study},
                        {"seeds", p.seeds},
@@ -300,11 +307,10 @@ class Reader {
     if (above)
       fail("version", fmt::format("{} is newer than this build reads; allowed: {} (this build reads version {})",
                                   version.dump(), kLawFileVersion, kLawFileVersion));
-    if (!version.is_number_integer() || version.get<std::int64_t>() != kLawFileVersion)
-      refuse("version", version, std::to_string(kLawFileVersion));
+    if (!version.is_number_integer() || version.get<std::int64_t>() < 1) refuse("version", version, fmt::format("1 to {}", kLawFileVersion));
     object(j, "", kTopKeys);
     LawFile f;
-    f.version = kLawFileVersion;
+    f.version = static_cast<int>(version.get<std::int64_t>());
     const std::string allowed = "{\"value\": a number > 0, \"unit\": 'm'}";
     const json& r = object(need(j, "", "reference_radius", allowed), "reference_radius", kQuantityKeys);
     const json& rv = need(r, "reference_radius", "value", "a finite number > 0");
@@ -331,6 +337,17 @@ class Reader {
                  fmt::format("a radius within scenes.{}.{}.radius_range [{}, {}] m (the laws are measured at it)", name, which,
                              (*scaling)->R_min, (*scaling)->R_max));
     if (const json* m = find(j, "mixing")) f.mixing = mixing(*m, "mixing");
+    if (const json* m = find(j, "many_body")) {
+      if (f.version < 2) fail("many_body", "not allowed in a version 1 file; allowed: version 2 or later (the many-body law)");
+      object(*m, "many_body", kManyBodyKeys);
+      ManyBodyFit mb;
+      mb.form = literal(need(*m, "many_body", "form", quoted(kManyBodyForms)), "many_body.form", kManyBodyForms);
+      const json& beta = need(*m, "many_body", "beta", "{\"value\": 0 <= beta <= 10, \"error\", \"unit\": '1'}");
+      mb.beta = value(beta, "many_body.beta", kOne, false);
+      if (!(mb.beta.value >= 0.0 && mb.beta.value <= 10.0)) refuse("many_body.beta.value", beta["value"], "0 <= beta <= 10");
+      if (const json* s = find(*m, "source")) mb.source = text(*s, "many_body.source");
+      f.many_body = mb;
+    }
     if (const json* p = find(j, "provenance")) f.provenance = provenance(*p, "provenance");
     return f;
   }
@@ -393,6 +410,7 @@ SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source)
   out.source = source;
   if (auto it = f.scenes.find("soft-solid"); it != f.scenes.end()) out.soft_solid = scene_law(it->second);
   if (auto it = f.scenes.find("soft-soft"); it != f.scenes.end()) out.soft_soft = scene_law(it->second);
+  if (f.many_body) out.many_body = ManyBodyLaw{f.many_body->beta.value};
   return out;
 }
 

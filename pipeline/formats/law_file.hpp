@@ -1,7 +1,9 @@
 // The law file: the measured soft-particle contact laws in one versioned JSON file that a
-// simulation can read (a soft-particle as one sphere with these laws), JSON:
+// simulation can read (a soft-particle as one sphere with these laws). Version 2 (issue 33) adds
+// the many-body law (contact/soft_particle_law.hpp ManyBodyLaw); version 1 files are read as they
+// were. JSON:
 //
-//   {"format": "softpack-laws", "version": 1,
+//   {"format": "softpack-laws", "version": 2,
 //    "reference_radius": {"value": R0, "unit": "m"},
 //    "models": {"normal", "tangential", "friction", "radius_scaling", "mixing"}  (texts; not read),
 //    "scenes": {"soft-solid": {                       (and/or "soft-soft"; at least one)
@@ -16,6 +18,7 @@
 //        "tangential_scaling": {the same}},                                           (optional)
 //      "soft-soft": {…}},
 //    "mixing": {"rule": "reduced-radius", "checked_ratio", "deviation": {…, "unit": "1"}} (optional),
+//    "many_body": {"form": "volumetric", "beta": {…, "unit": "1"}, "source": text}   (optional; version 2),
 //    "provenance": {"study", "seeds": [...], "code_version", "created", "notes"}}
 //
 // NaN is written as null and read back as NaN: an "error" may always be null (not known), a
@@ -25,7 +28,8 @@
 // know (in any object but "models"), a unit other than the one above, a non-finite number,
 // reference_radius <= 0, a delta_n_range not 0 <= lo < hi, friction delta_n not increasing or of
 // another length than mu (or empty), a variant or rule not listed above, a radius_range not
-// 0 < R_min <= R_max, a checked_ratio <= 0.
+// 0 < R_min <= R_max, a checked_ratio <= 0, a many_body in a version 1 file, a form other than
+// "volumetric", a beta outside 0 <= beta <= 10.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -38,8 +42,8 @@
 
 namespace softpack {
 
-/// The version of the law file this build writes and reads.
-inline constexpr int kLawFileVersion = 1;
+/// The version of the law file this build writes; it reads this one and every earlier one.
+inline constexpr int kLawFileVersion = 2;
 
 /// A measured value and its standard error (NaN: not known).
 struct LawValue {
@@ -86,6 +90,13 @@ struct MixingRule {
   LawValue deviation;  ///< mean relative deviation measured/predicted of Fn over the checked points
 };
 
+/// The many-body law (version 2): the volumetric form's β, fitted on the many-body probe.
+struct ManyBodyFit {
+  std::string form = "volumetric";
+  LawValue beta;
+  std::string source;  ///< where it was fitted (the probe's plan and report)
+};
+
 struct LawFileProvenance {
   std::string study, code_version, created;
   std::vector<std::uint64_t> seeds;
@@ -97,6 +108,7 @@ struct LawFile {
   double reference_radius = kNaN;  ///< R0 [m]: the shell radius a, c were measured at
   std::map<std::string, SceneLaws> scenes;  ///< keys "soft-solid", "soft-soft" (at least one)
   std::optional<MixingRule> mixing;
+  std::optional<ManyBodyFit> many_body;  ///< version 2 only
   LawFileProvenance provenance;
 };
 

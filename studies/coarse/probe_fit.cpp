@@ -48,21 +48,6 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
   return out;
 }
 
-double cap_volume(double d) { return d * d * (3.0 - d) / 4.0; }
-double cap_area(double d) { return 2.0 * d - d * d; }
-
-double cap_depth(double eps) {
-  double lo = 0.0, hi = 2.0;
-  if (!(eps > 0.0)) return 0.0;
-  if (eps >= 1.0) return 2.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    (cap_volume(mid) < eps ? lo : hi) = mid;
-  }
-  return hi;
-}
-
 double ProbeLaw::predict(const ProbeWallForce& w) const {
   const fit::PowerLawFit& f1 = F1.at(w.radius);
   const double dk = w.delta_n[w.wall];

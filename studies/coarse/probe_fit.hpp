@@ -21,6 +21,7 @@
 
 #include "analysis/power_fit.hpp"
 #include "coarse/probe_settings.hpp"
+#include "contact/soft_particle_law.hpp"
 
 namespace softpack {
 
@@ -36,11 +37,7 @@ struct ProbeWallForce {
 /// The walls of a probe file (PROBE_DIR/RADIUS/seed-S.dat); InputError naming the file and line.
 std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::string& radius, std::uint64_t seed);
 
-// The candidates' geometry.
-double cap_volume(double delta);  ///< v(δ)
-double cap_area(double delta);    ///< a(δ)
-/// δ with v(δ) = eps, for 0 <= eps <= 1 (bisection on [0, 2], to the last bit).
-double cap_depth(double eps);
+// The candidates' geometry is the engine's (contact/soft_particle_law.hpp): cap_volume, cap_area, cap_depth.
 
 /// A candidate with its parameter (β or α; none for pairwise) and the F1 of each radius.
 struct ProbeLaw {

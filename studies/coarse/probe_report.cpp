@@ -8,6 +8,7 @@
 #include <map>
 
 #include "core/version.hpp"
+#include "formats/law_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace softpack {
@@ -116,7 +117,28 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
         dat += "\n";
       }
     }
+  // laws.json: the plan's law file with the chosen law, when the rule lets it into the engine
+  // (which runs the volumetric form: contact/soft_particle_law.hpp ManyBodyLaw)
   std::filesystem::create_directories(out_dir);
+  const std::string laws_path = out_dir + "/laws.json";
+  if (a.enters_engine && a.chosen == "volumetric") {
+    LawFile laws = read_law_file(plan.settings.laws);
+    const ProbeCandidate* v = nullptr;
+    for (const ProbeCandidate& c : a.candidates)
+      if (c.law.name == "volumetric") v = &c;
+    laws.version = kLawFileVersion;
+    laws.many_body = ManyBodyFit{"volumetric", {v->law.parameter, v->parameter_error},
+                                 fmt::format("{} (softpack-coarse probe-report, {}): {}/probe.md", plan_path, code_version(), out_dir)};
+    if (!laws.provenance.notes.empty()) laws.provenance.notes += " ";
+    laws.provenance.notes += fmt::format("many_body added from the many-body probe ({}, seeds {}).", plan_path, fmt::join(plan.seeds, ", "));
+    write_law_file(laws_path, laws);
+    md += fmt::format("\nThe law file with it: `{}` (version {}: {}'s laws, many_body β = {:.3f} ± {:.3f}).\n", laws_path, kLawFileVersion,
+                      plan.settings.laws, v->law.parameter, v->parameter_error);
+    j["laws"] = laws_path;
+  } else {
+    std::filesystem::remove(laws_path);
+    md += "\nNo law file: the engine runs the volumetric form only, once the rule lets a law in.\n";
+  }
   write_file_atomically(out_dir + "/probe.md", md);
   write_file_atomically(out_dir + "/probe.json", j.dump(2) + "\n");
   write_file_atomically(out_dir + "/probe.dat", dat);

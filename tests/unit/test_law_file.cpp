@@ -143,12 +143,33 @@ TEST(LawFile, AbsentOptionalPartsStayAbsent) {
   EXPECT_TRUE(std::isnan(g.scenes.at("soft-soft").normal.a.error));
 }
 
+// Version 2's many-body law (issue 33) goes round, reaches the simulation's laws, and a version 1
+// file (every file before it: data/radius/report/laws.json) still reads, without one.
+TEST(LawFile, TheManyBodyLawOfVersion2GoesRoundAndVersion1StillReads) {
+  const TempDir dir("law-file-many-body");
+  LawFile f = full_file();
+  f.many_body = ManyBodyFit{"volumetric", {0.896, 0.006}, "experiments/many-body.yaml"};
+  write_law_file(dir / "law.json", f);
+  const LawFile g = read_law_file(dir / "law.json");
+  EXPECT_EQ(g.version, 2);
+  ASSERT_TRUE(g.many_body);
+  EXPECT_EQ(g.many_body->beta.value, 0.896);
+  EXPECT_EQ(g.many_body->beta.error, 0.006);
+  EXPECT_EQ(g.many_body->source, "experiments/many-body.yaml");
+  ASSERT_TRUE(soft_particle_laws(g, "law.json").many_body);
+  EXPECT_EQ(soft_particle_laws(g, "law.json").many_body->beta, 0.896);
+  const LawFile old = read_law_file(SOFTPACK_SOURCE_DIR "/data/radius/report/laws.json");
+  EXPECT_EQ(old.version, 1);
+  EXPECT_FALSE(old.many_body);
+  EXPECT_FALSE(soft_particle_laws(old, "laws.json").many_body);
+}
+
 TEST(LawFile, JsonHasTheDocumentedLayout) {
   const TempDir dir("law-file-layout");
   write_law_file(dir / "law.json", full_file());
   const json j = load(dir / "law.json");
   EXPECT_EQ(j["format"], "softpack-laws");
-  EXPECT_EQ(j["version"], 1);
+  EXPECT_EQ(j["version"], 2);
   EXPECT_EQ(j["reference_radius"], json({{"value", 0.016}, {"unit", "m"}}));
   for (const char* m : {"normal", "tangential", "friction", "radius_scaling", "mixing"}) EXPECT_TRUE(j["models"][m].is_string()) << m;
   const json& s = j["scenes"]["soft-solid"];
@@ -206,8 +227,14 @@ const std::vector<Mistake> kMistakes = {
      {"scenes.soft-solid.friction.mu[2].unit: missing", "allowed: '1'"}},
     {"WrongFormat", [](json& j) { j["format"] = "softpack-fit"; }, {"format: 'softpack-fit'", "allowed: 'softpack-laws'"}},
     {"NoFormat", [](json& j) { j.erase("format"); }, {"format: missing", "allowed: 'softpack-laws'"}},
-    {"Version2", [](json& j) { j["version"] = 2; }, {"version: 2 is newer than this build reads", "allowed: 1"}},
-    {"Version0", [](json& j) { j["version"] = 0; }, {"version: 0 is not allowed", "allowed: 1"}},
+    {"Version3", [](json& j) { j["version"] = 3; }, {"version: 3 is newer than this build reads", "allowed: 2"}},
+    {"Version0", [](json& j) { j["version"] = 0; }, {"version: 0 is not allowed", "allowed: 1 to 2"}},
+    {"ManyBodyInVersion1", [](json& j) { j["version"] = 1, j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}}; },
+     {"many_body: not allowed in a version 1 file", "allowed: version 2"}},
+    {"ManyBodyForm", [](json& j) { j["many_body"] = {{"form", "ratio"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}}; },
+     {"many_body.form: 'ratio' is not allowed", "allowed: 'volumetric'"}},
+    {"ManyBodyBeta", [](json& j) { j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", -0.5}, {"error", 0.01}, {"unit", "1"}}}}; },
+     {"many_body.beta.value: -0.5 is not allowed", "allowed: 0 <= beta <= 10"}},
     {"MissingNormalA", [](json& j) { solid(j)["normal"].erase("a"); },
      {"scenes.soft-solid.normal.a: missing", "allowed: {\"value\", \"error\", \"unit\": 'N'}"}},
     {"MissingNormal", [](json& j) { solid(j).erase("normal"); }, {"scenes.soft-solid.normal: missing", "allowed: the Eq. 7"}},

@@ -1,0 +1,147 @@
+// The many-body soft-particle law in the engine (issue 33; contact/soft_particle_law.hpp
+// SoftManyBodyNormal; a law file of version 2 with `many_body`): one contact is the pairwise law
+// of the same file, two walls press by the law written out here (the cap volumes, δ* by
+// bisection, Eq. 7 from the file's numbers), momenta are conserved, and a version 1 file runs the
+// pairwise model without a per-body pass.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "formats/law_file.hpp"
+#include "sim/simulation.hpp"
+#include "support/scenes.hpp"
+
+namespace softpack {
+namespace {
+
+const std::string kLaws = std::string(SOFTPACK_SOURCE_DIR) + "/data/radius/report/laws.json";
+constexpr double kBeta = 0.9;
+
+const LawFile& pairwise_file() {
+  static const LawFile f = read_law_file(kLaws);
+  return f;
+}
+
+SoftParticleLaws laws(bool many_body) {
+  LawFile f = pairwise_file();
+  if (many_body) f.version = 2, f.many_body = ManyBodyFit{"volumetric", {kBeta, 0.0}, "test"};
+  return soft_particle_laws(f, kLaws);
+}
+
+double eq7(double dn) {
+  const LawFit& f = pairwise_file().scenes.at("soft-solid").normal;
+  return dn >= f.delta.value ? f.a.value * std::pow(dn, f.b.value) + f.c.value : 0.0;
+}
+double v(double d) { return d * d * (3.0 - d) / 4.0; }
+double a(double d) { return 2.0 * d - d * d; }
+double depth(double eps) {  // v(δ) = eps by bisection
+  double lo = 0.0, hi = 2.0;
+  for (int i = 0; i < 100; ++i) (v(0.5 * (lo + hi)) < eps ? lo : hi) = 0.5 * (lo + hi);
+  return 0.5 * (lo + hi);
+}
+
+SceneDef soft_scene(bool many_body, bool friction) {
+  SceneDef s = testing::basic_scene();
+  s.effects.soft_particles = SoftParticlesDef{laws(many_body), GrainContactRule::wall, SoftParticlesDef::BeyondRange::report};
+  s.effects.friction = friction;
+  return s;
+}
+
+ParticleDef soft_particle(const Vec3& x, double r) {
+  ParticleDef p;
+  p.x = x, p.r = r, p.soft = true;
+  p.mass = 0.65 * 2500.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  return p;
+}
+
+// A soft-particle of radius R at the origin, held, pressed to dn by the plane z = -R (1 - dn) and,
+// with `two`, by z = R (1 - dn) as well.
+SceneDef between_walls(bool many_body, double R, double dn, bool two) {
+  SceneDef s = soft_scene(many_body, false);
+  s.particles = {soft_particle(Vec3::Zero(), R)};
+  s.planes.push_back(PlaneDef{"floor", Vec3(0, 0, -R * (1.0 - dn)), Vec3::UnitZ(), 0});
+  if (two) s.planes.push_back(PlaneDef{"ceiling", Vec3(0, 0, R * (1.0 - dn)), -Vec3::UnitZ(), 0});
+  s.drivers = {HoldGroupDef{GroupDef{}}};
+  return s;
+}
+
+TEST(ManyBodySoftParticles, OneContactIsThePairwiseLawOfTheSameFile) {
+  const double R0 = pairwise_file().reference_radius;
+  for (const double dn : {0.12, 0.2, 0.3, 0.45}) {
+    Simulation one(between_walls(true, R0, dn, false)), pairwise(between_walls(false, R0, dn, false));
+    EXPECT_STREQ(one.force_field().model(1).name(), "soft-particle-many-body");
+    const double F = pairwise.plane_loads()[0].force.z();
+    ASSERT_LT(F, 0.0);
+    EXPECT_NEAR(one.plane_loads()[0].force.z(), F, 1e-9 * std::abs(F)) << dn;
+  }
+}
+
+TEST(ManyBodySoftParticles, TwoOppositeWallsPressByTheLawWrittenOut) {
+  const double R0 = pairwise_file().reference_radius;
+  for (const double dn : {0.08, 0.15, 0.25, 0.35}) {
+    Simulation sim(between_walls(true, R0, dn, true));
+    const double star = depth(v(dn) + kBeta * v(dn));
+    const double expected = eq7(star) * a(dn) / a(star);
+    ASSERT_GT(expected, eq7(dn)) << dn;  // the other wall stiffens the contact
+    EXPECT_NEAR(-sim.plane_loads()[0].force.z(), expected, 1e-9 * expected) << dn;
+    EXPECT_NEAR(sim.plane_loads()[1].force.z(), expected, 1e-9 * expected) << dn;
+    EXPECT_NEAR(sim.particles().F[0].norm(), 0.0, 1e-12 * expected);
+  }
+}
+
+// A cloud of soft-particles and solid spheres, every effect on: each contact's force is equal and
+// opposite at one point, whatever the bodies' states, so the momenta are conserved.
+TEST(ManyBodySoftParticles, MomentaOfAMixedCloudAreConserved) {
+  SceneDef s = soft_scene(true, true);
+  s.effects.rotation = true;
+  s.effects.restitution = 0.6;
+  const double R0 = pairwise_file().reference_radius;
+  testing::Random rng(23);
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < 3; ++l)
+      for (int m = 0; m < 3; ++m) {
+        const Vec3 x(1.6 * R0 * k, 1.6 * R0 * l, 1.6 * R0 * m);
+        ParticleDef p = (k + l + m) % 3 ? soft_particle(x, R0 * (0.8 + 0.4 * rng.uniform())) : ParticleDef{};
+        if (!p.soft) p.x = x, p.r = R0 * (0.3 + 0.4 * rng.uniform());
+        p.v = rng.in_box(0.3), p.w = rng.in_box(5.0);
+        s.particles.push_back(p);
+      }
+  Simulation sim(s);
+  const auto momenta = [&] {
+    const Particles& p = sim.particles();
+    Vec3 P = Vec3::Zero(), L = Vec3::Zero();
+    double scale_P = 0.0, scale_L = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      P += p.m[i] * p.v[i];
+      L += p.x[i].cross(p.m[i] * p.v[i]) + p.w[i] / p.inv_I[i];
+      scale_P += p.m[i] * p.v[i].norm();
+      scale_L += p.x[i].cross(p.m[i] * p.v[i]).norm() + p.w[i].norm() / p.inv_I[i];
+    }
+    return std::tuple{P, L, scale_P, scale_L};
+  };
+  const auto [P0, L0, sP, sL] = momenta();
+  double most = 0.0;  // the largest body state: some soft-particle must have several contacts
+  for (int chunk = 0; chunk < 40; ++chunk) {
+    sim.run_steps(200);
+    const ContactFamily& soft = sim.contact_lists().family.at(kSoftParticleFamily);
+    for (const double e : soft.body_state) most = std::max(most, e);
+  }
+  const auto [P1, L1, sP1, sL1] = momenta();
+  EXPECT_GT(most, 0.0);
+  EXPECT_LT((P1 - P0).norm(), 1e-12 * sP);
+  EXPECT_LT((L1 - L0).norm(), 1e-12 * sL);
+}
+
+// A scene whose law file has no many_body pays nothing: the pairwise model, no body state.
+TEST(ManyBodySoftParticles, AVersion1LawFileRunsThePairwiseModelWithoutAPerBodyPass) {
+  Simulation sim(between_walls(false, pairwise_file().reference_radius, 0.2, true));
+  EXPECT_STREQ(sim.force_field().model(1).name(), "soft-particle");
+  EXPECT_FALSE(sim.force_field().model(1).body_state());
+  EXPECT_TRUE(sim.contact_lists().family.at(kSoftParticleFamily).body_state.empty());
+  Simulation many(between_walls(true, pairwise_file().reference_radius, 0.2, true));
+  EXPECT_TRUE(many.force_field().model(1).body_state());
+}
+
+}  // namespace
+}  // namespace softpack
