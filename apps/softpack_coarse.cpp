@@ -20,6 +20,7 @@
 #include "coarse/multi_contact.hpp"
 #include "coarse/probe_report.hpp"
 #include "coarse/probe_settings.hpp"
+#include "coarse/validation.hpp"
 #include "io/atomic_file.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
@@ -137,6 +138,13 @@ int main(int argc, char** argv) {
   report_cmd->add_option("--probe", report_plan, "the plan, e.g. experiments/many-body.yaml")->required();
   report_cmd->add_option("--dir", report_dir, "the probe files' folder (RADIUS/seed-S.dat), e.g. data/many-body/probe")->required();
   report_cmd->add_option("--out", report_out, "folder of probe.md, probe.json, probe.dat")->required();
+  std::string val_plan, val_dir, val_out;
+  std::vector<std::string> val_settings{"reference", "many-body"};
+  CLI::App* val_cmd = app.add_subcommand("validation", "the many-body law's acceptance on media, by the plan's criterion (coarse/validation.hpp)");
+  val_cmd->add_option("--probe", val_plan, "the plan, e.g. experiments/many-body.yaml")->required();
+  val_cmd->add_option("--dir", val_dir, "the validation study's folder, e.g. data/many-body-validation")->required();
+  val_cmd->add_option("--settings", val_settings, "its settings to judge");
+  val_cmd->add_option("--out", val_out, "folder of validation.md and validation.json")->required();
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;
@@ -171,6 +179,12 @@ int main(int argc, char** argv) {
     if (*stamp_cmd) {
       const CoarseStamps st = coarse_stamps(stamp_config, release);
       fmt::print("medium={}\nresolved={}\nsoft={}\n", st.medium, st.resolved, st.soft);
+      return 0;
+    }
+    if (*val_cmd) {
+      for (const ValidationVerdict& v : write_validation(read_many_body_probe(val_plan), val_plan, val_dir, val_settings, val_out))
+        fmt::print(stderr, "{} validation: {}: {} of {} points within the bound, accepted: {}\n", program, v.setting, v.agreeing, v.points,
+                   v.accepted ? "yes" : "no");
       return 0;
     }
     if (*report_cmd) {

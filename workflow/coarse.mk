@@ -85,3 +85,9 @@ PROBE_REPORT ?= $(DATA)/many-body/report
 .PHONY: many-body-report
 many-body-report: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat) | $(TOOLS)  ## the many-body probe's report (PROBE_REPORT/probe.md)
 	@$(RUN) $(COARSE_TOOL) probe-report --probe $(PROBE_PLAN) --dir $(PROBE_DIR) --out $(PROBE_REPORT)
+
+# The law's acceptance on media (issue 33, item 4): after make many-body-validation, the
+# preregistered criterion judged on each of its settings (coarse/validation.hpp).
+.PHONY: many-body-verdict
+many-body-verdict: | $(TOOLS)  ## the many-body law's acceptance on the validation media (DATA/many-body-validation/report/validation.md)
+	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-validation --out $(DATA)/many-body-validation/report

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "coarse/probe_fit.hpp"
+#include "coarse/validation.hpp"
 #include "core/error.hpp"
 
 namespace softpack {
@@ -96,6 +97,37 @@ TEST(ManyBodyProbeLaws, TheRuleFindsTheLawThatMadeTheProbe) {
   EXPECT_NEAR(a.candidates[1].law.parameter, 0.6, 0.02);
   EXPECT_LT(a.candidates[1].held_out.rms_log, 0.03);
   EXPECT_GT(a.candidates[0].held_out.rms_log, 0.1);  // pairwise misses the stiffening
+}
+
+// The media criterion (coarse/validation.hpp): every loading and unloading point of the range
+// within 2 sqrt(se^2 + se^2), and τ at the shear's end; a point outside the range does not count.
+TEST(ManyBodyValidation, ThePreregisteredCriterionJudgesEveryPointOfItsRangeAndTheShear) {
+  ManyBodyProbe plan;
+  plan.strain_lo = 0.02, plan.strain_hi = 0.35, plan.bound_in_standard_errors = 2.0;
+  const auto point = [](double strain, int phase, double res, double soft, double se) {
+    CoarsePoint p;
+    p.strain = strain, p.phase = phase;
+    p.sigma[0] = {res, se}, p.sigma[1] = {soft, se};
+    p.tau[0] = {res / 2, se}, p.tau[1] = {soft / 2, se};
+    return p;
+  };
+  CoarseComparison c;
+  c.points = {point(0.01, 1, 10.0, 100.0, 1.0), point(0.1, 1, 100.0, 102.0, 1.0), point(0.3, -1, 200.0, 197.5, 1.0), point(0.3, 2, 200.0, 201.0, 1.0)};
+  ValidationVerdict v = judge_validation(c, plan, "s");
+  EXPECT_EQ(v.points, 2u);  // 0.01 is outside the range
+  EXPECT_EQ(v.agreeing, 2u);
+  EXPECT_NEAR(v.worst_excess, 2.5 / (2.0 * std::sqrt(2.0)), 1e-12);
+  EXPECT_EQ(v.worst_phase, -1);
+  EXPECT_TRUE(v.tau_measured);
+  EXPECT_TRUE(v.accepted);
+  c.points[1].sigma[1].mean = 103.0;  // 3 > 2 sqrt(2)
+  v = judge_validation(c, plan, "s");
+  EXPECT_EQ(v.agreeing, 1u);
+  EXPECT_FALSE(v.accepted);
+  c.points[1].sigma[1].mean = 102.0, c.points[3].tau[1].mean = 104.0;  // τ 100 against 104
+  EXPECT_FALSE(judge_validation(c, plan, "s").accepted);
+  c.points.pop_back();  // no shear: not accepted (the criterion asks for τ)
+  EXPECT_FALSE(judge_validation(c, plan, "s").accepted);
 }
 
 }  // namespace
