@@ -123,7 +123,8 @@ LawFile read_law_file(const std::string& path);
 /// values (their errors are not used), δ where the file has none from (-c/a)^(1/b) (0 for
 /// c >= 0), the radius exponents with their measured radii, μ_soft per Δn. `source` names the
 /// file in messages. The scaling is used whatever its variant: with "fixed" a larger
-/// soft-particle holds more grains of the same size, with "self-similar" larger grains.
+/// soft-particle holds more grains of the same size, with "self-similar" larger grains; the
+/// many-body law's β (version 2). Defined with the scene files' laws, formats/scene_laws.cpp.
 SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source);
 
 }  // namespace softpack

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <system_error>
@@ -31,6 +33,54 @@ void load_scene_laws(SceneFile& file) {
   } catch (const InputError& e) {
     throw file.root.locate(e);
   }
+}
+
+// What a simulation runs on (formats/law_file.hpp soft_particle_laws): the file's values as the
+// engine's laws.
+namespace {
+
+SoftPowerLaw power_law(const LawFit& fit) {
+  SoftPowerLaw x;
+  x.a = fit.a.value, x.b = fit.b.value, x.c = std::isfinite(fit.c.value) ? fit.c.value : 0.0;
+  x.delta = fit.delta.value;
+  if (!std::isfinite(x.delta)) x.delta = x.c < 0.0 ? std::pow(-x.c / x.a, 1.0 / x.b) : 0.0;
+  x.dn_min = fit.delta_n_min, x.dn_max = fit.delta_n_max;
+  return x;
+}
+
+SoftSceneLaw scene_law(const SceneLaws& s) {
+  SoftSceneLaw out;
+  out.normal = power_law(s.normal);
+  if (s.tangential) out.tangential = power_law(*s.tangential);
+  if (s.friction) {
+    out.mu_dn = s.friction->delta_n;
+    for (const LawValue& mu : s.friction->mu) out.mu.push_back(mu.value);
+  }
+  if (s.normal_scaling) {
+    out.normal_exponent = s.normal_scaling->exponent.value;
+    out.R_min = s.normal_scaling->R_min, out.R_max = s.normal_scaling->R_max;
+  }
+  if (s.tangential_scaling) {
+    out.tangential_exponent = s.tangential_scaling->exponent.value;
+    if (s.normal_scaling) {
+      out.R_min = std::max(out.R_min, s.tangential_scaling->R_min), out.R_max = std::min(out.R_max, s.tangential_scaling->R_max);
+    } else {
+      out.R_min = s.tangential_scaling->R_min, out.R_max = s.tangential_scaling->R_max;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source) {
+  SoftParticleLaws out;
+  out.R0 = f.reference_radius;
+  out.source = source;
+  if (auto it = f.scenes.find("soft-solid"); it != f.scenes.end()) out.soft_solid = scene_law(it->second);
+  if (auto it = f.scenes.find("soft-soft"); it != f.scenes.end()) out.soft_soft = scene_law(it->second);
+  if (f.many_body) out.many_body = ManyBodyLaw{f.many_body->beta.value};
+  return out;
 }
 
 }  // namespace softpack
