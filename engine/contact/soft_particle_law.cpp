@@ -74,10 +74,7 @@ double SoftManyBodyNormal::others(const Constants<double>& k, double v, double s
 }
 
 double SoftManyBodyNormal::force(const Params& p, const Constants<double>& k, double dn, double others) {
-  const SoftSceneLaw& law = p.law(k.scene);
-  if (!(others > 0.0) || !(dn > 0.0)) return k.F_scale * law.normal(dn);  // one contact: Eq. 7 as it is
-  const double star = cap_depth(cap_volume(dn) + p.laws->many_body->beta * others);
-  return star > 0.0 && star < 2.0 ? k.F_scale * law.normal(star) * cap_area(dn) / cap_area(star) : k.F_scale * law.normal(dn);
+  return many_body_force(p.law(k.scene).normal, k.F_scale, dn, others, p.laws->many_body->beta);
 }
 
 SoftNormal::Eval SoftManyBodyNormal::evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {

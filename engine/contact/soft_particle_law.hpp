@@ -98,6 +98,16 @@ inline double cap_area(double d) { return 2.0 * d - d * d; }
 /// δ in [0, 2] with v(δ) = eps (0 for eps <= 0, 2 for eps >= 1): the cubic's trigonometric root,
 /// polished by Newton's method to within a few units of the last place.
 double cap_depth(double eps);
+/// The many-body law's force (ManyBodyLaw) of a contact at Δn = dn whose soft-particle's other
+/// contacts hold the cap volume `others`, from the single-contact law X (a callable of Δn), times
+/// `scale`: scale X(δ*) a(dn) / a(δ*); with no other contact scale X(dn), as it is. The engine's
+/// model and the many-body probe's analysis (studies/coarse/probe_fit.hpp) both call it.
+template <class Law>
+double many_body_force(const Law& X, double scale, double dn, double others, double beta) {
+  if (!(others > 0.0) || !(dn > 0.0)) return scale * X(dn);
+  const double star = cap_depth(cap_volume(dn) + beta * others);
+  return star > 0.0 && star < 2.0 ? scale * X(star) * cap_area(dn) / cap_area(star) : scale * X(dn);
+}
 
 /// What the soft-particle contacts run on: the law file's content (and where it came from).
 struct SoftParticleLaws {

@@ -58,8 +58,7 @@ double ProbeLaw::predict(const ProbeWallForce& w) const {
   const double vk = cap_volume(dk);
   if (!(vk > 0.0)) return 0.0;
   if (name == "ratio") return fit::evaluate(f1, dk) * std::pow((vk + others) / vk, parameter);
-  const double star = cap_depth(std::min(1.0, vk + parameter * others));  // volumetric
-  return star > 0.0 && star < 2.0 ? fit::evaluate(f1, star) / cap_area(star) * cap_area(dk) : 0.0;
+  return many_body_force([&](double d) { return fit::evaluate(f1, d); }, 1.0, dk, others, parameter);  // volumetric: the engine's law
 }
 
 namespace {

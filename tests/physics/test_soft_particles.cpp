@@ -4,6 +4,7 @@
 // through the engine's SoftPowerLaw.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -142,9 +143,11 @@ TEST(SoftParticles, TwoRadiiUseTheLawFilesMixingRuleAndASolidSphereTheChosenOne)
 
 // A cloud of soft-particles and solid spheres with every effect: linear and angular momentum are
 // conserved (equal and opposite forces at one contact point), as for solid spheres only
-// (Conservation.MomentaOfA1000SpherePolydisperseCloud).
-TEST(SoftParticles, MomentaOfAMixedCloudAreConserved) {
+// (Conservation.MomentaOfA1000SpherePolydisperseCloud); with the pairwise laws and with the
+// many-body law (law file version 2, issue 33), whose force reads every contact of its bodies.
+void momenta_of_a_mixed_cloud(bool many_body) {
   SceneDef s = soft_scene(true);
+  if (many_body) s.effects.soft_particles->laws.many_body = ManyBodyLaw{0.9};
   s.effects.rotation = true;
   s.effects.restitution = 0.6;
   const double R0 = law_file().reference_radius;
@@ -173,16 +176,22 @@ TEST(SoftParticles, MomentaOfAMixedCloudAreConserved) {
   };
   const auto [P0, L0, sP, sL] = momenta();
   long soft_contacts = 0;
+  double most = 0.0;  // the largest body state (many-body): some soft-particle has several contacts
   for (int chunk = 0; chunk < 40; ++chunk) {
     sim.run_steps(200);
-    const PairList& soft_pairs = sim.contact_lists().family.at(kSoftParticleFamily).pairs;
-    for (std::size_t k = 0; k < soft_pairs.size(); ++k) soft_contacts += soft_pairs.spring[k] != Vec3::Zero();
+    const ContactFamily& soft = sim.contact_lists().family.at(kSoftParticleFamily);
+    for (std::size_t k = 0; k < soft.pairs.size(); ++k) soft_contacts += soft.pairs.spring[k] != Vec3::Zero();
+    for (const double e : soft.body_state) most = std::max(most, e);
   }
   const auto [P1, L1, sP1, sL1] = momenta();
   EXPECT_GT(soft_contacts, 0) << "the cloud must have closed soft contacts with sliding springs";
+  EXPECT_EQ(most > 0.0, many_body);
   EXPECT_LT((P1 - P0).norm(), 1e-12 * sP);
   EXPECT_LT((L1 - L0).norm(), 1e-12 * sL);
 }
+
+TEST(SoftParticles, MomentaOfAMixedCloudAreConserved) { momenta_of_a_mixed_cloud(false); }
+TEST(SoftParticles, MomentaOfAMixedCloudAreConservedWithTheManyBodyLaw) { momenta_of_a_mixed_cloud(true); }
 
 // Without damping and friction the soft laws are elastic (Fn depends on h alone): a soft-particle
 // thrown at a wall and one thrown at another come back with the energy they had (to the time
