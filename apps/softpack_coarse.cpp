@@ -93,6 +93,37 @@ int run(const RunOptions& o, const std::string& program) {
   return 0;
 }
 
+// multi-contact --part shear: the confined shear's runs, a block per arrangement and Δn.
+int confined_shear(const std::string& program, const CoarseGrainSettings& s, std::uint64_t seed, const std::vector<std::string>& names,
+                   const std::vector<double>& delta_n, const std::vector<double>& ht, const std::string& source, const std::string& out) {
+  std::vector<ProbeArrangement> arrangements;
+  for (const std::string& name : names) arrangements.push_back(builtin_arrangement(name, seed));
+  const Stopwatch clock;
+  std::size_t done = 0;
+  const std::size_t points = arrangements.size() * delta_n.size() * (ht.size() + 1);
+  const auto sheared = measure_confined_shear(s, seed, arrangements, delta_n, ht, [&](const ShearPoint& p) {
+    const double t = clock.elapsed().wall;
+    ++done;
+    if (!p.failed.empty())
+      fmt::print(stderr, "{} multi-contact: {}, delta_n {:.3f}, ht/Rs {}: not measured, nor its larger ht: {}\n", program, p.arrangement, p.delta_n, p.ht,
+                 p.failed);
+    else
+      fmt::print(stderr, "{} multi-contact: {}, delta_n {:.3f}, ht/Rs {}: Fn {:.5g} N, Ft {:.5g} N ({}/{}, {:.0f} s, ETA {:.0f} s)\n", program,
+                 p.arrangement, p.delta_n, p.ht, p.Fn, p.Ft, done, points, t, t / static_cast<double>(done) * static_cast<double>(points - done));
+  });
+  std::string text = fmt::format(
+      "# softpack-coarse multi-contact: {}, packing seed {}, {}, {:.1f} CPU-s\n"
+      "# the confined shear: the first wall (+z) slid along +x by ht, each from the previous; Fn along +z, Ft along -x, on it\n"
+      "# arrangement delta_n ht/Rs Fn Ft [N]\n",
+      source, seed, code_version(), clock.elapsed().cpu);
+  for (const ShearPoint& p : sheared) {
+    if (!p.failed.empty()) text += fmt::format("# {} {:.4f} {} not measured (nor the larger ht): {}\n", p.arrangement, p.delta_n, p.ht, p.failed);
+    else text += fmt::format("{} {:.4f} {} {:.6e} {:.6e}\n", p.arrangement, p.delta_n, p.ht, p.Fn + 0.0, p.Ft + 0.0);
+  }
+  write_file_atomically(out, text);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -127,9 +158,16 @@ int main(int argc, char** argv) {
                                                "delta_n (coarse/probe_settings.hpp)")
                              ->excludes(probe_config_opt);
   probe_cmd->add_option("--radius", probe_radius, "with --probe: the name of one of its radii")->needs(probe_plan_opt);
+  std::string probe_part = "walls";
+  probe_cmd
+      ->add_option("--part", probe_part,
+                   "with --probe: walls (its arrangements), bodies (its bodies' arrangements with each kind) or shear (its confined shear)")
+      ->check(CLI::IsMember({"walls", "bodies", "shear"}))
+      ->needs(probe_plan_opt);
   probe_cmd->add_option("--packing-seed", probe_seed, "seed of the packing (and of random-N's directions)")->required()->check(seed_check());
   probe_cmd->add_option("--arrangements", probe_arrangements,
-                        "one, opposite, orthogonal, triangle, tetrahedral, square, pyramid, cube, opposite-half, orthogonal-half, random-N (N = 2-6)");
+                        "one, opposite, orthogonal, triangle, tetrahedral, square, pyramid, cube, opposite-half, orthogonal-half, random-N (N = 2-6); "
+                        "each may end in :BODY (wall, soft, grain-X: a grain of radius X Rs)");
   probe_cmd->add_option("--delta-n", probe_dn, "Delta_n of the arrangement, increasing (wall k's: w_k Delta_n)");
   probe_cmd->add_option("--out", probe_out, "text file: a block per arrangement, rows: walls delta_n Fn_1 ... Fn_walls")->required();
   add_threads_option(*probe_cmd);
@@ -163,8 +201,9 @@ int main(int argc, char** argv) {
       if (seeds_probe.empty() == seeds_config.empty()) throw InputError("seeds: give --config or --probe");
       if (!seeds_probe.empty()) {
         const ManyBodyProbe plan = read_many_body_probe(seeds_probe);
-        for (const auto& [radius, Rs] : plan.radii)
-          for (std::uint64_t seed : plan.seeds) fmt::print("{}/seed-{} ", radius, seed);
+        for (const char* part : {"seed", "bodies", "shear"})
+          for (const auto& [radius, Rs] : plan.radii)
+            for (std::uint64_t seed : plan.seeds) fmt::print("{}/{}-{} ", radius, part, seed);
         fmt::print("\n");
         return 0;
       }
@@ -200,8 +239,10 @@ int main(int argc, char** argv) {
         if (probe_radius.empty()) throw InputError("multi-contact: --probe needs --radius (one of the plan's radii)");
         const ManyBodyProbe plan = read_many_body_probe(probe_plan);
         s = plan.settings_at(probe_radius);
-        probe_arrangements = plan.arrangements(), probe_dn = plan.delta_n;
-        source = fmt::format("{} (radius {}: Rs = {} m)", probe_plan, probe_radius, s.packing.Rs);
+        probe_arrangements = probe_part == "walls" ? plan.arrangements() : probe_part == "bodies" ? plan.bodies() : plan.shear_arrangements;
+        probe_dn = probe_part == "shear" ? plan.shear_delta_n : plan.delta_n;
+        source = fmt::format("{} (radius {}: Rs = {} m; part {})", probe_plan, probe_radius, s.packing.Rs, probe_part);
+        if (probe_part == "shear") return confined_shear(program, s, probe_seed, probe_arrangements, probe_dn, plan.shear_ht, source, probe_out);
       } else {
         s = read_coarse_grain_settings(probe_config);
       }

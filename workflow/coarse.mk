@@ -63,7 +63,10 @@ $(COARSE_DIR)/multi-contact/seed-%.dat: $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOL
 
 # The many-body probe (issue 33, paper/many-body.md): one resolved soft-particle pressed by 1 to 6
 # walls in each arrangement of the plan (experiments/many-body.yaml, read and checked by the tool),
-# for each of its radii and packing seeds: PROBE_DIR/RADIUS/seed-S.dat (a block per arrangement).
+# for each of its radii and packing seeds: PROBE_DIR/RADIUS/seed-S.dat (a block per arrangement);
+# its second part, the same pressed by grains and soft-particles (RADIUS/bodies-S.dat) and sheared
+# under confinement (RADIUS/shear-S.dat).
+probe_part = $(if $(filter seed-%,$(1)),walls,$(firstword $(subst -, ,$(1))))
 PROBE_PLAN ?= experiments/many-body.yaml
 PROBE_DIR ?= $(DATA)/many-body/probe
 PROBE_RUNS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN))
@@ -76,7 +79,7 @@ $(eval $(call stamp_rule,$(PROBE_STAMP),$(VERSION)))
 $(PROBE_DIR)/%.dat: $(PROBE_PLAN) $(COARSE_CONFIG) $(PROBE_STAMP) | $(TOOLS)
 	@mkdir -p $(@D)
 	@$(RUN) $(COARSE_TOOL) multi-contact --probe $(PROBE_PLAN) --radius $(patsubst %/,%,$(dir $*)) \
-	  --packing-seed $(patsubst seed-%,%,$(notdir $*)) --out $@ 2> $(basename $@).log \
+	  --part $(call probe_part,$(notdir $*)) --packing-seed $(lastword $(subst -, ,$(notdir $*))) --out $@ 2> $(basename $@).log \
 	  || { echo "many-body probe: $* FAILED (log: $(basename $@).log)"; tail -2 $(basename $@).log; exit 1; }
 	@echo "many-body probe: $@ ($$(head -1 $@ | grep -o '[0-9.]* CPU-s'))"
 

@@ -47,10 +47,33 @@ std::vector<ProbeWall> random_walls(int n, std::uint64_t seed) {
 
 }  // namespace
 
-ProbeArrangement builtin_arrangement(const std::string& name, std::uint64_t seed) {
+std::string PressingBody::name() const {
+  if (kind == Kind::grain) return fmt::format("grain-{}", radius_ratio);
+  return kind == Kind::soft ? "soft" : "wall";
+}
+
+PressingBody parse_pressing_body(const std::string& name) {
+  if (name == "wall") return {};
+  if (name == "soft") return {PressingBody::Kind::soft, 1.0};
+  if (name.starts_with("grain-")) {
+    std::size_t used = 0;
+    double x = 0.0;
+    try {
+      x = std::stod(name.substr(6), &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == name.size() - 6 && x >= 0.05 && x <= 20.0) return {PressingBody::Kind::grain, x};
+  }
+  throw InputError(fmt::format("pressing body '{}' is not allowed; allowed: wall, soft, grain-X (X: the grain's radius over Rs, 0.05 to 20)", name));
+}
+
+ProbeArrangement builtin_arrangement(const std::string& full_name, std::uint64_t seed) {
   const Vec3 z = Vec3::UnitZ(), x = Vec3::UnitX(), y = Vec3::UnitY();
   const double s3 = std::sqrt(3.0) / 2.0;
-  ProbeArrangement a{name, {}};
+  const std::size_t colon = full_name.find(':');
+  const std::string name = full_name.substr(0, colon);
+  ProbeArrangement a{full_name, {}, colon == std::string::npos ? PressingBody{} : parse_pressing_body(full_name.substr(colon + 1))};
   auto& w = a.walls;
   if (name == "one") w = {{z, 1.0}};
   else if (name == "opposite") w = {{z, 1.0}, {-z, 1.0}};
@@ -65,56 +88,167 @@ ProbeArrangement builtin_arrangement(const std::string& name, std::uint64_t seed
   else if (name == "opposite-half") w = {{z, 1.0}, {-z, 0.5}};
   else if (name == "orthogonal-half") w = {{z, 1.0}, {x, 0.5}};
   else if (name.starts_with("random-") && name.size() == 8 && name[7] >= '2' && name[7] <= '6') w = random_walls(name[7] - '0', seed);
-  else throw InputError(fmt::format("arrangement '{}' is not allowed; allowed: {}", name, kAllowed));
+  else throw InputError(fmt::format("arrangement '{}' is not allowed; allowed: {}, each alone or as NAME:BODY (BODY: wall, soft, grain-X)", full_name, kAllowed));
   return a;
 }
+
+namespace {
+
+void check_increasing(const std::vector<double>& v, const char* key, double hi) {
+  for (std::size_t k = 0; k < v.size(); ++k)
+    if (!(v[k] > 0.0 && v[k] < hi) || (k > 0 && !(v[k] > v[k - 1])))
+      throw InputError(fmt::format("{}: {} (value {}) is not allowed; allowed: increasing values in (0, {})", key, v[k], k + 1, hi));
+}
+
+// One arrangement's scene: the soft-particle (body 0, its shell "shell") and contact k's body
+// (k + 1): a plane "wallK", a held grain, or a soft-particle in its shell "softK".
+class Probe {
+ public:
+  Probe(const CoarseGrainSettings& s, const Packing& packing, std::uint64_t packing_seed, const ProbeArrangement& a)
+      : s_(s), a_(a), Rs_(s.packing.Rs), simulation_(scene(s, packing, packing_seed, a)) {}
+
+  Simulation& simulation() { return simulation_; }
+
+  // Moves contact k in by w_k (to - from) Rs, all at once, at the approach speed; grains are held
+  // where they arrive, walls and shells stand.
+  void press(double from, double to) {
+    simulation_.release_drivers();
+    bool moved = false;
+    for (std::size_t k = 0; k < a_.walls.size(); ++k) {
+      const double step = a_.walls[k].w * (to - from) * Rs_;
+      if (!(step > 0.0)) continue;
+      const Vec3 v = -s_.normal_speed * a_.walls[k].u;
+      const int body = static_cast<int>(k) + 1;
+      if (a_.body.kind != PressingBody::Kind::grain) simulation_.add_driver(MoveWallDef{body_name(k), v, step, std::nullopt});
+      if (a_.body.kind != PressingBody::Kind::wall)
+        simulation_.add_driver(TranslateGroupDef{GroupDef{GroupDef::Kind::body, body}, v, step, std::nullopt,
+                                                 a_.body.kind == PressingBody::Kind::grain ? AfterDrive::hold : AfterDrive::release});
+      moved = true;
+    }
+    while (moved && simulation_.drivers_moving()) simulation_.run_steps(100);
+  }
+  // The force on contact k's body along u_k.
+  double Fn(std::size_t k) const { return load(k).dot(a_.walls[k].u); }
+  Vec3 load(std::size_t k) const {
+    switch (a_.body.kind) {
+      case PressingBody::Kind::grain: return simulation_.force_between(0, static_cast<int>(k) + 1);
+      case PressingBody::Kind::soft: return simulation_.wall_load(body_name(k)).force;
+      default: return simulation_.plane_loads()[k].force;
+    }
+  }
+  void relax_here() { relax(simulation_, s_.relaxation, {}, [&] { return Vec3(-load(0)); }); }
+
+ private:
+  std::string body_name(std::size_t k) const { return (a_.body.kind == PressingBody::Kind::soft ? "soft" : "wall") + std::to_string(k); }
+  static void add_packing(SceneDef& scene, const Packing& p, const Vec3& at, int body) {
+    for (std::size_t i = 0; i < p.radii.size(); ++i) {
+      ParticleDef d;
+      d.x = at + p.centres[i], d.r = p.radii[i], d.body = body;
+      scene.particles.push_back(d);
+    }
+  }
+  static SceneDef scene(const CoarseGrainSettings& s, const Packing& packing, std::uint64_t seed, const ProbeArrangement& a) {
+    const double Rs = s.packing.Rs;
+    const ShellContactRadius contact = s.simulation.shell_contact_radius;
+    SceneDef scene = engine_scene(s);
+    add_packing(scene, packing, Vec3::Zero(), 0);
+    scene.shells.push_back(ShellDef{"shell", 0, Vec3::Zero(), Rs, 1, contact, std::nullopt});
+    for (std::size_t k = 0; k < a.walls.size(); ++k) {  // each touching the shell from outside
+      const Vec3 u = a.walls[k].u;
+      const int body = static_cast<int>(k) + 1;
+      if (a.body.kind == PressingBody::Kind::wall) {
+        scene.planes.push_back(PlaneDef{fmt::format("wall{}", k), Rs * u, -u, 1});
+      } else if (a.body.kind == PressingBody::Kind::grain) {
+        ParticleDef g;
+        g.x = (1.0 + a.body.radius_ratio) * Rs * u, g.r = a.body.radius_ratio * Rs, g.body = body;
+        scene.particles.push_back(g);
+      } else {
+        add_packing(scene, generate_packing(s.packing, 1000 * seed + k), 2.0 * Rs * u, body);
+        scene.shells.push_back(ShellDef{fmt::format("soft{}", k), body, 2.0 * Rs * u, Rs, 1, contact, std::nullopt});
+      }
+    }
+    return scene;
+  }
+  const CoarseGrainSettings& s_;
+  const ProbeArrangement& a_;
+  double Rs_;
+  Simulation simulation_;
+};
+
+}  // namespace
 
 std::vector<MultiContactPoint> measure_multi_contact(const CoarseGrainSettings& s, std::uint64_t packing_seed,
                                                      const std::vector<ProbeArrangement>& arrangements,
                                                      const std::vector<double>& delta_n,
                                                      const std::function<void(const MultiContactPoint&)>& progress) {
-  for (std::size_t k = 0; k < delta_n.size(); ++k)
-    if (!(delta_n[k] > 0.0 && delta_n[k] < 1.0) || (k > 0 && !(delta_n[k] > delta_n[k - 1])))
-      throw InputError(fmt::format("delta_n: {} (value {}) is not allowed; allowed: increasing values in (0, 1)", delta_n[k], k + 1));
+  check_increasing(delta_n, "delta_n", 1.0);
   const Packing packing = generate_packing(s.packing, packing_seed);
-  const double Rs = s.packing.Rs;
-  const SimulationSettings& sim = s.simulation;
   std::vector<MultiContactPoint> out;
   for (const ProbeArrangement& a : arrangements) {
-    SceneDef scene = engine_scene(s);
-    for (std::size_t i = 0; i < packing.radii.size(); ++i) {
-      ParticleDef p;
-      p.x = packing.centres[i], p.r = packing.radii[i], p.body = 0;
-      scene.particles.push_back(p);
-    }
-    scene.shells.push_back(ShellDef{"shell", 0, Vec3::Zero(), Rs, 1, sim.shell_contact_radius, std::nullopt});
-    const std::size_t n = a.walls.size();
-    for (std::size_t k = 0; k < n; ++k)  // each wall touching the shell from outside, its normal towards the centre
-      scene.planes.push_back(PlaneDef{fmt::format("wall{}", k), Rs * a.walls[k].u, -a.walls[k].u, 1});
-    Simulation simulation(scene);
+    Probe probe(s, packing, packing_seed, a);
     double at = 0.0;
     for (const double dn : delta_n) try {
-      bool moved = false;
-      for (std::size_t k = 0; k < n; ++k) {
-        const double step = a.walls[k].w * (dn - at) * Rs;
-        if (!(step > 0.0)) continue;
-        simulation.add_driver(MoveWallDef{fmt::format("wall{}", k), -s.normal_speed * a.walls[k].u, step, std::nullopt});
-        moved = true;
-      }
-      if (moved) {
-        while (simulation.drivers_moving()) simulation.run_steps(100);
-        simulation.release_drivers();
-      }
+      probe.press(at, dn);
       at = dn;
-      relax(simulation, s.relaxation, {}, [&] { return -simulation.plane_loads()[0].force; });
+      probe.relax_here();
       MultiContactPoint p{a.name, dn, {}, {}};
-      for (std::size_t k = 0; k < n; ++k) p.Fn.push_back(simulation.plane_loads()[k].force.dot(a.walls[k].u));
+      for (std::size_t k = 0; k < a.walls.size(); ++k) p.Fn.push_back(probe.Fn(k));
       out.push_back(p);
       if (progress) progress(out.back());
     } catch (const NumericalError& e) {
       out.push_back({a.name, dn, {}, e.what()});
       if (progress) progress(out.back());
       break;
+    }
+  }
+  return out;
+}
+
+std::vector<ShearPoint> measure_confined_shear(const CoarseGrainSettings& s, std::uint64_t packing_seed,
+                                               const std::vector<ProbeArrangement>& arrangements, const std::vector<double>& delta_n,
+                                               const std::vector<double>& ht_over_Rs, const std::function<void(const ShearPoint&)>& progress) {
+  check_increasing(delta_n, "delta_n", 1.0);
+  check_increasing(ht_over_Rs, "ht_over_Rs", 1.0);
+  const Packing packing = generate_packing(s.packing, packing_seed);
+  std::vector<ShearPoint> out;
+  const auto record = [&](ShearPoint p) {
+    out.push_back(std::move(p));
+    if (progress) progress(out.back());
+  };
+  for (const ProbeArrangement& a : arrangements) {
+    if (a.body.kind != PressingBody::Kind::wall) throw InputError(fmt::format("confined shear: arrangement '{}' is not allowed; allowed: walls only", a.name));
+    Probe probe(s, packing, packing_seed, a);
+    Simulation& sim = probe.simulation();
+    double at = 0.0;
+    for (const double dn : delta_n) {
+      try {
+        probe.press(at, dn);
+        at = dn;
+        probe.relax_here();
+      } catch (const NumericalError& e) {
+        record({a.name, dn, 0.0, 0.0, 0.0, e.what()});
+        break;
+      }
+      const auto point = [&](double ht) {
+        const Vec3 F = probe.load(0);
+        return ShearPoint{a.name, dn, ht, F.z(), -F.x(), {}};
+      };
+      record(point(0.0));
+      const SimulationState pressed = sim.state();
+      double slid = 0.0;
+      for (const double ht : ht_over_Rs) try {
+        sim.release_drivers();
+        sim.add_driver(MoveWallDef{"wall0", s.normal_speed * Vec3::UnitX(), (ht - slid) * s.packing.Rs, std::nullopt});
+        while (sim.drivers_moving()) sim.run_steps(100);
+        slid = ht;
+        probe.relax_here();
+        record(point(ht));
+      } catch (const NumericalError& e) {
+        record({a.name, dn, ht, 0.0, 0.0, e.what()});
+        break;
+      }
+      sim.release_drivers();
+      sim.restore(pressed);
     }
   }
   return out;

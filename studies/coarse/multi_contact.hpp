@@ -20,6 +20,17 @@
 //   opposite-half, orthogonal-half   as opposite, orthogonal with the second wall at w = 1/2
 //   random-N       N directions (2 <= N <= 6) drawn uniformly on the sphere from the packing's
 //                  seed, each at least 60 degrees from the others, the first turned onto +z
+//
+// NAME:BODY presses with another body at every contact of arrangement NAME (PressingBody): a
+// held solid sphere (grain-X, radius X Rs, touching the shell from outside at the start) or a
+// resolved soft-particle of the same radius (soft: its packing of seed 1000 S + k for contact k,
+// its shell moved in and then held, the measurement's soft-soft scene). Body k's force is the
+// wall's load, the force of the centre's grains on the grain, or the load on the soft-particle's
+// shell, along u_k.
+//
+// The confined shear (measure_confined_shear): from each state at Δn of a walls' arrangement,
+// the first wall (+z) slides along +x to each ht in turn, each relaxed; then the next Δn starts
+// again from the unsheared state.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -36,9 +47,19 @@ struct ProbeWall {
   double w = 1.0;          ///< Δn of this wall / Δn of the arrangement, in (0, 1]
 };
 
+/// What presses the soft-particle at each contact of an arrangement.
+struct PressingBody {
+  enum class Kind { wall, grain, soft } kind = Kind::wall;
+  double radius_ratio = 1.0;  ///< grain: its radius over Rs
+  std::string name() const;   ///< wall, grain-X, soft
+};
+/// "wall", "soft" or "grain-X" (0.05 <= X <= 20); InputError naming the allowed ones otherwise.
+PressingBody parse_pressing_body(const std::string& name);
+
 struct ProbeArrangement {
-  std::string name;
+  std::string name;  ///< as given: NAME or NAME:BODY
   std::vector<ProbeWall> walls;
+  PressingBody body;
 };
 
 /// The arrangement named `name` (above); `seed` draws random-N's directions. InputError naming
@@ -54,11 +75,26 @@ struct MultiContactPoint {
   std::string failed;
 };
 
-/// For each arrangement and each Δn of `delta_n` (increasing, from contact), the walls' forces; a
+/// For each arrangement and each Δn of `delta_n` (increasing, from contact), the bodies' forces; a
 /// point whose run stops is returned with `failed` set and ends its arrangement.
 std::vector<MultiContactPoint> measure_multi_contact(const CoarseGrainSettings& s, std::uint64_t packing_seed,
                                                      const std::vector<ProbeArrangement>& arrangements,
                                                      const std::vector<double>& delta_n,
                                                      const std::function<void(const MultiContactPoint&)>& progress = {});
+
+struct ShearPoint {
+  std::string arrangement;
+  double delta_n = 0.0;
+  double ht = 0.0;         ///< the first wall's slide along +x over Rs (0: the unsheared state)
+  double Fn = 0.0, Ft = 0.0;  ///< the first wall's force along +z and -x [N]
+  std::string failed;      ///< as MultiContactPoint's: the rest of this Δn's slides not tried
+};
+
+/// The confined shear (above) of walls' arrangements: for each Δn, the point ht = 0, then each of
+/// `ht_over_Rs` (increasing, > 0), at the probe's approach speed.
+std::vector<ShearPoint> measure_confined_shear(const CoarseGrainSettings& s, std::uint64_t packing_seed,
+                                               const std::vector<ProbeArrangement>& arrangements, const std::vector<double>& delta_n,
+                                               const std::vector<double>& ht_over_Rs,
+                                               const std::function<void(const ShearPoint&)>& progress = {});
 
 }  // namespace softpack

@@ -23,8 +23,8 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
     ++line_no;
     const auto fail = [&](const std::string& what) { return InputError(fmt::format("{}:{}: {}", path, line_no, what)); };
     if (line.rfind("# arrangement ", 0) == 0) {
-      const auto colon = line.find(':');
-      if (colon == std::string::npos) throw fail("an arrangement line without ':'");
+      const auto colon = line.find(": ", 14);  // the name may hold ':' (NAME:BODY), not ": "
+      if (colon == std::string::npos) throw fail("an arrangement line without ': '");
       arrangement = line.substr(14, colon - 14);
       w.clear();
       for (auto at = line.find(" w=", colon); at != std::string::npos; at = line.find(" w=", at + 3)) w.push_back(std::stod(line.substr(at + 3)));

@@ -21,6 +21,16 @@ double number_in(const ConfigNode& n, double lo, double hi, bool lo_open, bool h
   return v;
 }
 
+std::vector<double> increasing(const ConfigNode& n) {
+  std::vector<double> out;
+  for (const ConfigNode& v : n.items()) {
+    out.push_back(number_in(v, 0.0, 1.0, true, true));
+    if (out.size() > 1 && !(out.back() > out[out.size() - 2])) v.fail("the values must increase");
+  }
+  if (out.empty()) n.fail("an empty list is not allowed; give at least one");
+  return out;
+}
+
 std::vector<std::string> names(const ConfigNode& n, const std::vector<std::string>& allowed = {}) {
   std::vector<std::string> out;
   for (const ConfigNode& item : n.items()) {
@@ -47,6 +57,13 @@ std::vector<std::string> ManyBodyProbe::arrangements() const {
   return out;
 }
 
+std::vector<std::string> ManyBodyProbe::bodies() const {
+  std::vector<std::string> out;
+  for (const std::string& kind : body_kinds)
+    for (const std::string& a : body_arrangements) out.push_back(a + ":" + kind);
+  return out;
+}
+
 CoarseGrainSettings ManyBodyProbe::settings_at(const std::string& radius) const {
   const auto it = radii.find(radius);
   if (it == radii.end()) {
@@ -67,7 +84,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   const ConfigNode root = ConfigNode::load_file(path);
   root.allow_only({"many_body_probe"});
   const ConfigNode c = root.at("many_body_probe");
-  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "validation"});
+  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "shear", "validation"});
   ManyBodyProbe p;
   std::ostringstream text;
   text << c.yaml();
@@ -89,12 +106,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
     }
   }
   if (p.radii.empty()) radii.fail("no radius; give at least one, e.g. reference: 0.016");
-  const ConfigNode dn = c.at("delta_n");
-  for (const ConfigNode& v : dn.items()) {
-    p.delta_n.push_back(number_in(v, 0.0, 1.0, true, true));
-    if (p.delta_n.size() > 1 && !(p.delta_n.back() > p.delta_n[p.delta_n.size() - 2])) v.fail("delta_n must increase");
-  }
-  if (p.delta_n.empty()) dn.fail("an empty list is not allowed; give at least one");
+  p.delta_n = increasing(c.at("delta_n"));
   p.fit = names(c.at("fit"));
   p.held_out = names(c.at("held_out"));
   for (const std::string& a : p.held_out)
@@ -106,6 +118,32 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   sel.allow_only({"force_floor", "tie_factor"});
   p.force_floor = number_in(sel.at("force_floor"), 0.0, 1.0, true, true);
   p.tie_factor = number_in(sel.at("tie_factor"), 1.0, 10.0, false, false);
+  const ConfigNode bodies = c.at("bodies");
+  bodies.allow_only({"arrangements", "kinds"});
+  p.body_arrangements = names(bodies.at("arrangements"));
+  const auto plain = [](const ConfigNode& list, const std::vector<std::string>& v) {
+    for (const std::string& a : v)
+      if (a.find(':') != std::string::npos) list.fail(fmt::format("'{}' is not allowed here; allowed: arrangement names without :BODY", a));
+  };
+  plain(bodies.at("arrangements"), p.body_arrangements);
+  for (const ConfigNode& item : bodies.at("kinds").items()) {
+    try {
+      p.body_kinds.push_back(parse_pressing_body(item.string()).name());
+    } catch (const InputError& e) {
+      item.fail(e.what());
+    }
+  }
+  if (p.body_kinds.empty()) bodies.at("kinds").fail("an empty list is not allowed; give at least one, e.g. soft");
+  if (std::find(p.body_arrangements.begin(), p.body_arrangements.end(), "one") == p.body_arrangements.end())
+    bodies.at("arrangements").fail("'one' (each kind's single contact, its F1) must be in the list");
+  const ConfigNode shear = c.at("shear");
+  shear.allow_only({"arrangements", "delta_n", "ht_over_Rs"});
+  p.shear_arrangements = names(shear.at("arrangements"));
+  plain(shear.at("arrangements"), p.shear_arrangements);
+  if (std::find(p.shear_arrangements.begin(), p.shear_arrangements.end(), "one") == p.shear_arrangements.end())
+    shear.at("arrangements").fail("'one' (the unconfined shear every ratio is taken over) must be in the list");
+  p.shear_delta_n = increasing(shear.at("delta_n"));
+  p.shear_ht = increasing(shear.at("ht_over_Rs"));
   const ConfigNode val = c.at("validation");
   val.allow_only({"media_seeds", "strain_range", "bound_in_standard_errors"});
   p.media_seeds = parse_seeds(val, "media_seeds");

@@ -23,6 +23,11 @@ struct ManyBodyProbe {
   std::vector<std::string> candidates;     ///< pairwise, volumetric, ratio
   double force_floor = 0.0;           ///< of F1(largest Δn), in (0, 1)
   double tie_factor = 0.0;            ///< >= 1
+  /// The second part (paper/many-body.md): the arrangements again with other pressing bodies,
+  /// and the confined shear of walls' arrangements.
+  std::vector<std::string> body_arrangements, body_kinds;
+  std::vector<std::string> shear_arrangements;
+  std::vector<double> shear_delta_n, shear_ht;  ///< Δn; the slides ht / Rs
   std::vector<std::uint64_t> media_seeds;
   double strain_lo = 0.0, strain_hi = 0.0;
   double bound_in_standard_errors = 0.0;
@@ -30,6 +35,8 @@ struct ManyBodyProbe {
 
   /// The fit arrangements, then the held-out ones.
   std::vector<std::string> arrangements() const;
+  /// Each body arrangement with each kind: NAME:KIND.
+  std::vector<std::string> bodies() const;
   /// The settings with the shell of radius `radius` (a name of `radii`; InputError otherwise).
   CoarseGrainSettings settings_at(const std::string& radius) const;
 };
