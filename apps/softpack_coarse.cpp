@@ -20,6 +20,7 @@
 #include "coarse/multi_contact.hpp"
 #include "coarse/probe_report.hpp"
 #include "coarse/probe_settings.hpp"
+#include "coarse/soft_census.hpp"
 #include "coarse/validation.hpp"
 #include "io/atomic_file.hpp"
 #include "coarse/result_file.hpp"
@@ -183,6 +184,13 @@ int main(int argc, char** argv) {
   val_cmd->add_option("--dir", val_dir, "the validation study's folder, e.g. data/many-body-validation")->required();
   val_cmd->add_option("--settings", val_settings, "its settings to judge");
   val_cmd->add_option("--out", val_out, "folder of validation.md and validation.json")->required();
+  std::string census_plan, census_config, census_media, census_out;
+  CLI::App* census_cmd = app.add_subcommand(
+      "soft-contacts", "where the media use the soft-particle law: every soft-particle contact of the soft model, against the probe's range (coarse/soft_census.hpp)");
+  census_cmd->add_option("--probe", census_plan, "the plan (its media seeds and Delta_n range), e.g. experiments/many-body.yaml")->required();
+  census_cmd->add_option("--config", census_config, "the soft model's settings, e.g. data/many-body-validation/profiles/many-body.yaml")->required();
+  census_cmd->add_option("--media", census_media, "folder of the medium files seed-S.h5, e.g. data/many-body-validation/many-body/media")->required();
+  census_cmd->add_option("--out", census_out, "folder of contacts.md and contacts.dat")->required();
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;
@@ -218,6 +226,11 @@ int main(int argc, char** argv) {
     if (*stamp_cmd) {
       const CoarseStamps st = coarse_stamps(stamp_config, release);
       fmt::print("medium={}\nresolved={}\nsoft={}\n", st.medium, st.resolved, st.soft);
+      return 0;
+    }
+    if (*census_cmd) {
+      write_soft_census(read_many_body_probe(census_plan), census_plan, census_config, census_media, census_out);
+      fmt::print(stderr, "{} soft-contacts: {}/contacts.md\n", program, census_out);
       return 0;
     }
     if (*val_cmd) {

@@ -89,6 +89,13 @@ PROBE_REPORT ?= $(DATA)/many-body/report
 many-body-report: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat) | $(TOOLS)  ## the many-body probe's report (PROBE_REPORT/probe.md)
 	@$(RUN) $(COARSE_TOOL) probe-report --probe $(PROBE_PLAN) --dir $(PROBE_DIR) --out $(PROBE_REPORT)
 
+# Where the media use the law (issue 33, item 5): the many-body setting's soft runs again, every
+# soft-particle contact against the probe's range (coarse/soft_census.hpp; a few seconds).
+.PHONY: many-body-census
+many-body-census: | $(TOOLS)  ## the validation media's soft-particle contacts against the probe's range (DATA/many-body-validation/report/contacts.md)
+	@$(RUN) $(COARSE_TOOL) soft-contacts --probe $(PROBE_PLAN) --config $(DATA)/many-body-validation/profiles/many-body.yaml \
+	  --media $(DATA)/many-body-validation/many-body/media --out $(DATA)/many-body-validation/report
+
 # The law's acceptance on media (issue 33, item 4): after make many-body-validation, the
 # preregistered criterion judged on each of its settings (coarse/validation.hpp).
 .PHONY: many-body-verdict

@@ -45,7 +45,8 @@ CurveRow curve_row(const Simulation& sim, const Medium& m, const std::vector<int
 }
 
 CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseModel model, const CoarseGrainSettings& s,
-                               const std::function<void(double, double, const CurveRow&)>& progress) {
+                               const std::function<void(double, double, const CurveRow&)>& progress,
+                               const std::function<void(const Simulation&, const CurveRow&)>& observe) {
   Stopwatch clock;
   CompressionRun run;
   Simulation sim(scene);
@@ -56,6 +57,7 @@ CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseMod
   const double H0 = m.H;
   const double total = s.strain + s.unload_strain + s.shear;
   run.rows.push_back(curve_row(sim, m, body_of, H0, 1));
+  if (observe) observe(sim, run.rows.back());
   // Each row: the wall moves by record_strain (the last one by what is left), then, with
   // `relax`, stands while the medium comes to rest under the quench; then the row is recorded.
   const auto phase = [&](double strain, int sign) {
@@ -75,6 +77,7 @@ CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseMod
         sim.set_quench(false);
       }
       run.rows.push_back(curve_row(sim, m, body_of, H0, sign));
+      if (observe) observe(sim, run.rows.back());
       const double done = sign == 2 ? s.strain + s.unload_strain + run.rows.back().shear
                           : sign > 0 ? run.rows.back().strain
                                      : s.strain + (s.strain - run.rows.back().strain);

@@ -49,8 +49,9 @@ struct CompressionRun {
 CurveRow curve_row(const Simulation& sim, const Medium& m, const std::vector<int>& body_of, double H0, int phase);
 
 /// Runs the compression of `scene` (medium_scene()); progress(strain done, strain in all, row)
-/// after each row.
+/// after each row; `observe` (optional) sees the simulation at each row (it must not change it).
 CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseModel model, const CoarseGrainSettings& s,
-                               const std::function<void(double, double, const CurveRow&)>& progress = {});
+                               const std::function<void(double, double, const CurveRow&)>& progress = {},
+                               const std::function<void(const Simulation&, const CurveRow&)>& observe = {});
 
 }  // namespace softpack

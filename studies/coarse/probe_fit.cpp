@@ -68,15 +68,17 @@ double floor_of(const ProbeLaw& law, const std::string& radius, const ManyBodyPr
   return plan.force_floor * fit::evaluate(law.F1.at(radius), plan.delta_n.back());
 }
 
-// F1 of each radius: Eq. 7 on the mean over the seeds of `one`'s wall (relative residuals).
-std::map<std::string, fit::PowerLawFit> fit_single_contact(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls) {
+}  // namespace
+
+std::map<std::string, fit::PowerLawFit> fit_single_contact(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls,
+                                                           const std::string& one) {
   std::map<std::string, fit::PowerLawFit> out;
   for (const auto& [radius, Rs] : plan.radii) {
     std::vector<double> dn, mean, se;
     for (const double d : plan.delta_n) {
       std::vector<double> F;
       for (const ProbeWallForce& w : walls)
-        if (w.radius == radius && w.arrangement == "one" && std::abs(w.delta_n[0] - d) < 1e-9) F.push_back(w.Fn);
+        if (w.radius == radius && w.arrangement == one && std::abs(w.delta_n[0] - d) < 1e-9) F.push_back(w.Fn);
       if (F.empty()) continue;
       double m = 0.0, v = 0.0;
       for (const double f : F) m += f / static_cast<double>(F.size());
@@ -90,20 +92,23 @@ std::map<std::string, fit::PowerLawFit> fit_single_contact(const ManyBodyProbe& 
     try {
       out[radius] = fit::fit_normal_law(dn, mean, se, o);
     } catch (const InputError& e) {
-      throw InputError(fmt::format("radius {}: the single contact ('one') cannot be fitted: {}", radius, e.what()));
+      throw InputError(fmt::format("radius {}: the single contact ('{}') cannot be fitted: {}", radius, one, e.what()));
     }
   }
   return out;
 }
 
+namespace {
+
 std::size_t parameters(const std::string& name) { return name == "pairwise" ? 0 : 1; }
 
-// The parameter in [0, hi] with the least error on the fit arrangements: a grid of 1/1000 of the
-// range, then golden sections about its best point.
-double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>& walls, const ManyBodyProbe& plan) {
+}  // namespace
+
+double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
+                     const ManyBodyProbe& plan) {
   const auto error = [&](double x) {
     law.parameter = x;
-    return probe_error(law, walls, plan.fit, plan).rms_log;
+    return probe_error(law, walls, arrangements, plan).rms_log;
   };
   double best = 0.0, best_e = error(0.0);
   for (int i = 1; i <= 1000; ++i) {
@@ -120,7 +125,20 @@ double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>&
   return error(x) < best_e ? x : best;
 }
 
-}  // namespace
+double jackknife_parameter(const std::string& name, double hi, const std::vector<ProbeWallForce>& walls,
+                           const std::vector<std::string>& arrangements, const ManyBodyProbe& plan, const std::string& one) {
+  std::vector<double> theta;  // F1 and the parameter again without each seed
+  for (const std::uint64_t seed : plan.seeds) {
+    std::vector<ProbeWallForce> rest;
+    for (const ProbeWallForce& w : walls)
+      if (w.seed != seed) rest.push_back(w);
+    theta.push_back(fit_parameter(ProbeLaw{name, 0.0, fit_single_contact(plan, rest, one)}, hi, rest, arrangements, plan));
+  }
+  double m = 0.0, v = 0.0;
+  for (const double t : theta) m += t / static_cast<double>(theta.size());
+  for (const double t : theta) v += (t - m) * (t - m);
+  return std::sqrt(v * static_cast<double>(theta.size() - 1) / static_cast<double>(theta.size()));
+}
 
 ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
                        const ManyBodyProbe& plan) {
@@ -148,18 +166,8 @@ ProbeAnalysis analyse_probe(const ManyBodyProbe& plan, const std::vector<ProbeWa
     c.law = ProbeLaw{name, 0.0, F1};
     const double hi = name == "volumetric" ? 1.5 : 3.0;
     if (parameters(name) > 0) {
-      c.law.parameter = fit_parameter(c.law, hi, walls, plan);
-      std::vector<double> theta;  // the jackknife over the seeds: F1 and the parameter again without each
-      for (const std::uint64_t seed : plan.seeds) {
-        std::vector<ProbeWallForce> rest;
-        for (const ProbeWallForce& w : walls)
-          if (w.seed != seed) rest.push_back(w);
-        theta.push_back(fit_parameter(ProbeLaw{name, 0.0, fit_single_contact(plan, rest)}, hi, rest, plan));
-      }
-      double m = 0.0, v = 0.0;
-      for (const double t : theta) m += t / static_cast<double>(theta.size());
-      for (const double t : theta) v += (t - m) * (t - m);
-      c.parameter_error = std::sqrt(v * static_cast<double>(theta.size() - 1) / static_cast<double>(theta.size()));
+      c.law.parameter = fit_parameter(c.law, hi, walls, plan.fit, plan);
+      c.parameter_error = jackknife_parameter(name, hi, walls, plan.fit, plan);
     }
     c.fit = probe_error(c.law, walls, plan.fit, plan);
     c.held_out = probe_error(c.law, walls, plan.held_out, plan);

@@ -73,6 +73,19 @@ struct ProbeAnalysis {
 ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
                        const ManyBodyProbe& plan);
 
+/// F1 of each radius: Eq. 7 (relative residuals, the plan's floor as onset) on the mean over the
+/// seeds of the single contact `one` (the arrangement `one`, or `one:BODY` of another body).
+std::map<std::string, fit::PowerLawFit> fit_single_contact(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls,
+                                                           const std::string& one = "one");
+/// The law's parameter in [0, hi] with the least error on `arrangements`: a grid of 1/1000 of the
+/// range, then golden sections about its best point.
+double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
+                     const ManyBodyProbe& plan);
+/// Its standard error by the jackknife over the plan's seeds (F1 of `one` and the parameter fitted
+/// again without each seed).
+double jackknife_parameter(const std::string& name, double hi, const std::vector<ProbeWallForce>& walls,
+                           const std::vector<std::string>& arrangements, const ManyBodyProbe& plan, const std::string& one = "one");
+
 /// Everything the rule asks, on the walls of every probe file of the plan.
 ProbeAnalysis analyse_probe(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls);
 

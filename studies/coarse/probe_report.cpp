@@ -7,16 +7,13 @@
 #include <filesystem>
 #include <map>
 
+#include "coarse/probe_second.hpp"
 #include "core/version.hpp"
 #include "formats/law_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace softpack {
 namespace {
-
-std::string factor(const ProbeError& e) { return e.points ? fmt::format("{:.2f} ({:+.2f})", std::exp(e.rms_log), e.mean_log) : "–"; }
-
-nlohmann::json error_json(const ProbeError& e) { return {{"rms_log", e.rms_log}, {"mean_log", e.mean_log}, {"points", e.points}}; }
 
 }  // namespace
 
@@ -54,7 +51,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     md += fmt::format("| {} | {} | {} | {} |\n", c.law.name,
                       c.law.name == "pairwise" ? std::string("–")
                                                : fmt::format("{} = {:.3f} ± {:.3f}", c.law.name == "volumetric" ? "β" : "α", c.law.parameter, c.parameter_error),
-                      factor(c.fit), factor(c.held_out));
+                      error_factor(c.fit), error_factor(c.held_out));
   md += "\n## Each arrangement\n\n| arrangement | walls | role |";
   for (const ProbeCandidate& c : a.candidates) md += fmt::format(" {} |", c.law.name);
   md += "\n|---|---|---|";
@@ -63,7 +60,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
   for (const std::string& name : plan.arrangements()) {
     const bool held = std::find(plan.held_out.begin(), plan.held_out.end(), name) != plan.held_out.end();
     md += fmt::format("| {} | {} | {} |", name, walls_of.count(name) ? walls_of.at(name) : 0, held ? "held out" : "fit");
-    for (const ProbeCandidate& c : a.candidates) md += fmt::format(" {} |", factor(c.by_arrangement.at(name)));
+    for (const ProbeCandidate& c : a.candidates) md += fmt::format(" {} |", error_factor(c.by_arrangement.at(name)));
     md += "\n";
   }
   md += "\nHeld out, by radius:\n\n| radius |";
@@ -73,7 +70,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
   md += "\n";
   for (const auto& [radius, Rs] : plan.radii) {
     md += fmt::format("| {} |", radius);
-    for (const ProbeCandidate& c : a.candidates) md += fmt::format(" {} |", factor(c.by_radius.at(radius)));
+    for (const ProbeCandidate& c : a.candidates) md += fmt::format(" {} |", error_factor(c.by_radius.at(radius)));
     md += "\n";
   }
   md += fmt::format("\n## By the rule\n\nChosen: **{}**. Enters the engine (better than pairwise on every held-out arrangement of two walls or more): **{}**.\n",
@@ -89,10 +86,10 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     j["F1"][radius] = {{"Rs", Rs}, {"a", f.a}, {"b", f.b}, {"c", f.c}, {"onset", f.delta}, {"points", f.points}};
   }
   for (const ProbeCandidate& c : a.candidates) {
-    nlohmann::json cj{{"parameter", c.law.parameter}, {"parameter_error", c.parameter_error}, {"fit", error_json(c.fit)},
-                      {"held_out", error_json(c.held_out)}};
-    for (const auto& [name, e] : c.by_arrangement) cj["arrangements"][name] = error_json(e);
-    for (const auto& [radius, e] : c.by_radius) cj["held_out_by_radius"][radius] = error_json(e);
+    nlohmann::json cj{{"parameter", c.law.parameter}, {"parameter_error", c.parameter_error}, {"fit", probe_error_json(c.fit)},
+                      {"held_out", probe_error_json(c.held_out)}};
+    for (const auto& [name, e] : c.by_arrangement) cj["arrangements"][name] = probe_error_json(e);
+    for (const auto& [radius, e] : c.by_radius) cj["held_out_by_radius"][radius] = probe_error_json(e);
     j["candidates"][c.law.name] = cj;
   }
 
@@ -139,6 +136,12 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     std::filesystem::remove(laws_path);
     md += "\nNo law file: the engine runs the volumetric form only, once the rule lets a law in.\n";
   }
+  // the second part (coarse/probe_second.hpp): the walls' β tested on other bodies and in shear
+  for (const ProbeCandidate& c : a.candidates)
+    if (c.law.name == "volumetric") {
+      write_second_part(plan, plan_path, probe_dir, walls, c.law.parameter, out_dir);
+      md += fmt::format("\nIts second part (other pressing bodies, shear under confinement): `{}/second-part.md`.\n", out_dir);
+    }
   write_file_atomically(out_dir + "/probe.md", md);
   write_file_atomically(out_dir + "/probe.json", j.dump(2) + "\n");
   write_file_atomically(out_dir + "/probe.dat", dat);

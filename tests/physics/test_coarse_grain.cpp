@@ -14,6 +14,7 @@
 #include "coarse/probe_settings.hpp"
 #include "coarse/report.hpp"
 #include "coarse/result_file.hpp"
+#include "coarse/soft_census.hpp"
 #include "core/error.hpp"
 #include "formats/law_file.hpp"
 
@@ -113,7 +114,23 @@ TEST(CoarseGrain, ACompressionOfEitherModelWritesAFileThatReadsBack) {
   ASSERT_EQ(back.medium.packings.size(), m.packings.size());
   EXPECT_EQ(back.medium.packings.back().radii, m.packings.back().radii);
   for (const CoarseModel model : {CoarseModel::resolved, CoarseModel::soft}) {
-    const CompressionRun run = run_compression(medium_scene(tiny(), back.medium, model, laws()), back.medium, model, tiny());
+    std::vector<SoftCensus> census;  // the soft model's contacts at each row (coarse/soft_census.hpp)
+    std::function<void(const Simulation&, const CurveRow&)> observe;
+    if (model == CoarseModel::soft)
+      observe = [&](const Simulation& sim, const CurveRow& row) { census.push_back(soft_census(sim, back.medium, row, 0.4, 0.5)); };
+    const CompressionRun run = run_compression(medium_scene(tiny(), back.medium, model, laws()), back.medium, model, tiny(), {}, observe);
+    if (model == CoarseModel::soft) {
+      ASSERT_EQ(census.size(), run.rows.size());
+      for (const SoftCensus& c : census) {
+        EXPECT_EQ(c.wall + c.grain + c.soft, c.contacts);
+        EXPECT_EQ(c.soft % 2, 0u) << "a contact between two soft-particles is counted for each";
+        EXPECT_EQ(c.soft / 2, static_cast<std::size_t>(run.rows[&c - census.data()].soft_soft)) << "as the curve counts its pairs";
+        EXPECT_DOUBLE_EQ(c.n_mean, static_cast<double>(c.contacts) / static_cast<double>(back.medium.sites.size()));
+        for (const double f : {c.beyond_dn, c.beyond_n, c.beyond_E}) EXPECT_TRUE(f >= 0.0 && f <= 1.0) << f;
+        EXPECT_LE(c.dn_median, c.dn_p90);
+        EXPECT_LE(c.dn_p90, c.dn_max);
+      }
+    }
     ASSERT_GE(run.rows.size(), 8u);  // 0, six loading rows, one unloading
     EXPECT_NEAR(run.rows[6].strain, 0.06, 1e-3);
     ASSERT_EQ(run.rows.size(), 10u);  // then two rows of shear
@@ -131,6 +148,36 @@ TEST(CoarseGrain, ACompressionOfEitherModelWritesAFileThatReadsBack) {
     EXPECT_EQ(r.rows.back().tau, run.rows.back().tau);
     EXPECT_EQ(r.spheres, static_cast<std::int64_t>(run.spheres));
   }
+}
+
+// The census of soft-particle contacts (coarse/soft_census.hpp) on a scene made by hand: two
+// soft-particles on the bottom wall (Δn = 0.05 each), touching each other (Δn = 0.1), the first
+// pressed by a grain of radius Rs / 2 (Δn = 0.2 with the wall rule's R = Rs).
+TEST(CoarseGrain, TheSoftContactCensusCountsWhatTheSceneHolds) {
+  const Medium& tiny_medium = medium();
+  ASSERT_GE(tiny_medium.packings.size(), 1u);
+  Medium m;
+  const double R = tiny_medium.Rs;
+  m.Rs = R, m.L = 10.0 * R, m.H = 10.0 * R;
+  m.sites = {Vec3(5.0 * R, 5.0 * R, 0.95 * R), Vec3(6.9 * R, 5.0 * R, 0.95 * R)};
+  m.packings = {tiny_medium.packings[0], tiny_medium.packings[0]};  // their masses only
+  m.grain_x = {Vec3(5.0 * R, 5.0 * R, 2.25 * R)}, m.grain_r = {0.5 * R};
+  const Simulation sim(medium_scene(tiny(), m, CoarseModel::soft, laws()));
+  const SoftCensus c = soft_census(sim, m, CurveRow{}, 0.15, 1.0);
+  EXPECT_EQ(c.contacts, 5u);
+  EXPECT_EQ(c.wall, 2u);
+  EXPECT_EQ(c.grain, 1u);
+  EXPECT_EQ(c.soft, 2u);
+  EXPECT_NEAR(c.dn_median, 0.1, 1e-9);
+  EXPECT_NEAR(c.dn_max, 0.2, 1e-9);
+  EXPECT_DOUBLE_EQ(c.beyond_dn, 0.2);
+  EXPECT_DOUBLE_EQ(c.n_mean, 2.5);
+  EXPECT_EQ(c.beyond_n, 0.0);
+  EXPECT_EQ(c.beyond_E, 0.0);
+  EXPECT_EQ(soft_census(sim, m, CurveRow{}, 0.15, 0.9 * (cap_volume(0.05) + cap_volume(0.1) + cap_volume(0.2))).beyond_E, 0.6)
+      << "the first soft-particle's three contacts lie beyond an E just below its own";
+  EXPECT_DOUBLE_EQ(c.grain_ratio_median, 0.5);
+  EXPECT_GT(c.force_grain, 0.0);
 }
 
 // Two seeds, the resolved curve sigma = 1000 strain (+-10 Pa between seeds), the soft one the
@@ -190,6 +237,21 @@ TEST(MultiContactProbe, TheArrangementsAreWhatTheirNamesSay) {
   const ProbeArrangement r1 = builtin_arrangement("random-5", 11), r2 = builtin_arrangement("random-5", 11), r3 = builtin_arrangement("random-5", 12);
   for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(r1.walls[k].u, r2.walls[k].u);
   EXPECT_NE(r1.walls[1].u, r3.walls[1].u);
+  const ProbeArrangement g = builtin_arrangement("cube:grain-0.4", 0), soft = builtin_arrangement("one:soft", 0);
+  EXPECT_EQ(g.walls.size(), 6u);
+  EXPECT_EQ(g.body.kind, PressingBody::Kind::grain);
+  EXPECT_EQ(g.body.radius_ratio, 0.4);
+  EXPECT_EQ(g.body.name(), "grain-0.4");
+  EXPECT_EQ(soft.body.kind, PressingBody::Kind::soft);
+  EXPECT_EQ(builtin_arrangement("one:wall", 0).body.kind, PressingBody::Kind::wall);
+  for (const char* bad : {"one:rock", "one:grain-0", "one:grain-x", "one:grain-0.4x", "one:"}) {
+    try {
+      builtin_arrangement(bad, 0);
+      ADD_FAILURE() << bad << " was taken";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("allowed: wall, soft, grain-X"), std::string::npos) << e.what();
+    }
+  }
   for (const char* bad : {"two", "random-1", "random-7", "random-", "Cube"}) {
     try {
       builtin_arrangement(bad, 0);
@@ -213,6 +275,37 @@ TEST(MultiContactProbe, EachWallOfAnArrangementReportsItsPush) {
   EXPECT_GT(points[1].Fn[1], 0.0);
   EXPECT_THROW(measure_multi_contact(tiny(), 3, a, {0.2, 0.1}), InputError);
   EXPECT_THROW(measure_multi_contact(tiny(), 3, a, {1.0}), InputError);
+}
+
+// Other pressing bodies: a held grain and a resolved soft-particle push back on every contact.
+TEST(MultiContactProbe, GrainsAndSoftParticlesPressLikeWalls) {
+  const std::vector<ProbeArrangement> a{builtin_arrangement("opposite:grain-1", 3), builtin_arrangement("opposite:soft", 3)};
+  const auto points = measure_multi_contact(tiny(), 3, a, {0.2, 0.4});
+  ASSERT_EQ(points.size(), 4u);
+  for (const MultiContactPoint& p : points) {
+    ASSERT_TRUE(p.failed.empty()) << p.failed;
+    ASSERT_EQ(p.Fn.size(), 2u);
+    for (const double F : p.Fn) EXPECT_TRUE(std::isfinite(F) && F >= 0.0) << p.arrangement << " " << F;
+  }
+  for (const std::size_t k : {1u, 3u}) EXPECT_GT(points[k].Fn[0] + points[k].Fn[1], 0.0) << points[k].arrangement;
+}
+
+// The confined shear: Δn's unsheared point, then each slide; the next Δn starts again from the
+// unsheared state, so its ht = 0 point is the plain probe's at that Δn; bad input refused.
+TEST(MultiContactProbe, TheConfinedShearSlidesTheFirstWallAndLeavesNoTrace) {
+  const std::vector<ProbeArrangement> a{builtin_arrangement("opposite", 3)};
+  const auto sheared = measure_confined_shear(tiny(), 3, a, {0.3, 0.5}, {0.01, 0.05});
+  ASSERT_EQ(sheared.size(), 6u);
+  for (const ShearPoint& p : sheared) ASSERT_TRUE(p.failed.empty()) << p.failed;
+  EXPECT_EQ(sheared[1].ht, 0.01);
+  EXPECT_EQ(sheared[3].ht, 0.0);
+  EXPECT_EQ(sheared[3].delta_n, 0.5);
+  const auto plain = measure_multi_contact(tiny(), 3, a, {0.3, 0.5});
+  EXPECT_EQ(sheared[0].Fn, plain[0].Fn[0]);
+  EXPECT_NEAR(sheared[3].Fn, plain[1].Fn[0], 1e-9 * std::abs(plain[1].Fn[0]));
+  EXPECT_NE(sheared[2].Ft, sheared[0].Ft) << "the slide loads the wall tangentially";
+  EXPECT_THROW(measure_confined_shear(tiny(), 3, a, {0.3}, {0.05, 0.01}), InputError);
+  EXPECT_THROW(measure_confined_shear(tiny(), 3, {builtin_arrangement("one:soft", 3)}, {0.3}, {0.01}), InputError);
 }
 
 }  // namespace
@@ -252,6 +345,11 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("delta_n: [0.05, 0.1", "delta_n: [0.1, 0.05", "must increase");
   refused("  candidates:", "  colour: red\n  candidates:", "colour");
   refused("fit: [one, ", "fit: [", "'one'");
+  refused("kinds: [grain-1,", "kinds: [grain-y,", "allowed: wall, soft, grain-X");
+  refused("arrangements: [one, opposite, tetrahedral, cube]", "arrangements: [opposite, tetrahedral, cube]", "'one'");
+  refused("arrangements: [one, opposite, orthogonal,", "arrangements: [one, opposite:soft, orthogonal,", "without :BODY");
+  EXPECT_EQ(plan.bodies().size(), plan.body_arrangements.size() * plan.body_kinds.size());
+  EXPECT_EQ(plan.bodies().front(), plan.body_arrangements.front() + ":" + plan.body_kinds.front());
 }
 
 }  // namespace

@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <fstream>
+#include <tuple>
 
 #include "coarse/probe_fit.hpp"
+#include "coarse/probe_second.hpp"
 #include "coarse/validation.hpp"
 #include "core/error.hpp"
 
@@ -97,6 +99,60 @@ TEST(ManyBodyProbeLaws, TheRuleFindsTheLawThatMadeTheProbe) {
   EXPECT_NEAR(a.candidates[1].law.parameter, 0.6, 0.02);
   EXPECT_LT(a.candidates[1].held_out.rms_log, 0.03);
   EXPECT_GT(a.candidates[0].held_out.rms_log, 0.1);  // pairwise misses the stiffening
+}
+
+// The second part's analysis (coarse/probe_second.hpp) on a synthetic probe: grains of half the
+// wall's single-contact force, stiffened by the volumetric law at β = 0.6; a cube whose confined
+// kt is twice the single contact's and whose sliding ratio is the same.
+TEST(ManyBodyProbeLaws, TheSecondPartReadsRatiosErrorsAndTheShearAsMade) {
+  ManyBodyProbe plan;
+  plan.seeds = {1, 2, 3, 4};
+  plan.radii = {{"r", 0.016}};
+  plan.delta_n = {0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4};
+  plan.force_floor = 0.01;
+  plan.body_arrangements = {"one", "opposite", "cube"}, plan.body_kinds = {"grain-1"};
+  plan.shear_arrangements = {"one", "cube"}, plan.shear_delta_n = {0.2}, plan.shear_ht = {0.0025, 0.005, 0.1};
+  const fit::PowerLawFit wall = eq7(40.0, 2.5, -0.05), grain = eq7(20.0, 2.5, -0.025);
+  const ProbeLaw truth{"volumetric", 0.6, {{"r", grain}}};
+  const std::map<std::string, std::vector<double>> w{{"one", {1.0}}, {"opposite", {1.0, 1.0}}, {"cube", {1, 1, 1, 1, 1, 1}}};
+  std::vector<ProbeWallForce> walls, bodies;
+  for (const std::uint64_t seed : plan.seeds) {
+    const double scatter = 1.0 + 0.02 * (static_cast<double>(seed) - 2.5) / 1.5;
+    for (const double dn : plan.delta_n) walls.push_back({"r", "one", seed, {dn}, 0, fit::evaluate(wall, dn) * scatter});
+    for (const auto& [name, weights] : w)
+      for (const double dn : plan.delta_n) {
+        std::vector<double> d;
+        for (const double x : weights) d.push_back(x * dn);
+        for (std::size_t k = 0; k < d.size(); ++k) {
+          ProbeWallForce p{"r", name + ":grain-1", seed, d, k, 0.0};
+          p.Fn = truth.predict(p) * scatter;
+          bodies.push_back(p);
+        }
+      }
+  }
+  std::vector<ShearRow> shear;
+  const double k1 = 50.0, Rs = 0.016;
+  for (const std::uint64_t seed : plan.seeds)
+    for (const auto& [name, kt, Fn] : {std::tuple{"one", k1, 1.0}, std::tuple{"cube", 2.0 * k1, 3.0}}) {
+      const double s = 1.0 + 0.01 * static_cast<double>(seed);
+      shear.push_back({"r", name, seed, 0.2, 0.0, Fn * s, -0.01});
+      for (const double ht : {0.0025, 0.005}) shear.push_back({"r", name, seed, 0.2, ht, Fn * s, -0.01 + kt * s * ht * Rs});
+      shear.push_back({"r", name, seed, 0.2, 0.1, Fn * s, 0.3 * Fn * s});
+    }
+  const SecondPart a = analyse_second_part(plan, walls, bodies, shear, 0.6);
+  EXPECT_NEAR(std::exp(a.single.at("grain-1").at("r").at(0.2).mean), 0.5, 1e-3);
+  EXPECT_TRUE(a.notes.empty());
+  const auto& k = a.kinds.at("grain-1");
+  EXPECT_TRUE(k.carries_over);
+  EXPECT_NEAR(k.beta, 0.6, 0.02);
+  EXPECT_LT(k.volumetric.at("cube:grain-1").rms_log, 0.03);
+  EXPECT_GT(k.pairwise.at("cube:grain-1").rms_log, 0.1);
+  const auto& cube = a.shear.at("r").at("cube").at(0.2);
+  EXPECT_NEAR(std::exp(cube.kt.mean), 2.0, 1e-9);
+  EXPECT_FALSE(cube.kt.within());
+  EXPECT_NEAR(std::exp(cube.mu.mean), 1.0, 1e-9);
+  EXPECT_NEAR(std::exp(cube.Fn.mean), 3.0, 1e-9);
+  EXPECT_NEAR(cube.mu_mean, 0.3, 1e-12);
 }
 
 // The media criterion (coarse/validation.hpp): every loading and unloading point of the range
