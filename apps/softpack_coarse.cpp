@@ -197,6 +197,8 @@ int main(int argc, char** argv) {
   auto* seeds_config_opt = seeds_cmd->add_option("--config", seeds_config, "settings, e.g. experiments/coarse-grain.yaml");
   seeds_cmd->add_option("--probe", seeds_probe, "instead: the many-body probe's runs, RADIUS/seed-S (e.g. experiments/many-body.yaml)")
       ->excludes(seeds_config_opt);
+  std::string runs_stamp_release;
+  seeds_cmd->add_option("--runs-stamp", runs_stamp_release, "with --probe: print the stamp of its runs for this release instead (for make)");
   bool medium_text = false;  // what a medium depends on, as the medium file records it (maintenance)
   seeds_cmd->add_flag("--medium-text", medium_text)->group("");
   std::string stamp_config, release;
@@ -209,6 +211,10 @@ int main(int argc, char** argv) {
       if (seeds_probe.empty() == seeds_config.empty()) throw InputError("seeds: give --config or --probe");
       if (!seeds_probe.empty()) {
         const ManyBodyProbe plan = read_many_body_probe(seeds_probe);
+        if (!runs_stamp_release.empty()) {
+          fmt::print("{}\n", plan.runs_stamp(runs_stamp_release));
+          return 0;
+        }
         for (const char* part : {"seed", "bodies", "shear"})
           for (const auto& [radius, Rs] : plan.radii)
             for (std::uint64_t seed : plan.seeds) fmt::print("{}/{}-{} ", radius, part, seed);

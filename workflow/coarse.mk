@@ -72,11 +72,12 @@ PROBE_DIR ?= $(DATA)/many-body/probe
 PROBE_RUNS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN))
 .PHONY: many-body-probe
 many-body-probe: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat)  ## the many-body probe's runs (PROBE_DIR/RADIUS/seed-S.dat)
-# A run is redone when the plan or the settings change or the release does (a stamp), not when the
-# tool is relinked.
-PROBE_STAMP := $(PROBE_DIR)/stamps/release.hash
-$(eval $(call stamp_rule,$(PROBE_STAMP),$(VERSION)))
-$(PROBE_DIR)/%.dat: $(PROBE_PLAN) $(COARSE_CONFIG) $(PROBE_STAMP) | $(TOOLS)
+# A run is redone when what decides the runs changes (the plan's settings, seeds, radii, delta_n,
+# arrangements, bodies and shear, and the release: a stamp; not its selection rule or validation)
+# or the settings file does, not when the tool is relinked.
+PROBE_STAMP := $(PROBE_DIR)/stamps/runs.hash
+$(eval $(call stamp_rule,$(PROBE_STAMP),$(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --runs-stamp $(VERSION))))
+$(PROBE_DIR)/%.dat: $(COARSE_CONFIG) $(PROBE_STAMP) | $(TOOLS)
 	@mkdir -p $(@D)
 	@$(RUN) $(COARSE_TOOL) multi-contact --probe $(PROBE_PLAN) --radius $(patsubst %/,%,$(dir $*)) \
 	  --part $(call probe_part,$(notdir $*)) --packing-seed $(lastword $(subst -, ,$(notdir $*))) --out $@ 2> $(basename $@).log \

@@ -9,6 +9,7 @@
 #include "coarse/multi_contact.hpp"
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
+#include "io/sha256.hpp"
 #include "profile/profile.hpp"
 
 namespace softpack {
@@ -64,6 +65,10 @@ std::vector<std::string> ManyBodyProbe::bodies() const {
   return out;
 }
 
+std::string ManyBodyProbe::runs_stamp(const std::string& release) const {
+  return sha256_of_bytes("softpack " + release + "\nmany-body probe runs\n" + runs_text).substr(0, 16);
+}
+
 CoarseGrainSettings ManyBodyProbe::settings_at(const std::string& radius) const {
   const auto it = radii.find(radius);
   if (it == radii.end()) {
@@ -89,6 +94,12 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   std::ostringstream text;
   text << c.yaml();
   p.section_text = text.str();
+  for (const char* key : {"settings", "seeds", "radii", "delta_n", "fit", "held_out", "bodies", "shear"}) {
+    if (!c.has(key)) continue;
+    std::ostringstream t;
+    t << c.at(key).yaml();
+    p.runs_text += std::string(key) + ": " + t.str() + "\n";
+  }
   p.settings_path = c.at("settings").string();
   const std::filesystem::path settings_file =
       std::filesystem::path(p.settings_path).is_absolute() ? std::filesystem::path(p.settings_path) : std::filesystem::path(root_dir) / p.settings_path;

@@ -32,6 +32,11 @@ struct ManyBodyProbe {
   double strain_lo = 0.0, strain_hi = 0.0;
   double bound_in_standard_errors = 0.0;
   std::string section_text;           ///< the section as read (provenance)
+  std::string runs_text;              ///< the keys that decide the runs: settings .. shear, not the analysis' and validation's
+
+  /// The stamp of the runs (make's: a run is redone when it changes, not when the plan's
+  /// selection or validation do): a hash of runs_text and the release.
+  std::string runs_stamp(const std::string& release) const;
 
   /// The fit arrangements, then the held-out ones.
   std::vector<std::string> arrangements() const;

@@ -348,6 +348,16 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("kinds: [grain-1,", "kinds: [grain-y,", "allowed: wall, soft, grain-X");
   refused("arrangements: [one, opposite, tetrahedral, cube]", "arrangements: [opposite, tetrahedral, cube]", "'one'");
   refused("arrangements: [one, opposite, orthogonal,", "arrangements: [one, opposite:soft, orthogonal,", "without :BODY");
+  const auto stamp_with = [&](const std::string& from, const std::string& to) {
+    const std::string path = ::testing::TempDir() + "/many-body-edited.yaml";
+    std::ofstream(path) << std::string(text).replace(text.find(from), from.size(), to);
+    return read_many_body_probe(path, kRoot).runs_stamp("1.0");
+  };
+  EXPECT_EQ(stamp_with("media_seeds: [", "media_seeds: [399, "), plan.runs_stamp("1.0")) << "the validation decides no run";
+  EXPECT_EQ(stamp_with("tie_factor:", "tie_factor: 1.2 #"), plan.runs_stamp("1.0")) << "nor the selection rule";
+  EXPECT_NE(stamp_with("delta_n: [0.05, ", "delta_n: [0.04, "), plan.runs_stamp("1.0"));
+  EXPECT_NE(stamp_with("kinds: [grain-1,", "kinds: [grain-2,"), plan.runs_stamp("1.0"));
+  EXPECT_NE(plan.runs_stamp("1.1"), plan.runs_stamp("1.0"));
   EXPECT_EQ(plan.bodies().size(), plan.body_arrangements.size() * plan.body_kinds.size());
   EXPECT_EQ(plan.bodies().front(), plan.body_arrangements.front() + ":" + plan.body_kinds.front());
 }
