@@ -156,8 +156,14 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   p.shear_delta_n = increasing(shear.at("delta_n"));
   p.shear_ht = increasing(shear.at("ht_over_Rs"));
   const ConfigNode val = c.at("validation");
-  val.allow_only({"media_seeds", "strain_range", "bound_in_standard_errors"});
+  val.allow_only({"media_seeds", "v3_media_seeds", "strain_range", "bound_in_standard_errors"});
   p.media_seeds = parse_seeds(val, "media_seeds");
+  if (val.has("v3_media_seeds")) {
+    p.v3_media_seeds = parse_seeds(val, "v3_media_seeds");
+    for (const std::uint64_t seed : p.v3_media_seeds)
+      if (std::find(p.media_seeds.begin(), p.media_seeds.end(), seed) != p.media_seeds.end())
+        val.at("v3_media_seeds").fail(fmt::format("seed {} is also in media_seeds: a law is judged on media no earlier run has used", seed));
+  }
   const std::vector<ConfigNode> range = val.at("strain_range").items();
   if (range.size() != 2) val.at("strain_range").fail("give two strains, [from, to]");
   p.strain_lo = number_in(range[0], 0.0, 1.0, false, true);

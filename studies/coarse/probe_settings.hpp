@@ -29,6 +29,7 @@ struct ManyBodyProbe {
   std::vector<std::string> shear_arrangements;
   std::vector<double> shear_delta_n, shear_ht;  ///< Δn; the slides ht / Rs
   std::vector<std::uint64_t> media_seeds;
+  std::vector<std::uint64_t> v3_media_seeds;  ///< the third version's media (none before it)
   double strain_lo = 0.0, strain_hi = 0.0;
   double bound_in_standard_errors = 0.0;
   std::string section_text;           ///< the section as read (provenance)

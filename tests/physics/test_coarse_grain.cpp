@@ -346,6 +346,7 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("  candidates:", "  colour: red\n  candidates:", "colour");
   refused("fit: [one, ", "fit: [", "'one'");
   refused("kinds: [grain-1,", "kinds: [grain-y,", "allowed: wall, soft, grain-X");
+  refused("v3_media_seeds: [315,", "v3_media_seeds: [311,", "also in media_seeds");
   refused("arrangements: [one, opposite, tetrahedral, cube]", "arrangements: [opposite, tetrahedral, cube]", "'one'");
   refused("arrangements: [one, opposite, orthogonal,", "arrangements: [one, opposite:soft, orthogonal,", "without :BODY");
   const auto stamp_with = [&](const std::string& from, const std::string& to) {
