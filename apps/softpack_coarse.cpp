@@ -165,6 +165,8 @@ int main(int argc, char** argv) {
                    "with --probe: walls (its arrangements), bodies (its bodies' arrangements with each kind) or shear (its confined shear)")
       ->check(CLI::IsMember({"walls", "bodies", "shear"}))
       ->needs(probe_plan_opt);
+  std::string probe_kind;
+  probe_cmd->add_option("--kind", probe_kind, "with --part bodies: which of the plan's pressing bodies (wall, grain-X, soft)");
   probe_cmd->add_option("--packing-seed", probe_seed, "seed of the packing (and of random-N's directions)")->required()->check(seed_check());
   probe_cmd->add_option("--arrangements", probe_arrangements,
                         "one, opposite, orthogonal, triangle, tetrahedral, square, pyramid, cube, opposite-half, orthogonal-half, random-N (N = 2-6); "
@@ -195,10 +197,10 @@ int main(int argc, char** argv) {
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;
   auto* seeds_config_opt = seeds_cmd->add_option("--config", seeds_config, "settings, e.g. experiments/coarse-grain.yaml");
-  seeds_cmd->add_option("--probe", seeds_probe, "instead: the many-body probe's runs, RADIUS/seed-S (e.g. experiments/many-body.yaml)")
+  seeds_cmd->add_option("--probe", seeds_probe, "instead: the many-body probe's runs, RADIUS/GROUP-S (GROUP: seed, bodies-KIND, shear; e.g. experiments/many-body.yaml)")
       ->excludes(seeds_config_opt);
   std::string runs_stamp_release;
-  seeds_cmd->add_option("--runs-stamp", runs_stamp_release, "with --probe: print the stamp of its runs for this release instead (for make)");
+  seeds_cmd->add_option("--runs-stamp", runs_stamp_release, "with --probe: print GROUP=STAMP of its groups of runs for this release instead (for make)");
   bool medium_text = false;  // what a medium depends on, as the medium file records it (maintenance)
   seeds_cmd->add_flag("--medium-text", medium_text)->group("");
   std::string stamp_config, release;
@@ -211,13 +213,15 @@ int main(int argc, char** argv) {
       if (seeds_probe.empty() == seeds_config.empty()) throw InputError("seeds: give --config or --probe");
       if (!seeds_probe.empty()) {
         const ManyBodyProbe plan = read_many_body_probe(seeds_probe);
-        if (!runs_stamp_release.empty()) {
-          fmt::print("{}\n", plan.runs_stamp(runs_stamp_release));
-          return 0;
-        }
-        for (const char* part : {"seed", "bodies", "shear"})
+        const auto groups = plan.runs_stamps(runs_stamp_release.empty() ? "-" : runs_stamp_release);
+        for (const auto& [group, stamp] : groups) {
+          if (!runs_stamp_release.empty()) {
+            fmt::print("{}={} ", group, stamp);
+            continue;
+          }
           for (const auto& [radius, Rs] : plan.radii)
-            for (std::uint64_t seed : plan.seeds) fmt::print("{}/{}-{} ", radius, part, seed);
+            for (std::uint64_t seed : plan.seeds) fmt::print("{}/{}-{} ", radius, group, seed);
+        }
         fmt::print("\n");
         return 0;
       }
@@ -258,9 +262,10 @@ int main(int argc, char** argv) {
         if (probe_radius.empty()) throw InputError("multi-contact: --probe needs --radius (one of the plan's radii)");
         const ManyBodyProbe plan = read_many_body_probe(probe_plan);
         s = plan.settings_at(probe_radius);
-        probe_arrangements = probe_part == "walls" ? plan.arrangements() : probe_part == "bodies" ? plan.bodies() : plan.shear_arrangements;
+        if ((probe_part == "bodies") == probe_kind.empty()) throw InputError("multi-contact: --kind goes with --part bodies, and only with it");
+        probe_arrangements = probe_part == "walls" ? plan.arrangements() : probe_part == "bodies" ? plan.bodies(probe_kind) : plan.shear_arrangements;
         probe_dn = probe_part == "shear" ? plan.shear_delta_n : plan.delta_n;
-        source = fmt::format("{} (radius {}: Rs = {} m; part {})", probe_plan, probe_radius, s.packing.Rs, probe_part);
+        source = fmt::format("{} (radius {}: Rs = {} m; part {}{})", probe_plan, probe_radius, s.packing.Rs, probe_part, probe_kind.empty() ? "" : " " + probe_kind);
         if (probe_part == "shear") return confined_shear(program, s, probe_seed, probe_arrangements, probe_dn, plan.shear_ht, source, probe_out);
       } else {
         s = read_coarse_grain_settings(probe_config);

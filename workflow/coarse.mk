@@ -64,25 +64,34 @@ $(COARSE_DIR)/multi-contact/seed-%.dat: $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOL
 # The many-body probe (issue 33, paper/many-body.md): one resolved soft-particle pressed by 1 to 6
 # walls in each arrangement of the plan (experiments/many-body.yaml, read and checked by the tool),
 # for each of its radii and packing seeds: PROBE_DIR/RADIUS/seed-S.dat (a block per arrangement);
-# its second part, the same pressed by grains and soft-particles (RADIUS/bodies-S.dat) and sheared
-# under confinement (RADIUS/shear-S.dat).
-probe_part = $(if $(filter seed-%,$(1)),walls,$(firstword $(subst -, ,$(1))))
+# its second part, the same pressed by each kind of body of its `bodies` (RADIUS/bodies-KIND-S.dat)
+# and sheared under confinement (RADIUS/shear-S.dat).
 PROBE_PLAN ?= experiments/many-body.yaml
 PROBE_DIR ?= $(DATA)/many-body/probe
 PROBE_RUNS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN))
 .PHONY: many-body-probe
-many-body-probe: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat)  ## the many-body probe's runs (PROBE_DIR/RADIUS/seed-S.dat)
-# A run is redone when what decides the runs changes (the plan's settings, seeds, radii, delta_n,
-# arrangements, bodies and shear, and the release: a stamp; not its selection rule or validation)
-# or the settings file does, not when the tool is relinked.
-PROBE_STAMP := $(PROBE_DIR)/stamps/runs.hash
-$(eval $(call stamp_rule,$(PROBE_STAMP),$(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --runs-stamp $(VERSION))))
-$(PROBE_DIR)/%.dat: $(COARSE_CONFIG) $(PROBE_STAMP) | $(TOOLS)
-	@mkdir -p $(@D)
-	@$(RUN) $(COARSE_TOOL) multi-contact --probe $(PROBE_PLAN) --radius $(patsubst %/,%,$(dir $*)) \
-	  --part $(call probe_part,$(notdir $*)) --packing-seed $(lastword $(subst -, ,$(notdir $*))) --out $@ 2> $(basename $@).log \
-	  || { echo "many-body probe: $* FAILED (log: $(basename $@).log)"; tail -2 $(basename $@).log; exit 1; }
-	@echo "many-body probe: $@ ($$(head -1 $@ | grep -o '[0-9.]* CPU-s'))"
+many-body-probe: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat)  ## the many-body probe's runs (PROBE_DIR/RADIUS/GROUP-S.dat)
+# The runs come in groups (seed: the walls' arrangements; bodies-KIND; shear), each redone when
+# what decides it changes (softpack-coarse seeds --probe --runs-stamp: the plan's settings, seeds,
+# radii and the group's own keys, and the release; not the selection rule, the validation or
+# another group) or the settings file does, never because the tool was relinked.
+PROBE_STAMPS := $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --runs-stamp $(VERSION))
+probe_group = $(patsubst %-$(lastword $(subst -, ,$(1))),%,$(1))
+probe_options = $(if $(filter seed,$(1)),--part walls,$(if $(filter shear,$(1)),--part shear,--part bodies --kind $(patsubst bodies-%,%,$(1))))
+define probe_group_rule
+$(eval $(call stamp_rule,$(PROBE_DIR)/stamps/$(1).hash,$(2)))
+$(eval probe_targets := $(foreach r,$(PROBE_RUNS),$(if $(filter $(1),$(call probe_group,$(notdir $(r)))),$(PROBE_DIR)/$(r).dat)))
+$(if $(probe_targets),$(eval $(call probe_group_recipe,$(1))))
+endef
+define probe_group_recipe
+$(probe_targets): $(PROBE_DIR)/%.dat: $(COARSE_CONFIG) $(PROBE_DIR)/stamps/$(1).hash | $(TOOLS)
+	@mkdir -p $$(@D)
+	@$$(RUN) $$(COARSE_TOOL) multi-contact --probe $$(PROBE_PLAN) --radius $$(patsubst %/,%,$$(dir $$*)) \
+	  $(call probe_options,$(1)) --packing-seed $$(lastword $$(subst -, ,$$(notdir $$*))) --out $$@ 2> $$(basename $$@).log \
+	  || { echo "many-body probe: $$* FAILED (log: $$(basename $$@).log)"; tail -2 $$(basename $$@).log; exit 1; }
+	@echo "many-body probe: $$@ ($$$$(head -1 $$@ | grep -o '[0-9.]* CPU-s'))"
+endef
+$(foreach e,$(PROBE_STAMPS),$(eval $(call probe_group_rule,$(firstword $(subst =, ,$(e))),$(lastword $(subst =, ,$(e))))))
 
 # Its analysis (coarse/probe_fit.hpp): the candidate laws fitted and judged by the plan's rule.
 PROBE_REPORT ?= $(DATA)/many-body/report

@@ -87,10 +87,12 @@ SecondPart analyse_second_part(const ManyBodyProbe& plan, const std::vector<Prob
   SecondPart out;
   out.beta_walls = beta;
   const auto F1_walls = fit_single_contact(plan, walls);
-  for (const std::string& kind : plan.body_kinds) {
-    const std::string one = "one:" + kind;
+  for (const auto& [kind, arrangements] : plan.body_groups) {
+    const std::string one = kind == "wall" ? "one" : "one:" + kind;
+    const std::vector<ProbeWallForce>& ones = kind == "wall" ? walls : bodies;
     // 1. the single contact over the wall's, per seed, where both are above the walls' floor
     for (const auto& [radius, Rs] : plan.radii) {
+      if (kind == "wall") break;  // its single contact is the walls' own
       const double floor = plan.force_floor * fit::evaluate(F1_walls.at(radius), plan.delta_n.back());
       for (const double dn : plan.delta_n) {
         std::vector<double> r;
@@ -105,13 +107,13 @@ SecondPart analyse_second_part(const ManyBodyProbe& plan, const std::vector<Prob
     SecondPart::KindErrors& k = out.kinds[kind];
     std::map<std::string, fit::PowerLawFit> F1;
     try {
-      F1 = fit_single_contact(plan, bodies, one);
+      F1 = fit_single_contact(plan, ones, one);
     } catch (const InputError& e) {
       out.notes.push_back(fmt::format("{}: no F1, so no errors: {}", kind, e.what()));
       continue;
     }
     std::vector<std::string> several;
-    for (const std::string& a : plan.body_arrangements)
+    for (const std::string& a : arrangements)
       if (a != "one") several.push_back(a + ":" + kind);
     const ProbeLaw pairwise{"pairwise", 0.0, F1}, volumetric{"volumetric", beta, F1}, engine{"volumetric", 0.5 * beta, F1};
     k.carries_over = true;
@@ -122,7 +124,9 @@ SecondPart analyse_second_part(const ManyBodyProbe& plan, const std::vector<Prob
       if (!(k.volumetric[a].rms_log < k.pairwise[a].rms_log)) k.carries_over = false;
     }
     k.beta = fit_parameter(ProbeLaw{"volumetric", 0.0, F1}, 3.0, bodies, several, plan);
-    k.beta_se = jackknife_parameter("volumetric", 3.0, bodies, several, plan, one);
+    std::vector<ProbeWallForce> with_ones = bodies;  // the wall kind's single contact is in `walls`
+    if (kind == "wall") with_ones.insert(with_ones.end(), walls.begin(), walls.end());
+    k.beta_se = jackknife_parameter("volumetric", 3.0, with_ones, several, plan, one);
   }
   // 3. the confined shear over `one`'s
   for (const auto& [radius, Rs] : plan.radii)
@@ -160,8 +164,10 @@ SecondPart write_second_part(const ManyBodyProbe& plan, const std::string& plan_
   std::vector<ShearRow> shear;
   for (const auto& [radius, Rs] : plan.radii)
     for (const std::uint64_t seed : plan.seeds) {
-      const auto b = read_probe_file(fmt::format("{}/{}/bodies-{}.dat", probe_dir, radius, seed), radius, seed);
-      bodies.insert(bodies.end(), b.begin(), b.end());
+      for (const std::string& kind : plan.body_kinds()) {
+        const auto b = read_probe_file(fmt::format("{}/{}/bodies-{}-{}.dat", probe_dir, radius, kind, seed), radius, seed);
+        bodies.insert(bodies.end(), b.begin(), b.end());
+      }
       const auto s = read_shear_file(fmt::format("{}/{}/shear-{}.dat", probe_dir, radius, seed), radius, seed);
       shear.insert(shear.end(), s.begin(), s.end());
     }
@@ -178,13 +184,16 @@ SecondPart write_second_part(const ManyBodyProbe& plan, const std::string& plan_
   md += "## 1. One contact: the body's force over the wall's at the same Δn\n\n";
   for (const auto& [radius, Rs] : plan.radii) {
     md += fmt::format("Radius {} (Rs = {} m):\n\n| Δn |", radius, Rs);
-    for (const std::string& kind : plan.body_kinds) md += fmt::format(" {} |", kind);
+    std::vector<std::string> kinds;  // the plan's order, the walls' own kind left out
+    for (const auto& [kind, arrangements] : plan.body_groups)
+      if (a.single.count(kind)) kinds.push_back(kind);
+    for (const std::string& kind : kinds) md += fmt::format(" {} |", kind);
     md += "\n|---|";
-    for (std::size_t i = 0; i < plan.body_kinds.size(); ++i) md += "---|";
+    for (std::size_t i = 0; i < kinds.size(); ++i) md += "---|";
     md += "\n";
     for (const double dn : plan.delta_n) {
       md += fmt::format("| {} |", dn);
-      for (const std::string& kind : plan.body_kinds) {
+      for (const std::string& kind : kinds) {
         const LogRatio& r = a.single.at(kind).at(radius).at(dn);
         md += fmt::format(" {} |", ratio_text(r));
         j["single"][kind][radius][fmt::format("{}", dn)] = ratio_json(r);

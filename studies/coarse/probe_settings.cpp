@@ -58,15 +58,27 @@ std::vector<std::string> ManyBodyProbe::arrangements() const {
   return out;
 }
 
-std::vector<std::string> ManyBodyProbe::bodies() const {
+std::vector<std::string> ManyBodyProbe::body_kinds() const {
   std::vector<std::string> out;
-  for (const std::string& kind : body_kinds)
-    for (const std::string& a : body_arrangements) out.push_back(a + ":" + kind);
+  for (const auto& [kind, arrangements] : body_groups) out.push_back(kind);
   return out;
 }
 
-std::string ManyBodyProbe::runs_stamp(const std::string& release) const {
-  return sha256_of_bytes("softpack " + release + "\nmany-body probe runs\n" + runs_text).substr(0, 16);
+std::vector<std::string> ManyBodyProbe::bodies(const std::string& kind) const {
+  for (const auto& [k, arrangements] : body_groups)
+    if (k == kind) {
+      std::vector<std::string> out;
+      for (const std::string& a : arrangements) out.push_back(a + ":" + kind);
+      return out;
+    }
+  throw InputError(fmt::format("pressing body '{}' is not allowed; allowed: the plan's bodies ({})", kind, fmt::join(body_kinds(), ", ")));
+}
+
+std::vector<std::pair<std::string, std::string>> ManyBodyProbe::runs_stamps(const std::string& release) const {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [group, text] : runs_text)
+    out.emplace_back(group, sha256_of_bytes("softpack " + release + "\nmany-body probe runs " + group + "\n" + text).substr(0, 16));
+  return out;
 }
 
 CoarseGrainSettings ManyBodyProbe::settings_at(const std::string& radius) const {
@@ -94,12 +106,15 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   std::ostringstream text;
   text << c.yaml();
   p.section_text = text.str();
-  for (const char* key : {"settings", "seeds", "radii", "delta_n", "fit", "held_out", "bodies", "shear"}) {
-    if (!c.has(key)) continue;
+  const auto yaml_of = [&](const ConfigNode& n, const std::string& key) {
     std::ostringstream t;
-    t << c.at(key).yaml();
-    p.runs_text += std::string(key) + ": " + t.str() + "\n";
-  }
+    t << n.at(key).yaml();
+    return key + ": " + t.str() + "\n";
+  };
+  const std::string common = yaml_of(c, "settings") + yaml_of(c, "seeds") + yaml_of(c, "radii");
+  p.runs_text.emplace_back("seed", common + yaml_of(c, "delta_n") + yaml_of(c, "fit") + yaml_of(c, "held_out"));
+  for (const std::string& kind : c.at("bodies").keys()) p.runs_text.emplace_back("bodies-" + kind, common + yaml_of(c, "delta_n") + yaml_of(c.at("bodies"), kind));
+  p.runs_text.emplace_back("shear", common + yaml_of(c, "shear"));
   p.settings_path = c.at("settings").string();
   const std::filesystem::path settings_file =
       std::filesystem::path(p.settings_path).is_absolute() ? std::filesystem::path(p.settings_path) : std::filesystem::path(root_dir) / p.settings_path;
@@ -129,24 +144,24 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   sel.allow_only({"force_floor", "tie_factor"});
   p.force_floor = number_in(sel.at("force_floor"), 0.0, 1.0, true, true);
   p.tie_factor = number_in(sel.at("tie_factor"), 1.0, 10.0, false, false);
-  const ConfigNode bodies = c.at("bodies");
-  bodies.allow_only({"arrangements", "kinds"});
-  p.body_arrangements = names(bodies.at("arrangements"));
   const auto plain = [](const ConfigNode& list, const std::vector<std::string>& v) {
     for (const std::string& a : v)
       if (a.find(':') != std::string::npos) list.fail(fmt::format("'{}' is not allowed here; allowed: arrangement names without :BODY", a));
   };
-  plain(bodies.at("arrangements"), p.body_arrangements);
-  for (const ConfigNode& item : bodies.at("kinds").items()) {
+  const ConfigNode bodies = c.at("bodies");
+  for (const std::string& kind : bodies.keys()) {
     try {
-      p.body_kinds.push_back(parse_pressing_body(item.string()).name());
+      if (parse_pressing_body(kind).name() != kind) throw InputError(fmt::format("write it {}", parse_pressing_body(kind).name()));
     } catch (const InputError& e) {
-      item.fail(e.what());
+      bodies.fail(fmt::format("body '{}': {}", kind, e.what()));
     }
+    std::vector<std::string> arrangements = names(bodies.at(kind));
+    plain(bodies.at(kind), arrangements);
+    if (kind != "wall" && std::find(arrangements.begin(), arrangements.end(), "one") == arrangements.end())
+      bodies.at(kind).fail("'one' (the kind's single contact, its F1) must be in the list");
+    p.body_groups.emplace_back(kind, std::move(arrangements));
   }
-  if (p.body_kinds.empty()) bodies.at("kinds").fail("an empty list is not allowed; give at least one, e.g. soft");
-  if (std::find(p.body_arrangements.begin(), p.body_arrangements.end(), "one") == p.body_arrangements.end())
-    bodies.at("arrangements").fail("'one' (each kind's single contact, its F1) must be in the list");
+  if (p.body_groups.empty()) bodies.fail("no pressing body; give at least one, e.g. soft: [one, opposite]");
   const ConfigNode shear = c.at("shear");
   shear.allow_only({"arrangements", "delta_n", "ht_over_Rs"});
   p.shear_arrangements = names(shear.at("arrangements"));

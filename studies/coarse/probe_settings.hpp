@@ -25,7 +25,8 @@ struct ManyBodyProbe {
   double tie_factor = 0.0;            ///< >= 1
   /// The second part (paper/many-body.md): the arrangements again with other pressing bodies,
   /// and the confined shear of walls' arrangements.
-  std::vector<std::string> body_arrangements, body_kinds;
+  /// Each kind of pressing body (wall, grain-X, soft) with its arrangements, in the plan's order.
+  std::vector<std::pair<std::string, std::vector<std::string>>> body_groups;
   std::vector<std::string> shear_arrangements;
   std::vector<double> shear_delta_n, shear_ht;  ///< Δn; the slides ht / Rs
   std::vector<std::uint64_t> media_seeds;
@@ -33,16 +34,20 @@ struct ManyBodyProbe {
   double strain_lo = 0.0, strain_hi = 0.0;
   double bound_in_standard_errors = 0.0;
   std::string section_text;           ///< the section as read (provenance)
-  std::string runs_text;              ///< the keys that decide the runs: settings .. shear, not the analysis' and validation's
+  /// What decides each group of runs (seed: the walls' arrangements; bodies-KIND; shear), as text.
+  std::vector<std::pair<std::string, std::string>> runs_text;
 
-  /// The stamp of the runs (make's: a run is redone when it changes, not when the plan's
-  /// selection or validation do): a hash of runs_text and the release.
-  std::string runs_stamp(const std::string& release) const;
+  /// The groups of runs (seed, bodies-KIND, shear) with their stamps (make's: a group's runs are
+  /// redone when its stamp changes, not when the plan's selection, validation or another group
+  /// do): a hash of what decides them and the release.
+  std::vector<std::pair<std::string, std::string>> runs_stamps(const std::string& release) const;
+  /// The kinds of body_groups, in order.
+  std::vector<std::string> body_kinds() const;
 
   /// The fit arrangements, then the held-out ones.
   std::vector<std::string> arrangements() const;
-  /// Each body arrangement with each kind: NAME:KIND.
-  std::vector<std::string> bodies() const;
+  /// The arrangements of `kind` as NAME:KIND (InputError for a kind not in body_groups).
+  std::vector<std::string> bodies(const std::string& kind) const;
   /// The settings with the shell of radius `radius` (a name of `radii`; InputError otherwise).
   CoarseGrainSettings settings_at(const std::string& radius) const;
 };

@@ -345,22 +345,34 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("delta_n: [0.05, 0.1", "delta_n: [0.1, 0.05", "must increase");
   refused("  candidates:", "  colour: red\n  candidates:", "colour");
   refused("fit: [one, ", "fit: [", "'one'");
-  refused("kinds: [grain-1,", "kinds: [grain-y,", "allowed: wall, soft, grain-X");
+  refused("    grain-1: [one,", "    grain-y: [one,", "allowed: wall, soft, grain-X");
+  refused("    grain-1: [one,", "    grain-1.0: [one,", "write it grain-1");
+  refused("    soft: [one, opposite,", "    soft: [opposite,", "'one'");
   refused("v3_media_seeds: [315,", "v3_media_seeds: [311,", "also in media_seeds");
-  refused("arrangements: [one, opposite, tetrahedral, cube]", "arrangements: [opposite, tetrahedral, cube]", "'one'");
-  refused("arrangements: [one, opposite, orthogonal,", "arrangements: [one, opposite:soft, orthogonal,", "without :BODY");
-  const auto stamp_with = [&](const std::string& from, const std::string& to) {
+  refused("    arrangements: [one, opposite, tetrahedral, cube]", "    arrangements: [opposite, tetrahedral, cube]", "'one'");
+  refused("    soft: [one, opposite,", "    soft: [one, opposite:soft,", "without :BODY");
+  const auto stamps_with = [&](const std::string& from, const std::string& to) {
     const std::string path = ::testing::TempDir() + "/many-body-edited.yaml";
     std::ofstream(path) << std::string(text).replace(text.find(from), from.size(), to);
-    return read_many_body_probe(path, kRoot).runs_stamp("1.0");
+    return read_many_body_probe(path, kRoot).runs_stamps("1.0");
   };
-  EXPECT_EQ(stamp_with("media_seeds: [", "media_seeds: [399, "), plan.runs_stamp("1.0")) << "the validation decides no run";
-  EXPECT_EQ(stamp_with("tie_factor:", "tie_factor: 1.2 #"), plan.runs_stamp("1.0")) << "nor the selection rule";
-  EXPECT_NE(stamp_with("delta_n: [0.05, ", "delta_n: [0.04, "), plan.runs_stamp("1.0"));
-  EXPECT_NE(stamp_with("kinds: [grain-1,", "kinds: [grain-2,"), plan.runs_stamp("1.0"));
-  EXPECT_NE(plan.runs_stamp("1.1"), plan.runs_stamp("1.0"));
-  EXPECT_EQ(plan.bodies().size(), plan.body_arrangements.size() * plan.body_kinds.size());
-  EXPECT_EQ(plan.bodies().front(), plan.body_arrangements.front() + ":" + plan.body_kinds.front());
+  const auto stamps = plan.runs_stamps("1.0");
+  ASSERT_EQ(stamps.size(), 2 + plan.body_groups.size());  // seed, each bodies-KIND, shear
+  EXPECT_EQ(stamps.front().first, "seed");
+  EXPECT_EQ(stamps[1].first, "bodies-" + plan.body_groups.front().first);
+  EXPECT_EQ(stamps_with("media_seeds: [", "media_seeds: [399, "), stamps) << "the validation decides no run";
+  EXPECT_EQ(stamps_with("tie_factor:", "tie_factor: 1.2 #"), stamps) << "nor the selection rule";
+  const auto dn = stamps_with("delta_n: [0.05, ", "delta_n: [0.04, ");
+  EXPECT_NE(dn[0], stamps[0]);
+  EXPECT_NE(dn[1], stamps[1]);
+  EXPECT_EQ(dn.back(), stamps.back()) << "the shear has its own delta_n";
+  const auto soft = stamps_with("soft: [one, opposite,", "soft: [one,");
+  EXPECT_NE(soft[3], stamps[3]) << "the soft kind's arrangements";
+  EXPECT_EQ(soft[1], stamps[1]) << "another kind's runs stay";
+  EXPECT_EQ(soft[0], stamps[0]);
+  EXPECT_NE(plan.runs_stamps("1.1"), stamps);
+  EXPECT_EQ(plan.bodies("soft").front(), "one:soft");
+  EXPECT_THROW(plan.bodies("grain-7"), InputError);
 }
 
 }  // namespace

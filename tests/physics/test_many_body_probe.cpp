@@ -110,7 +110,7 @@ TEST(ManyBodyProbeLaws, TheSecondPartReadsRatiosErrorsAndTheShearAsMade) {
   plan.radii = {{"r", 0.016}};
   plan.delta_n = {0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4};
   plan.force_floor = 0.01;
-  plan.body_arrangements = {"one", "opposite", "cube"}, plan.body_kinds = {"grain-1"};
+  plan.body_groups = {{"grain-1", {"one", "opposite", "cube"}}};
   plan.shear_arrangements = {"one", "cube"}, plan.shear_delta_n = {0.2}, plan.shear_ht = {0.0025, 0.005, 0.1};
   const fit::PowerLawFit wall = eq7(40.0, 2.5, -0.05), grain = eq7(20.0, 2.5, -0.025);
   const ProbeLaw truth{"volumetric", 0.6, {{"r", grain}}};
