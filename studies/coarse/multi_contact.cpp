@@ -14,13 +14,14 @@
 namespace softpack {
 namespace {
 
-constexpr const char* kAllowed = "one, opposite, orthogonal, triangle, tetrahedral, square, pyramid, cube, opposite-half, orthogonal-half, random-N (N = 2 to 6)";
+constexpr const char* kAllowed = "one, opposite, orthogonal, triangle, tetrahedral, square, pyramid, cube, opposite-half, orthogonal-half, random-N (N = 2 to 12)";
 
-// random-N: N unit vectors, uniform on the sphere, each at least 60 degrees from the others
+// random-N: N unit vectors, uniform on the sphere, each at least 60 degrees from the others (40
+// above six: twelve caps of 60 degrees leave no room to draw them at random)
 // (drawn one after the other, all again after 1 000 refusals of one), turned so that the first is +z.
 std::vector<ProbeWall> random_walls(int n, std::uint64_t seed) {
   Random rng(seed * 0x9e3779b97f4a7c15ULL + static_cast<std::uint64_t>(n));
-  const double cos_min = std::cos(std::numbers::pi / 3.0);
+  const double cos_min = std::cos(std::numbers::pi / (n <= 6 ? 3.0 : 4.5));
   const auto direction = [&] {
     for (;;) {
       const Vec3 v = rng.in_ball(1.0);
@@ -43,6 +44,17 @@ std::vector<ProbeWall> random_walls(int n, std::uint64_t seed) {
   for (const Vec3& e : u) walls.push_back({(turn * e).normalized(), 1.0});
   walls[0].u = Vec3::UnitZ();  // exactly
   return walls;
+}
+
+// N of "random-N" (2 <= N <= 12, no leading zero), else 0.
+int random_count(const std::string& name) {
+  if (!name.starts_with("random-") || name.size() < 8 || name.size() > 9 || name[7] == '0') return 0;
+  int n = 0;
+  for (std::size_t i = 7; i < name.size(); ++i) {
+    if (name[i] < '0' || name[i] > '9') return 0;
+    n = 10 * n + (name[i] - '0');
+  }
+  return n >= 2 && n <= 12 ? n : 0;
 }
 
 }  // namespace
@@ -87,7 +99,7 @@ ProbeArrangement builtin_arrangement(const std::string& full_name, std::uint64_t
   else if (name == "cube") w = {{z, 1.0}, {-z, 1.0}, {x, 1.0}, {-x, 1.0}, {y, 1.0}, {-y, 1.0}};
   else if (name == "opposite-half") w = {{z, 1.0}, {-z, 0.5}};
   else if (name == "orthogonal-half") w = {{z, 1.0}, {x, 0.5}};
-  else if (name.starts_with("random-") && name.size() == 8 && name[7] >= '2' && name[7] <= '6') w = random_walls(name[7] - '0', seed);
+  else if (const int n = random_count(name); n > 0) w = random_walls(n, seed);
   else throw InputError(fmt::format("arrangement '{}' is not allowed; allowed: {}, each alone or as NAME:BODY (BODY: wall, soft, grain-X)", full_name, kAllowed));
   return a;
 }

@@ -18,8 +18,9 @@
 //   pyramid        the cube's faces but -y (five)
 //   cube           the six faces of a cube: +z, -z, +x, -x, +y, -y
 //   opposite-half, orthogonal-half   as opposite, orthogonal with the second wall at w = 1/2
-//   random-N       N directions (2 <= N <= 6) drawn uniformly on the sphere from the packing's
-//                  seed, each at least 60 degrees from the others, the first turned onto +z
+//   random-N       N directions (2 <= N <= 12) drawn uniformly on the sphere from the packing's
+//                  seed, each at least 60 degrees from the others (40 for N > 6), the first
+//                  turned onto +z
 //
 // NAME:BODY presses with another body at every contact of arrangement NAME (PressingBody): a
 // held solid sphere (grain-X, radius X Rs, touching the shell from outside at the start) or a

@@ -252,7 +252,11 @@ TEST(MultiContactProbe, TheArrangementsAreWhatTheirNamesSay) {
       EXPECT_NE(std::string(e.what()).find("allowed: wall, soft, grain-X"), std::string::npos) << e.what();
     }
   }
-  for (const char* bad : {"two", "random-1", "random-7", "random-", "Cube"}) {
+  const ProbeArrangement r12 = builtin_arrangement("random-12", 5);
+  ASSERT_EQ(r12.walls.size(), 12u);
+  for (std::size_t k = 0; k < 12; ++k)
+    for (std::size_t l = 0; l < k; ++l) EXPECT_GE(angle(r12.walls[k], r12.walls[l]), 40.0 - 1e-9);
+  for (const char* bad : {"two", "random-1", "random-13", "random-07", "random-", "random-6x", "Cube"}) {
     try {
       builtin_arrangement(bad, 0);
       ADD_FAILURE() << bad << " was taken";
