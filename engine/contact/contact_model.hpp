@@ -191,9 +191,9 @@ struct ContactModel {
   static double normal_energy(const Params& p, const Constants<double>& k, double h, double s1, double s2) {
     return Normal::energy(p.normal, k.normal, h, s1, s2);
   }
-  /// The tangential stiffness kt [N/m] at overlap h.
-  static double kt(const Params& p, const Constants<double>& k, double h) {
-    return Tangential::stiffness(p.tangential, k.tangential, Normal::evaluate(p.normal, k.normal, at_overlap(h, 0.0, 0.0)));
+  /// The tangential stiffness kt [N/m] at overlap h and the bodies' states (as the force's).
+  static double kt(const Params& p, const Constants<double>& k, double h, double s1, double s2) {
+    return Tangential::stiffness(p.tangential, k.tangential, Normal::evaluate(p.normal, k.normal, at_overlap(h, s1, s2)));
   }
 
  private:

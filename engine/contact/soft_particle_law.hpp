@@ -86,6 +86,9 @@ enum class GrainContactRule { wall, reduced_radius };  // int, as contact/contac
 /// `make many-body-probe`); between two soft-particles ε is the mean of their two, unmeasured.
 struct ManyBodyLaw {
   double beta = 0.0;  ///< β, of the other contacts' cap volumes counted
+  /// kt times the contact's normal gain Fn / Eq. 7 (the confined shear of the probe: kt grows with
+  /// confinement as Fn does); false: kt as measured on one contact (Eq. 8).
+  bool tangential_gain = false;
 };
 
 /// v(δ) = δ² (3 − δ) / 4: a cap of depth δ R of a sphere of radius R, over the sphere's volume.
@@ -244,8 +247,9 @@ struct SoftDamping {
   }
 };
 
-/// The measured tangential stiffness kt = S_t (a' Δn^b' + c') (Eq. 8) on the Tsuji spring,
-/// capped at mu_soft(Δn) Fn; below δ (kt = 0) the contact carries nothing and keeps no spring.
+/// The measured tangential stiffness kt = S_t (a' Δn^b' + c') (Eq. 8) on the Tsuji spring (times
+/// the many-body law's normal gain when it has tangential_gain), capped at mu_soft(Δn) Fn; below δ
+/// (kt = 0) the contact carries nothing and keeps no spring.
 struct SoftTangential {
   template <class T>
   struct Constants {
@@ -260,8 +264,11 @@ struct SoftTangential {
   };
   static Params params(const ContactSetting& s) { return {s.soft_laws}; }
   static Constants<double> constants(const Params& p, const ContactPartners& b, const SoftNormal::Constants<double>& normal);
-  static double stiffness(const Params&, const Constants<double>& k, const SoftNormal::Eval& e) {
-    return e.law->tangential ? k.kt_scale * (*e.law->tangential)(e.dn) : 0.0;
+  /// Eq. 8 at the contact's Δn, times the normal gain where the many-body law says so.
+  static double stiffness(const Params& p, const Constants<double>& k, const SoftNormal::Eval& e) {
+    if (!e.law->tangential) return 0.0;
+    const double kt = k.kt_scale * (*e.law->tangential)(e.dn);
+    return p.laws->many_body && p.laws->many_body->tangential_gain ? e.gain * kt : kt;
   }
   static void limit(const Params&, const Constants<double>&, const SoftNormal::Eval& e, double kt, V3<double>& Ft, V3<double>& xi) {
     if (kt > 0.0) tsuji::coulomb_limit(Ft, xi, kt, e.law->mu_at(e.dn) * e.Fn);

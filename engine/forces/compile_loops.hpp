@@ -232,7 +232,9 @@ class ModelOf final : public SceneModel {
   double normal_energy(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const override {
     return Model::normal_energy(params_, constants_at<Model>(a, k), h, s1, s2);
   }
-  double kt(const ConstantArrays& a, std::size_t k, double h) const override { return Model::kt(params_, constants_at<Model>(a, k), h); }
+  double kt(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const override {
+    return Model::kt(params_, constants_at<Model>(a, k), h, s1, s2);
+  }
   double overlap_scale(const ConstantArrays& a, std::size_t k, double r_min) const override {
     if constexpr (MeasuredRangeModel<Model>) return Model::Normal::overlap_scale(constants_at<Model>(a, k).normal);
     else return r_min;

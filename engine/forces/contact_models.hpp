@@ -57,7 +57,8 @@ class SceneModel {
   // One closed contact k of array `a`, at overlap h, its bodies' states s1, s2.
   virtual double Fn(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const = 0;  ///< [N]
   virtual double normal_energy(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const = 0;  ///< [J]
-  virtual double kt(const ConstantArrays& a, std::size_t k, double h) const = 0;  ///< tangential stiffness [N/m]
+  /// Tangential stiffness [N/m] at overlap h, the bodies' states s1, s2 (a model with a body state).
+  virtual double kt(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const = 0;
   /// The length an overlap is measured against: `r_min` (the smaller sphere's radius) unless
   /// the model says otherwise (the soft-particle model: its R, so that h / R is Δn).
   virtual double overlap_scale(const ConstantArrays& a, std::size_t k, double r_min) const = 0;

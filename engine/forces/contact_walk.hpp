@@ -27,7 +27,7 @@ struct ClosedContact {
   double Fn() const { return model->Fn(*constants, k, h, body1, body2); }
   double normal_energy() const { return model->normal_energy(*constants, k, h, body1, body2); }
   /// The tangential stiffness kt [N/m] (Eq. 5; Eq. 8 for a soft-particle).
-  double kt() const { return model->kt(*constants, k, h); }
+  double kt() const { return model->kt(*constants, k, h, body1, body2); }
   /// The spring's elastic energy, 1/2 kt |xi|^2 [J] (0 without friction).
   double spring_energy() const { return spring ? tsuji::energy(kt(), v3(*spring)) : 0.0; }
   /// The length the overlap is measured against (the smaller sphere's radius; a soft-particle's

@@ -26,8 +26,9 @@ using Keys = std::vector<std::string>;
 constexpr const char* kFormat = "softpack-laws";
 constexpr const char *kForce = "N", *kStiffness = "N/m", *kOne = "1", *kMetre = "m";
 const Keys kTopKeys = {"format", "version", "reference_radius", "models", "scenes", "mixing", "many_body", "provenance"};
-const Keys kManyBodyKeys = {"form", "beta", "source"};
+const Keys kManyBodyKeys = {"form", "beta", "tangential", "source"};
 const Keys kManyBodyForms = {"volumetric"};
+const Keys kManyBodyTangential = {"pairwise", "gain"};
 const Keys kSceneNames = {"soft-solid", "soft-soft"};
 const Keys kSceneKeys = {"normal", "tangential", "friction", "normal_scaling", "tangential_scaling"};
 const Keys kLawKeys = {"a", "b", "c", "delta", "delta_n_range"};
@@ -76,7 +77,8 @@ json file_json(const LawFile& f) {
   if (f.many_body)
     out["models"]["many_body"] =
         "volumetric: Fn_k = X(d*) a(dn_k) / a(d*), v(d*) = v(dn_k) + beta (E - v(dn_k)), v(d) = d^2 (3 - d) / 4, a(d) = 2d - d^2, "
-        "E the sum of v over the soft-particle's contacts";
+        "E the sum of v over the soft-particle's contacts" +
+        std::string(f.many_body->tangential == "gain" ? "; kt_k = Eq. 8 at dn_k times Fn_k / X(dn_k)" : "");
   json scenes = json::object();
   for (const auto& [name, s] : f.scenes) {
     json j;
@@ -98,7 +100,9 @@ json file_json(const LawFile& f) {
     out["mixing"] = {{"rule", f.mixing->rule},
                      {"checked_ratio", num(f.mixing->checked_ratio)},
                      {"deviation", value_json(f.mixing->deviation, kOne)}};
-  if (f.many_body) out["many_body"] = {{"form", f.many_body->form}, {"beta", value_json(f.many_body->beta, kOne)}, {"source", f.many_body->source}};
+  if (f.many_body)
+    out["many_body"] = {{"form", f.many_body->form}, {"beta", value_json(f.many_body->beta, kOne)}, {"tangential", f.many_body->tangential},
+                        {"source", f.many_body->source}};
   const LawFileProvenance& p = f.provenance;
   out["provenance"] = {{"study", p.study},
                        {"seeds", p.seeds},
@@ -345,6 +349,7 @@ class Reader {
       const json& beta = need(*m, "many_body", "beta", "{\"value\": 0 <= beta <= 10, \"error\", \"unit\": '1'}");
       mb.beta = value(beta, "many_body.beta", kOne, false);
       if (!(mb.beta.value >= 0.0 && mb.beta.value <= 10.0)) refuse("many_body.beta.value", beta["value"], "0 <= beta <= 10");
+      if (const json* t = find(*m, "tangential")) mb.tangential = literal(*t, "many_body.tangential", kManyBodyTangential);
       if (const json* s = find(*m, "source")) mb.source = text(*s, "many_body.source");
       f.many_body = mb;
     }

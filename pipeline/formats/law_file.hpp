@@ -18,7 +18,8 @@
 //        "tangential_scaling": {the same}},                                           (optional)
 //      "soft-soft": {…}},
 //    "mixing": {"rule": "reduced-radius", "checked_ratio", "deviation": {…, "unit": "1"}} (optional),
-//    "many_body": {"form": "volumetric", "beta": {…, "unit": "1"}, "source": text}   (optional; version 2),
+//    "many_body": {"form": "volumetric", "beta": {…, "unit": "1"}, "tangential": "pairwise" | "gain",
+//                  "source": text}   (optional; version 2; tangential absent: pairwise),
 //    "provenance": {"study", "seeds": [...], "code_version", "created", "notes"}}
 //
 // NaN is written as null and read back as NaN: an "error" may always be null (not known), a
@@ -94,7 +95,8 @@ struct MixingRule {
 struct ManyBodyFit {
   std::string form = "volumetric";
   LawValue beta;
-  std::string source;  ///< where it was fitted (the probe's plan and report)
+  std::string source;                   ///< where it was fitted (the probe's plan and report)
+  std::string tangential = "pairwise";  ///< "gain": kt times the normal gain (absent: pairwise)
 };
 
 struct LawFileProvenance {

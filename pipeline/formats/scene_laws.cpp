@@ -79,7 +79,7 @@ SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source)
   out.source = source;
   if (auto it = f.scenes.find("soft-solid"); it != f.scenes.end()) out.soft_solid = scene_law(it->second);
   if (auto it = f.scenes.find("soft-soft"); it != f.scenes.end()) out.soft_soft = scene_law(it->second);
-  if (f.many_body) out.many_body = ManyBodyLaw{f.many_body->beta.value};
+  if (f.many_body) out.many_body = ManyBodyLaw{f.many_body->beta.value, f.many_body->tangential == "gain"};
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "formats/law_file.hpp"
+#include "forces/contact_walk.hpp"
 #include "sim/simulation.hpp"
 #include "support/scenes.hpp"
 
@@ -24,9 +25,9 @@ const LawFile& pairwise_file() {
   return f;
 }
 
-SoftParticleLaws laws(bool many_body) {
+SoftParticleLaws laws(bool many_body, bool kt_gain = false) {
   LawFile f = pairwise_file();
-  if (many_body) f.version = 2, f.many_body = ManyBodyFit{"volumetric", {kBeta, 0.0}, "test"};
+  if (many_body) f.version = 2, f.many_body = ManyBodyFit{"volumetric", {kBeta, 0.0}, "test", kt_gain ? "gain" : "pairwise"};
   return soft_particle_laws(f, kLaws);
 }
 
@@ -42,9 +43,9 @@ double depth(double eps) {  // v(δ) = eps by bisection
   return 0.5 * (lo + hi);
 }
 
-SceneDef soft_scene(bool many_body, bool friction) {
+SceneDef soft_scene(bool many_body, bool friction, bool kt_gain = false) {
   SceneDef s = testing::basic_scene();
-  s.effects.soft_particles = SoftParticlesDef{laws(many_body), GrainContactRule::wall, SoftParticlesDef::BeyondRange::report};
+  s.effects.soft_particles = SoftParticlesDef{laws(many_body, kt_gain), GrainContactRule::wall, SoftParticlesDef::BeyondRange::report};
   s.effects.friction = friction;
   return s;
 }
@@ -58,8 +59,8 @@ ParticleDef soft_particle(const Vec3& x, double r) {
 
 // A soft-particle of radius R at the origin, held, pressed to dn by the plane z = -R (1 - dn) and,
 // with `two`, by z = R (1 - dn) as well.
-SceneDef between_walls(bool many_body, double R, double dn, bool two) {
-  SceneDef s = soft_scene(many_body, false);
+SceneDef between_walls(bool many_body, double R, double dn, bool two, bool kt_gain = false) {
+  SceneDef s = soft_scene(many_body, kt_gain, kt_gain);
   s.particles = {soft_particle(Vec3::Zero(), R)};
   s.planes.push_back(PlaneDef{"floor", Vec3(0, 0, -R * (1.0 - dn)), Vec3::UnitZ(), 0});
   if (two) s.planes.push_back(PlaneDef{"ceiling", Vec3(0, 0, R * (1.0 - dn)), -Vec3::UnitZ(), 0});
@@ -88,6 +89,29 @@ TEST(ManyBodySoftParticles, TwoOppositeWallsPressByTheLawWrittenOut) {
     EXPECT_NEAR(-sim.plane_loads()[0].force.z(), expected, 1e-9 * expected) << dn;
     EXPECT_NEAR(sim.plane_loads()[1].force.z(), expected, 1e-9 * expected) << dn;
     EXPECT_NEAR(sim.particles().F[0].norm(), 0.0, 1e-12 * expected);
+  }
+}
+
+// kt (Eq. 8, the law file's) with tangential "gain": times the contact's normal gain, Fn over
+// Eq. 7 (the probe's confined shear); one contact keeps Eq. 8's kt exactly.
+TEST(ManyBodySoftParticles, TheTangentialGainScalesKtAsTheNormalForce) {
+  const double R0 = pairwise_file().reference_radius;
+  const LawFit& t = *pairwise_file().scenes.at("soft-solid").tangential;
+  const auto eq8 = [&](double dn) { return t.a.value * std::pow(dn, t.b.value) + t.c.value; };
+  const auto kts = [](const Simulation& sim) {
+    std::vector<double> out;
+    for_each_closed_contact(sim.world(), sim.contact_lists(), sim.force_field(), [&](const ClosedContact& c) { out.push_back(c.kt()); });
+    return out;
+  };
+  for (const double dn : {0.15, 0.25, 0.35}) {
+    const double star = depth(v(dn) + kBeta * v(dn));
+    const double gain = eq7(star) * a(dn) / a(star) / eq7(dn);
+    const auto two = kts(Simulation(between_walls(true, R0, dn, true, true)));
+    ASSERT_EQ(two.size(), 2u);
+    for (const double kt : two) EXPECT_NEAR(kt, gain * eq8(dn), 1e-9 * gain * eq8(dn)) << dn;
+    const auto one = kts(Simulation(between_walls(true, R0, dn, false, true)));
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_NEAR(one[0], eq8(dn), 1e-9 * eq8(dn)) << dn;
   }
 }
 

@@ -147,7 +147,7 @@ TEST(SoftParticles, TwoRadiiUseTheLawFilesMixingRuleAndASolidSphereTheChosenOne)
 // many-body law (law file version 2, issue 33), whose force reads every contact of its bodies.
 void momenta_of_a_mixed_cloud(bool many_body) {
   SceneDef s = soft_scene(true);
-  if (many_body) s.effects.soft_particles->laws.many_body = ManyBodyLaw{0.9};
+  if (many_body) s.effects.soft_particles->laws.many_body = ManyBodyLaw{0.9, true};  // with the tangential gain
   s.effects.rotation = true;
   s.effects.restitution = 0.6;
   const double R0 = law_file().reference_radius;

@@ -158,6 +158,12 @@ TEST(LawFile, TheManyBodyLawOfVersion2GoesRoundAndVersion1StillReads) {
   EXPECT_EQ(g.many_body->source, "experiments/many-body.yaml");
   ASSERT_TRUE(soft_particle_laws(g, "law.json").many_body);
   EXPECT_EQ(soft_particle_laws(g, "law.json").many_body->beta, 0.896);
+  EXPECT_EQ(g.many_body->tangential, "pairwise");
+  EXPECT_FALSE(soft_particle_laws(g, "law.json").many_body->tangential_gain);
+  f.many_body->tangential = "gain";
+  write_law_file(dir / "law.json", f);
+  EXPECT_EQ(read_law_file(dir / "law.json").many_body->tangential, "gain");
+  EXPECT_TRUE(soft_particle_laws(read_law_file(dir / "law.json"), "law.json").many_body->tangential_gain);
   const LawFile old = read_law_file(SOFTPACK_SOURCE_DIR "/data/radius/report/laws.json");
   EXPECT_EQ(old.version, 1);
   EXPECT_FALSE(old.many_body);
@@ -229,6 +235,8 @@ const std::vector<Mistake> kMistakes = {
     {"NoFormat", [](json& j) { j.erase("format"); }, {"format: missing", "allowed: 'softpack-laws'"}},
     {"Version3", [](json& j) { j["version"] = 3; }, {"version: 3 is newer than this build reads", "allowed: 2"}},
     {"Version0", [](json& j) { j["version"] = 0; }, {"version: 0 is not allowed", "allowed: 1 to 2"}},
+    {"ManyBodyTangentialUnknown", [](json& j) { j["version"] = 2, j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}, {"tangential", "twice"}}; },
+     {"many_body.tangential: 'twice' is not allowed", "gain"}},
     {"ManyBodyInVersion1", [](json& j) { j["version"] = 1, j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}}; },
      {"many_body: not allowed in a version 1 file", "allowed: version 2"}},
     {"ManyBodyForm", [](json& j) { j["many_body"] = {{"form", "ratio"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}}; },
