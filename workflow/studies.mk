@@ -89,6 +89,8 @@ plan=$$($(STUDY_TOOL) plan --study $(1) --data $(DATA)) || exit 2; eval "$$plan"
 mkdir -p $$study_dir/report; \
 $(STUDY_TOOL) report --study $(1) --data $$study_dir --out-dir $$study_dir/report > /dev/null || exit 2; \
 for fig in $$study_figures; do script=$${fig%%:*}; rest=$${fig#*:}; data=$${rest%%:*}; name=$${rest#*:}; \
+  if [ ! -f $$study_dir/report/$$data ]; then \
+    echo "study $(1): the figure $$name is not drawn: no $$study_dir/report/$$data (its setting has not run)"; continue; fi; \
   for ext in pdf png; do \
     gnuplot -e "data='$$study_dir/report/$$data'; out='$$study_dir/report/$$name.tmp.$$ext'" $$script \
     && mv $$study_dir/report/$$name.tmp.$$ext $$study_dir/report/$$name.$$ext \
