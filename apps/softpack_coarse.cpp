@@ -166,10 +166,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"walls", "bodies", "shear"}))
       ->needs(probe_plan_opt);
   std::string probe_kind;
-  probe_cmd->add_option("--kind", probe_kind, "with --part bodies: which of the plan's pressing bodies (wall, grain-X, soft)");
+  probe_cmd->add_option("--kind", probe_kind, "with --part bodies: which of the plan's pressing bodies (wall, grain-X, soft)")->needs(probe_plan_opt);
   probe_cmd->add_option("--packing-seed", probe_seed, "seed of the packing (and of random-N's directions)")->required()->check(seed_check());
   probe_cmd->add_option("--arrangements", probe_arrangements,
-                        "one, opposite, orthogonal, triangle, tetrahedral, square, pyramid, cube, opposite-half, orthogonal-half, random-N (N = 2-6); "
+                        "one, opposite, orthogonal, triangle, tetrahedral, square, pyramid, cube, opposite-half, orthogonal-half, random-N (N = 2-12); "
                         "each may end in :BODY (wall, soft, grain-X: a grain of radius X Rs)");
   probe_cmd->add_option("--delta-n", probe_dn, "Delta_n of the arrangement, increasing (wall k's: w_k Delta_n)");
   probe_cmd->add_option("--out", probe_out, "text file: a block per arrangement, rows: walls delta_n Fn_1 ... Fn_walls")->required();
@@ -200,7 +200,7 @@ int main(int argc, char** argv) {
   seeds_cmd->add_option("--probe", seeds_probe, "instead: the many-body probe's runs, RADIUS/GROUP-S (GROUP: seed, bodies-KIND, shear; e.g. experiments/many-body.yaml)")
       ->excludes(seeds_config_opt);
   std::string runs_stamp_release;
-  seeds_cmd->add_option("--runs-stamp", runs_stamp_release, "with --probe: print GROUP=STAMP of its groups of runs for this release instead (for make)");
+  auto* runs_stamp_opt = seeds_cmd->add_option("--runs-stamp", runs_stamp_release, "with --probe: print GROUP=STAMP of its groups of runs for this release instead (for make)");
   bool medium_text = false;  // what a medium depends on, as the medium file records it (maintenance)
   seeds_cmd->add_flag("--medium-text", medium_text)->group("");
   std::string stamp_config, release;
@@ -213,9 +213,11 @@ int main(int argc, char** argv) {
       if (seeds_probe.empty() == seeds_config.empty()) throw InputError("seeds: give --config or --probe");
       if (!seeds_probe.empty()) {
         const ManyBodyProbe plan = read_many_body_probe(seeds_probe);
-        const auto groups = plan.runs_stamps(runs_stamp_release.empty() ? "-" : runs_stamp_release);
+        const bool stamps = runs_stamp_opt->count() > 0;
+        if (stamps && runs_stamp_release.empty()) throw InputError("seeds: --runs-stamp '' is not allowed; allowed: the release, e.g. 0.6.1");
+        const auto groups = plan.runs_stamps(stamps ? runs_stamp_release : "-");
         for (const auto& [group, stamp] : groups) {
-          if (!runs_stamp_release.empty()) {
+          if (stamps) {
             fmt::print("{}={} ", group, stamp);
             continue;
           }

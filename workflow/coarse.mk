@@ -69,6 +69,7 @@ $(COARSE_DIR)/multi-contact/seed-%.dat: $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOL
 PROBE_PLAN ?= experiments/many-body.yaml
 PROBE_DIR ?= $(DATA)/many-body/probe
 PROBE_RUNS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN))
+PROBE_RUNS := $(PROBE_RUNS)
 .PHONY: many-body-probe
 many-body-probe: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat)  ## the many-body probe's runs (PROBE_DIR/RADIUS/GROUP-S.dat)
 # The runs come in groups (seed: the walls' arrangements; bodies-KIND; shear), each redone when

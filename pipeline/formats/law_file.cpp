@@ -350,6 +350,13 @@ class Reader {
       mb.beta = value(beta, "many_body.beta", kOne, false);
       if (!(mb.beta.value >= 0.0 && mb.beta.value <= 10.0)) refuse("many_body.beta.value", beta["value"], "0 <= beta <= 10");
       if (const json* t = find(*m, "tangential")) mb.tangential = literal(*t, "many_body.tangential", kManyBodyTangential);
+      // the gain Fn / Eq. 7 grows without bound as Eq. 7 falls to 0 at its onset: kt stays finite
+      // only where Eq. 8 has fallen to 0 by then
+      for (const auto& [name, laws] : f.scenes)
+        if (mb.tangential == "gain" && laws.tangential && laws.tangential->delta.value < laws.normal.delta.value)
+          fail("many_body.tangential", fmt::format("'gain' is not allowed with scenes.{}.tangential.delta ({}) below its normal delta ({}); allowed: "
+                                                   "pairwise, or a tangential onset at or above the normal one",
+                                                   name, laws.tangential->delta.value, laws.normal.delta.value));
       if (const json* s = find(*m, "source")) mb.source = text(*s, "many_body.source");
       f.many_body = mb;
     }

@@ -27,7 +27,9 @@
 // resolved soft-particle of the same radius (soft: its packing of seed 1000 S + k for contact k,
 // its shell moved in and then held, the measurement's soft-soft scene). Body k's force is the
 // wall's load, the force of the centre's grains on the grain, or the load on the soft-particle's
-// shell, along u_k.
+// shell, along u_k. Held grains of neighbouring contacts may overlap each other (large grains,
+// deep Δn), as the walls of the cube intersect: the soft-particle's boundary is what is measured;
+// their mutual forces do not enter body k's force (its contacts with the soft-particle's grains).
 //
 // The confined shear (measure_confined_shear): from each state at Δn of a walls' arrangement,
 // the first wall (+z) slides along +x to each ht in turn, each relaxed; then the next Δn starts

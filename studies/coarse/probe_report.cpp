@@ -136,15 +136,18 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     std::filesystem::remove(laws_path);
     md += "\nNo law file: the engine runs the volumetric form only, once the rule lets a law in.\n";
   }
-  // the second part (coarse/probe_second.hpp): the walls' β tested on other bodies and in shear
-  for (const ProbeCandidate& c : a.candidates)
-    if (c.law.name == "volumetric") {
-      write_second_part(plan, plan_path, probe_dir, walls, c.law.parameter, out_dir);
-      md += fmt::format("\nIts second part (other pressing bodies, shear under confinement): `{}/second-part.md`.\n", out_dir);
-    }
-  write_file_atomically(out_dir + "/probe.md", md);
   write_file_atomically(out_dir + "/probe.json", j.dump(2) + "\n");
   write_file_atomically(out_dir + "/probe.dat", dat);
+  // the second part (coarse/probe_second.hpp): the walls' β tested on other bodies and in shear;
+  // what stops it is said in probe.md, which is written whatever happens to it
+  for (const ProbeCandidate& c : a.candidates)
+    if (c.law.name == "volumetric") try {
+      write_second_part(plan, plan_path, probe_dir, walls, c.law.parameter, out_dir);
+      md += fmt::format("\nIts second part (other pressing bodies, shear under confinement): `{}/second-part.md`.\n", out_dir);
+    } catch (const InputError& e) {
+      md += fmt::format("\nIts second part could not be analysed: {}\n", e.what());
+    }
+  write_file_atomically(out_dir + "/probe.md", md);
   return a;
 }
 

@@ -40,7 +40,7 @@ double first_force(const std::vector<ProbeWallForce>& f, const std::string& radi
 struct Chain {
   double kt = std::nan(""), mu = std::nan(""), Fn0 = std::nan("");
 };
-Chain chain(std::vector<ShearRow> rows, double Rs, double ht_last) {
+Chain chain(std::vector<ShearRow> rows, double Rs, double ht_window, double ht_last) {
   std::sort(rows.begin(), rows.end(), [](const ShearRow& a, const ShearRow& b) { return a.ht < b.ht; });
   Chain c;
   if (rows.empty() || rows.front().ht != 0.0) return c;
@@ -48,7 +48,7 @@ Chain chain(std::vector<ShearRow> rows, double Rs, double ht_last) {
   c.Fn0 = zero.Fn;
   double num = 0.0, den = 0.0;
   for (const ShearRow& r : rows)
-    if (r.ht > 0.0 && r.ht <= 0.005 + 1e-12) num += (r.Ft - zero.Ft) * r.ht * Rs, den += r.ht * Rs * r.ht * Rs;
+    if (r.ht > 0.0 && r.ht <= ht_window * (1.0 + 1e-12)) num += (r.Ft - zero.Ft) * r.ht * Rs, den += r.ht * Rs * r.ht * Rs;
   if (den > 0.0) c.kt = num / den;
   if (same(rows.back().ht, ht_last) && rows.back().Fn > 0.0) c.mu = rows.back().Ft / rows.back().Fn;
   return c;
@@ -138,7 +138,7 @@ SecondPart analyse_second_part(const ManyBodyProbe& plan, const std::vector<Prob
           std::vector<ShearRow> rows;
           for (const ShearRow& r : shear)
             if (r.radius == radius && r.arrangement == a && r.seed == seed && same(r.delta_n, dn)) rows.push_back(r);
-          chains[a][seed] = chain(rows, Rs, plan.shear_ht.back());
+          chains[a][seed] = chain(rows, Rs, plan.shear_ht[1], plan.shear_ht.back());
         }
       for (const std::string& a : plan.shear_arrangements) {
         SecondPart::Shear& s = out.shear[radius][a][dn];
@@ -147,6 +147,8 @@ SecondPart analyse_second_part(const ManyBodyProbe& plan, const std::vector<Prob
         for (const std::uint64_t seed : plan.seeds) {
           const Chain &c = chains[a][seed], &o = chains["one"][seed];
           if (c.kt > 0.0 && o.kt > 0.0) kt.push_back(c.kt / o.kt);
+          else if (a != "one")
+            out.notes.push_back(fmt::format("{} {} at Δn {}, seed {}: kt {:.4g} N/m, one's {:.4g}: no kt ratio", radius, a, dn, seed, c.kt, o.kt));
           if (c.mu > 0.0 && o.mu > 0.0) mu.push_back(c.mu / o.mu);
           if (c.Fn0 > 0.0 && o.Fn0 > 0.0) Fn.push_back(c.Fn0 / o.Fn0);
           if (std::isfinite(c.kt) && std::isfinite(c.mu) && std::isfinite(o.kt) && std::isfinite(o.mu))
@@ -217,7 +219,7 @@ SecondPart write_second_part(const ManyBodyProbe& plan, const std::string& plan_
   md += "\n| kind | β refitted on its arrangements (diagnosis) | volumetric carries over |\n|---|---|---|\n";
   for (const auto& [kind, k] : a.kinds) md += fmt::format("| {} | {:.3f} ± {:.3f} | {} |\n", kind, k.beta, k.beta_se, k.carries_over ? "yes" : "no");
   md += "\n## 3. Shear under confinement, over the arrangement `one` at the same Δn\n\n"
-        "kt: slope of Ft − Ft(0) over ht ≤ 0.005 Rs; μ: Ft / Fn at the largest ht; Fn: the first wall's at ht = 0. The engine "
+        "kt: slope of Ft − Ft(0) over the plan's first two ht (ht ≤ " + fmt::format("{}", plan.shear_ht[1]) + " Rs); μ: Ft / Fn at the largest ht; Fn: the first wall's at ht = 0. The engine "
         "predicts kt and μ ratios of 1.\n\n"
         "| radius | arrangement | Δn | Fn / Fn_one | kt [N/m] | kt / kt_one | μ | μ / μ_one |\n|---|---|---|---|---|---|---|---|\n";
   for (const auto& [radius, by_a] : a.shear)

@@ -1,6 +1,6 @@
 // The many-body probe's second part (issue 33, items 1 and 5; paper/many-body.md, "The probe's
 // second part", written before its runs): the law chosen on walls tested on other pressing bodies
-// (PROBE_DIR/RADIUS/bodies-S.dat) and the tangential response under confinement
+// (PROBE_DIR/RADIUS/bodies-KIND-S.dat) and the tangential response under confinement
 // (PROBE_DIR/RADIUS/shear-S.dat). Nothing here is fitted into the engine's law: β refitted per
 // body kind is a diagnosis.
 //

@@ -111,14 +111,22 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
     t << n.at(key).yaml();
     return key + ": " + t.str() + "\n";
   };
-  const std::string common = yaml_of(c, "settings") + yaml_of(c, "seeds") + yaml_of(c, "radii");
+  p.settings_path = c.at("settings").string();
+  const auto in_root = [&](const std::string& f) { return std::filesystem::path(f).is_absolute() ? std::filesystem::path(f) : std::filesystem::path(root_dir) / f; };
+  const std::filesystem::path settings_file = in_root(p.settings_path);
+  p.settings = read_coarse_grain_settings(settings_file.string(), root_dir);
+  // The runs depend on the settings and their profile as they are written (relaxation, approach
+  // speed, material, packing generator): their whole text, not their names, enters the stamps.
+  const auto text_of = [](const ConfigNode& n) {
+    std::ostringstream t;
+    t << n.yaml();
+    return t.str() + "\n";
+  };
+  const std::string common = "settings: " + text_of(ConfigNode::load_file(settings_file.string())) + "profile: " +
+                             text_of(ConfigNode::load_file(in_root(p.settings.profile).string())) + yaml_of(c, "seeds") + yaml_of(c, "radii");
   p.runs_text.emplace_back("seed", common + yaml_of(c, "delta_n") + yaml_of(c, "fit") + yaml_of(c, "held_out"));
   for (const std::string& kind : c.at("bodies").keys()) p.runs_text.emplace_back("bodies-" + kind, common + yaml_of(c, "delta_n") + yaml_of(c.at("bodies"), kind));
   p.runs_text.emplace_back("shear", common + yaml_of(c, "shear"));
-  p.settings_path = c.at("settings").string();
-  const std::filesystem::path settings_file =
-      std::filesystem::path(p.settings_path).is_absolute() ? std::filesystem::path(p.settings_path) : std::filesystem::path(root_dir) / p.settings_path;
-  p.settings = read_coarse_grain_settings(settings_file.string(), root_dir);
   p.seeds = parse_seeds(c);
   const ConfigNode radii = c.at("radii");
   for (const std::string& name : radii.keys()) {
@@ -170,6 +178,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
     shear.at("arrangements").fail("'one' (the unconfined shear every ratio is taken over) must be in the list");
   p.shear_delta_n = increasing(shear.at("delta_n"));
   p.shear_ht = increasing(shear.at("ht_over_Rs"));
+  if (p.shear_ht.size() < 3) shear.at("ht_over_Rs").fail("give at least three: the first two make kt, the last the sliding ratio");
   const ConfigNode val = c.at("validation");
   val.allow_only({"media_seeds", "v3_media_seeds", "strain_range", "bound_in_standard_errors"});
   p.media_seeds = parse_seeds(val, "media_seeds");

@@ -281,6 +281,17 @@ TEST(MultiContactProbe, EachWallOfAnArrangementReportsItsPush) {
   EXPECT_THROW(measure_multi_contact(tiny(), 3, a, {1.0}), InputError);
 }
 
+// The walls-only probe keeps its numbers (the committed data/many-body/probe/*/seed-S.dat were
+// made by it): the tiny settings' forces, recorded when the pressing bodies came in beside the
+// walls (to 1e-9: a change of the walls' path moves them by far more).
+TEST(MultiContactProbe, TheWallsKeepTheirForces) {
+  const auto points = measure_multi_contact(tiny(), 3, {builtin_arrangement("opposite", 3)}, {0.3, 0.5});
+  ASSERT_EQ(points.size(), 2u);
+  const double expected[2][2] = {{0.13262936025659181, 0.16089455636791539}, {5.7228875962771593, 5.208651712451676}};
+  for (std::size_t k = 0; k < 2; ++k)
+    for (std::size_t w = 0; w < 2; ++w) EXPECT_NEAR(points[k].Fn[w], expected[k][w], 1e-9 * std::abs(expected[k][w])) << k << " " << w;
+}
+
 // Other pressing bodies: a held grain and a resolved soft-particle push back on every contact.
 TEST(MultiContactProbe, GrainsAndSoftParticlesPressLikeWalls) {
   const std::vector<ProbeArrangement> a{builtin_arrangement("opposite:grain-1", 3), builtin_arrangement("opposite:soft", 3)};

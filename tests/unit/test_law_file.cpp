@@ -237,6 +237,12 @@ const std::vector<Mistake> kMistakes = {
     {"Version0", [](json& j) { j["version"] = 0; }, {"version: 0 is not allowed", "allowed: 1 to 2"}},
     {"ManyBodyTangentialUnknown", [](json& j) { j["version"] = 2, j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}, {"tangential", "twice"}}; },
      {"many_body.tangential: 'twice' is not allowed", "gain"}},
+    {"ManyBodyGainBelowTheNormalOnset",
+     [](json& j) {
+       j["version"] = 2, j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}, {"tangential", "gain"}};
+       solid(j)["tangential"]["delta"]["value"] = 0.5 * solid(j)["normal"]["delta"]["value"].get<double>();
+     },
+     {"many_body.tangential: 'gain' is not allowed with scenes.soft-solid.tangential.delta", "allowed: pairwise"}},
     {"ManyBodyInVersion1", [](json& j) { j["version"] = 1, j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}}; },
      {"many_body: not allowed in a version 1 file", "allowed: version 2"}},
     {"ManyBodyForm", [](json& j) { j["many_body"] = {{"form", "ratio"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}}; },
