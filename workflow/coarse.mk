@@ -68,15 +68,18 @@ $(COARSE_DIR)/multi-contact/seed-%.dat: $(COARSE_CONFIG) $(COARSE_TOOL) | $(TOOL
 # and sheared under confinement (RADIUS/shear-S.dat).
 PROBE_PLAN ?= experiments/many-body.yaml
 PROBE_DIR ?= $(DATA)/many-body/probe
+# (Asked of the tool once, and only for the goals that need them: other goals never read the plan.)
+ifneq ($(filter many-body-probe many-body-report $(PROBE_DIR)/%,$(MAKECMDGOALS)),)
 PROBE_RUNS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN))
 PROBE_RUNS := $(PROBE_RUNS)
+PROBE_STAMPS := $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --runs-stamp $(VERSION))
+endif
 .PHONY: many-body-probe
 many-body-probe: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat)  ## the many-body probe's runs (PROBE_DIR/RADIUS/GROUP-S.dat)
 # The runs come in groups (seed: the walls' arrangements; bodies-KIND; shear), each redone when
 # what decides it changes (softpack-coarse seeds --probe --runs-stamp: the plan's settings, seeds,
 # radii and the group's own keys, and the release; not the selection rule, the validation or
 # another group) or the settings file does, never because the tool was relinked.
-PROBE_STAMPS := $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --runs-stamp $(VERSION))
 probe_group = $(patsubst %-$(lastword $(subst -, ,$(1))),%,$(1))
 probe_options = $(if $(filter seed,$(1)),--part walls,$(if $(filter shear,$(1)),--part shear,--part bodies --kind $(patsubst bodies-%,%,$(1))))
 define probe_group_rule
