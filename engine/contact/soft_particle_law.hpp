@@ -261,14 +261,17 @@ struct SoftTangential {
   }
   struct Params {
     const SoftParticleLaws* laws = nullptr;
+    bool gain = false;  ///< the many-body law's tangential_gain
   };
-  static Params params(const ContactSetting& s) { return {s.soft_laws}; }
+  static Params params(const ContactSetting& s) {
+    return {s.soft_laws, s.soft_laws && s.soft_laws->many_body && s.soft_laws->many_body->tangential_gain};
+  }
   static Constants<double> constants(const Params& p, const ContactPartners& b, const SoftNormal::Constants<double>& normal);
   /// Eq. 8 at the contact's Δn, times the normal gain where the many-body law says so.
   static double stiffness(const Params& p, const Constants<double>& k, const SoftNormal::Eval& e) {
     if (!e.law->tangential) return 0.0;
     const double kt = k.kt_scale * (*e.law->tangential)(e.dn);
-    return p.laws->many_body && p.laws->many_body->tangential_gain ? e.gain * kt : kt;
+    return p.gain ? e.gain * kt : kt;
   }
   static void limit(const Params&, const Constants<double>&, const SoftNormal::Eval& e, double kt, V3<double>& Ft, V3<double>& xi) {
     if (kt > 0.0) tsuji::coulomb_limit(Ft, xi, kt, e.law->mu_at(e.dn) * e.Fn);

@@ -151,7 +151,9 @@ class Probe {
   void relax_here() { relax(simulation_, s_.relaxation, {}, [&] { return Vec3(-load(0)); }); }
 
  private:
-  std::string body_name(std::size_t k) const { return (a_.body.kind == PressingBody::Kind::soft ? "soft" : "wall") + std::to_string(k); }
+  std::string body_name(std::size_t k) const { return body_name(a_.body, k); }
+  // The plane or shell of contact k (none for a grain, which is its body k + 1).
+  static std::string body_name(const PressingBody& b, std::size_t k) { return (b.kind == PressingBody::Kind::soft ? "soft" : "wall") + std::to_string(k); }
   static void add_packing(SceneDef& scene, const Packing& p, const Vec3& at, int body) {
     for (std::size_t i = 0; i < p.radii.size(); ++i) {
       ParticleDef d;
@@ -169,14 +171,14 @@ class Probe {
       const Vec3 u = a.walls[k].u;
       const int body = static_cast<int>(k) + 1;
       if (a.body.kind == PressingBody::Kind::wall) {
-        scene.planes.push_back(PlaneDef{fmt::format("wall{}", k), Rs * u, -u, 1});
+        scene.planes.push_back(PlaneDef{body_name(a.body, k), Rs * u, -u, 1});
       } else if (a.body.kind == PressingBody::Kind::grain) {
         ParticleDef g;
         g.x = (1.0 + a.body.radius_ratio) * Rs * u, g.r = a.body.radius_ratio * Rs, g.body = body;
         scene.particles.push_back(g);
       } else {
         add_packing(scene, generate_packing(s.packing, 1000 * seed + k), 2.0 * Rs * u, body);
-        scene.shells.push_back(ShellDef{fmt::format("soft{}", k), body, 2.0 * Rs * u, Rs, 1, contact, std::nullopt});
+        scene.shells.push_back(ShellDef{body_name(a.body, k), body, 2.0 * Rs * u, Rs, 1, contact, std::nullopt});
       }
     }
     return scene;

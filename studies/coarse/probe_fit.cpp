@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "analysis/seed_statistics.hpp"
 #include "core/error.hpp"
 
 namespace softpack {
@@ -80,11 +81,8 @@ std::map<std::string, fit::PowerLawFit> fit_single_contact(const ManyBodyProbe& 
       for (const ProbeWallForce& w : walls)
         if (w.radius == radius && w.arrangement == one && std::abs(w.delta_n[0] - d) < 1e-9) F.push_back(w.Fn);
       if (F.empty()) continue;
-      double m = 0.0, v = 0.0;
-      for (const double f : F) m += f / static_cast<double>(F.size());
-      for (const double f : F) v += (f - m) * (f - m);
-      dn.push_back(d), mean.push_back(m);
-      se.push_back(F.size() > 1 ? std::sqrt(v / static_cast<double>(F.size() - 1) / static_cast<double>(F.size())) : 0.0);
+      const MeanError m = mean_error(F);
+      dn.push_back(d), mean.push_back(m.mean), se.push_back(m.error);
     }
     fit::FitOptions o;
     o.weighting = fit::FitOptions::Weighting::relative;
@@ -134,10 +132,7 @@ double jackknife_parameter(const std::string& name, double hi, const std::vector
       if (w.seed != seed) rest.push_back(w);
     theta.push_back(fit_parameter(ProbeLaw{name, 0.0, fit_single_contact(plan, rest, one)}, hi, rest, arrangements, plan));
   }
-  double m = 0.0, v = 0.0;
-  for (const double t : theta) m += t / static_cast<double>(theta.size());
-  for (const double t : theta) v += (t - m) * (t - m);
-  return std::sqrt(v * static_cast<double>(theta.size() - 1) / static_cast<double>(theta.size()));
+  return jackknife_error(theta);
 }
 
 ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,

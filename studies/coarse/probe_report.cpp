@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 
+#include "analysis/seed_statistics.hpp"
 #include "coarse/probe_second.hpp"
 #include "core/version.hpp"
 #include "formats/law_file.hpp"
@@ -105,11 +106,10 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
         for (const ProbeWallForce& w : walls)
           if (w.radius == radius && w.arrangement == name && w.wall == 0 && std::abs(w.delta_n[0] - dn) < 1e-9) at.push_back(&w);
         if (at.empty()) continue;
-        double m = 0.0, v = 0.0;
-        for (const auto* w : at) m += w->Fn / static_cast<double>(at.size());
-        for (const auto* w : at) v += (w->Fn - m) * (w->Fn - m);
-        const double se = at.size() > 1 ? std::sqrt(v / static_cast<double>(at.size() - 1) / static_cast<double>(at.size())) : 0.0;
-        dat += fmt::format("{} {} {:.4f} {:.6e} {:.6e}", radius, name, dn, m, se);
+        std::vector<double> F;
+        for (const auto* w : at) F.push_back(w->Fn);
+        const MeanError m = mean_error(F);
+        dat += fmt::format("{} {} {:.4f} {:.6e} {:.6e}", radius, name, dn, m.mean, m.error);
         for (const ProbeCandidate& c : a.candidates) dat += fmt::format(" {:.6e}", c.law.predict(*at.front()));
         dat += "\n";
       }

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/seed_statistics.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
@@ -17,14 +18,10 @@ namespace softpack {
 namespace {
 
 LogRatio log_ratio(const std::vector<double>& ratios) {
-  LogRatio r;
-  r.seeds = ratios.size();
-  if (ratios.empty()) return r;
-  for (const double x : ratios) r.mean += std::log(x) / static_cast<double>(ratios.size());
-  double v = 0.0;
-  for (const double x : ratios) v += (std::log(x) - r.mean) * (std::log(x) - r.mean);
-  if (ratios.size() > 1) r.se = std::sqrt(v / static_cast<double>(ratios.size() - 1) / static_cast<double>(ratios.size()));
-  return r;
+  std::vector<double> logs;
+  for (const double x : ratios) logs.push_back(std::log(x));
+  const MeanError m = mean_error(logs);
+  return {m.mean, m.error, ratios.size()};
 }
 
 bool same(double a, double b) { return std::abs(a - b) < 1e-9; }
