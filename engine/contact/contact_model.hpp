@@ -108,6 +108,14 @@ struct ContactPartners {
 template <class Model>
 concept BodyStateModel = requires { Model::Normal::kBodyState; } && Model::Normal::kBodyState;
 
+/// A body-state model whose state may be made from each body's closed contacts' caps instead of
+/// a sum (the many-body law's union form): its normal sub-law declares kBodyCaps, body_caps(its
+/// params) (whether it is), cap_depth_of(h, its constants) (a cap's depth over the body's radius)
+/// and body_state(directions, depths) (the state from a body's caps, its direction from the
+/// body's centre towards the contact), which the pass calls for each body of two caps or more.
+template <class Model>
+concept BodyCapsModel = BodyStateModel<Model> && requires { Model::Normal::kBodyCaps; };
+
 /// A model written for one contact at a time (double only).
 template <class Model>
 concept ScalarOnlyModel = requires { Model::Normal::kScalarOnly; } && Model::Normal::kScalarOnly;

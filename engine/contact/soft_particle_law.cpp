@@ -61,10 +61,58 @@ double cap_depth(double eps) {
   return d;
 }
 
+double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& depth, int meridians) {
+  const std::size_t caps = n.size();
+  std::vector<double> h(caps), half(caps);  // the plane's distance 1 − δ, the cap's half-angle
+  for (std::size_t k = 0; k < caps; ++k) {
+    h[k] = 1.0 - std::clamp(depth[k], 0.0, 1.0 - 1e-9);
+    half[k] = std::acos(h[k]);
+  }
+  // ∫ (1 − (h / cos θ)³) sin θ dθ = −cos θ − h³ / (2 cos² θ): the radial integral of a meridian's piece
+  const auto F = [](double hk, double c) { return -c - hk * hk * hk / (2.0 * c * c); };
+  double total = 0.0;
+  for (std::size_t k = 0; k < caps; ++k) {
+    if (!(depth[k] > 0.0)) continue;
+    std::vector<Vec3> m;  // the caps that meet cap k: where u·m > 0 the ray is in theirs first
+    for (std::size_t l = 0; l < caps; ++l)
+      if (l != k && depth[l] > 0.0 && std::acos(std::clamp(n[k].dot(n[l]), -1.0, 1.0)) < half[k] + half[l]) m.push_back(h[k] * n[l] - h[l] * n[k]);
+    const double whole = F(h[k], h[k]) - F(h[k], 1.0);  // the meridian over the whole cap
+    if (m.empty()) {
+      total += 0.5 * whole;
+      continue;
+    }
+    const Vec3 e1 = n[k].unitOrthogonal(), e2 = n[k].cross(e1);
+    double sum = 0.0;
+    for (int i = 0; i < meridians; ++i) {
+      const double phi = 2.0 * std::numbers::pi * i / meridians;
+      const Vec3 t = std::cos(phi) * e1 + std::sin(phi) * e2;
+      double lo = 0.0, hi = half[k];  // u = sin θ t + cos θ n_k; cap l wins where A cos θ + B sin θ > 0
+      for (const Vec3& ml : m) {
+        const double A = ml.dot(n[k]), B = ml.dot(t);
+        if (B > 0.0) hi = std::min(hi, A < 0.0 ? std::atan(-A / B) : 0.0);
+        else if (B < 0.0) lo = std::max(lo, A > 0.0 ? std::atan(-A / B) : 0.0);
+        else if (A > 0.0) hi = 0.0;
+      }
+      if (hi > lo) sum += F(h[k], std::cos(hi)) - F(h[k], std::cos(lo));
+    }
+    total += 0.5 * sum / meridians;
+  }
+  return total;
+}
+
 SoftManyBodyNormal::Constants<double> SoftManyBodyNormal::constants(const Params& p, const ContactPartners& b) {
   Constants<double> k{};
   static_cast<SoftNormal::Constants<double>&>(k) = SoftNormal::constants(p, b);
   k.soft = b.soft1 && b.soft2 ? kBoth : b.soft1 ? kBody1 : kBody2;
+  const ManyBodyLaw& m = *p.laws->many_body;
+  k.beta = m.beta, k.scale = 1.0;
+  if (k.soft == kBoth) {
+    k.beta = m.soft_beta.value_or(m.beta);
+  } else if (b.kind == ContactPartners::Kind::pair) {  // a solid sphere of radius r against the soft-particle's R
+    const double x = (b.soft1 ? b.R2 : b.R1) / (b.soft1 ? b.R1 : b.R2);
+    k.beta = m.grain_beta.value_or(m.beta);
+    if (m.grain_exponent != 0.0) k.scale = std::pow(x / (1.0 + x), m.grain_exponent);
+  }
   return k;
 }
 
@@ -74,12 +122,12 @@ double SoftManyBodyNormal::others(const Constants<double>& k, double v, double s
 }
 
 double SoftManyBodyNormal::force(const Params& p, const Constants<double>& k, double dn, double others) {
-  return many_body_force(p.law(k.scene).normal, k.F_scale, dn, others, p.laws->many_body->beta);
+  return many_body_force(p.law(k.scene).normal, k.scale * k.F_scale, dn, others, k.beta);
 }
 
 SoftNormal::Eval SoftManyBodyNormal::evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {
   Eval e = SoftNormal::evaluate(p, k, g);
-  const double pairwise = e.Fn;
+  const double pairwise = e.Fn;  // Eq. 7: the gain is over it (a grain's g included)
   e.Fn = force(p, k, e.dn, others(k, cap_volume(e.dn), g.body1, g.body2));
   e.gain = pairwise > 0.0 ? e.Fn / pairwise : 1.0;
   return e;

@@ -83,12 +83,19 @@ enum class GrainContactRule { wall, reduced_radius };  // int, as contact/contac
 /// (X: Eq. 7 of the contact's scene): the pressure p(v(δ)) = X(δ) / a(δ) that one contact of
 /// volume v(δ) makes, at the strain of all the contacts, β of the others' counted, on this
 /// contact's cap. One contact (E = v(Δn_k)) gives Eq. 7 exactly. Measured against walls (the probe,
-/// `make many-body-probe`); between two soft-particles ε is the mean of their two, unmeasured.
+/// `make many-body-probe`); between two soft-particles E − v(Δn_k) is the mean of their two (the
+/// third version's β_ss fitted with that rule on the probe's soft arrangements).
 struct ManyBodyLaw {
-  double beta = 0.0;  ///< β, of the other contacts' cap volumes counted
+  double beta = 0.0;  ///< β, of the other contacts' cap volumes counted (a wall's; any contact's without its own)
   /// kt times the contact's normal gain Fn / Eq. 7 (the confined shear of the probe: kt grows with
-  /// confinement as Fn does); false: kt as measured on one contact (Eq. 8).
+  /// confinement as Fn does; a grain's g included, unmeasured); false: kt as measured on one contact (Eq. 8).
   bool tangential_gain = false;
+  // The third version (law file version 3; paper/many-body.md): E the union of the caps instead
+  // of their sum (cap_union_volume); a solid sphere of radius r presses with g(r/R) =
+  // ((r/R) / (1 + r/R))^grain_exponent of Eq. 7 and its own β; two soft-particles with their own β.
+  bool union_of_caps = false;
+  double grain_exponent = 0.0;
+  std::optional<double> grain_beta{}, soft_beta{};
 };
 
 /// v(δ) = δ² (3 − δ) / 4: a cap of depth δ R of a sphere of radius R, over the sphere's volume.
@@ -98,6 +105,16 @@ template <class T>
 }
 /// a(δ) = 2δ − δ²: the cap's base area over π R².
 inline double cap_area(double d) { return 2.0 * d - d * d; }
+/// The volume the caps of depths δ_k R along the unit directions n_k cut from a sphere of radius R
+/// together (their union), over the sphere's volume: v(δ) for one cap, Σ v(δ_k) for caps that do
+/// not meet. A ray from the centre along u leaves the sphere's union of caps at r = 1 and enters
+/// cap k at r_k = (1 − δ_k) / (u·n_k); it is in cap k's share where r_k is the least, a region
+/// of the directions bounded by great circles (r_k < r_l is u·((1 − δ_l) n_k − (1 − δ_k) n_l) > 0).
+/// Along each meridian of cap k that share is an interval of polar angle, over which the radial
+/// integral is exact; the meridians are summed by the periodic trapezoid rule (`meridians` of
+/// them, only for caps another one meets). δ_k is taken in [0, 1 − 1e-9] (the plane short of the
+/// centre). Deterministic: the same bits for the same caps in the same order.
+double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& depth, int meridians = 256);
 /// δ in [0, 2] with v(δ) = eps (0 for eps <= 0, 2 for eps >= 1): the cubic's trigonometric root,
 /// polished by Newton's method to within a few units of the last place.
 double cap_depth(double eps);
@@ -186,14 +203,20 @@ struct SoftManyBodyNormal : SoftNormal {
   static constexpr bool kBodyState = true;
   static constexpr double kBody1 = 1.0, kBody2 = 2.0, kBoth = 3.0;  ///< Constants::soft
 
+  static constexpr bool kBodyCaps = true;
+
   template <class T>
   struct Constants : SoftNormal::Constants<T> {
-    T soft;  ///< the soft-particle: body 1, body 2 or both (kBody1, kBody2, kBoth)
+    T soft;   ///< the soft-particle: body 1, body 2 or both (kBody1, kBody2, kBoth)
+    T beta;   ///< β of this contact's kind: a wall's, a grain's, two soft-particles'
+    T scale;  ///< of Eq. 7: a grain's g(r / R) (1 for the others)
   };
   template <class C, class F>
   static constexpr void each_constant(C& c, F&& f) {
     SoftNormal::each_constant(c, f);
     f(c.soft, Need::always);
+    f(c.beta, Need::always);
+    f(c.scale, Need::always);
   }
   static Constants<double> constants(const Params& p, const ContactPartners& b);
   /// What a closed contact adds to each of its bodies' E: v(Δn).
@@ -201,12 +224,21 @@ struct SoftManyBodyNormal : SoftNormal {
   [[gnu::always_inline]] static T body_term(const T& h, const Constants<T>& k) {
     return cap_volume(h / k.R);
   }
+  /// With the union form (ManyBodyLaw::union_of_caps) a body's E is made from its closed
+  /// contacts' caps (direction, depth Δn) after the pass: body_state(caps).
+  static bool body_caps(const Params& p) { return p.laws->many_body->union_of_caps; }
+  template <class T>
+  [[gnu::always_inline]] static T cap_depth_of(const T& h, const Constants<T>& k) {
+    return h / k.R;
+  }
+  static double body_state(const std::vector<Vec3>& u, const std::vector<double>& depth) { return cap_union_volume(u, depth, kMeridians); }
+  static constexpr int kMeridians = 256;  ///< cap_union_volume's, the probe analysis's: within 3e-4 of the exact union (tests/physics)
   static Eval evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g);
   /// ∫ Fn dh from 0 to h with the other contacts' caps as they are (Simpson's rule, 64 intervals).
   static double energy(const Params& p, const Constants<double>& k, double h, double s1, double s2);
 
  private:
-  /// Σ of the other contacts' v over the soft body (the mean of the two for two soft-particles).
+  /// E − v over the soft body (the mean of the two for two soft-particles).
   static double others(const Constants<double>& k, double v, double s1, double s2);
   /// Fn at Δn = dn with the other contacts' caps `others`.
   static double force(const Params& p, const Constants<double>& k, double dn, double others);

@@ -89,8 +89,24 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
   Particles& p = world.p;
   constexpr bool kBody = BodyStateModel<Model>;
   if constexpr (kBody) lists.body_state.resize(p.size());
+  bool caps = false;  // the states made from the bodies' caps (contact/contact_model.hpp BodyCapsModel)
+  if constexpr (BodyCapsModel<Model>) caps = Model::Normal::body_caps(params.normal);
+  if (caps) lists.body_caps.resize(p.size());
+  else lists.body_caps.clear();
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), p.F.data(),
-                       Fx.rotation ? p.T.data() : nullptr, kBody ? lists.body_state.data() : nullptr};
+                       Fx.rotation ? p.T.data() : nullptr, kBody ? lists.body_state.data() : nullptr, caps ? lists.body_caps.data() : nullptr};
+  // Spheres [b, e) before the pass (states 0, no caps), and after it (a state from two caps or more).
+  const auto clear_states = [&](std::size_t b, std::size_t e) {
+    std::fill(lists.body_state.begin() + static_cast<std::ptrdiff_t>(b), lists.body_state.begin() + static_cast<std::ptrdiff_t>(e), 0.0);
+    if (caps)
+      for (std::size_t i = b; i < e; ++i) lists.body_caps[i].u.clear(), lists.body_caps[i].depth.clear();
+  };
+  const auto make_states = [&](std::size_t b, std::size_t e) {
+    if constexpr (BodyCapsModel<Model>)
+      if (caps)
+        for (std::size_t i = b; i < e; ++i)
+          if (lists.body_caps[i].u.size() >= 2) lists.body_state[i] = Model::Normal::body_state(lists.body_caps[i].u, lists.body_caps[i].depth);
+  };
   BlockOf<Model, Fx> block;
   block.params = &params, block.dt = dt;
   const BlockOf<Model, Fx, true> body_pass;
@@ -114,7 +130,7 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
       for (auto& w : planes) run_blocks(w, closed.data(), b);
       for (auto& w : shells) run_blocks(w, closed.data(), b);
     };
-    if constexpr (kBody) std::fill(lists.body_state.begin(), lists.body_state.end(), 0.0), pass(body_pass);
+    if constexpr (kBody) clear_states(0, p.size()), pass(body_pass), make_states(0, p.size());
     pass(block);
     return;
   }
@@ -151,12 +167,12 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
     parallel::run_phases(
         parts,
         [&](std::size_t t) {
-          std::fill(lists.body_state.begin() + static_cast<std::ptrdiff_t>(parallel::share_begin(p.size(), t, parts)),
-                    lists.body_state.begin() + static_cast<std::ptrdiff_t>(parallel::share_begin(p.size(), t + 1, parts)), 0.0);
+          clear_states(parallel::share_begin(p.size(), t, parts), parallel::share_begin(p.size(), t + 1, parts));
           ghosts(t, body_pass);
         },
-        [&](std::size_t t) { own(t, body_pass); }, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); },
-        finish);
+        [&](std::size_t t) { own(t, body_pass); },
+        [&](std::size_t t) { make_states(parallel::share_begin(p.size(), t, parts), parallel::share_begin(p.size(), t + 1, parts)); },
+        [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); }, finish);
   } else {
     parallel::run_phases(parts, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); }, finish);
   }

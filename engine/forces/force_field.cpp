@@ -1,6 +1,9 @@
 #include "forces/force_field.hpp"
 
+#include <fmt/format.h>
+
 #include "contact/hertz_normal.hpp"
+#include "core/error.hpp"
 
 namespace softpack {
 
@@ -18,6 +21,11 @@ ForceField::ForceField(const SceneDef& scene) {
     setting.soft_laws = &e.soft_particles->laws;
     setting.grain_rule = e.soft_particles->grain_contact;
     setting.stop_beyond_range = e.soft_particles->beyond_range == SoftParticlesDef::BeyondRange::stop;
+    const auto& many_body = e.soft_particles->laws.many_body;
+    if (many_body && many_body->grain_exponent != 0.0 && setting.grain_rule == GrainContactRule::reduced_radius)
+      throw InputError(fmt::format("effects.soft_particles.grain_contact: 'reduced-radius' is not allowed with the law file {}, whose many_body has a "
+                                   "grain factor (measured at Δn = h / Rs); allowed: wall",
+                                   e.soft_particles->laws.source));
     // the pairwise laws, or with a law file's many-body law its model and per-body pass
     models_.push_back(contact_model(e.soft_particles->laws.many_body ? "soft-particle-many-body" : "soft-particle", false).make(setting, fx_));
   }

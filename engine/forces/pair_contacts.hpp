@@ -43,6 +43,7 @@ struct SphereArrays {
   Vec3* F = nullptr;
   Vec3* T = nullptr;
   double* body = nullptr;  ///< the per-body pass's state (a model with one: contact/contact_model.hpp BodyStateModel)
+  BodyCaps* caps = nullptr;  ///< the per-body pass's caps (a model whose state is made from them: BodyCapsModel)
 };
 
 template <Effects Fx>
@@ -239,12 +240,22 @@ struct PairContacts {
     using simd::Wide;
     const simd::Index i = simd::gather(isa, list.i.data(), k), j = simd::gather(isa, list.j.data(), k);
     const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
-    const Wide term =
-        Model::Normal::body_term(simd::gather(isa, list.r_sum.data(), k) - simd::sqrt(dot(d, d)), gather_normal_constants<Model>(isa, list.k, k));
+    const auto constants = gather_normal_constants<Model>(isa, list.k, k);
+    const Wide h = simd::gather(isa, list.r_sum.data(), k) - simd::sqrt(dot(d, d));
+    const Wide term = Model::Normal::body_term(h, constants);
     for (int m = 0; m < live; ++m) {
       if (!ghost) s.body[i.v[m]] += lane(term, m);
       if (static_cast<std::size_t>(j.v[m]) < j_end) s.body[j.v[m]] += lane(term, m);
     }
+    if constexpr (BodyCapsModel<Model>)
+      if (s.caps) {
+        const Wide depth = Model::Normal::cap_depth_of(h, constants);
+        for (int m = 0; m < live; ++m) {
+          const Vec3 u = lane(d, m).normalized();  // from j towards i: sphere j's cap, sphere i's the other way
+          if (!ghost) s.caps[i.v[m]].u.push_back(-u), s.caps[i.v[m]].depth.push_back(lane(depth, m));
+          if (static_cast<std::size_t>(j.v[m]) < j_end) s.caps[j.v[m]].u.push_back(u), s.caps[j.v[m]].depth.push_back(lane(depth, m));
+        }
+      }
   }
 
   /// The bodies' states of the lanes' pairs, for a law that reads them.

@@ -100,8 +100,14 @@ struct WallContacts {
     V3<W> n, u;
     W h, ai;
     geometry(gather_vec3(isa, s.x, i), simd::gather(isa, s.r, i), n, h, ai, u);
-    const W term = Model::Normal::body_term(h, gather_normal_constants<Model>(isa, list.k, k));
+    const auto constants = gather_normal_constants<Model>(isa, list.k, k);
+    const W term = Model::Normal::body_term(h, constants);
     for (int m = 0; m < live; ++m) s.body[i.v[m]] += lane(term, m);
+    if constexpr (BodyCapsModel<Model>)
+      if (s.caps) {
+        const W depth = Model::Normal::cap_depth_of(h, constants);
+        for (int m = 0; m < live; ++m) s.caps[i.v[m]].u.push_back(-lane(n, m)), s.caps[i.v[m]].depth.push_back(lane(depth, m));  // n: from the wall
+      }
   }
 
   /// The sphere's state of the lanes' entries (the wall has none: 0), for a law that reads them.

@@ -94,6 +94,13 @@ struct WallList {
   std::vector<std::size_t> replace(const std::vector<std::int32_t>& fresh, bool keep_springs);
 };
 
+/// One sphere's closed contacts' caps of the last per-body pass (contact/contact_model.hpp
+/// BodyCapsModel): the direction from its centre towards each contact, and the cap's depth.
+struct BodyCaps {
+  std::vector<Vec3> u;
+  std::vector<double> depth;
+};
+
 /// The lists of one contact model (a family): sphere pairs, and the candidates of each plane and
 /// each shell, whose contacts that model evaluates.
 struct ContactFamily {
@@ -102,6 +109,8 @@ struct ContactFamily {
   /// Each sphere's state from the per-body pass of the last force evaluation, when the model
   /// declares one (contact/contact_model.hpp BodyStateModel); empty otherwise.
   std::vector<double> body_state;
+  /// Each sphere's caps, when the model's state is made from them (BodyCapsModel); empty otherwise.
+  std::vector<BodyCaps> body_caps;
 };
 
 /// Every list of a scene, one family per contact model: family 0 the scene's model

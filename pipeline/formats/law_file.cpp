@@ -12,9 +12,9 @@
 #include <utility>
 
 #include "core/error.hpp"
-#include "formats/json_input.hpp"
 #include "core/suggest.hpp"
 #include "core/types.hpp"
+#include "formats/json_input.hpp"
 #include "io/atomic_file.hpp"
 
 namespace softpack {
@@ -26,8 +26,10 @@ using Keys = std::vector<std::string>;
 constexpr const char* kFormat = "softpack-laws";
 constexpr const char *kForce = "N", *kStiffness = "N/m", *kOne = "1", *kMetre = "m";
 const Keys kTopKeys = {"format", "version", "reference_radius", "models", "scenes", "mixing", "many_body", "provenance"};
-const Keys kManyBodyKeys = {"form", "beta", "tangential", "source"};
-const Keys kManyBodyForms = {"volumetric"};
+const Keys kManyBodyKeys = {"form", "beta", "tangential", "source", "grain", "soft_soft"};
+const Keys kManyBodyForms = {"volumetric", "volumetric-union"};
+const Keys kGrainKeys = {"exponent", "beta"};
+const Keys kSoftSoftKeys = {"beta"};
 const Keys kManyBodyTangential = {"pairwise", "gain"};
 const Keys kSceneNames = {"soft-solid", "soft-soft"};
 const Keys kSceneKeys = {"normal", "tangential", "friction", "normal_scaling", "tangential_scaling"};
@@ -45,9 +47,7 @@ const Keys kProvenanceKeys = {"study", "seeds", "code_version", "created", "note
 
 json num(double x) { return std::isnan(x) ? json(nullptr) : json(x); }  // ±inf stays: the check refuses it
 
-json value_json(const LawValue& v, const char* unit) {
-  return {{"value", num(v.value)}, {"error", num(v.error)}, {"unit", unit}};
-}
+json value_json(const LawValue& v, const char* unit) { return {{"value", num(v.value)}, {"error", num(v.error)}, {"unit", unit}}; }
 
 json law_json(const LawFit& f, const char* unit) {
   return {{"a", value_json(f.a, unit)},
@@ -68,16 +68,18 @@ json file_json(const LawFile& f) {
   out["format"] = kFormat;
   out["version"] = f.version;
   out["reference_radius"] = {{"value", num(f.reference_radius)}, {"unit", kMetre}};
-  out["models"] = {
-      {"normal", "Fn = a dn^b + c for dn >= delta, 0 below (Eq. 7); dn = hn / R"},
-      {"tangential", "kt = a dn^b + c for dn >= delta, 0 below (Eq. 8); Ft = kt ht until |Ft| = mu_soft Fn"},
-      {"friction", "mu_soft = |Ft| / Fn while the contact slides, measured at each dn"},
-      {"radius_scaling", "X(R) = X(R0) (R/R0)^exponent at fixed dn"},
-      {"mixing", "radii R1 != R2: the soft-soft law at R_eq = 2 R1 R2 / (R1 + R2)"}};
+  out["models"] = {{"normal", "Fn = a dn^b + c for dn >= delta, 0 below (Eq. 7); dn = hn / R"},
+                   {"tangential", "kt = a dn^b + c for dn >= delta, 0 below (Eq. 8); Ft = kt ht until |Ft| = mu_soft Fn"},
+                   {"friction", "mu_soft = |Ft| / Fn while the contact slides, measured at each dn"},
+                   {"radius_scaling", "X(R) = X(R0) (R/R0)^exponent at fixed dn"},
+                   {"mixing", "radii R1 != R2: the soft-soft law at R_eq = 2 R1 R2 / (R1 + R2)"}};
   if (f.many_body)
     out["models"]["many_body"] =
-        "volumetric: Fn_k = X(d*) a(dn_k) / a(d*), v(d*) = v(dn_k) + beta (E - v(dn_k)), v(d) = d^2 (3 - d) / 4, a(d) = 2d - d^2, "
-        "E the sum of v over the soft-particle's contacts" +
+        "volumetric: Fn_k = X(d*) a(dn_k) / a(d*), v(d*) = v(dn_k) + beta (E - v(dn_k)), v(d) = d^2 (3 - d) / 4, a(d) = 2d - d^2, " +
+        std::string(f.many_body->form == "volumetric-union" ? "E the volume the soft-particle's contact caps cut together (their union)"
+                                                            : "E the sum of v over the soft-particle's contacts") +
+        std::string(f.many_body->grain ? "; a grain of radius r: X times ((r/R) / (1 + r/R))^grain.exponent, beta = grain.beta" : "") +
+        std::string(f.many_body->soft_beta ? "; two soft-particles: beta = soft_soft.beta, E - v the mean of theirs" : "") +
         std::string(f.many_body->tangential == "gain" ? "; kt_k = Eq. 8 at dn_k times Fn_k / X(dn_k)" : "");
   json scenes = json::object();
   for (const auto& [name, s] : f.scenes) {
@@ -97,18 +99,15 @@ json file_json(const LawFile& f) {
   }
   out["scenes"] = scenes;
   if (f.mixing)
-    out["mixing"] = {{"rule", f.mixing->rule},
-                     {"checked_ratio", num(f.mixing->checked_ratio)},
-                     {"deviation", value_json(f.mixing->deviation, kOne)}};
-  if (f.many_body)
-    out["many_body"] = {{"form", f.many_body->form}, {"beta", value_json(f.many_body->beta, kOne)}, {"tangential", f.many_body->tangential},
-                        {"source", f.many_body->source}};
+    out["mixing"] = {{"rule", f.mixing->rule}, {"checked_ratio", num(f.mixing->checked_ratio)}, {"deviation", value_json(f.mixing->deviation, kOne)}};
+  if (f.many_body) {
+    const ManyBodyFit& m = *f.many_body;
+    out["many_body"] = {{"form", m.form}, {"beta", value_json(m.beta, kOne)}, {"tangential", m.tangential}, {"source", m.source}};
+    if (m.grain) out["many_body"]["grain"] = {{"exponent", value_json(m.grain->exponent, kOne)}, {"beta", value_json(m.grain->beta, kOne)}};
+    if (m.soft_beta) out["many_body"]["soft_soft"] = {{"beta", value_json(*m.soft_beta, kOne)}};
+  }
   const LawFileProvenance& p = f.provenance;
-  out["provenance"] = {{"study", p.study},
-                       {"seeds", p.seeds},
-                       {"code_version", p.code_version},
-                       {"created", p.created},
-                       {"notes", p.notes}};
+  out["provenance"] = {{"study", p.study}, {"seeds", p.seeds}, {"code_version", p.code_version}, {"created", p.created}, {"notes", p.notes}};
   return out;
 }
 
@@ -142,8 +141,8 @@ class Reader {
     for (const auto& [key, v] : j.items()) {
       if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
       const std::string near = closest_match(key, keys);
-      fail(child(field, key), fmt::format("unknown key; allowed: {}{}", fmt::join(keys, ", "),
-                                          near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near)));
+      fail(child(field, key),
+           fmt::format("unknown key; allowed: {}{}", fmt::join(keys, ", "), near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near)));
     }
     return j;
   }
@@ -170,8 +169,7 @@ class Reader {
     return j.get<std::string>();
   }
   std::string literal(const json& j, const std::string& field, const Keys& allowed) const {
-    if (!j.is_string() || std::find(allowed.begin(), allowed.end(), j.get<std::string>()) == allowed.end())
-      refuse(field, j, quoted(allowed));
+    if (!j.is_string() || std::find(allowed.begin(), allowed.end(), j.get<std::string>()) == allowed.end()) refuse(field, j, quoted(allowed));
     return j.get<std::string>();
   }
   void check_unit(const json& j, const std::string& field, const char* unit) const {
@@ -183,8 +181,7 @@ class Reader {
   LawValue value(const json& j, const std::string& field, const char* unit, bool value_null_ok) const {
     object(j, field, kValueKeys);
     LawValue v;
-    v.value = number(need(j, field, "value", value_null_ok ? "a finite number or null" : "a finite number"),
-                     child(field, "value"), value_null_ok);
+    v.value = number(need(j, field, "value", value_null_ok ? "a finite number or null" : "a finite number"), child(field, "value"), value_null_ok);
     if (const json* e = find(j, "error")) v.error = number(*e, child(field, "error"), true);
     check_unit(j, field, unit);
     return v;
@@ -198,6 +195,44 @@ class Reader {
     return {lo, hi};
   }
 
+  /// A dimensionless {"value", "error", "unit": '1'} `key` of `parent` with lo <= value <= hi.
+  LawValue bounded(const json& parent, const std::string& field, const std::string& key, double lo, double hi) const {
+    const std::string allowed = fmt::format("{} <= {} <= {}", lo, key, hi);
+    const json& j = need(parent, field, key, fmt::format("{{\"value\": {}, \"error\", \"unit\": '1'}}", allowed));
+    const LawValue v = value(j, child(field, key), kOne, false);
+    if (!(v.value >= lo && v.value <= hi)) refuse(child(child(field, key), "value"), j["value"], allowed);
+    return v;
+  }
+
+  ManyBodyFit many_body(const json& m, const LawFile& f) const {
+    if (f.version < 2) fail("many_body", "not allowed in a version 1 file; allowed: version 2 or later (the many-body law)");
+    object(m, "many_body", kManyBodyKeys);
+    ManyBodyFit mb;
+    mb.form = literal(need(m, "many_body", "form", quoted(kManyBodyForms)), "many_body.form", kManyBodyForms);
+    if (f.version < 3 && mb.form != "volumetric")
+      fail("many_body.form",
+           fmt::format("'{}' is not allowed in a version {} file; allowed: 'volumetric' (version 3 adds 'volumetric-union')", mb.form, f.version));
+    for (const char* key : {"grain", "soft_soft"})
+      if (f.version < 3 && find(m, key))
+        fail(child("many_body", key), fmt::format("not allowed in a version {} file; allowed: version 3 or later", f.version));
+    mb.beta = bounded(m, "many_body", "beta", 0.0, 10.0);
+    if (const json* t = find(m, "tangential")) mb.tangential = literal(*t, "many_body.tangential", kManyBodyTangential);
+    // the gain Fn / Eq. 7 grows without bound as Eq. 7 falls to 0 at its onset: kt stays finite
+    // only where Eq. 8 has fallen to 0 by then
+    for (const auto& [name, laws] : f.scenes)
+      if (mb.tangential == "gain" && laws.tangential && laws.tangential->delta.value < laws.normal.delta.value)
+        fail("many_body.tangential", fmt::format("'gain' is not allowed with scenes.{}.tangential.delta ({}) below its normal delta ({}); allowed: "
+                                                 "pairwise, or a tangential onset at or above the normal one",
+                                                 name, laws.tangential->delta.value, laws.normal.delta.value));
+    if (const json* s = find(m, "source")) mb.source = text(*s, "many_body.source");
+    if (const json* g = find(m, "grain"))
+      object(*g, "many_body.grain", kGrainKeys),
+          mb.grain = ManyBodyGrainFit{bounded(*g, "many_body.grain", "exponent", 0.0, 10.0), bounded(*g, "many_body.grain", "beta", 0.0, 10.0)};
+    if (const json* ss = find(m, "soft_soft"))
+      object(*ss, "many_body.soft_soft", kSoftSoftKeys), mb.soft_beta = bounded(*ss, "many_body.soft_soft", "beta", 0.0, 10.0);
+    return mb;
+  }
+
   LawFit law(const json& j, const std::string& field, const char* unit) const {
     object(j, field, kLawKeys);
     const std::string dimensional = fmt::format("{{\"value\", \"error\", \"unit\": '{}'}}", unit);
@@ -208,8 +243,7 @@ class Reader {
     f.c = value(need(j, field, "c", dimensional), child(field, "c"), unit, true);
     f.delta = value(need(j, field, "delta", dimensionless), child(field, "delta"), kOne, true);
     const std::string allowed = "[lo, hi] with 0 <= lo < hi";
-    std::tie(f.delta_n_min, f.delta_n_max) =
-        range(need(j, field, "delta_n_range", allowed), child(field, "delta_n_range"), true, allowed);
+    std::tie(f.delta_n_min, f.delta_n_max) = range(need(j, field, "delta_n_range", allowed), child(field, "delta_n_range"), true, allowed);
     // What the law gives over its range must be a number the simulation can add and multiply:
     // a = 1e308 was read, then overflowed in a later stage that blamed another key.
     constexpr double kLargest = 1e15;  // [N] or [N/m], far beyond any soft-particle's contact
@@ -238,8 +272,7 @@ class Reader {
         refuse(item(dn_field, i), dn[i], fmt::format("a number > {} (delta_n increasing)", f.delta_n[i - 1]));
     }
     if (mu.size() != dn.size())
-      fail(mu_field, fmt::format("{} values for {} delta_n is not allowed; allowed: one per delta_n ({})", mu.size(),
-                                 dn.size(), dn.size()));
+      fail(mu_field, fmt::format("{} values for {} delta_n is not allowed; allowed: one per delta_n ({})", mu.size(), dn.size(), dn.size()));
     for (std::size_t i = 0; i < mu.size(); ++i) f.mu.push_back(value(mu[i], item(mu_field, i), kOne, false));
     return f;
   }
@@ -247,12 +280,10 @@ class Reader {
   RadiusScaling scaling(const json& j, const std::string& field) const {
     object(j, field, kScalingKeys);
     RadiusScaling s;
-    s.exponent = value(need(j, field, "exponent", "{\"value\", \"error\", \"unit\": '1'}"), child(field, "exponent"),
-                       kOne, true);
+    s.exponent = value(need(j, field, "exponent", "{\"value\", \"error\", \"unit\": '1'}"), child(field, "exponent"), kOne, true);
     const std::string rr = child(field, "radius_range");
     const std::string allowed = "[R_min, R_max] with 0 < R_min <= R_max";
-    const json& r = object(need(j, field, "radius_range", "{\"value\": " + allowed + ", \"unit\": 'm'}"), rr,
-                           kQuantityKeys);
+    const json& r = object(need(j, field, "radius_range", "{\"value\": " + allowed + ", \"unit\": 'm'}"), rr, kQuantityKeys);
     std::tie(s.R_min, s.R_max) = range(need(r, rr, "value", allowed), child(rr, "value"), false, allowed);
     check_unit(r, rr, kMetre);
     s.variant = literal(need(j, field, "variant", quoted(kVariants)), child(field, "variant"), kVariants);
@@ -262,13 +293,11 @@ class Reader {
   SceneLaws scene(const json& j, const std::string& field) const {
     object(j, field, kSceneKeys);
     SceneLaws s;
-    s.normal = law(need(j, field, "normal", "the Eq. 7 law {a, b, c, delta, delta_n_range}"), child(field, "normal"),
-                   kForce);
+    s.normal = law(need(j, field, "normal", "the Eq. 7 law {a, b, c, delta, delta_n_range}"), child(field, "normal"), kForce);
     if (const json* t = find(j, "tangential")) s.tangential = law(*t, child(field, "tangential"), kStiffness);
     if (const json* fr = find(j, "friction")) s.friction = friction(*fr, child(field, "friction"));
     if (const json* n = find(j, "normal_scaling")) s.normal_scaling = scaling(*n, child(field, "normal_scaling"));
-    if (const json* t = find(j, "tangential_scaling"))
-      s.tangential_scaling = scaling(*t, child(field, "tangential_scaling"));
+    if (const json* t = find(j, "tangential_scaling")) s.tangential_scaling = scaling(*t, child(field, "tangential_scaling"));
     return s;
   }
 
@@ -287,8 +316,8 @@ class Reader {
   LawFileProvenance provenance(const json& j, const std::string& field) const {
     object(j, field, kProvenanceKeys);
     LawFileProvenance p;
-    for (auto [key, out] : {std::pair{"study", &p.study}, std::pair{"code_version", &p.code_version},
-                            std::pair{"created", &p.created}, std::pair{"notes", &p.notes}})
+    for (auto [key, out] :
+         {std::pair{"study", &p.study}, std::pair{"code_version", &p.code_version}, std::pair{"created", &p.created}, std::pair{"notes", &p.notes}})
       if (const json* s = find(j, key)) *out = text(*s, child(field, key));
     if (const json* seeds = find(j, "seeds")) {
       const std::string sf = child(field, "seeds");
@@ -309,8 +338,8 @@ class Reader {
     const bool above = version.is_number_unsigned() ? version.get<std::uint64_t>() > kLawFileVersion
                                                     : version.is_number_integer() && version.get<std::int64_t>() > kLawFileVersion;
     if (above)
-      fail("version", fmt::format("{} is newer than this build reads; allowed: {} (this build reads version {})",
-                                  version.dump(), kLawFileVersion, kLawFileVersion));
+      fail("version", fmt::format("{} is newer than this build reads; allowed: {} (this build reads version {})", version.dump(), kLawFileVersion,
+                                  kLawFileVersion));
     if (!version.is_number_integer() || version.get<std::int64_t>() < 1) refuse("version", version, fmt::format("1 to {}", kLawFileVersion));
     object(j, "", kTopKeys);
     LawFile f;
@@ -338,28 +367,10 @@ class Reader {
            std::array<Scaling, 2>{Scaling{"normal_scaling", &laws.normal_scaling}, Scaling{"tangential_scaling", &laws.tangential_scaling}})
         if (*scaling && !(f.reference_radius >= (*scaling)->R_min && f.reference_radius <= (*scaling)->R_max))
           refuse("reference_radius.value", rv,
-                 fmt::format("a radius within scenes.{}.{}.radius_range [{}, {}] m (the laws are measured at it)", name, which,
-                             (*scaling)->R_min, (*scaling)->R_max));
+                 fmt::format("a radius within scenes.{}.{}.radius_range [{}, {}] m (the laws are measured at it)", name, which, (*scaling)->R_min,
+                             (*scaling)->R_max));
     if (const json* m = find(j, "mixing")) f.mixing = mixing(*m, "mixing");
-    if (const json* m = find(j, "many_body")) {
-      if (f.version < 2) fail("many_body", "not allowed in a version 1 file; allowed: version 2 or later (the many-body law)");
-      object(*m, "many_body", kManyBodyKeys);
-      ManyBodyFit mb;
-      mb.form = literal(need(*m, "many_body", "form", quoted(kManyBodyForms)), "many_body.form", kManyBodyForms);
-      const json& beta = need(*m, "many_body", "beta", "{\"value\": 0 <= beta <= 10, \"error\", \"unit\": '1'}");
-      mb.beta = value(beta, "many_body.beta", kOne, false);
-      if (!(mb.beta.value >= 0.0 && mb.beta.value <= 10.0)) refuse("many_body.beta.value", beta["value"], "0 <= beta <= 10");
-      if (const json* t = find(*m, "tangential")) mb.tangential = literal(*t, "many_body.tangential", kManyBodyTangential);
-      // the gain Fn / Eq. 7 grows without bound as Eq. 7 falls to 0 at its onset: kt stays finite
-      // only where Eq. 8 has fallen to 0 by then
-      for (const auto& [name, laws] : f.scenes)
-        if (mb.tangential == "gain" && laws.tangential && laws.tangential->delta.value < laws.normal.delta.value)
-          fail("many_body.tangential", fmt::format("'gain' is not allowed with scenes.{}.tangential.delta ({}) below its normal delta ({}); allowed: "
-                                                   "pairwise, or a tangential onset at or above the normal one",
-                                                   name, laws.tangential->delta.value, laws.normal.delta.value));
-      if (const json* s = find(*m, "source")) mb.source = text(*s, "many_body.source");
-      f.many_body = mb;
-    }
+    if (const json* m = find(j, "many_body")) f.many_body = many_body(*m, f);
     if (const json* p = find(j, "provenance")) f.provenance = provenance(*p, "provenance");
     return f;
   }
@@ -376,8 +387,6 @@ void write_law_file(const std::string& path, const LawFile& f) {
   write_file_atomically(path, j.dump(2) + "\n");
 }
 
-LawFile read_law_file(const std::string& path) {
-  return Reader(path).file(read_json_input(path, "a law file (JSON)"));
-}
+LawFile read_law_file(const std::string& path) { return Reader(path).file(read_json_input(path, "a law file (JSON)")); }
 
 }  // namespace softpack

@@ -18,8 +18,12 @@
 //        "tangential_scaling": {the same}},                                           (optional)
 //      "soft-soft": {…}},
 //    "mixing": {"rule": "reduced-radius", "checked_ratio", "deviation": {…, "unit": "1"}} (optional),
-//    "many_body": {"form": "volumetric", "beta": {…, "unit": "1"}, "tangential": "pairwise" | "gain",
-//                  "source": text}   (optional; version 2; tangential absent: pairwise),
+//    "many_body": {"form": "volumetric" | "volumetric-union", "beta": {…, "unit": "1"},
+//                  "tangential": "pairwise" | "gain", "source": text,
+//                  "grain": {"exponent": {…, "unit": "1"}, "beta": {…, "unit": "1"}},
+//                  "soft_soft": {"beta": {…, "unit": "1"}}}
+//                  (optional; version 2: form volumetric, no grain, no soft_soft; version 3 (the
+//                  third version, paper/many-body.md): all; tangential absent: pairwise),
 //    "provenance": {"study", "seeds": [...], "code_version", "created", "notes"}}
 //
 // NaN is written as null and read back as NaN: an "error" may always be null (not known), a
@@ -30,7 +34,8 @@
 // reference_radius <= 0, a delta_n_range not 0 <= lo < hi, friction delta_n not increasing or of
 // another length than mu (or empty), a variant or rule not listed above, a radius_range not
 // 0 < R_min <= R_max, a checked_ratio <= 0, a many_body in a version 1 file, a form other than
-// "volumetric", a beta outside 0 <= beta <= 10.
+// "volumetric" (version 2) or "volumetric-union" (version 3), a beta outside 0 <= beta <= 10, a grain
+// exponent outside 0 <= p <= 10, grain or soft_soft in a version 2 file.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -44,7 +49,7 @@
 namespace softpack {
 
 /// The version of the law file this build writes; it reads this one and every earlier one.
-inline constexpr int kLawFileVersion = 2;
+inline constexpr int kLawFileVersion = 3;
 
 /// A measured value and its standard error (NaN: not known).
 struct LawValue {
@@ -91,12 +96,21 @@ struct MixingRule {
   LawValue deviation;  ///< mean relative deviation measured/predicted of Fn over the checked points
 };
 
-/// The many-body law (version 2): the volumetric form's β, fitted on the many-body probe.
+/// The many-body law's grain factor (version 3): a solid sphere of radius r presses with g(r/R) =
+/// ((r/R) / (1 + r/R))^exponent of the single-contact law, its contacts' β their own.
+struct ManyBodyGrainFit {
+  LawValue exponent, beta;
+};
+
+/// The many-body law (version 2; version 3 adds the union form, the grains' and the
+/// soft-particles' own): the volumetric form's β, fitted on the many-body probe.
 struct ManyBodyFit {
-  std::string form = "volumetric";
-  LawValue beta;
+  std::string form = "volumetric";      ///< "volumetric-union": E the union of the caps (version 3)
+  LawValue beta;                        ///< the walls' (and every contact's without its own)
   std::string source;                   ///< where it was fitted (the probe's plan and report)
   std::string tangential = "pairwise";  ///< "gain": kt times the normal gain (absent: pairwise)
+  std::optional<ManyBodyGrainFit> grain{};  ///< none: a grain as a wall, the walls' β
+  std::optional<LawValue> soft_beta{};    ///< β of soft-soft contacts; none: the walls'
 };
 
 struct LawFileProvenance {
@@ -110,7 +124,7 @@ struct LawFile {
   double reference_radius = kNaN;  ///< R0 [m]: the shell radius a, c were measured at
   std::map<std::string, SceneLaws> scenes;  ///< keys "soft-solid", "soft-soft" (at least one)
   std::optional<MixingRule> mixing;
-  std::optional<ManyBodyFit> many_body;  ///< version 2 only
+  std::optional<ManyBodyFit> many_body;  ///< version 2 and later
   LawFileProvenance provenance;
 };
 

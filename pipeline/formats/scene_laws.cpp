@@ -79,7 +79,13 @@ SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source)
   out.source = source;
   if (auto it = f.scenes.find("soft-solid"); it != f.scenes.end()) out.soft_solid = scene_law(it->second);
   if (auto it = f.scenes.find("soft-soft"); it != f.scenes.end()) out.soft_soft = scene_law(it->second);
-  if (f.many_body) out.many_body = ManyBodyLaw{f.many_body->beta.value, f.many_body->tangential == "gain"};
+  if (f.many_body) {
+    const ManyBodyFit& m = *f.many_body;
+    ManyBodyLaw& law = out.many_body.emplace();
+    law.beta = m.beta.value, law.tangential_gain = m.tangential == "gain", law.union_of_caps = m.form == "volumetric-union";
+    if (m.grain) law.grain_exponent = m.grain->exponent.value, law.grain_beta = m.grain->beta.value;
+    if (m.soft_beta) law.soft_beta = m.soft_beta->value;
+  }
   return out;
 }
 

@@ -13,12 +13,22 @@
 
 namespace softpack {
 
+ProbeWallForce probe_point(const ProbeArrangement& a, const std::string& radius, std::uint64_t seed, const std::vector<double>& delta_n,
+                           std::size_t wall, double Fn) {
+  ProbeWallForce p{radius, a.name, seed, delta_n, wall, Fn, a.body, 0.0, 0.0};
+  std::vector<Vec3> u;
+  for (std::size_t k = 0; k < delta_n.size(); ++k) p.E_sum += cap_volume(delta_n[k]), u.push_back(a.walls.at(k).u);
+  p.E_union = cap_union_volume(u, delta_n);
+  return p;
+}
+
 std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::string& radius, std::uint64_t seed) {
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("{}: cannot read the probe file (make many-body-probe writes it)", path));
   std::vector<ProbeWallForce> out;
   std::string arrangement;
   std::vector<double> w;
+  ProbeArrangement geometry;
   int line_no = 0;
   for (std::string line; std::getline(in, line);) {
     ++line_no;
@@ -30,6 +40,12 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
       w.clear();
       for (auto at = line.find(" w=", colon); at != std::string::npos; at = line.find(" w=", at + 3)) w.push_back(std::stod(line.substr(at + 3)));
       if (w.empty()) throw fail("an arrangement without walls");
+      try {
+        geometry = builtin_arrangement(arrangement, seed);
+      } catch (const InputError& e) {
+        throw fail(e.what());
+      }
+      if (geometry.walls.size() != w.size()) throw fail(fmt::format("{} walls, the arrangement has {}", w.size(), geometry.walls.size()));
       continue;
     }
     if (line.empty() || line[0] == '#') continue;
@@ -43,7 +59,8 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
     for (std::size_t k = 0; k < n; ++k) {
       double F = 0.0;
       if (!(s >> F) || !std::isfinite(F)) throw fail(fmt::format("wall {}: no finite force", k + 1));
-      out.push_back({radius, arrangement, seed, delta_n, k, F});
+      out.push_back(k == 0 ? probe_point(geometry, radius, seed, delta_n, k, F) : out.back());
+      out.back().wall = k, out.back().Fn = F;
     }
   }
   return out;
@@ -52,14 +69,17 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
 double ProbeLaw::predict(const ProbeWallForce& w) const {
   const fit::PowerLawFit& f1 = F1.at(w.radius);
   const double dk = w.delta_n[w.wall];
-  if (name == "pairwise") return fit::evaluate(f1, dk);
-  double others = 0.0;
-  for (std::size_t l = 0; l < w.delta_n.size(); ++l)
-    if (l != w.wall) others += cap_volume(w.delta_n[l]);
+  const double x = w.body.radius_ratio, g = w.body.kind == PressingBody::Kind::grain && grain_exponent != 0.0 ? std::pow(x / (1.0 + x), grain_exponent) : 1.0;
+  if (name == "pairwise") return g * fit::evaluate(f1, dk);
   const double vk = cap_volume(dk);
   if (!(vk > 0.0)) return 0.0;
-  if (name == "ratio") return fit::evaluate(f1, dk) * std::pow((vk + others) / vk, parameter);
-  return many_body_force([&](double d) { return fit::evaluate(f1, d); }, 1.0, dk, others, parameter);  // volumetric: the engine's law
+  double others = 0.0;  // the others' caps: summed (as the engine's body pass sums them), or their union's share
+  if (name == "volumetric-union") others = std::max(0.0, w.E_union - vk);
+  else
+    for (std::size_t l = 0; l < w.delta_n.size(); ++l)
+      if (l != w.wall) others += cap_volume(w.delta_n[l]);
+  if (name == "ratio") return g * fit::evaluate(f1, dk) * std::pow((vk + others) / vk, parameter);
+  return many_body_force([&](double d) { return fit::evaluate(f1, d); }, g, dk, others, parameter);  // volumetric: the engine's law
 }
 
 namespace {
@@ -103,9 +123,9 @@ std::size_t parameters(const std::string& name) { return name == "pairwise" ? 0 
 }  // namespace
 
 double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
-                     const ManyBodyProbe& plan) {
+                     const ManyBodyProbe& plan, double ProbeLaw::*field) {
   const auto error = [&](double x) {
-    law.parameter = x;
+    law.*field = x;
     return probe_error(law, walls, arrangements, plan).rms_log;
   };
   double best = 0.0, best_e = error(0.0);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "analysis/power_fit.hpp"
+#include "coarse/multi_contact.hpp"
 #include "coarse/probe_settings.hpp"
 #include "contact/soft_particle_law.hpp"
 
@@ -32,7 +33,15 @@ struct ProbeWallForce {
   std::vector<double> delta_n;  ///< every wall's Δn of the point (w_k Δn)
   std::size_t wall = 0;         ///< which of them this is
   double Fn = 0.0;              ///< [N]
+  PressingBody body{};          ///< what presses (the arrangement's NAME:BODY; a wall without)
+  double E_sum = 0.0;           ///< Σ v(Δn_l) over the point's contacts
+  double E_union = 0.0;         ///< the volume their caps cut together (cap_union_volume), over the soft-particle's
 };
+
+/// Wall `wall` of arrangement `a` (its directions and shares) at the arrangement's Δn `dn`, with
+/// its caps' E_sum and E_union and the force Fn.
+ProbeWallForce probe_point(const ProbeArrangement& a, const std::string& radius, std::uint64_t seed, const std::vector<double>& delta_n,
+                           std::size_t wall, double Fn);
 
 /// The walls of a probe file (PROBE_DIR/RADIUS/seed-S.dat); InputError naming the file and line.
 std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::string& radius, std::uint64_t seed);
@@ -40,10 +49,14 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
 // The candidates' geometry is the engine's (contact/soft_particle_law.hpp): cap_volume, cap_area, cap_depth.
 
 /// A candidate with its parameter (β or α; none for pairwise) and the F1 of each radius.
+/// volumetric-union is volumetric with E the caps' union instead of their sum (the third
+/// version's count-of-contacts form (b), paper/many-body.md, "Next"). A grain-X's force is the
+/// law's times g(X) = (X / (1 + X))^grain_exponent (the third version's grain factor; 0: none).
 struct ProbeLaw {
-  std::string name;  ///< pairwise, volumetric, ratio
+  std::string name;  ///< pairwise, volumetric, ratio, volumetric-union
   double parameter = 0.0;
   std::map<std::string, fit::PowerLawFit> F1;
+  double grain_exponent = 0.0;
   /// The force of wall w.wall of w's point.
   double predict(const ProbeWallForce& w) const;
 };
@@ -77,10 +90,10 @@ ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& w
 /// seeds of the single contact `one` (the arrangement `one`, or `one:BODY` of another body).
 std::map<std::string, fit::PowerLawFit> fit_single_contact(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls,
                                                            const std::string& one = "one");
-/// The law's parameter in [0, hi] with the least error on `arrangements`: a grid of 1/1000 of the
-/// range, then golden sections about its best point.
+/// `field` of the law (its parameter unless said) in [0, hi] with the least error on
+/// `arrangements`: a grid of 1/1000 of the range, then golden sections about its best point.
 double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
-                     const ManyBodyProbe& plan);
+                     const ManyBodyProbe& plan, double ProbeLaw::*field = &ProbeLaw::parameter);
 /// Its standard error by the jackknife over the plan's seeds (F1 of `one` and the parameter fitted
 /// again without each seed).
 double jackknife_parameter(const std::string& name, double hi, const std::vector<ProbeWallForce>& walls,

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 #include "analysis/seed_statistics.hpp"
 #include "coarse/probe_second.hpp"
+#include "coarse/probe_third.hpp"
 #include "core/version.hpp"
 #include "formats/law_file.hpp"
 #include "io/atomic_file.hpp"
@@ -114,23 +116,50 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
         dat += "\n";
       }
     }
-  // laws.json: the plan's law file with the chosen law, when the rule lets it into the engine
-  // (which runs the volumetric form: contact/soft_particle_law.hpp ManyBodyLaw)
+  // the second part (coarse/probe_second.hpp): the walls' β tested on other bodies and in shear;
+  // then the third version (coarse/probe_third.hpp); what stops either is said in probe.md,
+  // which is written whatever happens to them
   std::filesystem::create_directories(out_dir);
+  const ProbeCandidate* v = nullptr;
+  for (const ProbeCandidate& c : a.candidates)
+    if (c.law.name == "volumetric") v = &c;
+  std::optional<ThirdVersion> third;
+  if (v) try {
+      const std::vector<ProbeWallForce> bodies = read_bodies_files(plan, probe_dir);
+      const SecondPart second = write_second_part(plan, plan_path, walls, bodies, read_shear_files(plan, probe_dir), v->law.parameter, out_dir);
+      md += fmt::format("\nIts second part (other pressing bodies, shear under confinement): `{}/second-part.md`.\n", out_dir);
+      if (plan.third) {
+        third = write_third_version(plan, plan_path, walls, bodies, second, v->law.parameter, out_dir);
+        md += fmt::format("\nThe law's third version: `{}/third-version.md`.\n", out_dir);
+      }
+    } catch (const InputError& e) {
+      md += fmt::format("\nIts second part or third version could not be analysed: {}\n", e.what());
+    }
+  // laws.json: the plan's law file with the many-body law — the third version where the plan has
+  // one, else the first part's volumetric law when the rule lets it into the engine
   const std::string laws_path = out_dir + "/laws.json";
-  if (a.enters_engine && a.chosen == "volumetric") {
+  const std::string source = fmt::format("{} (softpack-coarse probe-report, {}): {}/{}", plan_path, code_version(), out_dir, third ? "third-version.md" : "probe.md");
+  if (third || (a.enters_engine && a.chosen == "volumetric")) {
     LawFile laws = read_law_file(plan.settings.laws);
-    const ProbeCandidate* v = nullptr;
-    for (const ProbeCandidate& c : a.candidates)
-      if (c.law.name == "volumetric") v = &c;
     laws.version = kLawFileVersion;
-    laws.many_body = ManyBodyFit{"volumetric", {v->law.parameter, v->parameter_error},
-                                 fmt::format("{} (softpack-coarse probe-report, {}): {}/probe.md", plan_path, code_version(), out_dir)};
+    if (third) {
+      const auto c = std::find_if(third->count.begin(), third->count.end(), [&](const auto& f) { return f.name == third->count_chosen; });
+      laws.many_body = ManyBodyFit{};
+      laws.many_body->form = third->count_chosen, laws.many_body->beta = {c->beta.value, c->beta.se}, laws.many_body->source = source;
+      laws.many_body->tangential = "gain";
+      laws.many_body->grain = ManyBodyGrainFit{{third->grain_p.value, third->grain_p.se}, {third->grain_beta.value, third->grain_beta.se}};
+      laws.many_body->soft_beta = LawValue{third->soft_beta.value, third->soft_beta.se};
+    } else {
+      laws.many_body = ManyBodyFit{};
+      laws.many_body->beta = {v->law.parameter, v->parameter_error}, laws.many_body->source = source;
+    }
     if (!laws.provenance.notes.empty()) laws.provenance.notes += " ";
-    laws.provenance.notes += fmt::format("many_body added from the many-body probe ({}, seeds {}).", plan_path, fmt::join(plan.seeds, ", "));
+    laws.provenance.notes += fmt::format("many_body added from the many-body probe ({}, seeds {}{}).", plan_path, fmt::join(plan.seeds, ", "),
+                                         third ? ", its third version" : "");
     write_law_file(laws_path, laws);
-    md += fmt::format("\nThe law file with it: `{}` (version {}: {}'s laws, many_body β = {:.3f} ± {:.3f}).\n", laws_path, kLawFileVersion,
-                      plan.settings.laws, v->law.parameter, v->parameter_error);
+    md += fmt::format("\nThe law file with it: `{}` (version {}: {}'s laws, many_body {} β = {:.3f} ± {:.3f}{}).\n", laws_path, kLawFileVersion,
+                      plan.settings.laws, laws.many_body->form, laws.many_body->beta.value, laws.many_body->beta.error,
+                      third ? ", with the grains', the soft-particles' and the tangential gain of third-version.md" : "");
     j["laws"] = laws_path;
   } else {
     std::filesystem::remove(laws_path);
@@ -138,15 +167,6 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
   }
   write_file_atomically(out_dir + "/probe.json", j.dump(2) + "\n");
   write_file_atomically(out_dir + "/probe.dat", dat);
-  // the second part (coarse/probe_second.hpp): the walls' β tested on other bodies and in shear;
-  // what stops it is said in probe.md, which is written whatever happens to it
-  for (const ProbeCandidate& c : a.candidates)
-    if (c.law.name == "volumetric") try {
-      write_second_part(plan, plan_path, probe_dir, walls, c.law.parameter, out_dir);
-      md += fmt::format("\nIts second part (other pressing bodies, shear under confinement): `{}/second-part.md`.\n", out_dir);
-    } catch (const InputError& e) {
-      md += fmt::format("\nIts second part could not be analysed: {}\n", e.what());
-    }
   write_file_atomically(out_dir + "/probe.md", md);
   return a;
 }

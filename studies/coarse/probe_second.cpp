@@ -158,19 +158,30 @@ SecondPart analyse_second_part(const ManyBodyProbe& plan, const std::vector<Prob
   return out;
 }
 
-SecondPart write_second_part(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& probe_dir,
-                             const std::vector<ProbeWallForce>& walls, double beta, const std::string& out_dir) {
+std::vector<ProbeWallForce> read_bodies_files(const ManyBodyProbe& plan, const std::string& probe_dir) {
   std::vector<ProbeWallForce> bodies;
-  std::vector<ShearRow> shear;
   for (const auto& [radius, Rs] : plan.radii)
-    for (const std::uint64_t seed : plan.seeds) {
+    for (const std::uint64_t seed : plan.seeds)
       for (const std::string& kind : plan.body_kinds()) {
         const auto b = read_probe_file(fmt::format("{}/{}/bodies-{}-{}.dat", probe_dir, radius, kind, seed), radius, seed);
         bodies.insert(bodies.end(), b.begin(), b.end());
       }
+  return bodies;
+}
+
+std::vector<ShearRow> read_shear_files(const ManyBodyProbe& plan, const std::string& probe_dir) {
+  std::vector<ShearRow> shear;
+  for (const auto& [radius, Rs] : plan.radii)
+    for (const std::uint64_t seed : plan.seeds) {
       const auto s = read_shear_file(fmt::format("{}/{}/shear-{}.dat", probe_dir, radius, seed), radius, seed);
       shear.insert(shear.end(), s.begin(), s.end());
     }
+  return shear;
+}
+
+SecondPart write_second_part(const ManyBodyProbe& plan, const std::string& plan_path, const std::vector<ProbeWallForce>& walls,
+                             const std::vector<ProbeWallForce>& bodies, const std::vector<ShearRow>& shear, double beta,
+                             const std::string& out_dir) {
   const SecondPart a = analyse_second_part(plan, walls, bodies, shear, beta);
   nlohmann::json j;
   j["plan"] = plan_path, j["code_version"] = code_version(), j["beta_walls"] = beta, j["notes"] = a.notes;

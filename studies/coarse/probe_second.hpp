@@ -63,9 +63,13 @@ struct SecondPart {
 SecondPart analyse_second_part(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls, const std::vector<ProbeWallForce>& bodies,
                                const std::vector<ShearRow>& shear, double beta);
 
-/// Reads the bodies and shear files of the plan under `probe_dir`, analyses them, writes
-/// OUT/second-part.md and OUT/second-part.json.
-SecondPart write_second_part(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& probe_dir,
-                             const std::vector<ProbeWallForce>& walls, double beta, const std::string& out_dir);
+/// The bodies files (PROBE_DIR/RADIUS/bodies-KIND-S.dat) and the shear files of the plan.
+std::vector<ProbeWallForce> read_bodies_files(const ManyBodyProbe& plan, const std::string& probe_dir);
+std::vector<ShearRow> read_shear_files(const ManyBodyProbe& plan, const std::string& probe_dir);
+
+/// Analyses the bodies and shear files' points, writes OUT/second-part.md and OUT/second-part.json.
+SecondPart write_second_part(const ManyBodyProbe& plan, const std::string& plan_path, const std::vector<ProbeWallForce>& walls,
+                             const std::vector<ProbeWallForce>& bodies, const std::vector<ShearRow>& shear, double beta,
+                             const std::string& out_dir);
 
 }  // namespace softpack

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include <tuple>
 
 #include "coarse/multi_contact.hpp"
 #include "config/yaml_node.hpp"
@@ -101,7 +102,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   const ConfigNode root = ConfigNode::load_file(path);
   root.allow_only({"many_body_probe"});
   const ConfigNode c = root.at("many_body_probe");
-  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "shear", "validation"});
+  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "shear", "third_version", "validation"});
   ManyBodyProbe p;
   std::ostringstream text;
   text << c.yaml();
@@ -179,6 +180,31 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   p.shear_delta_n = increasing(shear.at("delta_n"));
   p.shear_ht = increasing(shear.at("ht_over_Rs"));
   if (p.shear_ht.size() < 3) shear.at("ht_over_Rs").fail("give at least three: the first two make kt, the last the sliding ratio");
+  if (c.has("third_version")) {
+    const ConfigNode t = c.at("third_version");
+    t.allow_only({"count_forms", "count_fit", "count_held_out", "grain_fit", "grain_held_out"});
+    ManyBodyProbe::ThirdVersionPlan third;
+    third.count_forms = names(t.at("count_forms"), {"volumetric", "volumetric-union"});
+    const auto of_kind = [&](const std::string& key, const std::string& kind, bool kinds) {
+      std::vector<std::string> out = names(t.at(key), kinds ? p.body_kinds() : std::vector<std::string>{});
+      for (const std::string& a : out) {
+        const auto group = std::find_if(p.body_groups.begin(), p.body_groups.end(), [&](const auto& g) { return g.first == kind; });
+        if (kinds ? a.rfind("grain-", 0) != 0 : group == p.body_groups.end() || std::find(group->second.begin(), group->second.end(), a) == group->second.end())
+          t.at(key).fail(fmt::format("'{}' is not allowed; allowed: {}", a, kinds ? "the grain-X kinds of bodies" : "the arrangements of bodies." + kind));
+      }
+      return out;
+    };
+    third.count_fit = of_kind("count_fit", "wall", false);
+    third.count_held_out = of_kind("count_held_out", "wall", false);
+    third.grain_fit = of_kind("grain_fit", "", true);
+    third.grain_held_out = of_kind("grain_held_out", "", true);
+    for (const auto& [fit_list, held_list, key] : {std::tuple{&third.count_fit, &third.count_held_out, "count_held_out"},
+                                                   std::tuple{&third.grain_fit, &third.grain_held_out, "grain_held_out"}})
+      for (const std::string& a : *held_list)
+        if (std::find(fit_list->begin(), fit_list->end(), a) != fit_list->end())
+          t.at(key).fail(fmt::format("'{}' is also fitted: a run is fitted or held out, not both", a));
+    p.third = third;
+  }
   const ConfigNode val = c.at("validation");
   val.allow_only({"media_seeds", "v3_media_seeds", "strain_range", "bound_in_standard_errors"});
   p.media_seeds = parse_seeds(val, "media_seeds");

@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,14 @@ struct ManyBodyProbe {
   std::vector<std::pair<std::string, std::vector<std::string>>> body_groups;
   std::vector<std::string> shear_arrangements;
   std::vector<double> shear_delta_n, shear_ht;  ///< Δn; the slides ht / Rs
+  /// The law's third version (`third_version`; paper/many-body.md, "Next"): which runs fit and
+  /// which test each of its parts. Absent: no third version is analysed.
+  struct ThirdVersionPlan {
+    std::vector<std::string> count_forms;                ///< volumetric (E summed), volumetric-union
+    std::vector<std::string> count_fit, count_held_out;  ///< arrangements of the `wall` bodies, beside fit and held_out
+    std::vector<std::string> grain_fit, grain_held_out;  ///< grain-X kinds of `bodies`
+  };
+  std::optional<ThirdVersionPlan> third;
   std::vector<std::uint64_t> media_seeds;
   std::vector<std::uint64_t> v3_media_seeds;  ///< the third version's media (none before it)
   double strain_lo = 0.0, strain_hi = 0.0;

@@ -145,9 +145,10 @@ TEST(SoftParticles, TwoRadiiUseTheLawFilesMixingRuleAndASolidSphereTheChosenOne)
 // conserved (equal and opposite forces at one contact point), as for solid spheres only
 // (Conservation.MomentaOfA1000SpherePolydisperseCloud); with the pairwise laws and with the
 // many-body law (law file version 2, issue 33), whose force reads every contact of its bodies.
-void momenta_of_a_mixed_cloud(bool many_body, bool kt_gain = false) {
+void momenta_of_a_mixed_cloud(bool many_body, bool kt_gain = false, bool third = false) {
   SceneDef s = soft_scene(true);
   if (many_body) s.effects.soft_particles->laws.many_body = ManyBodyLaw{0.9, kt_gain};
+  if (third) s.effects.soft_particles->laws.many_body = ManyBodyLaw{0.6, true, true, 1.3, 0.7, 0.3};  // the union form, its own βs, g
   s.effects.rotation = true;
   s.effects.restitution = 0.6;
   const double R0 = law_file().reference_radius;
@@ -193,6 +194,7 @@ void momenta_of_a_mixed_cloud(bool many_body, bool kt_gain = false) {
 TEST(SoftParticles, MomentaOfAMixedCloudAreConserved) { momenta_of_a_mixed_cloud(false); }
 TEST(SoftParticles, MomentaOfAMixedCloudAreConservedWithTheManyBodyLaw) { momenta_of_a_mixed_cloud(true); }
 TEST(SoftParticles, MomentaOfAMixedCloudAreConservedWithTheManyBodyLawsTangentialGain) { momenta_of_a_mixed_cloud(true, true); }
+TEST(SoftParticles, MomentaOfAMixedCloudAreConservedWithTheManyBodyLawsThirdVersion) { momenta_of_a_mixed_cloud(true, true, true); }
 
 // Without damping and friction the soft laws are elastic (Fn depends on h alone): a soft-particle
 // thrown at a wall and one thrown at another come back with the energy they had (to the time

@@ -151,7 +151,7 @@ TEST(LawFile, TheManyBodyLawOfVersion2GoesRoundAndVersion1StillReads) {
   f.many_body = ManyBodyFit{"volumetric", {0.896, 0.006}, "experiments/many-body.yaml"};
   write_law_file(dir / "law.json", f);
   const LawFile g = read_law_file(dir / "law.json");
-  EXPECT_EQ(g.version, 2);
+  EXPECT_EQ(g.version, kLawFileVersion);
   ASSERT_TRUE(g.many_body);
   EXPECT_EQ(g.many_body->beta.value, 0.896);
   EXPECT_EQ(g.many_body->beta.error, 0.006);
@@ -175,7 +175,7 @@ TEST(LawFile, JsonHasTheDocumentedLayout) {
   write_law_file(dir / "law.json", full_file());
   const json j = load(dir / "law.json");
   EXPECT_EQ(j["format"], "softpack-laws");
-  EXPECT_EQ(j["version"], 2);
+  EXPECT_EQ(j["version"], kLawFileVersion);
   EXPECT_EQ(j["reference_radius"], json({{"value", 0.016}, {"unit", "m"}}));
   for (const char* m : {"normal", "tangential", "friction", "radius_scaling", "mixing"}) EXPECT_TRUE(j["models"][m].is_string()) << m;
   const json& s = j["scenes"]["soft-solid"];
@@ -233,8 +233,14 @@ const std::vector<Mistake> kMistakes = {
      {"scenes.soft-solid.friction.mu[2].unit: missing", "allowed: '1'"}},
     {"WrongFormat", [](json& j) { j["format"] = "softpack-fit"; }, {"format: 'softpack-fit'", "allowed: 'softpack-laws'"}},
     {"NoFormat", [](json& j) { j.erase("format"); }, {"format: missing", "allowed: 'softpack-laws'"}},
-    {"Version3", [](json& j) { j["version"] = 3; }, {"version: 3 is newer than this build reads", "allowed: 2"}},
-    {"Version0", [](json& j) { j["version"] = 0; }, {"version: 0 is not allowed", "allowed: 1 to 2"}},
+    {"Version4", [](json& j) { j["version"] = 4; }, {"version: 4 is newer than this build reads", "allowed: 3"}},
+    {"Version0", [](json& j) { j["version"] = 0; }, {"version: 0 is not allowed", "allowed: 1 to 3"}},
+    {"ManyBodyUnionInVersion2", [](json& j) { j["version"] = 2, j["many_body"] = {{"form", "volumetric-union"}, {"beta", {{"value", 0.6}, {"unit", "1"}}}}; },
+     {"many_body.form: 'volumetric-union' is not allowed in a version 2 file", "allowed: 'volumetric'"}},
+    {"ManyBodyGrainInVersion2", [](json& j) { j["version"] = 2, j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", 0.6}, {"unit", "1"}}}, {"grain", json::object()}}; },
+     {"many_body.grain: not allowed in a version 2 file", "allowed: version 3"}},
+    {"ManyBodyGrainExponent", [](json& j) { j["version"] = 3, j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", 0.6}, {"unit", "1"}}}, {"grain", {{"exponent", {{"value", -1}, {"unit", "1"}}}, {"beta", {{"value", 0.7}, {"unit", "1"}}}}}}; },
+     {"many_body.grain.exponent.value: -1 is not allowed", "allowed: 0 <= exponent <= 10"}},
     {"ManyBodyTangentialUnknown", [](json& j) { j["version"] = 2, j["many_body"] = {{"form", "volumetric"}, {"beta", {{"value", 0.9}, {"error", 0.01}, {"unit", "1"}}}, {"tangential", "twice"}}; },
      {"many_body.tangential: 'twice' is not allowed", "gain"}},
     {"ManyBodyGainBelowTheNormalOnset",
