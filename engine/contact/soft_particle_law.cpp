@@ -1,6 +1,7 @@
 #include "contact/soft_particle_law.hpp"
 
 #include <algorithm>
+#include <array>
 #include <numbers>
 
 namespace softpack {
@@ -62,38 +63,50 @@ double cap_depth(double eps) {
 }
 
 double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& depth, int meridians) {
+  // Kept from call to call (the engine calls this for every soft-particle of two caps or more, every step).
+  thread_local std::vector<double> h, s, cosine, sine;
+  thread_local std::vector<std::array<double, 3>> m;  // A, and B = Bc cos φ + Bs sin φ, of each cap that meets cap k
   const std::size_t caps = n.size();
-  std::vector<double> h(caps), half(caps);  // the plane's distance 1 − δ, the cap's half-angle
+  h.resize(caps), s.resize(caps);
   for (std::size_t k = 0; k < caps; ++k) {
-    h[k] = 1.0 - std::clamp(depth[k], 0.0, 1.0 - 1e-9);
-    half[k] = std::acos(h[k]);
+    h[k] = 1.0 - std::clamp(depth[k], 0.0, 1.0 - 1e-9);  // the plane's distance 1 − δ: cos of the cap's half-angle
+    s[k] = std::sqrt(1.0 - h[k] * h[k]);                  // its sine
   }
-  // ∫ (1 − (h / cos θ)³) sin θ dθ = −cos θ − h³ / (2 cos² θ): the radial integral of a meridian's piece
-  const auto F = [](double hk, double c) { return -c - hk * hk * hk / (2.0 * c * c); };
+  if (cosine.size() != static_cast<std::size_t>(meridians)) {
+    cosine.resize(static_cast<std::size_t>(meridians)), sine.resize(static_cast<std::size_t>(meridians));
+    for (int i = 0; i < meridians; ++i) cosine[static_cast<std::size_t>(i)] = std::cos(2.0 * std::numbers::pi * i / meridians),
+                                        sine[static_cast<std::size_t>(i)] = std::sin(2.0 * std::numbers::pi * i / meridians);
+  }
+  // ∫ (1 − (h / cos θ)³) sin θ dθ = −cos θ − h³ / (2 cos² θ), written in t = tan θ (cos² θ = 1 / (1 + t²)):
+  // the radial integral of a meridian's piece
+  const auto F = [](double hk, double t) { return -1.0 / std::sqrt(1.0 + t * t) - hk * hk * hk * (1.0 + t * t) / 2.0; };
   double total = 0.0;
   for (std::size_t k = 0; k < caps; ++k) {
     if (!(depth[k] > 0.0)) continue;
-    std::vector<Vec3> m;  // the caps that meet cap k: where u·m > 0 the ray is in theirs first
+    const double whole = (-h[k] - h[k] / 2.0) - (-1.0 - h[k] * h[k] * h[k] / 2.0);  // the meridian over the whole cap
+    const Vec3 e1 = n[k].unitOrthogonal(), e2 = n[k].cross(e1);
+    m.clear();  // where u·(h_k n_l − h_l n_k) > 0 the ray is in cap l first (the caps meet: their half-angles add to more than the angle between them)
     for (std::size_t l = 0; l < caps; ++l)
-      if (l != k && depth[l] > 0.0 && std::acos(std::clamp(n[k].dot(n[l]), -1.0, 1.0)) < half[k] + half[l]) m.push_back(h[k] * n[l] - h[l] * n[k]);
-    const double whole = F(h[k], h[k]) - F(h[k], 1.0);  // the meridian over the whole cap
+      if (l != k && depth[l] > 0.0 && n[k].dot(n[l]) > h[k] * h[l] - s[k] * s[l]) {
+        const Vec3 ml = h[k] * n[l] - h[l] * n[k];
+        m.push_back({ml.dot(n[k]), ml.dot(e1), ml.dot(e2)});
+      }
     if (m.empty()) {
       total += 0.5 * whole;
       continue;
     }
-    const Vec3 e1 = n[k].unitOrthogonal(), e2 = n[k].cross(e1);
+    const double t_cap = s[k] / h[k];
     double sum = 0.0;
-    for (int i = 0; i < meridians; ++i) {
-      const double phi = 2.0 * std::numbers::pi * i / meridians;
-      const Vec3 t = std::cos(phi) * e1 + std::sin(phi) * e2;
-      double lo = 0.0, hi = half[k];  // u = sin θ t + cos θ n_k; cap l wins where A cos θ + B sin θ > 0
-      for (const Vec3& ml : m) {
-        const double A = ml.dot(n[k]), B = ml.dot(t);
-        if (B > 0.0) hi = std::min(hi, A < 0.0 ? std::atan(-A / B) : 0.0);
-        else if (B < 0.0) lo = std::max(lo, A > 0.0 ? std::atan(-A / B) : 0.0);
+    for (std::size_t i = 0; i < static_cast<std::size_t>(meridians); ++i) {
+      // u = sin θ (cos φ e1 + sin φ e2) + cos θ n_k: cap l wins where A + B tan θ > 0
+      double lo = 0.0, hi = t_cap;
+      for (const auto& [A, Bc, Bs] : m) {
+        const double B = Bc * cosine[i] + Bs * sine[i];
+        if (B > 0.0) hi = std::min(hi, A < 0.0 ? -A / B : 0.0);
+        else if (B < 0.0) lo = std::max(lo, A > 0.0 ? -A / B : 0.0);
         else if (A > 0.0) hi = 0.0;
       }
-      if (hi > lo) sum += F(h[k], std::cos(hi)) - F(h[k], std::cos(lo));
+      if (hi > lo) sum += F(h[k], hi) - F(h[k], lo);
     }
     total += 0.5 * sum / meridians;
   }
