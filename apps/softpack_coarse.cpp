@@ -186,6 +186,8 @@ int main(int argc, char** argv) {
   val_cmd->add_option("--dir", val_dir, "the validation study's folder, e.g. data/many-body-validation")->required();
   val_cmd->add_option("--settings", val_settings, "its settings to judge");
   val_cmd->add_option("--out", val_out, "folder of validation.md and validation.json")->required();
+  bool val_v3 = false;
+  val_cmd->add_flag("--v3", val_v3, "on the third version's media seeds (validation.v3_media_seeds), not media_seeds");
   std::string census_plan, census_config, census_media, census_out;
   CLI::App* census_cmd = app.add_subcommand(
       "soft-contacts", "where the media use the soft-particle law: every soft-particle contact of the soft model, against the probe's range (coarse/soft_census.hpp)");
@@ -193,6 +195,8 @@ int main(int argc, char** argv) {
   census_cmd->add_option("--config", census_config, "the soft model's settings, e.g. data/many-body-validation/profiles/many-body.yaml")->required();
   census_cmd->add_option("--media", census_media, "folder of the medium files seed-S.h5, e.g. data/many-body-validation/many-body/media")->required();
   census_cmd->add_option("--out", census_out, "folder of contacts.md and contacts.dat")->required();
+  bool census_v3 = false;
+  census_cmd->add_flag("--v3", census_v3, "on the third version's media seeds (validation.v3_media_seeds), not media_seeds");
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;
@@ -241,12 +245,12 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*census_cmd) {
-      write_soft_census(read_many_body_probe(census_plan), census_plan, census_config, census_media, census_out);
+      write_soft_census(read_many_body_probe(census_plan), census_plan, census_config, census_media, census_out, census_v3);
       fmt::print(stderr, "{} soft-contacts: {}/contacts.md\n", program, census_out);
       return 0;
     }
     if (*val_cmd) {
-      for (const ValidationVerdict& v : write_validation(read_many_body_probe(val_plan), val_plan, val_dir, val_settings, val_out))
+      for (const ValidationVerdict& v : write_validation(read_many_body_probe(val_plan), val_plan, val_dir, val_settings, val_out, val_v3))
         fmt::print(stderr, "{} validation: {}: {} of {} points within the bound, accepted: {}\n", program, v.setting, v.agreeing, v.points,
                    v.accepted ? "yes" : "no");
       return 0;

@@ -115,3 +115,9 @@ many-body-census: | $(TOOLS)  ## the validation media's soft-particle contacts a
 .PHONY: many-body-verdict
 many-body-verdict: | $(TOOLS)  ## the many-body law's acceptance on the validation media (DATA/many-body-validation/report/validation.md)
 	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-validation --out $(DATA)/many-body-validation/report
+# The third version's (paper/many-body.md, "Next"): after make many-body-v3, on its own media.
+.PHONY: many-body-v3-verdict
+many-body-v3-verdict: | $(TOOLS)  ## the law's third version's acceptance on its media, and its census (DATA/many-body-v3/report/validation.md, contacts.md)
+	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --out $(DATA)/many-body-v3/report --v3
+	@$(RUN) $(COARSE_TOOL) soft-contacts --probe $(PROBE_PLAN) --config $(DATA)/many-body-v3/profiles/many-body.yaml \
+	  --media $(DATA)/many-body-v3/many-body/media --out $(DATA)/many-body-v3/report --v3

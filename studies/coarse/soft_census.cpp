@@ -74,7 +74,7 @@ SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& r
 }
 
 void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& config, const std::string& media_dir,
-                       const std::string& out_dir) {
+                       const std::string& out_dir, bool v3) {
   const CoarseGrainSettings s = read_coarse_grain_settings(config);
   const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
   const double dn_max = plan.delta_n.back(), E_max = 6.0 * cap_volume(dn_max);
@@ -89,7 +89,7 @@ void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, 
     SoftCensus c, worst;  ///< the end of loading; each fraction's largest over the rows
   };
   std::vector<End> ends;
-  for (const std::uint64_t seed : plan.media_seeds) {
+  for (const std::uint64_t seed : v3 ? plan.v3_media_seeds : plan.media_seeds) {
     const std::string path = fmt::format("{}/seed-{}.h5", media_dir, seed);
     const MediumFile mf = read_medium_file(path);
     if (mf.settings != s.medium_text) throw InputError(fmt::format("{}: made with other settings than {}", path, config));

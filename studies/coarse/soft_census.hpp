@@ -34,8 +34,9 @@ struct SoftCensus {
 SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& row, double dn_max, double E_max);
 
 /// Runs the soft model of each media seed of the plan (the medium files MEDIA_DIR/seed-S.h5, the
-/// settings `config`) and writes OUT/contacts.dat (every row of every seed) and OUT/contacts.md.
+/// settings `config`; `v3`: the third version's media seeds) and writes OUT/contacts.dat (every
+/// row of every seed) and OUT/contacts.md.
 void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& config, const std::string& media_dir,
-                       const std::string& out_dir);
+                       const std::string& out_dir, bool v3 = false);
 
 }  // namespace softpack
