@@ -9,6 +9,7 @@
 
 #include "coarse/probe_fit.hpp"
 #include "coarse/probe_second.hpp"
+#include "coarse/probe_third.hpp"
 #include "coarse/validation.hpp"
 #include "core/error.hpp"
 
@@ -184,6 +185,53 @@ TEST(ManyBodyValidation, ThePreregisteredCriterionJudgesEveryPointOfItsRangeAndT
   EXPECT_FALSE(judge_validation(c, plan, "s").accepted);
   c.points.pop_back();  // no shear: not accepted (the criterion asks for τ)
   EXPECT_FALSE(judge_validation(c, plan, "s").accepted);
+}
+
+// The third version's analysis (coarse/probe_third.hpp) on a synthetic probe made by its own law:
+// walls by the union form at β = 0.6, grains by g(X) = (X / (1 + X))^1.3 and β = 0.7, soft-particles
+// of a third of the wall's force by the mean rule at β_ss = 0.3; it chooses the union and finds them.
+TEST(ManyBodyProbeLaws, TheThirdVersionFindsTheLawThatMadeTheProbe) {
+  ManyBodyProbe plan;
+  plan.seeds = {1, 2, 3, 4};
+  plan.radii = {{"r", 0.016}};
+  plan.delta_n = {0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4};
+  plan.fit = {"one", "opposite", "cube"}, plan.held_out = {"orthogonal-half", "triangle"};
+  plan.force_floor = 0.01, plan.tie_factor = 1.1;
+  plan.body_groups = {{"wall", {"random-8", "random-7"}}, {"grain-0.5", {"one", "opposite", "cube"}}, {"grain-2", {"one", "tetrahedral"}},
+                      {"soft", {"one", "opposite", "tetrahedral"}}};
+  plan.third = ManyBodyProbe::ThirdVersionPlan{{"volumetric", "volumetric-union"}, {"random-8"}, {"random-7"}, {"grain-0.5"}, {"grain-2"}};
+  const fit::PowerLawFit wall = eq7(40.0, 2.5, -0.05), soft = eq7(40.0 / 3.0, 2.5, -0.05 / 3.0);
+  std::vector<ProbeWallForce> walls, bodies;
+  for (const std::uint64_t seed : plan.seeds) {
+    const auto add = [&](const std::string& name, std::vector<ProbeWallForce>& to) {
+      const ProbeArrangement a = builtin_arrangement(name, seed);
+      const bool is_soft = a.body.kind == PressingBody::Kind::soft, is_grain = a.body.kind == PressingBody::Kind::grain;
+      const ProbeLaw truth{"volumetric-union", is_soft ? 0.15 : is_grain ? 0.7 : 0.6, {{"r", is_soft ? soft : wall}}, is_grain ? 1.3 : 0.0};
+      for (const double dn : plan.delta_n) {
+        std::vector<double> d;
+        for (const ProbeWall& w : a.walls) d.push_back(w.w * dn);
+        for (std::size_t k = 0; k < d.size(); ++k) {
+          ProbeWallForce p = probe_point(a, "r", seed, d, k, 0.0);
+          p.Fn = truth.predict(p) * (1.0 + 0.02 * (static_cast<double>(seed) - 2.5) / 1.5);
+          to.push_back(p);
+        }
+      }
+    };
+    for (const std::string& name : plan.arrangements()) add(name, walls);
+    for (const auto& [kind, names] : plan.body_groups)
+      for (const std::string& name : names) add(name + ":" + kind, bodies);
+  }
+  const ThirdVersion t = analyse_third_version(plan, walls, bodies, SecondPart{}, 0.9);
+  ASSERT_EQ(t.count.size(), 2u);
+  EXPECT_EQ(t.count_chosen, "volumetric-union");
+  EXPECT_NEAR(t.count[1].beta.value, 0.6, 0.02);
+  EXPECT_LT(t.count[1].held_out.rms_log, 0.03);
+  EXPECT_GT(t.count[0].held_out.rms_log, t.count[1].held_out.rms_log);
+  EXPECT_NEAR(t.grain_p.value, 1.3, 0.05);
+  EXPECT_NEAR(t.grain_beta.value, 0.7, 0.05);
+  EXPECT_LT(t.grain_held_out.rms_log, 0.03);
+  EXPECT_NEAR(t.soft_beta.value, 0.3, 0.03);
+  EXPECT_TRUE(t.gain.empty());
 }
 
 }  // namespace
