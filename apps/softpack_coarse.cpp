@@ -22,6 +22,7 @@
 #include "coarse/probe_settings.hpp"
 #include "coarse/soft_census.hpp"
 #include "coarse/validation.hpp"
+#include "coarse/in_place.hpp"
 #include "io/atomic_file.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
@@ -197,6 +198,21 @@ int main(int argc, char** argv) {
   census_cmd->add_option("--out", census_out, "folder of contacts.md and contacts.dat")->required();
   bool census_v3 = false;
   census_cmd->add_flag("--v3", census_v3, "on the third version's media seeds (validation.v3_media_seeds), not media_seeds");
+  std::string place_plan, place_config, place_media, place_out;
+  std::uint64_t place_seed = 0;
+  CLI::App* place_cmd = app.add_subcommand(
+      "in-place", "the law in place: the resolved medium compressed again, each site's pushes against the law's from the same geometry (coarse/in_place.hpp)");
+  place_cmd->add_option("--probe", place_plan, "the plan (its strain range), e.g. experiments/many-body.yaml")->required();
+  place_cmd->add_option("--config", place_config, "the settings with the law file, e.g. data/many-body-v3/profiles/many-body.yaml")->required();
+  place_cmd->add_option("--media", place_media, "folder of the medium files seed-S.h5, e.g. data/many-body-v3/reference/media")->required();
+  place_cmd->add_option("--seed", place_seed, "the medium's seed")->required();
+  place_cmd->add_option("--out", place_out, "folder of seed-S.dat")->required();
+  std::string place_report_plan, place_report_dir;
+  bool place_v3 = false;
+  CLI::App* place_report_cmd = app.add_subcommand("in-place-report", "the law in place over the plan's media seeds: in-place.md from each seed-S.dat");
+  place_report_cmd->add_option("--probe", place_report_plan, "the plan, e.g. experiments/many-body.yaml")->required();
+  place_report_cmd->add_option("--dir", place_report_dir, "folder of seed-S.dat, where in-place.md goes")->required();
+  place_report_cmd->add_flag("--v3", place_v3, "the third version's media seeds (validation.v3_media_seeds), not media_seeds");
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;
@@ -242,6 +258,21 @@ int main(int argc, char** argv) {
     if (*stamp_cmd) {
       const CoarseStamps st = coarse_stamps(stamp_config, release);
       fmt::print("medium={}\nresolved={}\nsoft={}\n", st.medium, st.resolved, st.soft);
+      return 0;
+    }
+    if (*place_cmd) {
+      const Lines l;
+      const Stopwatch clock;
+      write_in_place_seed(read_many_body_probe(place_plan), place_config, place_media, place_seed, place_out, [&](double done, double total, const CurveRow& row) {
+        fmt::print(stderr, "{}{} in-place seed {}: strain {:.4f} ({:.0f}%), ETA {:.0f} s{}", l.cr(), program, place_seed, row.strain, 100.0 * done / total,
+                   done > 0.0 ? clock.elapsed().wall * (total - done) / done : 0.0, l.nl());
+      });
+      fmt::print(stderr, "{}{} in-place: {}/seed-{}.dat ({:.0f} CPU-s)\n", l.cr(), program, place_out, place_seed, clock.elapsed().cpu);
+      return 0;
+    }
+    if (*place_report_cmd) {
+      write_in_place_report(read_many_body_probe(place_report_plan), place_report_plan, place_report_dir, place_v3);
+      fmt::print(stderr, "{} in-place-report: {}/in-place.md\n", program, place_report_dir);
       return 0;
     }
     if (*census_cmd) {

@@ -115,6 +115,19 @@ many-body-census: | $(TOOLS)  ## the validation media's soft-particle contacts a
 .PHONY: many-body-verdict
 many-body-verdict: | $(TOOLS)  ## the many-body law's acceptance on the validation media (DATA/many-body-validation/report/validation.md)
 	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-validation --out $(DATA)/many-body-validation/report
+# The law in place (paper/many-body.md, "Next: measuring the law in place"): the third version's
+# media compressed resolved again, each site's pushes against the law's (coarse/in_place.hpp).
+IN_PLACE_DIR ?= $(DATA)/many-body-v3/in-place
+IN_PLACE_SEEDS = $(shell sed -n 's/^ *v3_media_seeds: *\[\(.*\)\]/\1/p' $(PROBE_PLAN) | tr -d ',')
+.PHONY: many-body-in-place
+many-body-in-place: $(foreach s,$(IN_PLACE_SEEDS),$(IN_PLACE_DIR)/seed-$(s).dat) | $(TOOLS)  ## the law in place on the third version's media (DATA/many-body-v3/in-place/in-place.md)
+	@$(RUN) $(COARSE_TOOL) in-place-report --probe $(PROBE_PLAN) --dir $(IN_PLACE_DIR) --v3
+$(IN_PLACE_DIR)/seed-%.dat: $(DATA)/many-body-v3/reference/media/seed-%.h5 $(DATA)/many-body/report/laws.json | $(TOOLS)
+	@mkdir -p $(@D)
+	@$(RUN) $(COARSE_TOOL) in-place --probe $(PROBE_PLAN) --config $(DATA)/many-body-v3/profiles/many-body.yaml \
+	  --media $(DATA)/many-body-v3/reference/media --seed $* --out $(@D) 2> $(@D)/seed-$*.log \
+	  || { echo "in-place: seed $* FAILED (log: $(@D)/seed-$*.log)"; tr '\r' '\n' < $(@D)/seed-$*.log | tail -3; exit 1; }
+	@echo "$$(tr '\r' '\n' < $(@D)/seed-$*.log | tail -1)"
 # The third version's (paper/many-body.md, "Next"): after make many-body-v3, on its own media.
 .PHONY: many-body-v3-verdict
 many-body-v3-verdict: | $(TOOLS)  ## the law's third version's acceptance on its media, and its census (DATA/many-body-v3/report/validation.md, contacts.md)
