@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -130,10 +131,12 @@ namespace {
 
 struct Sums {
   std::size_t n = 0, loaded = 0;
-  double measured = 0.0, law = 0.0, pairwise = 0.0;
+  double measured = 0.0, law = 0.0, pairwise = 0.0, below_onset = 0.0;  // below_onset: measured where Eq. 7 is 0
   double law_log = 0.0, law_log2 = 0.0, pair_log = 0.0, pair_log2 = 0.0;  // over the loaded ones
+  std::vector<double> dn;
   void add(const InPlaceContact& c, double floor) {
-    ++n, measured += c.measured, law += c.law, pairwise += c.pairwise;
+    dn.push_back(c.dn);
+    ++n, measured += c.measured, law += c.law, pairwise += c.pairwise, below_onset += c.pairwise > 0.0 ? 0.0 : c.measured;
     if (!(c.measured > floor)) return;
     ++loaded;
     const double a = std::log(std::max(c.law, floor) / c.measured), b = std::log(std::max(c.pairwise, floor) / c.measured);
@@ -142,8 +145,12 @@ struct Sums {
   std::string row() const {
     const double k = static_cast<double>(loaded);
     const auto e = [&](double s1, double s2) { return loaded ? fmt::format("{:.2f} ({:+.2f})", std::exp(std::sqrt(s2 / k)), s1 / k) : std::string("–"); };
-    return fmt::format("{} | {} | {:.3g} | {:.3f} | {:.3f} | {} | {} |", n, loaded, measured, measured > 0.0 ? law / measured : 0.0,
-                       measured > 0.0 ? pairwise / measured : 0.0, e(law_log, law_log2), e(pair_log, pair_log2));
+    const auto ratio = [&](double x) { return measured > 0.0 ? x / measured : 0.0; };
+    std::vector<double> d = dn;
+    std::sort(d.begin(), d.end());
+    const auto q = [&](double f) { return d.empty() ? 0.0 : d[static_cast<std::size_t>(std::lround(f * static_cast<double>(d.size() - 1)))]; };
+    return fmt::format("{} | {} | {:.3f} / {:.3f} | {:.3g} | {:.2f} | {:.3f} | {:.3f} | {} | {} |", n, loaded, q(0.5), q(0.9), measured, ratio(below_onset),
+                       ratio(law), ratio(pairwise), e(law_log, law_log2), e(pair_log, pair_log2));
   }
 };
 
@@ -181,20 +188,28 @@ void write_in_place_report(const ManyBodyProbe& plan, const std::string& plan_pa
       "from the same geometry. Sums over the seeds; law / measured and pairwise / measured are ratios of the sums; an error is as in "
       "probe.md, exp(rms ln(pred/meas)) (mean of the logarithm), over the contacts whose push exceeds the floor {:.3g} N (force_floor of "
       "the soft-solid law at Δn = {}). Every contact: `seed-S.dat`.\n\n"
-      "| strain | body | contacts | above the floor | Σ measured [N] | law / measured | pairwise / measured | error of the law | error of pairwise |\n"
-      "|---|---|---|---|---|---|---|---|---|\n",
+      "The column \"below the onset\" is the share of the measured push made by contacts where Eq. 7 is 0 (Δn below the law's onset: "
+      "the pairwise law gives nothing there, the many-body law only with the site's other caps).\n\n"
+      "## At every fifth of the strain range's hundredths\n\n"
+      "| strain | body | contacts | above the floor | Δn median / 90 % | Σ measured [N] | below the onset | law / measured | pairwise / measured | error of the law | "
+      "error of pairwise |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
       code_version(), fmt::join(seeds, ", "), plan_path, laws, floor, plan.delta_n.back());
   std::map<double, std::map<int, Sums>> by_strain;
-  std::map<int, Sums> by_count;  // the site's intruding bodies: 1-3, 4-6, 7-9, 10 or more
+  std::map<int, Sums> by_kind, by_count;  // by_count: the site's intruding bodies, 1-3, 4-6, 7-9, 10 or more
   for (const InPlaceContact& c : all) {
-    const double strain = std::round(c.strain * 1e4) / 1e4;
-    by_strain[strain][c.kind].add(c, floor), by_strain[strain][3].add(c, floor);
+    const double hundredths = std::round(c.strain * 100.0);
+    if (std::abs(c.strain * 100.0 - hundredths) < 1e-6 && static_cast<long>(hundredths) % 5 == 0)
+      by_strain[hundredths / 100.0][c.kind].add(c, floor), by_strain[hundredths / 100.0][3].add(c, floor);
+    by_kind[c.kind].add(c, floor), by_kind[3].add(c, floor);
     by_count[std::min<int>(3, static_cast<int>((c.count - 1) / 3))].add(c, floor);
   }
-  for (const auto& [strain, by_kind] : by_strain)
-    for (const auto& [kind, sums] : by_kind) md += fmt::format("| {:.2f} | {} | {}\n", strain, kind == 3 ? "all" : kinds[kind], sums.row());
-  md += "\nAll strains, by the site's number of intruding bodies:\n\n| bodies | contacts | above the floor | Σ measured [N] | law / measured | "
-        "pairwise / measured | error of the law | error of pairwise |\n|---|---|---|---|---|---|---|---|\n";
+  for (const auto& [strain, kinds_at] : by_strain)
+    for (const auto& [kind, sums] : kinds_at) md += fmt::format("| {:.2f} | {} | {}\n", strain, kind == 3 ? "all" : kinds[kind], sums.row());
+  const std::string head = "| contacts | above the floor | Δn median / 90 % | Σ measured [N] | below the onset | law / measured | pairwise / measured | "
+                           "error of the law | error of pairwise |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  md += fmt::format("\n## Every recorded loading strain from {} to {}, by body\n\n| body ", plan.strain_lo, plan.strain_hi) + head;
+  for (const auto& [kind, sums] : by_kind) md += fmt::format("| {} | {}\n", kind == 3 ? "all" : kinds[kind], sums.row());
+  md += "\n## The same, by the site's number of intruding bodies\n\n| bodies " + head;
   const char* bins[] = {"1-3", "4-6", "7-9", "10 or more"};
   for (const auto& [bin, sums] : by_count) md += fmt::format("| {} | {}\n", bins[bin], sums.row());
   write_file_atomically(out_dir + "/in-place.md", md);
