@@ -12,7 +12,9 @@
 
 #include "core/error.hpp"
 #include "formats/law_file.hpp"
+#include "core/parallel.hpp"
 #include "forces/contact_walk.hpp"
+#include "state/state_digest.hpp"
 #include "sim/simulation.hpp"
 #include "support/scenes.hpp"
 
@@ -200,6 +202,45 @@ TEST(ManyBodySoftParticles, TheThirdVersionPressesByItsCapsUnionAndItsGrainFacto
   SceneDef s = between_walls(true, R, 0.2, false);
   s.effects.soft_particles->laws = third(p), s.effects.soft_particles->grain_contact = GrainContactRule::reduced_radius;
   EXPECT_THROW(Simulation{s}, InputError);
+}
+
+// The union's states are made in a phase of their own on threads (forces/compile_loops.hpp): a
+// cloud of soft-particles and grains under the third version gives the bits of one thread on 2, 3
+// and 8, with soft-particles of two caps or more.
+TEST(ManyBodySoftParticles, TheThirdVersionGivesTheSameBitsForAnyThreadCount) {
+  const double R0 = pairwise_file().reference_radius;
+  const auto run = [&] {
+    SceneDef s = soft_scene(true, true, true);
+    s.effects.soft_particles->laws = third(1.3);
+    s.effects.soft_particles->laws.many_body->tangential_gain = true;
+    s.effects.rotation = true, s.effects.restitution = 0.6;
+    testing::Random rng(29);
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < 6; ++l)
+        for (int m = 0; m < 6; ++m) {
+          const Vec3 x(1.6 * R0 * k, 1.6 * R0 * l, 1.6 * R0 * m);
+          ParticleDef p = (k + l + m) % 3 ? soft_particle(x, R0 * (0.8 + 0.4 * rng.uniform())) : ParticleDef{};
+          if (!p.soft) p.x = x, p.r = R0 * (0.3 + 0.5 * rng.uniform());
+          p.v = rng.in_box(0.3), p.w = rng.in_box(5.0);
+          s.particles.push_back(p);
+        }
+    Simulation sim(s);
+    sim.run_steps(300);
+    std::size_t crowded = 0;
+    for (const BodyCaps& c : sim.contact_lists().family.at(kSoftParticleFamily).body_caps) crowded += c.u.size() >= 2;
+    EXPECT_GT(crowded, 10u) << "the cloud must have soft-particles of two caps or more";
+    Fnv1a h;
+    add_bits(h, sim.state());
+    return h.value;
+  };
+  const int before = parallel::threads();
+  parallel::set_threads(1);
+  const std::uint64_t one = run();
+  for (const int threads : {2, 3, 8}) {
+    parallel::set_threads(threads);
+    EXPECT_EQ(run(), one) << threads << " threads";
+  }
+  parallel::set_threads(before);
 }
 
 }  // namespace
