@@ -221,6 +221,8 @@ int main(int argc, char** argv) {
       ->excludes(seeds_config_opt);
   std::string runs_stamp_release;
   auto* runs_stamp_opt = seeds_cmd->add_option("--runs-stamp", runs_stamp_release, "with --probe: print GROUP=STAMP of its groups of runs for this release instead (for make)");
+  bool v3_media = false;
+  seeds_cmd->add_flag("--v3-media", v3_media, "with --probe: print the third version's media seeds (validation.v3_media_seeds) instead (for make)");
   bool medium_text = false;  // what a medium depends on, as the medium file records it (maintenance)
   seeds_cmd->add_flag("--medium-text", medium_text)->group("");
   std::string stamp_config, release;
@@ -233,6 +235,10 @@ int main(int argc, char** argv) {
       if (seeds_probe.empty() == seeds_config.empty()) throw InputError("seeds: give --config or --probe");
       if (!seeds_probe.empty()) {
         const ManyBodyProbe plan = read_many_body_probe(seeds_probe);
+        if (v3_media) {
+          fmt::print("{}\n", fmt::join(plan.v3_media_seeds, " "));
+          return 0;
+        }
         const bool stamps = runs_stamp_opt->count() > 0;
         if (stamps && runs_stamp_release.empty()) throw InputError("seeds: --runs-stamp '' is not allowed; allowed: the release, e.g. 0.6.1");
         const auto groups = plan.runs_stamps(stamps ? runs_stamp_release : "-");

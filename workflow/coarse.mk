@@ -118,7 +118,7 @@ many-body-verdict: | $(TOOLS)  ## the many-body law's acceptance on the validati
 # The law in place (paper/many-body.md, "Next: measuring the law in place"): the third version's
 # media compressed resolved again, each site's pushes against the law's (coarse/in_place.hpp).
 IN_PLACE_DIR ?= $(DATA)/many-body-v3/in-place
-IN_PLACE_SEEDS = $(shell sed -n 's/^ *v3_media_seeds: *\[\(.*\)\]/\1/p' $(PROBE_PLAN) | tr -d ',')
+IN_PLACE_SEEDS = $(if $(filter many-body-in-place,$(MAKECMDGOALS)),$(shell $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media))
 .PHONY: many-body-in-place
 many-body-in-place: $(foreach s,$(IN_PLACE_SEEDS),$(IN_PLACE_DIR)/seed-$(s).dat) | $(TOOLS)  ## the law in place on the third version's media (DATA/many-body-v3/in-place/in-place.md)
 	@$(RUN) $(COARSE_TOOL) in-place-report --probe $(PROBE_PLAN) --dir $(IN_PLACE_DIR) --v3

@@ -110,7 +110,8 @@ concept BodyStateModel = requires { Model::Normal::kBodyState; } && Model::Norma
 
 /// A body-state model whose state may be made from each body's closed contacts' caps instead of
 /// a sum (the many-body law's union form): its normal sub-law declares kBodyCaps, body_caps(its
-/// params) (whether it is), cap_depth_of(h, its constants) (a cap's depth over the body's radius)
+/// params) (whether it is), cap_depth_of(h, its constants) (a cap's depth over the body's radius),
+/// keeps_cap(its constants, lane, body 1 or 2) (whether that body's state is made from caps at all)
 /// and body_state(directions, depths) (the state from a body's caps, its direction from the
 /// body's centre towards the contact), which the pass calls for each body of two caps or more.
 template <class Model>

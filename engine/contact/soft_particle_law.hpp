@@ -105,6 +105,9 @@ template <class T>
 }
 /// a(δ) = 2δ − δ²: the cap's base area over π R².
 inline double cap_area(double d) { return 2.0 * d - d * d; }
+/// The meridians of the union of caps, the engine's and the probe analysis's (tests/physics
+/// ManyBodySoftParticles.TheCapsUnionIsExactWhereItIsKnown measures what they miss).
+inline constexpr int kCapUnionMeridians = 256;
 /// The volume the caps of depths δ_k R along the unit directions n_k cut from a sphere of radius R
 /// together (their union), over the sphere's volume: v(δ) for one cap, Σ v(δ_k) for caps that do
 /// not meet. A ray from the centre along u leaves the sphere's union of caps at r = 1 and enters
@@ -114,7 +117,7 @@ inline double cap_area(double d) { return 2.0 * d - d * d; }
 /// integral is exact; the meridians are summed by the periodic trapezoid rule (`meridians` of
 /// them, only for caps another one meets). δ_k is taken in [0, 1 − 1e-9] (the plane short of the
 /// centre). Deterministic: the same bits for the same caps in the same order.
-double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& depth, int meridians = 256);
+double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& depth, int meridians = kCapUnionMeridians);
 /// δ in [0, 2] with v(δ) = eps (0 for eps <= 0, 2 for eps >= 1): the cubic's trigonometric root,
 /// polished by Newton's method to within a few units of the last place.
 double cap_depth(double eps);
@@ -231,8 +234,13 @@ struct SoftManyBodyNormal : SoftNormal {
   [[gnu::always_inline]] static T cap_depth_of(const T& h, const Constants<T>& k) {
     return h / k.R;
   }
-  static double body_state(const std::vector<Vec3>& u, const std::vector<double>& depth) { return cap_union_volume(u, depth, kMeridians); }
-  static constexpr int kMeridians = 256;  ///< cap_union_volume's, the probe analysis's: within 3e-4 of the exact union (tests/physics)
+  /// Whether body `body` (1 or 2) of lane m's contact keeps the cap: a soft-particle's (a grain's
+  /// state is never read).
+  template <class W>
+  [[gnu::always_inline]] static bool keeps_cap(const Constants<W>& k, int m, int body) {
+    return k.soft.v[m] == kBoth || k.soft.v[m] == body;
+  }
+  static double body_state(const std::vector<Vec3>& u, const std::vector<double>& depth) { return cap_union_volume(u, depth); }
   static Eval evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g);
   /// ∫ Fn dh from 0 to h with the other contacts' caps as they are (Simpson's rule, 64 intervals).
   static double energy(const Params& p, const Constants<double>& k, double h, double s1, double s2);

@@ -252,8 +252,9 @@ struct PairContacts {
         const Wide depth = Model::Normal::cap_depth_of(h, constants);
         for (int m = 0; m < live; ++m) {
           const Vec3 u = lane(d, m).normalized();  // from j towards i: sphere j's cap, sphere i's the other way
-          if (!ghost) s.caps[i.v[m]].u.push_back(-u), s.caps[i.v[m]].depth.push_back(lane(depth, m));
-          if (static_cast<std::size_t>(j.v[m]) < j_end) s.caps[j.v[m]].u.push_back(u), s.caps[j.v[m]].depth.push_back(lane(depth, m));
+          if (!ghost && Model::Normal::keeps_cap(constants, m, 1)) s.caps[i.v[m]].u.push_back(-u), s.caps[i.v[m]].depth.push_back(lane(depth, m));
+          if (static_cast<std::size_t>(j.v[m]) < j_end && Model::Normal::keeps_cap(constants, m, 2))
+            s.caps[j.v[m]].u.push_back(u), s.caps[j.v[m]].depth.push_back(lane(depth, m));
         }
       }
   }

@@ -106,7 +106,8 @@ struct WallContacts {
     if constexpr (BodyCapsModel<Model>)
       if (s.caps) {
         const W depth = Model::Normal::cap_depth_of(h, constants);
-        for (int m = 0; m < live; ++m) s.caps[i.v[m]].u.push_back(-lane(n, m)), s.caps[i.v[m]].depth.push_back(lane(depth, m));  // n: from the wall
+        for (int m = 0; m < live; ++m)
+          if (Model::Normal::keeps_cap(constants, m, 1)) s.caps[i.v[m]].u.push_back(-lane(n, m)), s.caps[i.v[m]].depth.push_back(lane(depth, m));  // n: from the wall
       }
   }
 

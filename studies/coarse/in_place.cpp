@@ -71,32 +71,30 @@ std::vector<InPlaceContact> in_place_contacts(const Simulation& sim, const Mediu
     add(body[i], body[j], cc.Fn() * n);
     add(body[j], body[i], -cc.Fn() * n);
   });
-  // The law's prediction from the same geometry.
-  const ManyBodyLaw& mb = *laws.many_body;
-  const SoftSceneLaw &solid = *laws.soft_solid, &soft = *laws.soft_soft;
-  const auto scale_of = [&](const SoftSceneLaw& law) { return law.normal_exponent ? std::pow(Rs / laws.R0, *law.normal_exponent) : 1.0; };
+  // The law's prediction from the same geometry: the engine's soft-particle model, its body
+  // states made as the per-body pass makes them (contact/soft_particle_law.hpp).
+  const SoftNormal::Params params{&laws, GrainContactRule::wall, false};
   std::vector<double> E(sites, 0.0);
   for (std::size_t k = 0; k < sites; ++k) {
     std::vector<Vec3> u;
     std::vector<double> d;
     for (const Intrusion& in : by_site[k]) u.push_back(in.u), d.push_back(in.dn), E[k] += cap_volume(in.dn);
-    if (mb.union_of_caps && u.size() >= 2) E[k] = cap_union_volume(u, d, SoftManyBodyNormal::kMeridians);
+    if (SoftManyBodyNormal::body_caps(params) && u.size() >= 2) E[k] = SoftManyBodyNormal::body_state(u, d);
   }
   std::vector<InPlaceContact> out;
   for (std::size_t k = 0; k < sites; ++k)
     for (const Intrusion& in : by_site[k]) {
       InPlaceContact c{strain, k, in.body < 0 ? 0 : in.body < static_cast<int>(grains) ? 1 : 2, in.dn, 0.0, by_site[k].size(), in.measured, 0.0, 0.0};
-      const double v = cap_volume(in.dn);
-      double others = E[k] - v, beta = mb.beta, g = 1.0;
-      const SoftSceneLaw& law = c.kind == 2 ? soft : solid;
-      if (c.kind == 1) {
-        c.ratio = p.r[static_cast<std::size_t>(in.body)] / Rs, beta = mb.grain_beta.value_or(mb.beta);
-        if (mb.grain_exponent != 0.0) g = std::pow(c.ratio / (1.0 + c.ratio), mb.grain_exponent);
-      } else if (c.kind == 2) {
-        others = 0.5 * (others + E[static_cast<std::size_t>(in.body) - grains] - v), beta = mb.soft_beta.value_or(mb.beta);
-      }
-      c.pairwise = scale_of(law) * law.normal(in.dn);
-      c.law = many_body_force(law.normal, g * scale_of(law), in.dn, std::max(0.0, others), beta);
+      ContactPartners b;  // the site as body 1, a soft-particle of radius Rs
+      b.kind = c.kind == 0 ? ContactPartners::Kind::plane : ContactPartners::Kind::pair;
+      b.R1 = Rs, b.soft1 = true, b.soft2 = c.kind == 2;
+      if (c.kind == 1) b.R2 = p.r[static_cast<std::size_t>(in.body)], c.ratio = b.R2 / Rs;
+      if (c.kind == 2) b.R2 = Rs;
+      const SoftManyBodyNormal::Constants<double> constants = SoftManyBodyNormal::constants(params, b);
+      ContactGeometry<double> g{};
+      g.h = in.dn * Rs, g.body1 = E[k], g.body2 = c.kind == 2 ? E[static_cast<std::size_t>(in.body) - grains] : 0.0;
+      c.law = SoftManyBodyNormal::evaluate(params, constants, g).Fn;
+      c.pairwise = SoftNormal::evaluate(params, constants, g).Fn;  // Eq. 7 at Δn, a grain as a wall
       out.push_back(c);
     }
   return out;
@@ -177,8 +175,7 @@ void write_in_place_report(const ManyBodyProbe& plan, const std::string& plan_pa
     }
   }
   // The floor of the probe's errors: force_floor of the single contact's law at the plan's largest Δn.
-  const CoarseGrainSettings s = plan.settings;
-  const SoftParticleLaws l = soft_particle_laws(read_law_file(laws.empty() ? s.laws : laws), laws);
+  const SoftParticleLaws l = soft_particle_laws(read_law_file(laws.empty() ? plan.settings.laws : laws), laws);
   const double floor = plan.force_floor * l.soft_solid->normal(plan.delta_n.back());
   const char* kinds[] = {"wall", "grain", "site"};
   std::string md = fmt::format(

@@ -15,9 +15,9 @@ namespace softpack {
 
 ProbeWallForce probe_point(const ProbeArrangement& a, const std::string& radius, std::uint64_t seed, const std::vector<double>& delta_n,
                            std::size_t wall, double Fn) {
-  ProbeWallForce p{radius, a.name, seed, delta_n, wall, Fn, a.body, 0.0, 0.0};
+  ProbeWallForce p{radius, a.name, seed, delta_n, wall, Fn, a.body, 0.0};
   std::vector<Vec3> u;
-  for (std::size_t k = 0; k < delta_n.size(); ++k) p.E_sum += cap_volume(delta_n[k]), u.push_back(a.walls.at(k).u);
+  for (std::size_t k = 0; k < delta_n.size(); ++k) u.push_back(a.walls.at(k).u);
   p.E_union = cap_union_volume(u, delta_n);
   return p;
 }

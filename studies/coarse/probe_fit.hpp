@@ -34,12 +34,11 @@ struct ProbeWallForce {
   std::size_t wall = 0;         ///< which of them this is
   double Fn = 0.0;              ///< [N]
   PressingBody body{};          ///< what presses (the arrangement's NAME:BODY; a wall without)
-  double E_sum = 0.0;           ///< Σ v(Δn_l) over the point's contacts
   double E_union = 0.0;         ///< the volume their caps cut together (cap_union_volume), over the soft-particle's
 };
 
 /// Wall `wall` of arrangement `a` (its directions and shares) at the arrangement's Δn `dn`, with
-/// its caps' E_sum and E_union and the force Fn.
+/// its caps' union E_union and the force Fn.
 ProbeWallForce probe_point(const ProbeArrangement& a, const std::string& radius, std::uint64_t seed, const std::vector<double>& delta_n,
                            std::size_t wall, double Fn);
 

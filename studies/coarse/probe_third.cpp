@@ -22,11 +22,8 @@ std::vector<std::string> with_kind(const std::vector<std::string>& names, const 
   for (const std::string& a : names) out.push_back(a + ":" + kind);
   return out;
 }
-std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-std::vector<ProbeWallForce> joined_points(std::vector<ProbeWallForce> a, const std::vector<ProbeWallForce>& b) {
+template <class T>
+std::vector<T> joined(std::vector<T> a, const std::vector<T>& b) {
   a.insert(a.end(), b.begin(), b.end());
   return a;
 }
@@ -64,7 +61,7 @@ ThirdVersion analyse_third_version(const ManyBodyProbe& plan, const std::vector<
   if (!plan.third) throw InputError("the plan has no third_version: nothing to analyse");
   const ManyBodyProbe::ThirdVersionPlan& t = *plan.third;
   ThirdVersion out;
-  const std::vector<ProbeWallForce> all = joined_points(walls, bodies);
+  const std::vector<ProbeWallForce> all = joined(walls, bodies);
   const auto F1 = fit_single_contact(plan, walls);
 
   // 1. The count of contacts: each form's β on the fit runs, the rule on the held-out ones.

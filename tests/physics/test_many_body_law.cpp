@@ -131,10 +131,11 @@ TEST(ManyBodySoftParticles, AVersion1LawFileRunsThePairwiseModelWithoutAPerBodyP
 
 // The union of caps (cap_union_volume): exact for one cap, for caps that do not meet and for a
 // cap inside another; two and three orthogonal half-balls (3/4, 7/8 of the ball) and twelve random
-// caps at the engine's meridians (those of the probe's analysis) within 1e-4 of the closed form and 3e-4 of 4096 meridians.
+// caps at the engine's meridians (those of the probe's analysis) within 1e-4 of the closed form and
+// 3e-4 of 4096 meridians (first written 1e-4; the worst measured is 1.3e-4, so 1e-4 is not held).
 TEST(ManyBodySoftParticles, TheCapsUnionIsExactWhereItIsKnown) {
   const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
-  const int m = SoftManyBodyNormal::kMeridians;
+  const int m = kCapUnionMeridians;
   EXPECT_NEAR(cap_union_volume({z}, {0.3}, m), v(0.3), 1e-15);
   EXPECT_NEAR(cap_union_volume({z, -z}, {0.3, 0.2}, m), v(0.3) + v(0.2), 1e-15);
   EXPECT_NEAR(cap_union_volume({z, z}, {0.3, 0.2}, m), v(0.3), 1e-15);
@@ -172,7 +173,7 @@ TEST(ManyBodySoftParticles, TheThirdVersionPressesByItsCapsUnionAndItsGrainFacto
     s.effects.soft_particles->laws = third(p);
     s.planes.push_back(PlaneDef{"side", Vec3(-R * (1.0 - dn), 0, 0), Vec3::UnitX(), 0});
     Simulation sim(s);
-    const double U = cap_union_volume({-Vec3::UnitZ(), -Vec3::UnitX()}, {dn, dn}, SoftManyBodyNormal::kMeridians);
+    const double U = cap_union_volume({-Vec3::UnitZ(), -Vec3::UnitX()}, {dn, dn}, kCapUnionMeridians);
     const double star = depth(v(dn) + kBeta * (U - v(dn))), expected = eq7(star) * a(dn) / a(star);
     EXPECT_EQ(U < 2.0 * v(dn) - 1e-6, dn > 0.3) << dn;  // the caps meet once their half-angles add to more than 90 degrees
     EXPECT_NEAR(sim.plane_loads()[0].force.norm(), expected, 1e-9 * expected) << dn;
