@@ -115,8 +115,10 @@ inline constexpr int kCapUnionMeridians = 256;
 /// of the directions bounded by great circles (r_k < r_l is u·((1 − δ_l) n_k − (1 − δ_k) n_l) > 0).
 /// Along each meridian of cap k that share is an interval of polar angle, over which the radial
 /// integral is exact; the meridians are summed by the periodic trapezoid rule (`meridians` of
-/// them, only for caps another one meets). δ_k is taken in [0, 1 − 1e-9] (the plane short of the
-/// centre). Deterministic: the same bits for the same caps in the same order.
+/// them, a positive multiple of 8, else std::invalid_argument; only for caps another one meets),
+/// eight meridians at once on the processor's vector lanes. δ_k is taken in [0, 1 − 1e-9] (the
+/// plane short of the centre). Deterministic: the same bits for the same caps in the same order,
+/// on any instruction set.
 double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& depth, int meridians = kCapUnionMeridians);
 /// δ in [0, 2] with v(δ) = eps (0 for eps <= 0, 2 for eps >= 1): the cubic's trigonometric root,
 /// polished by Newton's method to within a few units of the last place.
