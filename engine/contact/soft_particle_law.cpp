@@ -15,11 +15,10 @@ namespace softpack {
 
 double SoftPowerLaw::integral(double dn) const {
   if (!(dn > delta)) return 0.0;
-  // Where a Δn^b + c > 0 starts: δ for c = -a δ^b, later when a fit's c is more negative.
-  const double start = c < 0.0 ? std::max(delta, std::pow(-c / a, 1.0 / b)) : delta;
-  if (!(dn > start)) return 0.0;
+  const double from = start();
+  if (!(dn > from)) return 0.0;
   const auto F = [&](double x) { return a * std::pow(x, b + 1.0) / (b + 1.0) + c * x; };
-  return F(dn) - F(start);
+  return F(dn) - F(from);
 }
 
 double SoftSceneLaw::mu_at(double dn) const {
@@ -187,10 +186,16 @@ SoftNormal::Eval SoftManyBodyNormal::evaluate(const Params& p, const Constants<d
 double SoftManyBodyNormal::energy(const Params& p, const Constants<double>& k, double h, double s1, double s2) {
   if (!(h > 0.0)) return 0.0;
   const double dn = h / k.R, rest = others(k, cap_volume(dn), s1, s2);
-  constexpr int n = 64;
+  // The force is 0 until δ* = cap_depth(v(Δn) + β E_others) reaches where Eq. 7 starts: Simpson's
+  // rule from there, where the integrand is smooth (from 0 it would straddle the onset's kink).
+  const double start = p.law(k.scene).normal.start();
+  const double from = rest > 0.0 ? cap_depth(cap_volume(start) - k.beta * rest) : start;
+  if (!(dn > from)) return 0.0;
+  constexpr int n = kEnergyIntervals;
+  const double step = (dn - from) / n;
   double sum = 0.0;
-  for (int i = 0; i <= n; ++i) sum += (i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0) * force(p, k, dn * i / n, rest);
-  return sum * (h / n) / 3.0;
+  for (int i = 0; i <= n; ++i) sum += (i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0) * force(p, k, from + step * i, rest);
+  return sum * (step * k.R) / 3.0;
 }
 
 double linear_damping_ratio(double e) {

@@ -53,6 +53,8 @@ struct SoftPowerLaw {
   double slope(double dn) const { return (*this)(dn) > 0.0 ? a * b * std::pow(dn, b - 1.0) : 0.0; }
   /// ∫ X dΔn from δ to Δn (where X > 0; exact for c = -a δ^b).
   double integral(double dn) const;
+  /// Where X becomes positive: δ for c = -a δ^b, later when a fit's c is more negative.
+  double start() const { return c < 0.0 ? std::max(delta, std::pow(-c / a, 1.0 / b)) : delta; }
 };
 
 /// The laws of one measurement scene (soft-solid or soft-soft) at the reference radius R0.
@@ -244,7 +246,9 @@ struct SoftManyBodyNormal : SoftNormal {
   }
   static double body_state(const std::vector<Vec3>& u, const std::vector<double>& depth) { return cap_union_volume(u, depth); }
   static Eval evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g);
-  /// ∫ Fn dh from 0 to h with the other contacts' caps as they are (Simpson's rule, 64 intervals).
+  /// ∫ Fn dh from 0 to h with the other contacts' caps as they are: Simpson's rule on
+  /// kEnergyIntervals from where the force starts (tests/physics ManyBodySoftParticles.TheEnergyIsTheForcesIntegral).
+  static constexpr int kEnergyIntervals = 16;
   static double energy(const Params& p, const Constants<double>& k, double h, double s1, double s2);
 
  private:
