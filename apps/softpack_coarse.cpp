@@ -23,6 +23,7 @@
 #include "coarse/soft_census.hpp"
 #include "coarse/validation.hpp"
 #include "coarse/in_place.hpp"
+#include "coarse/speed.hpp"
 #include "io/atomic_file.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
@@ -213,6 +214,16 @@ int main(int argc, char** argv) {
   place_report_cmd->add_option("--probe", place_report_plan, "the plan, e.g. experiments/many-body.yaml")->required();
   place_report_cmd->add_option("--dir", place_report_dir, "folder of seed-S.dat, where in-place.md goes")->required();
   place_report_cmd->add_flag("--v3", place_v3, "the third version's media seeds (validation.v3_media_seeds), not media_seeds");
+  std::string speed_plan, speed_dir;
+  std::uint64_t speed_seed = 0;
+  int speed_repeats = 3;
+  CLI::App* speed_cmd = app.add_subcommand("speed", "the speed-up side by side: one medium resolved, soft pairwise and soft many-body in one process (coarse/speed.hpp)");
+  speed_cmd->add_option("--probe", speed_plan, "the plan: its third version's media seeds, e.g. experiments/many-body.yaml")->required();
+  speed_cmd->add_option("--dir", speed_dir, "the third version's study folder (profiles/, reference/media/; writes speed/), e.g. data/many-body-v3")->required();
+  auto* speed_seed_opt = speed_cmd->add_option("--seed", speed_seed, "the medium's seed (one of the plan's third version's media seeds)");
+  speed_cmd->add_option("--repeats", speed_repeats, "runs of each soft model (their least time)")->capture_default_str();
+  bool speed_report = false;
+  speed_cmd->add_flag("--report", speed_report, "instead: speed/speed.md from the seeds' speed/seed-S.dat")->excludes(speed_seed_opt);
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;
@@ -274,6 +285,29 @@ int main(int argc, char** argv) {
                    done > 0.0 ? clock.elapsed().wall * (total - done) / done : 0.0, l.nl());
       });
       fmt::print(stderr, "{}{} in-place: {}/seed-{}.dat ({:.0f} CPU-s)\n", l.cr(), program, place_out, place_seed, clock.elapsed().cpu);
+      return 0;
+    }
+    if (*speed_cmd) {
+      const ManyBodyProbe plan = read_many_body_probe(speed_plan);
+      const std::string out = speed_dir + "/speed";
+      if (speed_report) {
+        write_speed_report(plan, speed_plan, out);
+        fmt::print(stderr, "{} speed: {}/speed.md\n", program, out);
+        return 0;
+      }
+      const auto at = std::find(plan.v3_media_seeds.begin(), plan.v3_media_seeds.end(), speed_seed);
+      if (at == plan.v3_media_seeds.end())
+        throw InputError(fmt::format("speed: --seed {} is not one of {}'s validation.v3_media_seeds ({})", speed_seed, speed_plan, fmt::join(plan.v3_media_seeds, " ")));
+      const Lines l;
+      std::pair<std::string, Stopwatch> run;  // the run under way and its clock
+      const SpeedSeed r = write_speed_seed(speed_dir + "/profiles/reference.yaml", speed_dir + "/profiles/many-body.yaml", speed_dir + "/reference/media", speed_seed,
+                                           (at - plan.v3_media_seeds.begin()) % 2 == 0, speed_repeats, out, [&](const std::string& model, int k, double done, double total) {
+                                             if (run.first != model + std::to_string(k)) run = {model + std::to_string(k), Stopwatch()};
+                                             fmt::print(stderr, "{}{} speed seed {}: {} run {}, {:.0f}%, ETA {:.0f} s{}", l.cr(), program, speed_seed, model, k + 1,
+                                                        100.0 * done / total, run.second.elapsed().wall * (total - done) / done, l.nl());
+                                           });
+      fmt::print(stderr, "{}{} speed seed {}: CPU resolved {:.1f} s, pairwise {:.3f} s, many-body {:.3f} s -> {}/seed-{}.dat\n", l.cr(), program, speed_seed,
+                 r.resolved, r.pairwise, r.many_body, out, speed_seed);
       return 0;
     }
     if (*place_report_cmd) {

@@ -128,6 +128,23 @@ $(IN_PLACE_DIR)/seed-%.dat: $(DATA)/many-body-v3/reference/media/seed-%.h5 $(DAT
 	  --media $(DATA)/many-body-v3/reference/media --seed $* --out $(@D) 2> $(@D)/seed-$*.log \
 	  || { echo "in-place: seed $* FAILED (log: $(@D)/seed-$*.log)"; tr '\r' '\n' < $(@D)/seed-$*.log | tail -3; exit 1; }
 	@echo "$$(tr '\r' '\n' < $(@D)/seed-$*.log | tail -1)"
+# The speed-up side by side (issue 33's target; paper/many-body.md, "Next: the speed-up side by
+# side"): each third-version medium resolved, soft pairwise and soft many-body in one process on
+# one thread (coarse/speed.hpp), one seed after the other even under -j (each seed's file waits for
+# the previous one's), so that no two timed runs share the machine; about 15 CPU-minutes.
+SPEED_DIR ?= $(DATA)/many-body-v3/speed
+SPEED_SEEDS = $(if $(filter many-body-speed,$(MAKECMDGOALS)),$(shell $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media))
+.PHONY: many-body-speed
+many-body-speed: $(foreach s,$(SPEED_SEEDS),$(SPEED_DIR)/seed-$(s).dat) | $(TOOLS)  ## the speed-up over resolved side by side (DATA/many-body-v3/speed/speed.md)
+	@$(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --report
+define speed_seed
+$(SPEED_DIR)/seed-$(1).dat: $(DATA)/many-body-v3/reference/media/seed-$(1).h5 $(DATA)/many-body/report/laws.json | $(TOOLS) $(2)
+	@mkdir -p $$(@D)
+	@SOFTPACK_THREADS=1 $(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --seed $(1) 2> $$(@D)/seed-$(1).log \
+	  || { echo "speed: seed $(1) FAILED (log: $$(@D)/seed-$(1).log)"; tr '\r' '\n' < $$(@D)/seed-$(1).log | tail -3; exit 1; }
+	@echo "$$$$(tr '\r' '\n' < $$(@D)/seed-$(1).log | tail -1)"
+endef
+$(foreach s,$(SPEED_SEEDS),$(eval $(call speed_seed,$(s),$(if $(prev),$(SPEED_DIR)/seed-$(prev).dat)))$(eval prev := $(s)))
 # The third version's (paper/many-body.md, "Next"): after make many-body-v3, on its own media.
 .PHONY: many-body-v3-verdict
 many-body-v3-verdict: | $(TOOLS)  ## the law's third version's acceptance on its media, and its census (DATA/many-body-v3/report/validation.md, contacts.md)

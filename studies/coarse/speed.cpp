@@ -1,0 +1,127 @@
+#include "coarse/speed.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "analysis/seed_statistics.hpp"
+#include "coarse/compression.hpp"
+#include "coarse/medium.hpp"
+#include "coarse/medium_file.hpp"
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "core/version.hpp"
+#include "formats/law_file.hpp"
+#include "io/atomic_file.hpp"
+
+namespace softpack {
+namespace {
+
+struct Model {
+  CoarseGrainSettings settings;
+  SoftParticleLaws laws;
+  SceneDef scene;
+};
+
+Model model_of(const std::string& config, const Medium& m, CoarseModel model) {
+  Model r{read_coarse_grain_settings(config), {}, {}};
+  r.laws = soft_particle_laws(read_law_file(r.settings.laws), r.settings.laws);
+  r.scene = medium_scene(r.settings, m, model, r.laws);
+  return r;
+}
+
+}  // namespace
+
+SpeedSeed write_speed_seed(const std::string& pairwise_config, const std::string& many_body_config, const std::string& media_dir, std::uint64_t seed,
+                           bool resolved_first, int repeats, const std::string& out_dir, const SpeedProgress& progress) {
+  if (repeats < 1) throw InputError(fmt::format("speed: --repeats {} is not allowed; allowed: 1 or more", repeats));
+  const std::string path = fmt::format("{}/seed-{}.h5", media_dir, seed);
+  const MediumFile mf = read_medium_file(path);
+  const Medium& m = mf.medium;
+  const Model resolved = model_of(pairwise_config, m, CoarseModel::resolved), pairwise = model_of(pairwise_config, m, CoarseModel::soft),
+              many_body = model_of(many_body_config, m, CoarseModel::soft);
+  for (const auto& [config, s] : {std::pair{pairwise_config, &resolved.settings}, std::pair{many_body_config, &many_body.settings}})
+    if (mf.settings != s->medium_text) throw InputError(fmt::format("{}: made with other settings than {}", path, config));
+  if (!many_body.laws.many_body) throw InputError(fmt::format("{}: its law file {} has no many_body law", many_body_config, many_body.settings.laws));
+  if (pairwise.laws.many_body) throw InputError(fmt::format("{}: its law file {} has a many_body law; the pairwise settings are wanted", pairwise_config, pairwise.settings.laws));
+  SpeedSeed r;
+  r.seed = seed, r.resolved_first = resolved_first, r.repeats = repeats;
+  r.pairwise = r.many_body = std::numeric_limits<double>::infinity();
+  const auto run = [&](const Model& x, CoarseModel model, const std::string& name, int k) {
+    const CompressionRun c = run_compression(x.scene, m, model, x.settings, [&](double done, double total, const CurveRow&) {
+      if (progress) progress(name, k, done, total);
+    });
+    return std::pair{c.time.cpu, c.steps};
+  };
+  const auto resolved_run = [&] { std::tie(r.resolved, r.steps_resolved) = run(resolved, CoarseModel::resolved, "resolved", 0); };
+  if (resolved_first) resolved_run();
+  for (int k = 0; k < repeats; ++k) {
+    const auto [p, ps] = run(pairwise, CoarseModel::soft, "pairwise", k);
+    const auto [b, bs] = run(many_body, CoarseModel::soft, "many-body", k);
+    r.pairwise = std::min(r.pairwise, p), r.many_body = std::min(r.many_body, b), r.steps_pairwise = ps, r.steps_many_body = bs;
+  }
+  if (!resolved_first) resolved_run();
+  std::filesystem::create_directories(out_dir);
+  write_file_atomically(
+      fmt::format("{}/seed-{}.dat", out_dir, seed),
+      fmt::format("# the speed-up side by side (softpack-coarse speed, {}): medium {}, resolved and pairwise soft {}, many-body soft {}, "
+                  "{} thread(s), the soft runs the least of {}, resolved {}\n"
+                  "# seed cpu_resolved[s] cpu_pairwise[s] cpu_many_body[s] steps_resolved steps_pairwise steps_many_body\n"
+                  "{} {:.4f} {:.4f} {:.4f} {} {} {}\n",
+                  code_version(), path, pairwise_config, many_body_config, parallel::threads(), repeats, resolved_first ? "first" : "last", seed, r.resolved,
+                  r.pairwise, r.many_body, r.steps_resolved, r.steps_pairwise, r.steps_many_body));
+  return r;
+}
+
+void write_speed_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& out_dir) {
+  std::vector<SpeedSeed> rows;
+  std::string heads;
+  for (const std::uint64_t seed : plan.v3_media_seeds) {
+    const std::string path = fmt::format("{}/seed-{}.dat", out_dir, seed);
+    std::ifstream in(path);
+    if (!in) throw InputError(fmt::format("{}: cannot read it (make many-body-speed writes it)", path));
+    SpeedSeed r;
+    bool read = false;
+    int line_no = 0;
+    for (std::string line; std::getline(in, line);) {
+      ++line_no;
+      if (line_no == 1) heads += fmt::format("- seed {}: {}\n", seed, line.substr(line.find('(')));
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream s(line);
+      if (!(s >> r.seed >> r.resolved >> r.pairwise >> r.many_body >> r.steps_resolved >> r.steps_pairwise >> r.steps_many_body) || r.seed != seed)
+        throw InputError(fmt::format("{}:{}: expected 'seed cpu_resolved cpu_pairwise cpu_many_body steps_resolved steps_pairwise steps_many_body' of seed {}",
+                                     path, line_no, seed));
+      read = true;
+    }
+    if (!read) throw InputError(fmt::format("{}: no row (rerun make many-body-speed)", path));
+    rows.push_back(r);
+  }
+  std::vector<double> pair, many, cost;
+  std::string table;
+  for (const SpeedSeed& r : rows) {
+    pair.push_back(r.resolved / r.pairwise), many.push_back(r.resolved / r.many_body), cost.push_back(r.many_body / r.pairwise);
+    table += fmt::format("| {} | {:.1f} | {:.3f} | {:.3f} | {:.0f} | {:.0f} | {:.2f} |\n", r.seed, r.resolved, r.pairwise, r.many_body, pair.back(), many.back(),
+                         cost.back());
+  }
+  const auto pm = [](const std::vector<double>& x, const char* f) {
+    const MeanError e = mean_error(x, FewSeeds::not_known);
+    return fmt::format(fmt::runtime(std::string(f) + " ± " + f), e.mean, e.error);
+  };
+  const std::string md = fmt::format(
+      "# The speed-up side by side (generated by softpack-coarse speed-report, {})\n\n"
+      "The third version's media (seeds {} of `{}`), each compressed, unloaded and sheared three ways in one process, one after "
+      "the other (coarse/speed.hpp): resolved, soft with the pairwise laws, soft with the many-body laws. CPU time of each "
+      "simulation; the soft models' the least of their interleaved repeats. Speed-up: resolved / soft, per seed; the mean over "
+      "the seeds ± its standard error. Each seed's file: `seed-S.dat`.\n\n{}\n"
+      "| seed | resolved [s] | pairwise soft [s] | many-body soft [s] | speed-up pairwise | speed-up many-body | many-body / pairwise |\n"
+      "|---|---|---|---|---|---|---|\n{}| mean | | | | {} | {} | {} |\n",
+      code_version(), fmt::join(plan.v3_media_seeds, ", "), plan_path, heads, table, pm(pair, "{:.0f}"), pm(many, "{:.0f}"), pm(cost, "{:.2f}"));
+  write_file_atomically(out_dir + "/speed.md", md);
+}
+
+}  // namespace softpack
