@@ -24,6 +24,7 @@
 #include "coarse/validation.hpp"
 #include "coarse/in_place.hpp"
 #include "coarse/speed.hpp"
+#include "coarse/kinematics.hpp"
 #include "io/atomic_file.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
@@ -114,16 +115,7 @@ int confined_shear(const std::string& program, const CoarseGrainSettings& s, std
       fmt::print(stderr, "{} multi-contact: {}, delta_n {:.3f}, ht/Rs {}: Fn {:.5g} N, Ft {:.5g} N ({}/{}, {:.0f} s, ETA {:.0f} s)\n", program,
                  p.arrangement, p.delta_n, p.ht, p.Fn, p.Ft, done, points, t, t / static_cast<double>(done) * static_cast<double>(points - done));
   });
-  std::string text = fmt::format(
-      "# softpack-coarse multi-contact: {}, packing seed {}, {}, {:.1f} CPU-s\n"
-      "# the confined shear: the first wall (+z) slid along +x by ht, each from the previous; Fn along +z, Ft along -x, on it\n"
-      "# arrangement delta_n ht/Rs Fn Ft [N]\n",
-      source, seed, code_version(), clock.elapsed().cpu);
-  for (const ShearPoint& p : sheared) {
-    if (!p.failed.empty()) text += fmt::format("# {} {:.4f} {} not measured (nor the larger ht): {}\n", p.arrangement, p.delta_n, p.ht, p.failed);
-    else text += fmt::format("{} {:.4f} {} {:.6e} {:.6e}\n", p.arrangement, p.delta_n, p.ht, p.Fn + 0.0, p.Ft + 0.0);
-  }
-  write_file_atomically(out, text);
+  write_confined_shear(out, source, seed, sheared, clock.elapsed().cpu);
   return 0;
 }
 
@@ -224,6 +216,10 @@ int main(int argc, char** argv) {
   speed_cmd->add_option("--repeats", speed_repeats, "runs of each soft model (their least time)")->capture_default_str();
   bool speed_report = false;
   speed_cmd->add_flag("--report", speed_report, "instead: speed/speed.md from the seeds' speed/seed-S.dat")->excludes(speed_seed_opt);
+  std::string kin_plan, kin_dir;
+  CLI::App* kin_cmd = app.add_subcommand("kinematics", "the soft medium's geometry against the resolved one's (coarse/kinematics.hpp)");
+  kin_cmd->add_option("--probe", kin_plan, "the plan: its third version's media seeds, e.g. experiments/many-body.yaml")->required();
+  kin_cmd->add_option("--dir", kin_dir, "the third version's study folder (profiles/, report/contact-rows.dat, in-place/; writes report/kinematics.md)")->required();
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;
@@ -289,25 +285,27 @@ int main(int argc, char** argv) {
     }
     if (*speed_cmd) {
       const ManyBodyProbe plan = read_many_body_probe(speed_plan);
-      const std::string out = speed_dir + "/speed";
       if (speed_report) {
-        write_speed_report(plan, speed_plan, out);
-        fmt::print(stderr, "{} speed: {}/speed.md\n", program, out);
+        write_speed_report(plan, speed_plan, speed_dir);
+        fmt::print(stderr, "{} speed: {}/speed/speed.md\n", program, speed_dir);
         return 0;
       }
-      const auto at = std::find(plan.v3_media_seeds.begin(), plan.v3_media_seeds.end(), speed_seed);
-      if (at == plan.v3_media_seeds.end())
-        throw InputError(fmt::format("speed: --seed {} is not one of {}'s validation.v3_media_seeds ({})", speed_seed, speed_plan, fmt::join(plan.v3_media_seeds, " ")));
       const Lines l;
       std::pair<std::string, Stopwatch> run;  // the run under way and its clock
-      const SpeedSeed r = write_speed_seed(speed_dir + "/profiles/reference.yaml", speed_dir + "/profiles/many-body.yaml", speed_dir + "/reference/media", speed_seed,
-                                           (at - plan.v3_media_seeds.begin()) % 2 == 0, speed_repeats, out, [&](const std::string& model, int k, double done, double total) {
-                                             if (run.first != model + std::to_string(k)) run = {model + std::to_string(k), Stopwatch()};
-                                             fmt::print(stderr, "{}{} speed seed {}: {} run {}, {:.0f}%, ETA {:.0f} s{}", l.cr(), program, speed_seed, model, k + 1,
-                                                        100.0 * done / total, run.second.elapsed().wall * (total - done) / done, l.nl());
-                                           });
+      const SpeedSeed r = write_speed_seed(plan, speed_plan, speed_dir, speed_seed, speed_repeats, [&](const std::string& model, int k, double done, double total) {
+        if (run.first != model + std::to_string(k)) run = {model + std::to_string(k), Stopwatch()};
+        fmt::print(stderr, "{}{} speed seed {}: {} run {}, {:.0f}%, ETA {:.0f} s{}", l.cr(), program, speed_seed, model, k + 1, 100.0 * done / total,
+                   run.second.elapsed().wall * (total - done) / done, l.nl());
+      });
       fmt::print(stderr, "{}{} speed seed {}: CPU resolved {:.1f} s, pairwise {:.3f} s, many-body {:.3f} s -> {}/seed-{}.dat\n", l.cr(), program, speed_seed,
-                 r.resolved, r.pairwise, r.many_body, out, speed_seed);
+                 r.resolved, r.pairwise, r.many_body, speed_dir + "/speed", speed_seed);
+      return 0;
+    }
+    if (*kin_cmd) {
+      const CoarseGrainSettings s = read_coarse_grain_settings(kin_dir + "/profiles/many-body.yaml");
+      write_kinematics_report(read_many_body_probe(kin_plan), kin_plan, soft_particle_laws(read_law_file(s.laws), s.laws), s.laws, kin_dir + "/report/contact-rows.dat",
+                              kin_dir + "/in-place", kin_dir + "/report");
+      fmt::print(stderr, "{} kinematics: {}/report/kinematics.md\n", program, kin_dir);
       return 0;
     }
     if (*place_report_cmd) {

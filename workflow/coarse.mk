@@ -118,7 +118,7 @@ many-body-verdict: | $(TOOLS)  ## the many-body law's acceptance on the validati
 # The law in place (paper/many-body.md, "Next: measuring the law in place"): the third version's
 # media compressed resolved again, each site's pushes against the law's (coarse/in_place.hpp).
 IN_PLACE_DIR ?= $(DATA)/many-body-v3/in-place
-IN_PLACE_SEEDS = $(if $(filter many-body-in-place,$(MAKECMDGOALS)),$(shell $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media))
+IN_PLACE_SEEDS = $(if $(filter many-body-in-place many-body-kinematics,$(MAKECMDGOALS)),$(shell $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media))
 .PHONY: many-body-in-place
 many-body-in-place: $(foreach s,$(IN_PLACE_SEEDS),$(IN_PLACE_DIR)/seed-$(s).dat) | $(TOOLS)  ## the law in place on the third version's media (DATA/many-body-v3/in-place/in-place.md)
 	@$(RUN) $(COARSE_TOOL) in-place-report --probe $(PROBE_PLAN) --dir $(IN_PLACE_DIR) --v3
@@ -128,6 +128,15 @@ $(IN_PLACE_DIR)/seed-%.dat: $(DATA)/many-body-v3/reference/media/seed-%.h5 $(DAT
 	  --media $(DATA)/many-body-v3/reference/media --seed $* --out $(@D) 2> $(@D)/seed-$*.log \
 	  || { echo "in-place: seed $* FAILED (log: $(@D)/seed-$*.log)"; tr '\r' '\n' < $(@D)/seed-$*.log | tail -3; exit 1; }
 	@echo "$$(tr '\r' '\n' < $(@D)/seed-$*.log | tail -1)"
+# The soft medium's geometry against the resolved one's (paper/many-body.md, "Next: the soft
+# medium's geometry against the resolved one's"): the census again (its soft runs, seconds; it writes
+# every contact, report/contact-rows.dat), then the comparison with the law in place's rows.
+.PHONY: many-body-kinematics
+many-body-kinematics: many-body-in-place | $(TOOLS)  ## the soft medium's contacts against the resolved one's intrusions (DATA/many-body-v3/report/kinematics.md)
+	@$(RUN) $(COARSE_TOOL) soft-contacts --probe $(PROBE_PLAN) --config $(DATA)/many-body-v3/profiles/many-body.yaml \
+	  --media $(DATA)/many-body-v3/reference/media --out $(DATA)/many-body-v3/report --v3
+	@$(RUN) $(COARSE_TOOL) kinematics --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3
+
 # The speed-up side by side (issue 33's target; paper/many-body.md, "Next: the speed-up side by
 # side"): each third-version medium resolved, soft pairwise and soft many-body in one process on
 # one thread (coarse/speed.hpp), one seed after the other even under -j (each seed's file waits for

@@ -1,5 +1,6 @@
 #include "analysis/seed_statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/types.hpp"
@@ -36,6 +37,12 @@ double jackknife_error(const std::vector<double>& leave_one_out) {
   for (double t : leave_one_out) mean += t / n;
   for (double t : leave_one_out) ss += (t - mean) * (t - mean);
   return std::sqrt(ss * ((n - 1.0) / n));
+}
+
+double rank_quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  return values[static_cast<std::size_t>(std::lround(q * static_cast<double>(values.size() - 1)))];
 }
 
 }  // namespace softpack

@@ -29,6 +29,10 @@ enum class FewSeeds {
 /// `values` (one per seed).
 MeanError mean_error(const std::vector<double>& values, FewSeeds few = FewSeeds::zero);
 
+/// The value of rank round(q (n − 1)) among the sorted `values`, 0 for none: the reports'
+/// medians (q = 0.5) and 90 % points of a distribution (no interpolation between ranks).
+double rank_quantile(std::vector<double> values, double q);
+
 /// The jackknife covariance of four coefficients from their values θ_j computed without seed j,
 /// for each seed in turn: Σ (θ_j − θ̄)(θ_j − θ̄)ᵀ · ((n − 1) / n), θ̄ = Σ (θ_j / n); its
 /// diagonal's square roots are the coefficients' jackknife standard errors. NaN for fewer than two.

@@ -8,6 +8,8 @@
 #include "coarse/medium.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "core/version.hpp"
+#include "io/atomic_file.hpp"
 #include "packing/generator.hpp"
 #include "relax/relaxation.hpp"
 
@@ -266,6 +268,19 @@ std::vector<ShearPoint> measure_confined_shear(const CoarseGrainSettings& s, std
     }
   }
   return out;
+}
+
+void write_confined_shear(const std::string& out, const std::string& source, std::uint64_t seed, const std::vector<ShearPoint>& sheared, double cpu_seconds) {
+  std::string text = fmt::format(
+      "# softpack-coarse multi-contact: {}, packing seed {}, {}, {:.1f} CPU-s\n"
+      "# the confined shear: the first wall (+z) slid along +x by ht, each from the previous; Fn along +z, Ft along -x, on it\n"
+      "# arrangement delta_n ht/Rs Fn Ft [N]\n",
+      source, seed, code_version(), cpu_seconds);
+  for (const ShearPoint& p : sheared) {
+    if (!p.failed.empty()) text += fmt::format("# {} {:.4f} {} not measured (nor the larger ht): {}\n", p.arrangement, p.delta_n, p.ht, p.failed);
+    else text += fmt::format("{} {:.4f} {} {:.6e} {:.6e}\n", p.arrangement, p.delta_n, p.ht, p.Fn + 0.0, p.Ft + 0.0);
+  }
+  write_file_atomically(out, text);
 }
 
 }  // namespace softpack

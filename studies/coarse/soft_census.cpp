@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "coarse/medium_file.hpp"
+#include "analysis/seed_statistics.hpp"
 #include "contact/soft_particle_law.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -15,25 +16,11 @@
 #include "io/atomic_file.hpp"
 
 namespace softpack {
-namespace {
 
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)))];
-}
-
-}  // namespace
-
-SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& row, double dn_max, double E_max) {
+std::vector<SoftSide> soft_sides(const Simulation& sim, const Medium& m) {
   const Particles& p = sim.particles();
   const std::size_t grains = m.grain_x.size();
-  struct Side {
-    std::size_t soft;  ///< the soft-particle's index among the sites
-    int partner;       ///< 0 wall, 1 grain, 2 soft
-    double dn, Fn, ratio;
-  };
-  std::vector<Side> sides;
+  std::vector<SoftSide> sides;
   for_each_closed_contact(sim.world(), sim.contact_lists(), sim.force_field(), [&](const ClosedContact& c) {
     if (c.kind == ClosedContact::Kind::shell) return;
     const double dn = c.h / c.overlap_scale(p), Fn = c.Fn();
@@ -48,12 +35,17 @@ SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& r
     add(c.i, c.j);
     if (c.j >= 0) add(c.j, c.i);
   });
+  return sides;
+}
+
+SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& row, double dn_max, double E_max) {
+  const std::vector<SoftSide> sides = soft_sides(sim, m);
   SoftCensus out;
   out.strain = row.strain, out.phase = row.phase, out.soft_particles = m.sites.size(), out.contacts = sides.size();
   std::vector<double> E(m.sites.size(), 0.0), n(m.sites.size(), 0.0), dn, ratios;
-  for (const Side& s : sides) E[s.soft] += cap_volume(s.dn), n[s.soft] += 1.0;
+  for (const SoftSide& s : sides) E[s.soft] += cap_volume(s.dn), n[s.soft] += 1.0;
   double ratio_force = 0.0, grain_force = 0.0;
-  for (const Side& s : sides) {
+  for (const SoftSide& s : sides) {
     (s.partner == 0 ? out.wall : s.partner == 1 ? out.grain : out.soft) += 1;
     (s.partner == 0 ? out.force_wall : s.partner == 1 ? out.force_grain : out.force_soft) += s.Fn;
     dn.push_back(s.dn);
@@ -66,9 +58,9 @@ SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& r
     const double k = static_cast<double>(sides.size());
     out.beyond_dn /= k, out.beyond_n /= k, out.beyond_E /= k;
   }
-  out.dn_median = quantile(dn, 0.5), out.dn_p90 = quantile(dn, 0.9), out.dn_max = quantile(dn, 1.0);
+  out.dn_median = rank_quantile(dn, 0.5), out.dn_p90 = rank_quantile(dn, 0.9), out.dn_max = rank_quantile(dn, 1.0);
   out.n_mean = m.sites.empty() ? 0.0 : static_cast<double>(sides.size()) / static_cast<double>(m.sites.size());
-  out.grain_ratio_median = quantile(ratios, 0.5);
+  out.grain_ratio_median = rank_quantile(ratios, 0.5);
   out.grain_ratio_force = grain_force > 0.0 ? ratio_force / grain_force : 0.0;
   return out;
 }
@@ -89,12 +81,16 @@ void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, 
     SoftCensus c, worst;  ///< the end of loading; each fraction's largest over the rows
   };
   std::vector<End> ends;
+  std::string rows = fmt::format("# soft-particle contacts at the loading rows from strain {} to {} (softpack-coarse soft-contacts, {}): {} with the laws {}\n"
+                                 "# seed strain soft_particle kind(0 wall, 1 grain, 2 soft) dn r_over_Rs count Fn[N]\n",
+                                 plan.strain_lo, plan.strain_hi, code_version(), config, s.laws);
   for (const std::uint64_t seed : v3 ? plan.v3_media_seeds : plan.media_seeds) {
     const std::string path = fmt::format("{}/seed-{}.h5", media_dir, seed);
     const MediumFile mf = read_medium_file(path);
     if (mf.settings != s.medium_text) throw InputError(fmt::format("{}: made with other settings than {}", path, config));
     const Medium& m = mf.medium;
     End end{seed, {}, {}};
+    rows += fmt::format("# seed {}: {} soft-particles, Rs {:.9g} m\n", seed, m.sites.size(), m.Rs);
     run_compression(medium_scene(s, m, CoarseModel::soft, laws), m, CoarseModel::soft, s, {}, [&](const Simulation& sim, const CurveRow& row) {
       const SoftCensus c = soft_census(sim, m, row, dn_max, E_max);
       dat += fmt::format("{} {:.4f} {} {} {} {} {} {} {:.6e} {:.6e} {:.6e} {:.5f} {:.5f} {:.5f} {:.5f} {:.5f} {:.5f} {:.4f} {:.4f} {:.4f}\n", seed,
@@ -102,6 +98,13 @@ void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, 
                          c.dn_median, c.dn_p90, c.dn_max, c.beyond_dn, c.beyond_n, c.beyond_E, c.n_mean, c.grain_ratio_median,
                          c.grain_ratio_force);
       if (row.phase == 1) end.c = c;
+      if (row.phase == 1 && row.strain >= plan.strain_lo - 1e-9 && row.strain <= plan.strain_hi + 1e-9) {
+        const std::vector<SoftSide> sides = soft_sides(sim, m);
+        std::vector<std::size_t> count(m.sites.size(), 0);
+        for (const SoftSide& x : sides) ++count[x.soft];
+        for (const SoftSide& x : sides)
+          rows += fmt::format("{} {:.4f} {} {} {:.6f} {:.4f} {} {:.6e}\n", seed, row.strain, x.soft, x.partner, x.dn, x.ratio, count[x.soft], x.Fn);
+      }
       if (row.strain >= plan.strain_lo && row.phase != 2) {
         end.worst.beyond_dn = std::max(end.worst.beyond_dn, c.beyond_dn), end.worst.beyond_n = std::max(end.worst.beyond_n, c.beyond_n);
         end.worst.beyond_E = std::max(end.worst.beyond_E, c.beyond_E), end.worst.dn_max = std::max(end.worst.dn_max, c.dn_max);
@@ -135,6 +138,7 @@ void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, 
   std::filesystem::create_directories(out_dir);
   write_file_atomically(out_dir + "/contacts.dat", dat);
   write_file_atomically(out_dir + "/contacts.md", md);
+  write_file_atomically(out_dir + "/contact-rows.dat", rows);
 }
 
 }  // namespace softpack

@@ -29,13 +29,28 @@ struct SoftCensus {
   double grain_ratio_force = 0.0;   ///< the same, weighted by Fn
 };
 
-/// The census of the simulation's current state (spheres in medium_scene()'s order: the grains,
-/// then one soft-particle per site). `dn_max`, `E_max`: the probe's range.
+/// One closed contact of a soft-particle, seen from it.
+struct SoftSide {
+  std::size_t soft = 0;  ///< the soft-particle's index among the sites
+  int partner = 0;       ///< 0 wall, 1 grain, 2 another soft-particle
+  double dn = 0.0;       ///< Δn
+  double Fn = 0.0;       ///< the law's force [N]
+  double ratio = 0.0;    ///< a grain partner's r / Rs (0 otherwise)
+};
+
+/// The closed contacts of the soft-particles in the simulation's current state (spheres in
+/// medium_scene()'s order: the grains, then one soft-particle per site; one between two
+/// soft-particles twice, once from each).
+std::vector<SoftSide> soft_sides(const Simulation& sim, const Medium& m);
+
+/// The census of the simulation's current state (soft_sides()). `dn_max`, `E_max`: the probe's range.
 SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& row, double dn_max, double E_max);
 
 /// Runs the soft model of each media seed of the plan (the medium files MEDIA_DIR/seed-S.h5, the
 /// settings `config`; `v3`: the third version's media seeds) and writes OUT/contacts.dat (every
-/// row of every seed) and OUT/contacts.md.
+/// row of every seed), OUT/contacts.md and OUT/contact-rows.dat (every contact at each loading row
+/// within the plan's strain range: seed strain soft-particle kind Δn r/Rs its contacts Fn, the
+/// rows of coarse/kinematics.hpp).
 void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& config, const std::string& media_dir,
                        const std::string& out_dir, bool v3 = false);
 

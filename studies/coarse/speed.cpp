@@ -37,10 +37,15 @@ Model model_of(const std::string& config, const Medium& m, CoarseModel model) {
 
 }  // namespace
 
-SpeedSeed write_speed_seed(const std::string& pairwise_config, const std::string& many_body_config, const std::string& media_dir, std::uint64_t seed,
-                           bool resolved_first, int repeats, const std::string& out_dir, const SpeedProgress& progress) {
+SpeedSeed write_speed_seed(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& dir, std::uint64_t seed, int repeats,
+                           const SpeedProgress& progress) {
   if (repeats < 1) throw InputError(fmt::format("speed: --repeats {} is not allowed; allowed: 1 or more", repeats));
-  const std::string path = fmt::format("{}/seed-{}.h5", media_dir, seed);
+  const auto at = std::find(plan.v3_media_seeds.begin(), plan.v3_media_seeds.end(), seed);
+  if (at == plan.v3_media_seeds.end())
+    throw InputError(fmt::format("speed: --seed {} is not one of {}'s validation.v3_media_seeds ({})", seed, plan_path, fmt::join(plan.v3_media_seeds, " ")));
+  const bool resolved_first = (at - plan.v3_media_seeds.begin()) % 2 == 0;
+  const std::string pairwise_config = dir + "/profiles/reference.yaml", many_body_config = dir + "/profiles/many-body.yaml", out_dir = dir + "/speed";
+  const std::string path = fmt::format("{}/reference/media/seed-{}.h5", dir, seed);
   const MediumFile mf = read_medium_file(path);
   const Medium& m = mf.medium;
   const Model resolved = model_of(pairwise_config, m, CoarseModel::resolved), pairwise = model_of(pairwise_config, m, CoarseModel::soft),
@@ -78,7 +83,8 @@ SpeedSeed write_speed_seed(const std::string& pairwise_config, const std::string
   return r;
 }
 
-void write_speed_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& out_dir) {
+void write_speed_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& dir) {
+  const std::string out_dir = dir + "/speed";
   std::vector<SpeedSeed> rows;
   std::string heads;
   for (const std::uint64_t seed : plan.v3_media_seeds) {

@@ -1,16 +1,21 @@
 // The many-body probe's analysis (coarse/probe_fit.hpp, paper/many-body.md): the candidates'
 // geometry, each reducing to the pairwise law for one contact, the probe file's reader, and the
 // rule finding the law that made a synthetic probe.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <tuple>
 
 #include "coarse/probe_fit.hpp"
 #include "coarse/probe_second.hpp"
 #include "coarse/probe_third.hpp"
 #include "coarse/validation.hpp"
+#include "coarse/kinematics.hpp"
+#include "formats/law_file.hpp"
 #include "core/error.hpp"
 
 namespace softpack {
@@ -231,6 +236,56 @@ TEST(ManyBodyProbeLaws, TheThirdVersionFindsTheLawThatMadeTheProbe) {
   EXPECT_NEAR(t.grain_beta.value, 0.7, 0.05);
   EXPECT_LT(t.grain_held_out.rms_log, 0.03);
   EXPECT_NEAR(t.soft_beta.value, 0.3, 0.03);
+}
+
+// The soft medium's geometry against the resolved one's (coarse/kinematics.hpp) on rows written
+// here: two seeds of two sites each at strain 0.05 (a row at 0.07 is not tabled); the soft Fn are
+// set to multiples of the law alone (Eq. 7 of the file, a grain's times (X / (1 + X))^1.3), so each
+// contact's confinement is known, and one contact of each model is below the onset (δ = 0.105).
+TEST(ManyBodyKinematics, TheReportSetsTheSoftContactsAgainstTheResolvedOnes) {
+  const std::string laws_path = std::string(SOFTPACK_SOURCE_DIR) + "/data/radius/report/laws.json";
+  LawFile f = read_law_file(laws_path);
+  f.version = 3, f.many_body = ManyBodyFit{"volumetric-union", {0.6, 0.0}, "test", "pairwise"};
+  f.many_body->grain = ManyBodyGrainFit{{1.3, 0.0}, {0.7, 0.0}};
+  f.many_body->soft_beta = LawValue{0.3, 0.0};
+  const SoftParticleLaws laws = soft_particle_laws(f, laws_path);
+  const double R = f.reference_radius;
+  const LawFit& n = f.scenes.at("soft-solid").normal;
+  const auto X = [&](double dn) { return n.a.value * std::pow(dn, n.b.value) + n.c.value; };
+  const double g = std::pow(0.5 / 1.5, 1.3);
+  const std::string dir = ::testing::TempDir() + "/kinematics";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream rows(dir + "/contact-rows.dat");
+    rows << fmt::format("# soft-particle contacts\n# seed 1: 2 soft-particles, Rs {} m\n", R);
+    rows << fmt::format("1 0.0500 0 0 0.300000 0.0000 1 {:.17g}\n1 0.0500 1 0 0.001000 0.0000 2 0\n", 2.0 * X(0.3));
+    rows << fmt::format("1 0.0500 1 1 0.200000 0.5000 2 {:.17g}\n1 0.0700 1 1 0.250000 0.5000 2 1.0\n", 1.5 * g * X(0.2));
+    rows << fmt::format("# seed 2: 2 soft-particles, Rs {} m\n2 0.0500 0 0 0.150000 0.0000 1 {:.17g}\n", R, X(0.15));
+    std::ofstream one(dir + "/seed-1.dat");
+    one << fmt::format("# the law in place\n0.0500 0 0 0.200000 0.0000 2 0.8 {:.17g} 0\n0.0500 0 1 0.250000 0.5000 2 0.5 {:.17g} 0\n", 3.0 * X(0.2),
+                       1.2 * g * X(0.25));
+    std::ofstream two(dir + "/seed-2.dat");
+    two << "0.0500 1 0 0.050000 0.0000 1 0.1 0 0\n0.0700 1 0 0.090000 0.0000 1 0.3 0 0\n";
+  }
+  ManyBodyProbe plan;
+  plan.v3_media_seeds = {1, 2};
+  write_kinematics_report(plan, "plan.yaml", laws, laws_path, dir + "/contact-rows.dat", dir, dir);
+  std::ifstream in(dir + "/kinematics.md");
+  std::stringstream md;
+  md << in.rdbuf();
+  // walls: soft 3 on 4 sites (Δn 0.001, 0.15, 0.3; confinements 2 and 1, one below the onset),
+  // resolved 2 (Δn 0.05, 0.2; confinement 3, one below the onset)
+  EXPECT_NE(md.str().find(fmt::format("| 0.05 | wall | 0.75 / 0.50 | 0.150 / 0.200 | 0.300 / 0.200 | {:.3g} / 0.225 / {:.3g} | 2.00 / 3.00 | 0.33 / 0.50 |",
+                                      (2.0 * X(0.3) + X(0.15)) / 4.0, 3.0 * X(0.2) / 4.0)),
+            std::string::npos)
+      << md.str();
+  EXPECT_NE(md.str().find(fmt::format("| 0.05 | grain | 0.25 / 0.25 | 0.200 / 0.250 | 0.200 / 0.250 | {:.3g} / 0.125 / {:.3g} | 1.50 / 1.20 | 0.00 / 0.00 |",
+                                      1.5 * g * X(0.2) / 4.0, 1.2 * g * X(0.25) / 4.0)),
+            std::string::npos)
+      << md.str();
+  EXPECT_EQ(md.str().find("| 0.07 |"), std::string::npos);
+  std::ofstream(dir + "/seed-2.dat") << "0.0500 1 0 0.05\n";
+  EXPECT_THROW(write_kinematics_report(plan, "plan.yaml", laws, laws_path, dir + "/contact-rows.dat", dir, dir), InputError);
 }
 
 }  // namespace
