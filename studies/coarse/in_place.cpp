@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "analysis/seed_statistics.hpp"
 #include "coarse/medium_file.hpp"
 #include "contact/soft_particle_law.hpp"
 #include "core/error.hpp"
@@ -144,9 +145,7 @@ struct Sums {
     const double k = static_cast<double>(loaded);
     const auto e = [&](double s1, double s2) { return loaded ? fmt::format("{:.2f} ({:+.2f})", std::exp(std::sqrt(s2 / k)), s1 / k) : std::string("–"); };
     const auto ratio = [&](double x) { return measured > 0.0 ? x / measured : 0.0; };
-    std::vector<double> d = dn;
-    std::sort(d.begin(), d.end());
-    const auto q = [&](double f) { return d.empty() ? 0.0 : d[static_cast<std::size_t>(std::lround(f * static_cast<double>(d.size() - 1)))]; };
+    const auto q = [&](double f) { return rank_quantile(dn, f); };
     return fmt::format("{} | {} | {:.3f} / {:.3f} | {:.3g} | {:.2f} | {:.3f} | {:.3f} | {} | {} |", n, loaded, q(0.5), q(0.9), measured, ratio(below_onset),
                        ratio(law), ratio(pairwise), e(law_log, law_log2), e(pair_log, pair_log2));
   }
