@@ -115,12 +115,18 @@ many-body-census: | $(TOOLS)  ## the validation media's soft-particle contacts a
 .PHONY: many-body-verdict
 many-body-verdict: | $(TOOLS)  ## the many-body law's acceptance on the validation media (DATA/many-body-validation/report/validation.md)
 	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-validation --out $(DATA)/many-body-validation/report
+# The third version's media seeds (softpack-coarse seeds --probe --v3-media), asked of the tool
+# once and only for the goals that run on them; empty when the tool is not built yet or refuses the
+# plan (those goals then stop, saying so).
+V3_MEDIA_GOALS := many-body-in-place many-body-speed
+V3_MEDIA_SEEDS := $(if $(filter $(V3_MEDIA_GOALS),$(MAKECMDGOALS)),$(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media))
+v3_media_seeds_known = $(if $(V3_MEDIA_SEEDS),,$(error $(1): $(COARSE_TOOL) gave no media seeds when make started (not built, or it refused the plan: see $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media); run make build, then make $(1) again))
 # The law in place (paper/many-body.md, "Next: measuring the law in place"): the third version's
 # media compressed resolved again, each site's pushes against the law's (coarse/in_place.hpp).
 IN_PLACE_DIR ?= $(DATA)/many-body-v3/in-place
-IN_PLACE_SEEDS = $(if $(filter many-body-in-place many-body-kinematics,$(MAKECMDGOALS)),$(shell $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media))
 .PHONY: many-body-in-place
-many-body-in-place: $(foreach s,$(IN_PLACE_SEEDS),$(IN_PLACE_DIR)/seed-$(s).dat) | $(TOOLS)  ## the law in place on the third version's media (DATA/many-body-v3/in-place/in-place.md)
+many-body-in-place: $(foreach s,$(V3_MEDIA_SEEDS),$(IN_PLACE_DIR)/seed-$(s).dat) | $(TOOLS)  ## the law in place on the third version's media (DATA/many-body-v3/in-place/in-place.md)
+	$(call v3_media_seeds_known,many-body-in-place)
 	@$(RUN) $(COARSE_TOOL) in-place-report --probe $(PROBE_PLAN) --dir $(IN_PLACE_DIR) --v3
 $(IN_PLACE_DIR)/seed-%.dat: $(DATA)/many-body-v3/reference/media/seed-%.h5 $(DATA)/many-body/report/laws.json | $(TOOLS)
 	@mkdir -p $(@D)
@@ -129,31 +135,33 @@ $(IN_PLACE_DIR)/seed-%.dat: $(DATA)/many-body-v3/reference/media/seed-%.h5 $(DAT
 	  || { echo "in-place: seed $* FAILED (log: $(@D)/seed-$*.log)"; tr '\r' '\n' < $(@D)/seed-$*.log | tail -3; exit 1; }
 	@echo "$$(tr '\r' '\n' < $(@D)/seed-$*.log | tail -1)"
 # The soft medium's geometry against the resolved one's (paper/many-body.md, "Next: the soft
-# medium's geometry against the resolved one's"): the census again (its soft runs, seconds; it writes
-# every contact, report/contact-rows.dat), then the comparison with the law in place's rows.
+# medium's geometry against the resolved one's"): after make many-body-in-place and make
+# many-body-v3-verdict (whose census writes every soft-particle contact, report/contact-rows.dat),
+# the comparison of their rows (a second or so).
 .PHONY: many-body-kinematics
-many-body-kinematics: many-body-in-place | $(TOOLS)  ## the soft medium's contacts against the resolved one's intrusions (DATA/many-body-v3/report/kinematics.md)
-	@$(RUN) $(COARSE_TOOL) soft-contacts --probe $(PROBE_PLAN) --config $(DATA)/many-body-v3/profiles/many-body.yaml \
-	  --media $(DATA)/many-body-v3/reference/media --out $(DATA)/many-body-v3/report --v3
+many-body-kinematics: | $(TOOLS)  ## the soft medium's contacts against the resolved one's intrusions (DATA/many-body-v3/report/kinematics.md)
 	@$(RUN) $(COARSE_TOOL) kinematics --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3
 
 # The speed-up side by side (issue 33's target; paper/many-body.md, "Next: the speed-up side by
 # side"): each third-version medium resolved, soft pairwise and soft many-body in one process on
 # one thread (coarse/speed.hpp), one seed after the other even under -j (each seed's file waits for
-# the previous one's), so that no two timed runs share the machine; about 15 CPU-minutes.
+# the previous one's); run nothing else beside it. About 15 CPU-minutes. A seed is timed again when
+# its medium, the law file or the settings change, not when the code does: to time new code, remove
+# DATA/many-body-v3/speed/seed-*.dat first.
 SPEED_DIR ?= $(DATA)/many-body-v3/speed
-SPEED_SEEDS = $(if $(filter many-body-speed,$(MAKECMDGOALS)),$(shell $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media))
 .PHONY: many-body-speed
-many-body-speed: $(foreach s,$(SPEED_SEEDS),$(SPEED_DIR)/seed-$(s).dat) | $(TOOLS)  ## the speed-up over resolved side by side (DATA/many-body-v3/speed/speed.md)
+many-body-speed: $(foreach s,$(V3_MEDIA_SEEDS),$(SPEED_DIR)/seed-$(s).dat) | $(TOOLS)  ## the speed-up over resolved side by side (DATA/many-body-v3/speed/speed.md)
+	$(call v3_media_seeds_known,many-body-speed)
 	@$(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --report
 define speed_seed
-$(SPEED_DIR)/seed-$(1).dat: $(DATA)/many-body-v3/reference/media/seed-$(1).h5 $(DATA)/many-body/report/laws.json | $(TOOLS) $(2)
+$(SPEED_DIR)/seed-$(1).dat: $(DATA)/many-body-v3/reference/media/seed-$(1).h5 $(DATA)/many-body/report/laws.json \
+  $(DATA)/many-body-v3/profiles/reference.yaml $(DATA)/many-body-v3/profiles/many-body.yaml | $(TOOLS) $(2)
 	@mkdir -p $$(@D)
 	@SOFTPACK_THREADS=1 $(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --seed $(1) 2> $$(@D)/seed-$(1).log \
 	  || { echo "speed: seed $(1) FAILED (log: $$(@D)/seed-$(1).log)"; tr '\r' '\n' < $$(@D)/seed-$(1).log | tail -3; exit 1; }
 	@echo "$$$$(tr '\r' '\n' < $$(@D)/seed-$(1).log | tail -1)"
 endef
-$(foreach s,$(SPEED_SEEDS),$(eval $(call speed_seed,$(s),$(if $(prev),$(SPEED_DIR)/seed-$(prev).dat)))$(eval prev := $(s)))
+$(foreach s,$(V3_MEDIA_SEEDS),$(eval $(call speed_seed,$(s),$(if $(prev),$(SPEED_DIR)/seed-$(prev).dat)))$(eval prev := $(s)))
 # The third version's (paper/many-body.md, "Next"): after make many-body-v3, on its own media.
 .PHONY: many-body-v3-verdict
 many-body-v3-verdict: | $(TOOLS)  ## the law's third version's acceptance on its media, and its census (DATA/many-body-v3/report/validation.md, contacts.md)

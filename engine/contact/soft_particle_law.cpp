@@ -94,6 +94,8 @@ namespace {
   }
 }
 
+// A template, so that a build without AVX-512 loops (softpack_build.hpp) never compiles it.
+template <class = void>
 [[gnu::target("arch=x86-64-v4"), gnu::flatten]] void meridian_pieces_avx512(const double* cosine, const double* sine, std::size_t M,
                                                                            const std::vector<std::array<double, 3>>& m, double h, double t_cap,
                                                                            double* piece) {
@@ -105,13 +107,22 @@ namespace {
   meridian_pieces(cosine, sine, M, m, h, t_cap, piece);
 }
 
+// On the instruction set chosen at run time (the force loops' choice, forces/compile_loops.hpp).
+void meridian_pieces_on(bool avx512, const double* cosine, const double* sine, std::size_t M, const std::vector<std::array<double, 3>>& m, double h,
+                        double t_cap, double* piece) {
+  if constexpr (build::kAvx512Loops)
+    if (avx512) return meridian_pieces_avx512(cosine, sine, M, m, h, t_cap, piece);
+  meridian_pieces_portable(cosine, sine, M, m, h, t_cap, piece);
+}
+
 }  // namespace
 
 double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& depth, int meridians) {
   // Kept from call to call (the engine calls this for every soft-particle of two caps or more, every step).
   thread_local std::vector<double> h, s, cosine, sine, piece;
   if (!(meridians > 0) || meridians % simd::kLanes != 0)
-    throw std::invalid_argument("cap_union_volume: the meridians must be a positive multiple of 8 (got " + std::to_string(meridians) + ")");
+    throw std::invalid_argument("cap_union_volume: the meridians must be a positive multiple of " + std::to_string(simd::kLanes) + " (got " +
+                                std::to_string(meridians) + ")");
   thread_local std::vector<std::array<double, 3>> m;  // A, and B = Bc cos φ + Bs sin φ, of each cap that meets cap k
   const std::size_t caps = n.size();
   h.resize(caps), s.resize(caps);
@@ -125,6 +136,7 @@ double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& d
     for (int i = 0; i < meridians; ++i) cosine[static_cast<std::size_t>(i)] = std::cos(2.0 * std::numbers::pi * i / meridians),
                                         sine[static_cast<std::size_t>(i)] = std::sin(2.0 * std::numbers::pi * i / meridians);
   }
+  const bool avx512 = build::kAvx512Loops && cpu::vector_isa() == cpu::VectorIsa::avx512;
   double total = 0.0;
   for (std::size_t k = 0; k < caps; ++k) {
     if (!(depth[k] > 0.0)) continue;
@@ -141,8 +153,7 @@ double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& d
       continue;
     }
     const auto M = static_cast<std::size_t>(meridians);
-    const bool avx512 = build::kAvx512Loops && cpu::vector_isa() == cpu::VectorIsa::avx512;
-    (avx512 ? meridian_pieces_avx512 : meridian_pieces_portable)(cosine.data(), sine.data(), M, m, h[k], s[k] / h[k], piece.data());
+    meridian_pieces_on(avx512, cosine.data(), sine.data(), M, m, h[k], s[k] / h[k], piece.data());
     double sum = 0.0;
     for (std::size_t i = 0; i < M; ++i) sum += piece[i];  // in meridian order
     total += 0.5 * sum / meridians;
@@ -186,15 +197,18 @@ SoftNormal::Eval SoftManyBodyNormal::evaluate(const Params& p, const Constants<d
 double SoftManyBodyNormal::energy(const Params& p, const Constants<double>& k, double h, double s1, double s2) {
   if (!(h > 0.0)) return 0.0;
   const double dn = h / k.R, rest = others(k, cap_volume(dn), s1, s2);
+  const SoftPowerLaw& X = p.law(k.scene).normal;
+  if (!(rest > 0.0)) return k.scale * k.F_scale * k.R * X.integral(dn);  // alone: Eq. 7's integral, as the pairwise model's
   // The force is 0 until δ* = cap_depth(v(Δn) + β E_others) reaches where Eq. 7 starts: Simpson's
-  // rule from there, where the integrand is smooth (from 0 it would straddle the onset's kink).
-  const double start = p.law(k.scene).normal.start();
-  const double from = rest > 0.0 ? cap_depth(cap_volume(start) - k.beta * rest) : start;
+  // rule from there, where the integrand is smooth (from 0 it would straddle the onset's kink),
+  // its first node the force just above the onset (δ* = start exactly; cap_depth's round trip
+  // could land a few units of the last place below it, where Eq. 7 is 0).
+  const double start = X.start(), from = cap_depth(cap_volume(start) - k.beta * rest);
   if (!(dn > from)) return 0.0;
   constexpr int n = kEnergyIntervals;
   const double step = (dn - from) / n;
-  double sum = 0.0;
-  for (int i = 0; i <= n; ++i) sum += (i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0) * force(p, k, from + step * i, rest);
+  double sum = from > 0.0 ? k.scale * k.F_scale * X(start) * cap_area(from) / cap_area(start) : 0.0;
+  for (int i = 1; i <= n; ++i) sum += (i == n ? 1.0 : i % 2 ? 4.0 : 2.0) * force(p, k, from + step * i, rest);
   return sum * (step * k.R) / 3.0;
 }
 

@@ -246,8 +246,11 @@ struct SoftManyBodyNormal : SoftNormal {
   }
   static double body_state(const std::vector<Vec3>& u, const std::vector<double>& depth) { return cap_union_volume(u, depth); }
   static Eval evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g);
-  /// ∫ Fn dh from 0 to h with the other contacts' caps as they are: Simpson's rule on
-  /// kEnergyIntervals from where the force starts (tests/physics ManyBodySoftParticles.TheEnergyIsTheForcesIntegral).
+  /// ∫ Fn dh from 0 to h with the other contacts' caps as they are: Eq. 7's integral for a contact
+  /// alone (the pairwise model's), else Simpson's rule on kEnergyIntervals from where the force
+  /// starts (tests/physics ManyBodySoftParticles.TheEnergyIsTheForcesIntegral). Where v(Δn) +
+  /// β E_others reaches the ball's volume the force falls back to Eq. 7 (many_body_force) and the
+  /// rule is not made for it.
   static constexpr int kEnergyIntervals = 16;
   static double energy(const Params& p, const Constants<double>& k, double h, double s1, double s2);
 

@@ -43,12 +43,22 @@ double restitution_from_zeta(double zeta) {
   return 0.0;
 }
 
+namespace {
+
+// Scenes are built many times with the same e (tests, sweeps): zeta_from_restitution remembers the answers.
+std::mutex cache_mutex;
+std::map<double, double> cache;
+
+}  // namespace
+
+void forget_zeta_cache() {
+  const std::lock_guard lock(cache_mutex);
+  cache.clear();
+}
+
 double zeta_from_restitution(double e) {
   if (!(e > 0.0 && e <= 1.0)) throw std::invalid_argument("restitution must be in (0, 1]");
   if (e == 1.0) return 0.0;
-  // Scenes are built many times with the same e (tests, sweeps): remember the answers.
-  static std::mutex cache_mutex;
-  static std::map<double, double> cache;
   {
     const std::lock_guard lock(cache_mutex);
     if (auto it = cache.find(e); it != cache.end()) return it->second;

@@ -31,7 +31,12 @@ namespace softpack::damping {
 double restitution_from_zeta(double zeta);
 
 /// The zeta giving restitution e, 0 < e <= 1 (zeta = 0 for e = 1). Accurate to ~1e-9 in e.
+/// Remembered for the process (scenes are built many times with the same e).
 double zeta_from_restitution(double e);
+/// Forgets what zeta_from_restitution remembered, so that the next scene pays its bisection as
+/// the first scene of a process does (timings that compare runs of one process,
+/// studies/coarse/speed.hpp); the answers are the same bits.
+void forget_zeta_cache();
 
 /// zeta sqrt(m k): with k = kn and m = m12 the normal damping factor gamma0
 /// (gamma_n = gamma0 h^(1/4) [kg/s]); with k = kt0 and m = mt the tangential one.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "contact/viscous_damping.hpp"
 #include "core/parallel.hpp"
 #include "forces/contact_walk.hpp"
 #include "integrate/velocity_verlet.hpp"
@@ -187,6 +188,8 @@ const WallLoad& Simulation::wall_load(const std::string& name) const {
     if (scene_.shells[k].name == name) return world_.shell_loads[k];
   throw InputError(fmt::format("no plane or shell is named '{}'", name));
 }
+
+void Simulation::forget_setup_caches() { damping::forget_zeta_cache(); }
 
 Vec3 Simulation::force_between(int from, int on) const {
   Vec3 total = Vec3::Zero();

@@ -48,6 +48,10 @@ class Simulation {
   explicit Simulation(const SceneDef& scene);
   Simulation(const Simulation&) = delete;  // the parts refer to the scene and to each other
   Simulation& operator=(const Simulation&) = delete;
+  /// Forgets what the construction of scenes remembers across a process (the damping's zeta of
+  /// each restitution, contact/viscous_damping.hpp), so that the next one costs what the first of
+  /// a process costs (timings that compare runs of one process); the same bits either way.
+  static void forget_setup_caches();
 
   void step();
   /// n steps, then a watchdog check: a state a caller sees after run_steps() has been checked.

@@ -31,6 +31,37 @@ struct Intrusion {
 
 }  // namespace
 
+ContactPartners site_partners(double Rs, int kind, double ratio) {
+  ContactPartners b;
+  b.kind = kind == 0 ? ContactPartners::Kind::plane : ContactPartners::Kind::pair;
+  b.R1 = Rs, b.soft1 = true, b.soft2 = kind == 2;
+  b.R2 = kind == 1 ? ratio * Rs : kind == 2 ? Rs : 0.0;
+  return b;
+}
+
+bool tabled_strain(double strain) {
+  const double hundredths = std::round(strain * 100.0);
+  return std::abs(strain * 100.0 - hundredths) < 1e-6 && static_cast<long>(hundredths) % 5 == 0;
+}
+
+std::vector<InPlaceContact> read_in_place_rows(const std::string& path, std::string* laws) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot read it (make many-body-in-place writes it)", path));
+  std::vector<InPlaceContact> rows;
+  int line_no = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_no;
+    if (line_no == 1 && laws) *laws = line.find(", laws ") != std::string::npos ? line.substr(line.find(", laws ") + 7) : "";
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream s(line);
+    InPlaceContact c;
+    if (!(s >> c.strain >> c.site >> c.kind >> c.dn >> c.ratio >> c.count >> c.measured >> c.law >> c.pairwise) || c.kind < 0 || c.kind > 2)
+      throw InputError(fmt::format("{}:{}: expected 'strain site kind(0-2) dn r_over_Rs count F_measured F_law F_pairwise'", path, line_no));
+    rows.push_back(c);
+  }
+  return rows;
+}
+
 std::vector<InPlaceContact> in_place_contacts(const Simulation& sim, const Medium& m, const SoftParticleLaws& laws, double strain) {
   const Particles& p = sim.particles();
   const World& w = sim.world();
@@ -86,12 +117,8 @@ std::vector<InPlaceContact> in_place_contacts(const Simulation& sim, const Mediu
   for (std::size_t k = 0; k < sites; ++k)
     for (const Intrusion& in : by_site[k]) {
       InPlaceContact c{strain, k, in.body < 0 ? 0 : in.body < static_cast<int>(grains) ? 1 : 2, in.dn, 0.0, by_site[k].size(), in.measured, 0.0, 0.0};
-      ContactPartners b;  // the site as body 1, a soft-particle of radius Rs
-      b.kind = c.kind == 0 ? ContactPartners::Kind::plane : ContactPartners::Kind::pair;
-      b.R1 = Rs, b.soft1 = true, b.soft2 = c.kind == 2;
-      if (c.kind == 1) b.R2 = p.r[static_cast<std::size_t>(in.body)], c.ratio = b.R2 / Rs;
-      if (c.kind == 2) b.R2 = Rs;
-      const SoftManyBodyNormal::Constants<double> constants = SoftManyBodyNormal::constants(params, b);
+      if (c.kind == 1) c.ratio = p.r[static_cast<std::size_t>(in.body)] / Rs;
+      const SoftManyBodyNormal::Constants<double> constants = SoftManyBodyNormal::constants(params, site_partners(Rs, c.kind, c.ratio));
       ContactGeometry<double> g{};
       g.h = in.dn * Rs, g.body1 = E[k], g.body2 = c.kind == 2 ? E[static_cast<std::size_t>(in.body) - grains] : 0.0;
       c.law = SoftManyBodyNormal::evaluate(params, constants, g).Fn;
@@ -158,20 +185,8 @@ void write_in_place_report(const ManyBodyProbe& plan, const std::string& plan_pa
   std::vector<InPlaceContact> all;
   std::string laws;
   for (const std::uint64_t seed : seeds) {
-    const std::string path = fmt::format("{}/seed-{}.dat", out_dir, seed);
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("{}: cannot read it (make many-body-in-place writes it)", path));
-    int line_no = 0;
-    for (std::string line; std::getline(in, line);) {
-      ++line_no;
-      if (line_no == 1 && line.find(", laws ") != std::string::npos) laws = line.substr(line.find(", laws ") + 7);
-      if (line.empty() || line[0] == '#') continue;
-      std::istringstream s(line);
-      InPlaceContact c;
-      if (!(s >> c.strain >> c.site >> c.kind >> c.dn >> c.ratio >> c.count >> c.measured >> c.law >> c.pairwise))
-        throw InputError(fmt::format("{}:{}: expected 'strain site kind dn r_over_Rs count F_measured F_law F_pairwise'", path, line_no));
-      all.push_back(c);
-    }
+    const std::vector<InPlaceContact> rows = read_in_place_rows(fmt::format("{}/seed-{}.dat", out_dir, seed), &laws);
+    all.insert(all.end(), rows.begin(), rows.end());
   }
   // The floor of the probe's errors: force_floor of the single contact's law at the plan's largest Δn.
   const SoftParticleLaws l = soft_particle_laws(read_law_file(laws.empty() ? plan.settings.laws : laws), laws);
@@ -193,9 +208,8 @@ void write_in_place_report(const ManyBodyProbe& plan, const std::string& plan_pa
   std::map<double, std::map<int, Sums>> by_strain;
   std::map<int, Sums> by_kind, by_count;  // by_count: the site's intruding bodies, 1-3, 4-6, 7-9, 10 or more
   for (const InPlaceContact& c : all) {
-    const double hundredths = std::round(c.strain * 100.0);
-    if (std::abs(c.strain * 100.0 - hundredths) < 1e-6 && static_cast<long>(hundredths) % 5 == 0)
-      by_strain[hundredths / 100.0][c.kind].add(c, floor), by_strain[hundredths / 100.0][3].add(c, floor);
+    if (const double at = std::round(c.strain * 100.0) / 100.0; tabled_strain(c.strain))
+      by_strain[at][c.kind].add(c, floor), by_strain[at][3].add(c, floor);
     by_kind[c.kind].add(c, floor), by_kind[3].add(c, floor);
     by_count[std::min<int>(3, static_cast<int>((c.count - 1) / 3))].add(c, floor);
   }

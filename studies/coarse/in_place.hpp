@@ -14,6 +14,7 @@
 
 #include "coarse/compression.hpp"
 #include "coarse/probe_settings.hpp"
+#include "contact/soft_particle_law.hpp"
 
 namespace softpack {
 
@@ -29,6 +30,17 @@ struct InPlaceContact {
   double law = 0.0;        ///< the law file's many-body law's [N]
   double pairwise = 0.0;   ///< its pairwise laws' [N]
 };
+
+/// The engine's partners of a body pressing a site: the site as body 1, a soft-particle of radius
+/// Rs; a wall (kind 0), a grain of radius ratio Rs (1) or another site (2) as body 2.
+ContactPartners site_partners(double Rs, int kind, double ratio);
+
+/// Whether the reports table a recorded strain: a multiple of 0.05.
+bool tabled_strain(double strain);
+
+/// The rows of OUT/seed-S.dat (write_in_place_seed's); InputError naming the file and the line
+/// otherwise. `laws`: set to the law file its header names (empty if it names none).
+std::vector<InPlaceContact> read_in_place_rows(const std::string& path, std::string* laws = nullptr);
 
 /// The site contacts of the resolved medium's current state (the medium's resolved scene).
 std::vector<InPlaceContact> in_place_contacts(const Simulation& sim, const Medium& m, const SoftParticleLaws& laws, double strain);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "analysis/seed_statistics.hpp"
+#include "coarse/in_place.hpp"
 #include "contact/soft_particle_law.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -27,7 +28,7 @@ struct Press {
 };
 
 struct Group {
-  std::size_t presses = 0, sites = 0, below = 0;
+  std::size_t presses = 0, below = 0;
   double F = 0.0, law = 0.0;
   std::vector<double> dn, confinement;
   void add(const Press& p) {
@@ -40,18 +41,13 @@ struct Group {
 // The law alone at Δn: the engine's many-body model with the soft-particle's E its own cap.
 double alone(const SoftParticleLaws& laws, double Rs, int kind, double dn, double ratio) {
   const SoftNormal::Params params{&laws, GrainContactRule::wall, false};
-  ContactPartners b;
-  b.kind = kind == 0 ? ContactPartners::Kind::plane : ContactPartners::Kind::pair;
-  b.R1 = Rs, b.soft1 = true, b.soft2 = kind == 2, b.R2 = kind == 1 ? ratio * Rs : kind == 2 ? Rs : 0.0;
   ContactGeometry<double> g{};
   g.h = dn * Rs, g.body1 = cap_volume(dn), g.body2 = kind == 2 ? cap_volume(dn) : 0.0;
-  return SoftManyBodyNormal::evaluate(params, SoftManyBodyNormal::constants(params, b), g).Fn;
+  return SoftManyBodyNormal::evaluate(params, SoftManyBodyNormal::constants(params, site_partners(Rs, kind, ratio)), g).Fn;
 }
 
-bool tabled(double strain) {  // a multiple of 0.05
-  const double hundredths = std::round(strain * 100.0);
-  return std::abs(strain * 100.0 - hundredths) < 1e-6 && static_cast<long>(hundredths) % 5 == 0;
-}
+// A median, or "–" where there is none.
+std::string median_cell(const std::vector<double>& v, const char* f) { return v.empty() ? "–" : fmt::format(fmt::runtime(f), rank_quantile(v, 0.5)); }
 
 }  // namespace
 
@@ -60,10 +56,14 @@ void write_kinematics_report(const ManyBodyProbe& plan, const std::string& plan_
   if (!laws.many_body || !laws.soft_solid || !laws.soft_soft)
     throw InputError(fmt::format("{}: no many_body or a scene missing; the comparison needs both scenes and many_body", laws_source));
   std::map<std::uint64_t, std::pair<std::size_t, double>> media;  // seed -> its sites, Rs
+  const auto same_laws = [&](const std::string& named, const std::string& where) {
+    if (named != laws_source)
+      throw InputError(fmt::format("{}: made with the laws {}, not {} (rerun it, or give the laws it was made with)", where, named, laws_source));
+  };
   std::vector<Press> soft, resolved;
   {
     std::ifstream in(census_rows);
-    if (!in) throw InputError(fmt::format("{}: cannot read it (make many-body-kinematics writes it with softpack-coarse soft-contacts)", census_rows));
+    if (!in) throw InputError(fmt::format("{}: cannot read it (make many-body-v3-verdict writes it with softpack-coarse soft-contacts)", census_rows));
     int line_no = 0;
     for (std::string line; std::getline(in, line);) {
       ++line_no;
@@ -71,6 +71,7 @@ void write_kinematics_report(const ManyBodyProbe& plan, const std::string& plan_
       std::size_t n = 0;
       double Rs = 0.0;
       std::string word;
+      if (const std::size_t at = line.find(" with the laws "); line_no == 1) same_laws(at == std::string::npos ? "" : line.substr(at + 15), census_rows);
       if (std::istringstream head(line); line.rfind("# seed ", 0) == 0 && head >> word >> word >> seed >> word >> n >> word >> word >> Rs) media[seed] = {n, Rs};
       if (line.empty() || line[0] == '#') continue;
       std::istringstream r(line);
@@ -79,32 +80,22 @@ void write_kinematics_report(const ManyBodyProbe& plan, const std::string& plan_
       if (!(r >> seed >> p.strain >> site >> p.kind >> p.dn >> p.ratio >> count >> p.F) || !media.count(seed) || p.kind < 0 || p.kind > 2)
         throw InputError(fmt::format("{}:{}: expected 'seed strain soft_particle kind dn r_over_Rs count Fn' after its seed's '# seed S: N soft-particles, Rs R m'",
                                      census_rows, line_no));
+      if (std::find(plan.v3_media_seeds.begin(), plan.v3_media_seeds.end(), seed) == plan.v3_media_seeds.end())
+        throw InputError(fmt::format("{}:{}: seed {} is not one of {}'s validation.v3_media_seeds", census_rows, line_no, seed, plan_path));
       p.law = p.F;
-      if (tabled(p.strain)) p.alone = alone(laws, media[seed].second, p.kind, p.dn, p.ratio), soft.push_back(p);
+      if (tabled_strain(p.strain)) p.alone = alone(laws, media[seed].second, p.kind, p.dn, p.ratio), soft.push_back(p);
     }
   }
-  std::map<double, std::size_t> sites_at;  // sites over the seeds at each tabled strain
+  double sites = 0.0;  // of all the seeds: the same at every strain, in both models
   for (const std::uint64_t seed : plan.v3_media_seeds) {
-    if (!media.count(seed)) throw InputError(fmt::format("{}: no seed {} (rerun make many-body-kinematics)", census_rows, seed));
+    if (!media.count(seed)) throw InputError(fmt::format("{}: no seed {} (rerun its census)", census_rows, seed));
+    sites += static_cast<double>(media[seed].first);
     const std::string path = fmt::format("{}/seed-{}.dat", in_place_dir, seed);
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("{}: cannot read it (make many-body-in-place writes it)", path));
-    int line_no = 0;
-    std::map<double, bool> seen;
-    for (std::string line; std::getline(in, line);) {
-      ++line_no;
-      if (line.empty() || line[0] == '#') continue;
-      std::istringstream r(line);
-      Press p;
-      std::size_t site = 0, count = 0;
-      double pairwise = 0.0;
-      if (!(r >> p.strain >> site >> p.kind >> p.dn >> p.ratio >> count >> p.F >> p.law >> pairwise) || p.kind < 0 || p.kind > 2)
-        throw InputError(fmt::format("{}:{}: expected 'strain site kind dn r_over_Rs count F_measured F_law F_pairwise'", path, line_no));
-      if (!tabled(p.strain)) continue;
-      p.alone = alone(laws, media[seed].second, p.kind, p.dn, p.ratio);
-      resolved.push_back(p), seen[std::round(p.strain * 100.0) / 100.0] = true;
-    }
-    for (const auto& [strain, _] : seen) sites_at[strain] += media[seed].first;
+    std::string named;
+    for (const InPlaceContact& c : read_in_place_rows(path, &named))
+      if (tabled_strain(c.strain))
+        resolved.push_back({c.strain, c.kind, c.dn, c.ratio, c.measured, c.law, alone(laws, media[seed].second, c.kind, c.dn, c.ratio)});
+    same_laws(named, path);
   }
   // Each tabled strain and kind (3: all), soft and resolved.
   std::map<double, std::map<int, std::pair<Group, Group>>> groups;
@@ -124,23 +115,21 @@ void write_kinematics_report(const ManyBodyProbe& plan, const std::string& plan_
       "sphere intrudes a site's (`{}/seed-S.dat`). Per soft-particle: over the sites of all seeds. Push: soft, its law's force; "
       "resolved, measured (and the law's from the same geometry). Confinement: Fn over the law alone at the same Δn (the "
       "soft-particle's other caps removed), median over the contacts where the law alone is not 0 (resolved: the law's Fn); "
-      "below the onset: the share of contacts where it is 0.\n\n"
+      "below the onset: the share of contacts where it is 0. \"–\": no contact to take it from.\n\n"
       "| strain | body | bodies per soft-particle soft / resolved | Δn median soft / resolved | Δn 90 % soft / resolved | push per "
       "soft-particle [N] soft / resolved / law on resolved | confinement soft / resolved | below the onset soft / resolved |\n"
       "|---|---|---|---|---|---|---|---|\n",
       code_version(), fmt::join(plan.v3_media_seeds, ", "), plan_path, laws_source, census_rows, in_place_dir);
-  for (const auto& [strain, by_kind] : groups) {
-    const double sites = static_cast<double>(sites_at[strain]);
-    if (!(sites > 0.0)) continue;
+  if (!(sites > 0.0)) throw InputError(fmt::format("{}: no soft-particle in its seeds", census_rows));
+  for (const auto& [strain, by_kind] : groups)
     for (const auto& [kind, g] : by_kind) {
       const auto& [a, b] = g;
-      const auto share = [](const Group& x) { return x.presses ? static_cast<double>(x.below) / static_cast<double>(x.presses) : 0.0; };
-      md += fmt::format("| {:.2f} | {} | {:.2f} / {:.2f} | {:.3f} / {:.3f} | {:.3f} / {:.3f} | {:.3g} / {:.3g} / {:.3g} | {:.2f} / {:.2f} | {:.2f} / {:.2f} |\n", strain,
-                        kinds[kind], static_cast<double>(a.presses) / sites, static_cast<double>(b.presses) / sites, rank_quantile(a.dn, 0.5),
-                        rank_quantile(b.dn, 0.5), rank_quantile(a.dn, 0.9), rank_quantile(b.dn, 0.9), a.F / sites, b.F / sites, b.law / sites,
-                        rank_quantile(a.confinement, 0.5), rank_quantile(b.confinement, 0.5), share(a), share(b));
+      const auto share = [](const Group& x) { return x.presses ? fmt::format("{:.2f}", static_cast<double>(x.below) / static_cast<double>(x.presses)) : std::string("–"); };
+      const auto dn = [](const Group& x, double q) { return x.dn.empty() ? std::string("–") : fmt::format("{:.3f}", rank_quantile(x.dn, q)); };
+      md += fmt::format("| {:.2f} | {} | {:.2f} / {:.2f} | {} / {} | {} / {} | {:.3g} / {:.3g} / {:.3g} | {} / {} | {} / {} |\n", strain, kinds[kind],
+                        static_cast<double>(a.presses) / sites, static_cast<double>(b.presses) / sites, dn(a, 0.5), dn(b, 0.5), dn(a, 0.9), dn(b, 0.9),
+                        a.F / sites, b.F / sites, b.law / sites, median_cell(a.confinement, "{:.2f}"), median_cell(b.confinement, "{:.2f}"), share(a), share(b));
     }
-  }
   write_file_atomically(out_dir + "/kinematics.md", md);
 }
 

@@ -62,11 +62,30 @@ int random_count(const std::string& name) {
 }  // namespace
 
 std::string PressingBody::name() const {
-  if (kind == Kind::grain) return fmt::format("grain-{}", radius_ratio);
-  return kind == Kind::soft ? "soft" : "wall";
+  const std::string confined = walls_at > 0.0 ? fmt::format("+walls-{}", walls_at) : "";
+  if (kind == Kind::grain) return fmt::format("grain-{}", radius_ratio) + confined;
+  return (kind == Kind::soft ? "soft" : "wall") + confined;
 }
 
-PressingBody parse_pressing_body(const std::string& name) {
+PressingBody parse_pressing_body(const std::string& full_name) {
+  const std::size_t plus = full_name.find("+walls-");
+  const std::string name = full_name.substr(0, plus);
+  if (plus != std::string::npos) {
+    std::size_t used = 0;
+    double d = 0.0;
+    try {
+      d = std::stod(full_name.substr(plus + 7), &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (name == "wall" || used == 0 || used != full_name.size() - plus - 7 || !(d > 0.0 && d <= 0.5))
+      throw InputError(fmt::format("pressing body '{}' is not allowed; allowed: soft or grain-X followed by +walls-D, D in (0, 0.5] "
+                                   "(the other contacts' walls' Δn)",
+                                   full_name));
+    PressingBody b = parse_pressing_body(name);
+    b.walls_at = d;
+    return b;
+  }
   if (name == "wall") return {};
   if (name == "soft") return {PressingBody::Kind::soft, 1.0};
   if (name.starts_with("grain-")) {
@@ -103,6 +122,8 @@ ProbeArrangement builtin_arrangement(const std::string& full_name, std::uint64_t
   else if (name == "orthogonal-half") w = {{z, 1.0}, {x, 0.5}};
   else if (const int n = random_count(name); n > 0) w = random_walls(n, seed);
   else throw InputError(fmt::format("arrangement '{}' is not allowed; allowed: {}, each alone or as NAME:BODY (BODY: wall, soft, grain-X)", full_name, kAllowed));
+  if (a.body.walls_at > 0.0 && w.size() < 2)
+    throw InputError(fmt::format("arrangement '{}' is not allowed: +walls-D needs walls besides the first contact (two contacts or more)", full_name));
   return a;
 }
 
@@ -124,38 +145,47 @@ class Probe {
   Simulation& simulation() { return simulation_; }
 
   // Moves contact k in by w_k (to - from) Rs, all at once, at the approach speed; grains are held
-  // where they arrive, walls and shells stand.
-  void press(double from, double to) {
-    simulation_.release_drivers();
-    bool moved = false;
-    for (std::size_t k = 0; k < a_.walls.size(); ++k) {
-      const double step = a_.walls[k].w * (to - from) * Rs_;
-      if (!(step > 0.0)) continue;
-      const Vec3 v = -s_.normal_speed * a_.walls[k].u;
-      const int body = static_cast<int>(k) + 1;
-      if (a_.body.kind != PressingBody::Kind::grain) simulation_.add_driver(MoveWallDef{body_name(k), v, step, std::nullopt});
-      if (a_.body.kind != PressingBody::Kind::wall)
-        simulation_.add_driver(TranslateGroupDef{GroupDef{GroupDef::Kind::body, body}, v, step, std::nullopt,
-                                                 a_.body.kind == PressingBody::Kind::grain ? AfterDrive::hold : AfterDrive::release});
-      moved = true;
-    }
-    while (moved && simulation_.drivers_moving()) simulation_.run_steps(100);
+  // where they arrive, walls and shells stand. With walls_at, only the first contact moves (the
+  // others are confine()'s).
+  void press(double from, double to) { move(from, to, false); }
+  // With walls_at: the walls of the contacts but the first moved in to Δn = walls_at, relaxed.
+  void confine() {
+    if (!(a_.body.walls_at > 0.0)) return;
+    move(0.0, a_.body.walls_at, true);
+    relax_here(1);  // settled on a confining wall's force (the first contact's is still 0)
   }
   // The force on contact k's body along u_k.
   double Fn(std::size_t k) const { return load(k).dot(a_.walls[k].u); }
   Vec3 load(std::size_t k) const {
-    switch (a_.body.kind) {
-      case PressingBody::Kind::grain: return simulation_.force_between(0, static_cast<int>(k) + 1);
-      case PressingBody::Kind::soft: return simulation_.wall_load(body_name(k)).force;
-      default: return simulation_.plane_loads()[k].force;
-    }
+    if (a_.body.kind_at(k) == PressingBody::Kind::grain) return simulation_.force_between(0, static_cast<int>(k) + 1);
+    if (a_.body.walls_at > 0.0 || a_.body.kind == PressingBody::Kind::soft) return simulation_.wall_load(body_name(k)).force;
+    return simulation_.plane_loads()[k].force;
   }
-  void relax_here() { relax(simulation_, s_.relaxation, {}, [&] { return Vec3(-load(0)); }); }
+  void relax_here(std::size_t k = 0) { relax(simulation_, s_.relaxation, {}, [&] { return Vec3(-load(k)); }); }
 
  private:
+  // Moves the contacts by w_k (to - from) Rs: the first one's body (confining: the others').
+  void move(double from, double to, bool confining) {
+    simulation_.release_drivers();
+    bool moved = false;
+    for (std::size_t k = 0; k < a_.walls.size(); ++k) {
+      if (a_.body.walls_at > 0.0 && (k == 0) == confining) continue;
+      const double step = a_.walls[k].w * (to - from) * Rs_;
+      if (!(step > 0.0)) continue;
+      const Vec3 v = -s_.normal_speed * a_.walls[k].u;
+      const int body = static_cast<int>(k) + 1;
+      const PressingBody::Kind kind = a_.body.kind_at(k);
+      if (kind != PressingBody::Kind::grain) simulation_.add_driver(MoveWallDef{body_name(k), v, step, std::nullopt});
+      if (kind != PressingBody::Kind::wall)
+        simulation_.add_driver(TranslateGroupDef{GroupDef{GroupDef::Kind::body, body}, v, step, std::nullopt,
+                                                 kind == PressingBody::Kind::grain ? AfterDrive::hold : AfterDrive::release});
+      moved = true;
+    }
+    while (moved && simulation_.drivers_moving()) simulation_.run_steps(100);
+  }
   std::string body_name(std::size_t k) const { return body_name(a_.body, k); }
   // The plane or shell of contact k (none for a grain, which is its body k + 1).
-  static std::string body_name(const PressingBody& b, std::size_t k) { return (b.kind == PressingBody::Kind::soft ? "soft" : "wall") + std::to_string(k); }
+  static std::string body_name(const PressingBody& b, std::size_t k) { return (b.kind_at(k) == PressingBody::Kind::soft ? "soft" : "wall") + std::to_string(k); }
   static void add_packing(SceneDef& scene, const Packing& p, const Vec3& at, int body) {
     for (std::size_t i = 0; i < p.radii.size(); ++i) {
       ParticleDef d;
@@ -172,9 +202,9 @@ class Probe {
     for (std::size_t k = 0; k < a.walls.size(); ++k) {  // each touching the shell from outside
       const Vec3 u = a.walls[k].u;
       const int body = static_cast<int>(k) + 1;
-      if (a.body.kind == PressingBody::Kind::wall) {
+      if (a.body.kind_at(k) == PressingBody::Kind::wall) {
         scene.planes.push_back(PlaneDef{body_name(a.body, k), Rs * u, -u, 1});
-      } else if (a.body.kind == PressingBody::Kind::grain) {
+      } else if (a.body.kind_at(k) == PressingBody::Kind::grain) {
         ParticleDef g;
         g.x = (1.0 + a.body.radius_ratio) * Rs * u, g.r = a.body.radius_ratio * Rs, g.body = body;
         scene.particles.push_back(g);
@@ -202,6 +232,13 @@ std::vector<MultiContactPoint> measure_multi_contact(const CoarseGrainSettings& 
   std::vector<MultiContactPoint> out;
   for (const ProbeArrangement& a : arrangements) {
     Probe probe(s, packing, packing_seed, a);
+    try {
+      probe.confine();
+    } catch (const NumericalError& e) {
+      out.push_back({a.name, delta_n.front(), {}, fmt::format("confining walls: {}", e.what())});
+      if (progress) progress(out.back());
+      continue;
+    }
     double at = 0.0;
     for (const double dn : delta_n) try {
       probe.press(at, dn);

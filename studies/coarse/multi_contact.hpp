@@ -22,6 +22,9 @@
 //                  seed, each at least 60 degrees from the others (40 for N > 6), the first
 //                  turned onto +z
 //
+// NAME:BODY+walls-D presses with BODY at the first contact only, the others being walls moved in
+// to Δn = D first and then held; the first contact is moved through the run's Δn from contact.
+//
 // NAME:BODY presses with another body at every contact of arrangement NAME (PressingBody): a
 // held solid sphere (grain-X, radius X Rs, touching the shell from outside at the start) or a
 // resolved soft-particle of the same radius (soft: its packing of seed 1000 S + k for contact k,
@@ -54,9 +57,16 @@ struct ProbeWall {
 struct PressingBody {
   enum class Kind { wall, grain, soft } kind = Kind::wall;
   double radius_ratio = 1.0;  ///< grain: its radius over Rs
-  std::string name() const;   ///< wall, grain-X, soft
+  /// > 0 (BODY+walls-D): only the first contact is this body, moved through the run's Δn; the
+  /// others are walls, first moved in to Δn = walls_at together, then held (the body pressing a
+  /// soft-particle that other bodies already confine).
+  double walls_at = 0.0;
+  std::string name() const;   ///< wall, grain-X, soft, each +walls-D with walls_at
+  /// The body at contact k.
+  Kind kind_at(std::size_t k) const { return k == 0 || walls_at == 0.0 ? kind : Kind::wall; }
 };
-/// "wall", "soft" or "grain-X" (0.05 <= X <= 20); InputError naming the allowed ones otherwise.
+/// "wall", "soft" or "grain-X" (0.05 <= X <= 20), "soft" and "grain-X" also followed by
+/// "+walls-D" (0 < D <= 0.5); InputError naming the allowed ones otherwise.
 PressingBody parse_pressing_body(const std::string& name);
 
 struct ProbeArrangement {

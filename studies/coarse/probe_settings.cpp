@@ -66,13 +66,16 @@ std::vector<std::string> ManyBodyProbe::body_kinds() const {
 }
 
 std::vector<std::string> ManyBodyProbe::bodies(const std::string& kind) const {
-  for (const auto& [k, arrangements] : body_groups)
-    if (k == kind) {
-      std::vector<std::string> out;
-      for (const std::string& a : arrangements) out.push_back(a + ":" + kind);
-      return out;
-    }
-  throw InputError(fmt::format("pressing body '{}' is not allowed; allowed: the plan's bodies ({})", kind, fmt::join(body_kinds(), ", ")));
+  for (const auto* groups : {&body_groups, &confined_groups})
+    for (const auto& [k, arrangements] : *groups)
+      if (k == kind) {
+        std::vector<std::string> out;
+        for (const std::string& a : arrangements) out.push_back(a + ":" + kind);
+        return out;
+      }
+  std::vector<std::string> kinds = body_kinds();
+  for (const auto& [k, arrangements] : confined_groups) kinds.push_back(k);
+  throw InputError(fmt::format("pressing body '{}' is not allowed; allowed: the plan's bodies and confined ({})", kind, fmt::join(kinds, ", ")));
 }
 
 std::vector<std::pair<std::string, std::string>> ManyBodyProbe::runs_stamps(const std::string& release) const {
@@ -102,7 +105,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   const ConfigNode root = ConfigNode::load_file(path);
   root.allow_only({"many_body_probe"});
   const ConfigNode c = root.at("many_body_probe");
-  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "shear", "third_version", "validation"});
+  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "confined", "shear", "third_version", "validation"});
   ManyBodyProbe p;
   std::ostringstream text;
   text << c.yaml();
@@ -127,6 +130,9 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
                              text_of(ConfigNode::load_file(in_root(p.settings.profile).string())) + yaml_of(c, "seeds") + yaml_of(c, "radii");
   p.runs_text.emplace_back("seed", common + yaml_of(c, "delta_n") + yaml_of(c, "fit") + yaml_of(c, "held_out"));
   for (const std::string& kind : c.at("bodies").keys()) p.runs_text.emplace_back("bodies-" + kind, common + yaml_of(c, "delta_n") + yaml_of(c.at("bodies"), kind));
+  if (c.has("confined"))
+    for (const std::string& kind : c.at("confined").keys())
+      p.runs_text.emplace_back("bodies-" + kind, common + yaml_of(c, "delta_n") + yaml_of(c.at("confined"), kind));
   p.runs_text.emplace_back("shear", common + yaml_of(c, "shear"));
   p.seeds = parse_seeds(c);
   const ConfigNode radii = c.at("radii");
@@ -171,6 +177,25 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
     p.body_groups.emplace_back(kind, std::move(arrangements));
   }
   if (p.body_groups.empty()) bodies.fail("no pressing body; give at least one, e.g. soft: [one, opposite]");
+  if (c.has("confined")) {  // the fourth part: BODY+walls-D, runs RADIUS/bodies-KIND-S.dat like bodies'
+    const ConfigNode confined = c.at("confined");
+    for (const std::string& kind : confined.keys()) {
+      try {
+        const PressingBody b = parse_pressing_body(kind);
+        if (!(b.walls_at > 0.0)) throw InputError("allowed: BODY+walls-D, e.g. soft+walls-0.2 (other bodies go in bodies)");
+        if (b.name() != kind) throw InputError(fmt::format("write it {}", b.name()));
+        if (std::find_if(p.body_groups.begin(), p.body_groups.end(), [&](const auto& g) { return g.first == kind; }) != p.body_groups.end())
+          throw InputError("it is also in bodies");
+      } catch (const InputError& e) {
+        confined.fail(fmt::format("body '{}': {}", kind, e.what()));
+      }
+      std::vector<std::string> arrangements = names(confined.at(kind));
+      plain(confined.at(kind), arrangements);
+      if (std::find(arrangements.begin(), arrangements.end(), "one") != arrangements.end())
+        confined.at(kind).fail("'one' has no wall to confine it; its single contact is bodies' one:BODY");
+      p.confined_groups.emplace_back(kind, std::move(arrangements));
+    }
+  }
   const ConfigNode shear = c.at("shear");
   shear.allow_only({"arrangements", "delta_n", "ht_over_Rs"});
   p.shear_arrangements = names(shear.at("arrangements"));

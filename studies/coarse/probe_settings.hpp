@@ -28,6 +28,10 @@ struct ManyBodyProbe {
   /// and the confined shear of walls' arrangements.
   /// Each kind of pressing body (wall, grain-X, soft) with its arrangements, in the plan's order.
   std::vector<std::pair<std::string, std::vector<std::string>>> body_groups;
+  /// The fourth part (`confined`; paper/many-body.md, "Next: the soft-soft contact under
+  /// confinement"): BODY+walls-D kinds (coarse/multi_contact.hpp) with their arrangements, run as
+  /// bodies-KIND like body_groups' but not in the second part's analysis. Absent: none.
+  std::vector<std::pair<std::string, std::vector<std::string>>> confined_groups;
   std::vector<std::string> shear_arrangements;
   std::vector<double> shear_delta_n, shear_ht;  ///< Δn; the slides ht / Rs
   /// The law's third version (`third_version`; paper/many-body.md, "Next"): which runs fit and
@@ -55,7 +59,7 @@ struct ManyBodyProbe {
 
   /// The fit arrangements, then the held-out ones.
   std::vector<std::string> arrangements() const;
-  /// The arrangements of `kind` as NAME:KIND (InputError for a kind not in body_groups).
+  /// The arrangements of `kind` as NAME:KIND (InputError for a kind in neither body_groups nor confined_groups).
   std::vector<std::string> bodies(const std::string& kind) const;
   /// The settings with the shell of radius `radius` (a name of `radii`; InputError otherwise).
   CoarseGrainSettings settings_at(const std::string& radius) const;

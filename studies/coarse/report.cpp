@@ -116,15 +116,11 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
   return c;
 }
 
-namespace {
-
-std::string coarse_pm(const MeanError& m, const char* fmt_value = "{:.4g}") {
+std::string coarse_pm(const MeanError& m, const char* fmt_value) {
   if (!std::isfinite(m.mean)) return "–";
   const std::string v = fmt::format(fmt::runtime(fmt_value), m.mean);
   return std::isfinite(m.error) ? v + " ± " + fmt::format("{:.2g}", m.error) : v;
 }
-
-}  // namespace
 
 std::string coarse_run_path(const std::string& dir, CoarseModel model, std::uint64_t seed) {
   return fmt::format("{}/{}/seed-{}.h5", dir, name(model), seed);

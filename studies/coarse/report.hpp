@@ -60,4 +60,8 @@ std::optional<CoarseComparison> coarse_comparison(const CoarseGrainSettings& s, 
 /// whose settings they are (the study and the setting).
 void write_coarse_report(const CoarseComparison& c, const CoarseGrainSettings& s, const std::string& label, const std::string& out);
 
+/// "mean ± error" (the mean by fmt_value, the error to 2 significant digits), the mean alone when
+/// the error is undefined, "–" when the mean is: the coarse-grain reports' cells.
+std::string coarse_pm(const MeanError& m, const char* fmt_value = "{:.4g}");
+
 }  // namespace softpack

@@ -39,7 +39,10 @@ std::vector<SoftSide> soft_sides(const Simulation& sim, const Medium& m) {
 }
 
 SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& row, double dn_max, double E_max) {
-  const std::vector<SoftSide> sides = soft_sides(sim, m);
+  return soft_census(soft_sides(sim, m), m, row, dn_max, E_max);
+}
+
+SoftCensus soft_census(const std::vector<SoftSide>& sides, const Medium& m, const CurveRow& row, double dn_max, double E_max) {
   SoftCensus out;
   out.strain = row.strain, out.phase = row.phase, out.soft_particles = m.sites.size(), out.contacts = sides.size();
   std::vector<double> E(m.sites.size(), 0.0), n(m.sites.size(), 0.0), dn, ratios;
@@ -92,14 +95,14 @@ void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, 
     End end{seed, {}, {}};
     rows += fmt::format("# seed {}: {} soft-particles, Rs {:.9g} m\n", seed, m.sites.size(), m.Rs);
     run_compression(medium_scene(s, m, CoarseModel::soft, laws), m, CoarseModel::soft, s, {}, [&](const Simulation& sim, const CurveRow& row) {
-      const SoftCensus c = soft_census(sim, m, row, dn_max, E_max);
+      const std::vector<SoftSide> sides = soft_sides(sim, m);
+      const SoftCensus c = soft_census(sides, m, row, dn_max, E_max);
       dat += fmt::format("{} {:.4f} {} {} {} {} {} {} {:.6e} {:.6e} {:.6e} {:.5f} {:.5f} {:.5f} {:.5f} {:.5f} {:.5f} {:.4f} {:.4f} {:.4f}\n", seed,
                          c.strain, c.phase, c.soft_particles, c.contacts, c.wall, c.grain, c.soft, c.force_wall, c.force_grain, c.force_soft,
                          c.dn_median, c.dn_p90, c.dn_max, c.beyond_dn, c.beyond_n, c.beyond_E, c.n_mean, c.grain_ratio_median,
                          c.grain_ratio_force);
       if (row.phase == 1) end.c = c;
       if (row.phase == 1 && row.strain >= plan.strain_lo - 1e-9 && row.strain <= plan.strain_hi + 1e-9) {
-        const std::vector<SoftSide> sides = soft_sides(sim, m);
         std::vector<std::size_t> count(m.sites.size(), 0);
         for (const SoftSide& x : sides) ++count[x.soft];
         for (const SoftSide& x : sides)

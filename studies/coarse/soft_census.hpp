@@ -45,6 +45,8 @@ std::vector<SoftSide> soft_sides(const Simulation& sim, const Medium& m);
 
 /// The census of the simulation's current state (soft_sides()). `dn_max`, `E_max`: the probe's range.
 SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& row, double dn_max, double E_max);
+/// The same from its contacts.
+SoftCensus soft_census(const std::vector<SoftSide>& sides, const Medium& m, const CurveRow& row, double dn_max, double E_max);
 
 /// Runs the soft model of each media seed of the plan (the medium files MEDIA_DIR/seed-S.h5, the
 /// settings `config`; `v3`: the third version's media seeds) and writes OUT/contacts.dat (every

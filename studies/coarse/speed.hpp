@@ -3,8 +3,10 @@
 // speed-up side by side"). On one medium, in one process, one after the other: the resolved model,
 // the soft model with the pairwise laws (the reference settings) and with the many-body laws (the
 // many-body settings), each the whole compression, unloading and shear of the settings; the time
-// of each is the CPU time of its simulation (CompressionRun::time, as the study reports count it),
-// on the threads SOFTPACK_THREADS gives (make runs it on one). The soft runs, a second or so each,
+// of each is the CPU time of its simulation (CompressionRun::time, as the study reports count it:
+// the scene's construction and the steps), each paying the grains' damping setup as a process of
+// its own would (Simulation::forget_setup_caches), on the threads SOFTPACK_THREADS gives (make runs it
+// on one). The soft runs, a second or so each,
 // are repeated `repeats` times, interleaved, and their least time taken; the resolved run is
 // made once, first for the seeds at even positions of the plan's list and last for the others, so
 // that a drift of the machine's speed does not favour one model.

@@ -239,7 +239,8 @@ TEST(ManyBodyProbeLaws, TheThirdVersionFindsTheLawThatMadeTheProbe) {
 }
 
 // The soft medium's geometry against the resolved one's (coarse/kinematics.hpp) on rows written
-// here: two seeds of two sites each at strain 0.05 (a row at 0.07 is not tabled); the soft Fn are
+// here: two seeds of two sites each at strain 0.05 (a row at 0.07 is not tabled), one soft-soft
+// contact on the soft side only, the law files named in the headers checked; the soft Fn are
 // set to multiples of the law alone (Eq. 7 of the file, a grain's times (X / (1 + X))^1.3), so each
 // contact's confinement is known, and one contact of each model is below the onset (δ = 0.105).
 TEST(ManyBodyKinematics, TheReportSetsTheSoftContactsAgainstTheResolvedOnes) {
@@ -257,15 +258,16 @@ TEST(ManyBodyKinematics, TheReportSetsTheSoftContactsAgainstTheResolvedOnes) {
   std::filesystem::create_directories(dir);
   {
     std::ofstream rows(dir + "/contact-rows.dat");
-    rows << fmt::format("# soft-particle contacts\n# seed 1: 2 soft-particles, Rs {} m\n", R);
+    rows << fmt::format("# soft-particle contacts (softpack-coarse soft-contacts): settings with the laws {}\n# seed 1: 2 soft-particles, Rs {} m\n", laws_path, R);
     rows << fmt::format("1 0.0500 0 0 0.300000 0.0000 1 {:.17g}\n1 0.0500 1 0 0.001000 0.0000 2 0\n", 2.0 * X(0.3));
     rows << fmt::format("1 0.0500 1 1 0.200000 0.5000 2 {:.17g}\n1 0.0700 1 1 0.250000 0.5000 2 1.0\n", 1.5 * g * X(0.2));
     rows << fmt::format("# seed 2: 2 soft-particles, Rs {} m\n2 0.0500 0 0 0.150000 0.0000 1 {:.17g}\n", R, X(0.15));
+    rows << "2 0.0500 1 2 0.150000 0.0000 1 0\n";  // two soft-particles below the soft-soft onset (0.21)
     std::ofstream one(dir + "/seed-1.dat");
-    one << fmt::format("# the law in place\n0.0500 0 0 0.200000 0.0000 2 0.8 {:.17g} 0\n0.0500 0 1 0.250000 0.5000 2 0.5 {:.17g} 0\n", 3.0 * X(0.2),
+    one << fmt::format("# the law in place (softpack-coarse in-place): resolved medium, laws {}\n0.0500 0 0 0.200000 0.0000 2 0.8 {:.17g} 0\n0.0500 0 1 0.250000 0.5000 2 0.5 {:.17g} 0\n", laws_path, 3.0 * X(0.2),
                        1.2 * g * X(0.25));
     std::ofstream two(dir + "/seed-2.dat");
-    two << "0.0500 1 0 0.050000 0.0000 1 0.1 0 0\n0.0700 1 0 0.090000 0.0000 1 0.3 0 0\n";
+    two << "# the law in place (softpack-coarse in-place): resolved medium, laws " << laws_path << "\n0.0500 1 0 0.050000 0.0000 1 0.1 0 0\n0.0700 1 0 0.090000 0.0000 1 0.3 0 0\n";
   }
   ManyBodyProbe plan;
   plan.v3_media_seeds = {1, 2};
@@ -284,7 +286,10 @@ TEST(ManyBodyKinematics, TheReportSetsTheSoftContactsAgainstTheResolvedOnes) {
             std::string::npos)
       << md.str();
   EXPECT_EQ(md.str().find("| 0.07 |"), std::string::npos);
-  std::ofstream(dir + "/seed-2.dat") << "0.0500 1 0 0.05\n";
+  // soft-particles: one soft contact below the onset, none resolved ("–" where there is nothing to take)
+  EXPECT_NE(md.str().find("| 0.05 | soft-particle | 0.25 / 0.00 | 0.150 / – | 0.150 / – | 0 / 0 / 0 | – / – | 1.00 / – |"), std::string::npos) << md.str();
+  EXPECT_THROW(write_kinematics_report(plan, "plan.yaml", laws, "other-laws.json", dir + "/contact-rows.dat", dir, dir), InputError);
+  std::ofstream(dir + "/seed-2.dat") << "# laws " << laws_path << "\n0.0500 1 0 0.05\n";
   EXPECT_THROW(write_kinematics_report(plan, "plan.yaml", laws, laws_path, dir + "/contact-rows.dat", dir, dir), InputError);
 }
 

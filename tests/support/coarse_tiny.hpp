@@ -1,0 +1,16 @@
+// The coarse-grain study's tiny settings (tests/data/coarse-grain-tiny.yaml), read once: the
+// medium, compression and multi-contact tests' small soft-particles.
+#pragma once
+#include <string>
+
+#include "coarse/settings.hpp"
+
+namespace softpack::testing {
+
+inline const CoarseGrainSettings& coarse_grain_tiny() {
+  static const CoarseGrainSettings s =
+      read_coarse_grain_settings(std::string(SOFTPACK_SOURCE_DIR) + "/tests/data/coarse-grain-tiny.yaml", SOFTPACK_SOURCE_DIR);
+  return s;
+}
+
+}  // namespace softpack::testing
