@@ -158,8 +158,7 @@ class Probe {
   double Fn(std::size_t k) const { return load(k).dot(a_.walls[k].u); }
   Vec3 load(std::size_t k) const {
     if (a_.body.kind_at(k) == PressingBody::Kind::grain) return simulation_.force_between(0, static_cast<int>(k) + 1);
-    if (a_.body.walls_at > 0.0 || a_.body.kind == PressingBody::Kind::soft) return simulation_.wall_load(body_name(k)).force;
-    return simulation_.plane_loads()[k].force;
+    return simulation_.wall_load(body_name(k)).force;  // its plane or its soft-particle's shell
   }
   void relax_here(std::size_t k = 0) { relax(simulation_, s_.relaxation, {}, [&] { return Vec3(-load(k)); }); }
 

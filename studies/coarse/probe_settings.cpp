@@ -166,7 +166,9 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   const ConfigNode bodies = c.at("bodies");
   for (const std::string& kind : bodies.keys()) {
     try {
-      if (parse_pressing_body(kind).name() != kind) throw InputError(fmt::format("write it {}", parse_pressing_body(kind).name()));
+      const PressingBody b = parse_pressing_body(kind);
+      if (b.name() != kind) throw InputError(fmt::format("write it {}", b.name()));
+      if (b.walls_at > 0.0) throw InputError("a BODY+walls-D kind goes in confined (the second part's analysis reads bodies)");
     } catch (const InputError& e) {
       bodies.fail(fmt::format("body '{}': {}", kind, e.what()));
     }
@@ -184,8 +186,6 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
         const PressingBody b = parse_pressing_body(kind);
         if (!(b.walls_at > 0.0)) throw InputError("allowed: BODY+walls-D, e.g. soft+walls-0.2 (other bodies go in bodies)");
         if (b.name() != kind) throw InputError(fmt::format("write it {}", b.name()));
-        if (std::find_if(p.body_groups.begin(), p.body_groups.end(), [&](const auto& g) { return g.first == kind; }) != p.body_groups.end())
-          throw InputError("it is also in bodies");
       } catch (const InputError& e) {
         confined.fail(fmt::format("body '{}': {}", kind, e.what()));
       }

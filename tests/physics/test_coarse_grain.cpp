@@ -277,6 +277,7 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("    soft+walls-0.1: [opposite,", "    soft+walls-0.1: [one, opposite,", "no wall to confine it");
   refused("    soft+walls-0.1: [opposite,", "    soft: [opposite,", "BODY+walls-D");
   refused("    soft+walls-0.1: [opposite,", "    soft+walls-0.10: [opposite,", "write it soft+walls-0.1");
+  refused("    grain-1: [one,", "    grain-1+walls-0.1: [one,", "goes in confined");
 }
 
 }  // namespace

@@ -159,7 +159,8 @@ TEST(ManyBodySoftParticles, TheCapsUnionIsExactWhereItIsKnown) {
 }
 
 // The union as it was computed one meridian at a time (the loop before the vector one, kept here
-// as the reference): the engine's union gives its bits, on random caps of 2 to 12 contacts.
+// as the reference): the engine's union, eight meridians at once, gives its bits on random caps of
+// 2 to 12 contacts (the media's range) ...
 double union_one_meridian_at_a_time(const std::vector<Vec3>& n, const std::vector<double>& depth, int meridians) {
   const std::size_t caps = n.size();
   std::vector<double> h(caps), s(caps);
@@ -197,31 +198,22 @@ double union_one_meridian_at_a_time(const std::vector<Vec3>& n, const std::vecto
   return total;
 }
 
+// ... on every instruction set the processor has (the portable one, and AVX-512 where it is).
 TEST(ManyBodySoftParticles, TheCapsUnionHasTheBitsOfOneMeridianAtATime) {
+  std::vector<cpu::VectorIsa> isas{cpu::VectorIsa::portable};
+  if (cpu::best_vector_isa() == cpu::VectorIsa::avx512) isas.push_back(cpu::VectorIsa::avx512);
   testing::Random rng(13);
   for (int trial = 0; trial < 40; ++trial) {
     std::vector<Vec3> u;
     std::vector<double> d;
     for (int k = 0; k < 2 + trial % 11; ++k) u.push_back(rng.in_box(1.0).normalized()), d.push_back(0.02 + 0.5 * rng.uniform());
-    const double wide = cap_union_volume(u, d), one = union_one_meridian_at_a_time(u, d, kCapUnionMeridians);
-    EXPECT_EQ(std::memcmp(&wide, &one, sizeof(double)), 0) << "trial " << trial << ": " << wide << " against " << one;
-  }
-}
-
-// The union runs eight meridians at once, on AVX-512 where the processor has it: both instruction
-// sets give the same bits, on random caps of 2 to 12 contacts (the media's range).
-TEST(ManyBodySoftParticles, TheCapsUnionHasTheSameBitsOnEveryInstructionSet) {
-  if (cpu::best_vector_isa() == cpu::VectorIsa::portable) GTEST_SKIP() << "this processor (or this build) runs the portable loops only";
-  testing::Random rng(11);
-  for (int trial = 0; trial < 40; ++trial) {
-    std::vector<Vec3> u;
-    std::vector<double> d;
-    for (int k = 0; k < 2 + trial % 11; ++k) u.push_back(rng.in_box(1.0).normalized()), d.push_back(0.02 + 0.5 * rng.uniform());
-    cpu::limit_vector_isa(cpu::VectorIsa::portable);
-    const double portable = cap_union_volume(u, d);
+    const double one = union_one_meridian_at_a_time(u, d, kCapUnionMeridians);
+    for (const cpu::VectorIsa isa : isas) {
+      cpu::limit_vector_isa(isa);
+      const double wide = cap_union_volume(u, d);
+      EXPECT_EQ(std::memcmp(&wide, &one, sizeof(double)), 0) << cpu::name(isa) << ", trial " << trial << ": " << wide << " against " << one;
+    }
     cpu::limit_vector_isa(cpu::VectorIsa::avx512);
-    const double wide = cap_union_volume(u, d);
-    EXPECT_EQ(std::memcmp(&portable, &wide, sizeof(double)), 0) << "trial " << trial << ": " << portable << " against " << wide;
   }
   EXPECT_THROW(cap_union_volume({Vec3::UnitX(), Vec3::UnitY()}, {0.3, 0.3}, 12), std::invalid_argument);
 }
