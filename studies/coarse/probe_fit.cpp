@@ -54,8 +54,8 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
     std::size_t n = 0;
     double dn = 0.0;
     if (!(s >> n >> dn) || n != w.size()) throw fail(fmt::format("expected '{} delta_n' and {} forces", w.size(), w.size()));
-    std::vector<double> delta_n;
-    for (const double wk : w) delta_n.push_back(wk * dn);
+    std::vector<double> delta_n;  // with +walls-D the other contacts' walls stand at D (their w_k D)
+    for (const double wk : w) delta_n.push_back(wk * (delta_n.empty() || !(geometry.body.walls_at > 0.0) ? dn : geometry.body.walls_at));
     for (std::size_t k = 0; k < n; ++k) {
       double F = 0.0;
       if (!(s >> F) || !std::isfinite(F)) throw fail(fmt::format("wall {}: no finite force", k + 1));
@@ -74,11 +74,15 @@ double ProbeLaw::predict(const ProbeWallForce& w) const {
   const double vk = cap_volume(dk);
   if (!(vk > 0.0)) return 0.0;
   double others = 0.0;  // the others' caps: summed (as the engine's body pass sums them), or their union's share
-  if (name == "volumetric-union") others = std::max(0.0, w.E_union - vk);
+  if (name == "volumetric-union" || name == "onset-shift") others = std::max(0.0, w.E_union - vk);
   else
     for (std::size_t l = 0; l < w.delta_n.size(); ++l)
       if (l != w.wall) others += cap_volume(w.delta_n[l]);
   if (name == "ratio") return g * fit::evaluate(f1, dk) * std::pow((vk + others) / vk, parameter);
+  if (name == "onset-shift") {  // the pressure at the depth dk + γ others times the contact's own base
+    const double star = dk + parameter * others;
+    return star > dk && star < 2.0 ? g * fit::evaluate(f1, star) * cap_area(dk) / cap_area(star) : g * fit::evaluate(f1, dk);
+  }
   return many_body_force([&](double d) { return fit::evaluate(f1, d); }, g, dk, others, parameter);  // volumetric: the engine's law
 }
 
@@ -164,8 +168,9 @@ ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& w
   for (const ProbeWallForce& w : walls) {
     if (!arrangements.empty() && std::find(arrangements.begin(), arrangements.end(), w.arrangement) == arrangements.end()) continue;
     const double floor = floors.at(w.radius);
-    if (!(w.Fn > floor)) continue;
-    const double r = std::log(std::max(law.predict(w), floor) / w.Fn);
+    const double predicted = law.count_predicted_force || w.Fn > floor ? law.predict(w) : 0.0;
+    if (!(w.Fn > floor) && !(law.count_predicted_force && predicted > floor)) continue;
+    const double r = std::log(std::max(predicted, floor) / std::max(w.Fn, floor));
     sum += r, sum2 += r * r, ++e.points;
   }
   if (e.points > 0) e.mean_log = sum / static_cast<double>(e.points), e.rms_log = std::sqrt(sum2 / static_cast<double>(e.points));

@@ -10,6 +10,7 @@
 //   pairwise     F_k = F1(Δn_k)
 //   volumetric   F_k = p(ε_k) a(Δn_k),  ε_k = v(Δn_k) + β Σ_{l≠k} v(Δn_l)
 //   ratio        F_k = F1(Δn_k) (Σ_l v(Δn_l) / v(Δn_k))^α
+//   onset-shift  F_k = F1(d*) a(Δn_k) / a(d*),  d* = Δn_k + γ (E_union − v(Δn_k))   (the fourth part's)
 //
 // A candidate's error on a set of points: the root mean square of ln(F_predicted / F_measured) over
 // the points whose measured force exceeds force_floor × F1(largest Δn), a prediction below that floor
@@ -52,10 +53,14 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
 /// version's count-of-contacts form (b), paper/many-body.md, "Next"). A grain-X's force is the
 /// law's times g(X) = (X / (1 + X))^grain_exponent (the third version's grain factor; 0: none).
 struct ProbeLaw {
-  std::string name;  ///< pairwise, volumetric, ratio, volumetric-union
+  std::string name;  ///< pairwise, volumetric, ratio, volumetric-union, onset-shift
   double parameter = 0.0;
   std::map<std::string, fit::PowerLawFit> F1;
   double grain_exponent = 0.0;
+  /// A point counts in the error when its measured force is above the floor, or also when the
+  /// predicted one is (the fourth part's rule: a moving onset can predict a force where none is
+  /// measured); each below it counted as the floor.
+  bool count_predicted_force = false;
   /// The force of wall w.wall of w's point.
   double predict(const ProbeWallForce& w) const;
 };

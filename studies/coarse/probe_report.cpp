@@ -10,6 +10,7 @@
 
 #include "analysis/seed_statistics.hpp"
 #include "coarse/probe_second.hpp"
+#include "coarse/probe_fourth.hpp"
 #include "coarse/probe_third.hpp"
 #include "core/version.hpp"
 #include "formats/law_file.hpp"
@@ -17,6 +18,26 @@
 
 namespace softpack {
 namespace {
+
+// The law file rewritten only when its laws change, not when only the code that wrote them does
+// (many_body.source names the code version): what the media ran on stays the file they name, and
+// make does not redo them because the report was made again.
+void write_law_file_if_changed(const std::string& path, const LawFile& laws) {
+  const std::string fresh = path + ".new";
+  write_law_file(fresh, laws);
+  if (std::filesystem::exists(path)) {
+    const auto without_source = [](const std::string& file) {
+      nlohmann::json j = nlohmann::json::parse(read_text_file(file));
+      if (j.contains("many_body")) j["many_body"].erase("source");
+      return j;
+    };
+    if (without_source(path) == without_source(fresh)) {
+      std::filesystem::remove(fresh);
+      return;
+    }
+  }
+  std::filesystem::rename(fresh, path);
+}
 
 }  // namespace
 
@@ -125,12 +146,18 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     if (c.law.name == "volumetric") v = &c;
   std::optional<ThirdVersion> third;
   if (v) try {
-      const std::vector<ProbeWallForce> bodies = read_bodies_files(plan, probe_dir);
+      const std::vector<ProbeWallForce> bodies = read_bodies_files(plan, probe_dir, plan.body_kinds());
       const SecondPart second = write_second_part(plan, plan_path, walls, bodies, read_shear_files(plan, probe_dir), v->law.parameter, out_dir);
       md += fmt::format("\nIts second part (other pressing bodies, shear under confinement): `{}/second-part.md`.\n", out_dir);
       if (plan.third) {
         third = write_third_version(plan, plan_path, walls, bodies, second, v->law.parameter, out_dir);
         md += fmt::format("\nThe law's third version: `{}/third-version.md`.\n", out_dir);
+        if (plan.fourth) {
+          std::vector<std::string> kinds;
+          for (const auto& [kind, runs] : plan.confined_groups) kinds.push_back(kind);
+          write_fourth_version(plan, plan_path, bodies, read_bodies_files(plan, probe_dir, kinds), third->soft_beta.value, out_dir);
+          md += fmt::format("\nThe probe's fourth part (the soft-soft contact under confinement): `{}/fourth-version.md`.\n", out_dir);
+        }
       }
     } catch (const InputError& e) {
       md += fmt::format("\nIts second part or third version could not be analysed: {}\n", e.what());
@@ -156,7 +183,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     if (!laws.provenance.notes.empty()) laws.provenance.notes += " ";
     laws.provenance.notes += fmt::format("many_body added from the many-body probe ({}, seeds {}{}).", plan_path, fmt::join(plan.seeds, ", "),
                                          third ? ", its third version" : "");
-    write_law_file(laws_path, laws);
+    write_law_file_if_changed(laws_path, laws);
     md += fmt::format("\nThe law file with it: `{}` (version {}: {}'s laws, many_body {} β = {:.3f} ± {:.3f}{}).\n", laws_path, kLawFileVersion,
                       plan.settings.laws, laws.many_body->form, laws.many_body->beta.value, laws.many_body->beta.error,
                       third ? ", with the grains', the soft-particles' and the tangential gain of third-version.md" : "");

@@ -158,11 +158,11 @@ SecondPart analyse_second_part(const ManyBodyProbe& plan, const std::vector<Prob
   return out;
 }
 
-std::vector<ProbeWallForce> read_bodies_files(const ManyBodyProbe& plan, const std::string& probe_dir) {
+std::vector<ProbeWallForce> read_bodies_files(const ManyBodyProbe& plan, const std::string& probe_dir, const std::vector<std::string>& kinds) {
   std::vector<ProbeWallForce> bodies;
   for (const auto& [radius, Rs] : plan.radii)
     for (const std::uint64_t seed : plan.seeds)
-      for (const std::string& kind : plan.body_kinds()) {
+      for (const std::string& kind : kinds) {
         const auto b = read_probe_file(fmt::format("{}/{}/bodies-{}-{}.dat", probe_dir, radius, kind, seed), radius, seed);
         bodies.insert(bodies.end(), b.begin(), b.end());
       }

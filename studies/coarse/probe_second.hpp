@@ -63,8 +63,9 @@ struct SecondPart {
 SecondPart analyse_second_part(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls, const std::vector<ProbeWallForce>& bodies,
                                const std::vector<ShearRow>& shear, double beta);
 
-/// The bodies files (PROBE_DIR/RADIUS/bodies-KIND-S.dat) and the shear files of the plan.
-std::vector<ProbeWallForce> read_bodies_files(const ManyBodyProbe& plan, const std::string& probe_dir);
+/// The bodies files (PROBE_DIR/RADIUS/bodies-KIND-S.dat) of `kinds` (the plan's body_kinds(), or
+/// its confined kinds) and the shear files of the plan.
+std::vector<ProbeWallForce> read_bodies_files(const ManyBodyProbe& plan, const std::string& probe_dir, const std::vector<std::string>& kinds);
 std::vector<ShearRow> read_shear_files(const ManyBodyProbe& plan, const std::string& probe_dir);
 
 /// Analyses the bodies and shear files' points, writes OUT/second-part.md and OUT/second-part.json.

@@ -105,7 +105,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   const ConfigNode root = ConfigNode::load_file(path);
   root.allow_only({"many_body_probe"});
   const ConfigNode c = root.at("many_body_probe");
-  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "confined", "shear", "third_version", "validation"});
+  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "confined", "shear", "third_version", "fourth_version", "validation"});
   ManyBodyProbe p;
   std::ostringstream text;
   text << c.yaml();
@@ -229,6 +229,25 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
         if (std::find(fit_list->begin(), fit_list->end(), a) != fit_list->end())
           t.at(key).fail(fmt::format("'{}' is also fitted: a run is fitted or held out, not both", a));
     p.third = third;
+  }
+  if (c.has("fourth_version")) {
+    const ConfigNode f = c.at("fourth_version");
+    f.allow_only({"soft_forms", "fit", "held_out"});
+    if (!p.third || p.confined_groups.empty()) f.fail("needs third_version (the soft-soft law to beat) and confined (its runs)");
+    ManyBodyProbe::FourthVersionPlan fourth;
+    fourth.soft_forms = names(f.at("soft_forms"), {"volumetric-union", "onset-shift"});
+    for (const auto& [list, key] : {std::pair{&fourth.fit, "fit"}, std::pair{&fourth.held_out, "held_out"}}) {
+      *list = names(f.at(key));
+      plain(f.at(key), *list);
+      for (const std::string& a : *list)
+        for (const auto& [kind, arrangements] : p.confined_groups)
+          if (std::find(arrangements.begin(), arrangements.end(), a) == arrangements.end())
+            f.at(key).fail(fmt::format("'{}' is not run for confined kind {}; allowed: the arrangements every confined kind has", a, kind));
+    }
+    for (const std::string& a : fourth.held_out)
+      if (std::find(fourth.fit.begin(), fourth.fit.end(), a) != fourth.fit.end())
+        f.at("held_out").fail(fmt::format("'{}' is also fitted: a run is fitted or held out, not both", a));
+    p.fourth = fourth;
   }
   const ConfigNode val = c.at("validation");
   val.allow_only({"media_seeds", "v3_media_seeds", "strain_range", "bound_in_standard_errors"});

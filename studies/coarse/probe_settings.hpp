@@ -42,6 +42,14 @@ struct ManyBodyProbe {
     std::vector<std::string> grain_fit, grain_held_out;  ///< grain-X kinds of `bodies`
   };
   std::optional<ThirdVersionPlan> third;
+  /// The fourth part's analysis (`fourth_version`; paper/many-body.md, "The fourth part's
+  /// analysis"): the soft-soft forms, and which arrangements of every confined kind fit and test
+  /// them. Absent: none (it needs the third version and confined).
+  struct FourthVersionPlan {
+    std::vector<std::string> soft_forms;    ///< volumetric-union, onset-shift
+    std::vector<std::string> fit, held_out;  ///< arrangement names of every confined kind
+  };
+  std::optional<FourthVersionPlan> fourth;
   std::vector<std::uint64_t> media_seeds;
   std::vector<std::uint64_t> v3_media_seeds;  ///< the third version's media (none before it)
   double strain_lo = 0.0, strain_hi = 0.0;

@@ -278,6 +278,12 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("    soft+walls-0.1: [opposite,", "    soft: [opposite,", "BODY+walls-D");
   refused("    soft+walls-0.1: [opposite,", "    soft+walls-0.10: [opposite,", "write it soft+walls-0.1");
   refused("    grain-1: [one,", "    grain-1+walls-0.1: [one,", "goes in confined");
+  // the fourth part's analysis: its arrangements run for every confined kind, fitted or held out
+  ASSERT_TRUE(plan.fourth.has_value());
+  EXPECT_EQ(plan.fourth->held_out, std::vector<std::string>{"tetrahedral"});
+  refused("    held_out: [tetrahedral]", "    held_out: [square]", "not run for confined kind");
+  refused("    held_out: [tetrahedral]", "    held_out: [cube]", "also fitted");
+  refused("    soft_forms: [volumetric-union, onset-shift]", "    soft_forms: [volumetric, onset-shift]", "soft_forms");
 }
 
 }  // namespace
