@@ -118,7 +118,6 @@ int confined_shear(const std::string& program, const CoarseGrainSettings& s, std
   write_confined_shear(out, source, seed, sheared, clock.elapsed().cpu);
   return 0;
 }
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -180,8 +179,11 @@ int main(int argc, char** argv) {
   val_cmd->add_option("--dir", val_dir, "the validation study's folder, e.g. data/many-body-validation")->required();
   val_cmd->add_option("--settings", val_settings, "its settings to judge");
   val_cmd->add_option("--out", val_out, "folder of validation.md and validation.json")->required();
-  bool val_v3 = false;
-  val_cmd->add_flag("--v3", val_v3, "on the third version's media seeds (validation.v3_media_seeds), not media_seeds");
+  int law_version = 1;  // the version of the law whose media a command reads (one command runs)
+  const auto add_law_version = [&](CLI::App& cmd) {  // the plan's validation.media_seeds for 1, vN_media_seeds for N
+    cmd.add_option("--law-version", law_version, "on the media of this version of the law")->check(CLI::Range(1, kLawVersions))->capture_default_str();
+  };
+  add_law_version(*val_cmd);
   std::string census_plan, census_config, census_media, census_out;
   CLI::App* census_cmd = app.add_subcommand(
       "soft-contacts", "where the media use the soft-particle law: every soft-particle contact of the soft model, against the probe's range (coarse/soft_census.hpp)");
@@ -189,8 +191,7 @@ int main(int argc, char** argv) {
   census_cmd->add_option("--config", census_config, "the soft model's settings, e.g. data/many-body-validation/profiles/many-body.yaml")->required();
   census_cmd->add_option("--media", census_media, "folder of the medium files seed-S.h5, e.g. data/many-body-validation/many-body/media")->required();
   census_cmd->add_option("--out", census_out, "folder of contacts.md and contacts.dat")->required();
-  bool census_v3 = false;
-  census_cmd->add_flag("--v3", census_v3, "on the third version's media seeds (validation.v3_media_seeds), not media_seeds");
+  add_law_version(*census_cmd);
   std::string place_plan, place_config, place_media, place_out;
   std::uint64_t place_seed = 0;
   CLI::App* place_cmd = app.add_subcommand(
@@ -201,25 +202,26 @@ int main(int argc, char** argv) {
   place_cmd->add_option("--seed", place_seed, "the medium's seed")->required();
   place_cmd->add_option("--out", place_out, "folder of seed-S.dat")->required();
   std::string place_report_plan, place_report_dir;
-  bool place_v3 = false;
   CLI::App* place_report_cmd = app.add_subcommand("in-place-report", "the law in place over the plan's media seeds: in-place.md from each seed-S.dat");
   place_report_cmd->add_option("--probe", place_report_plan, "the plan, e.g. experiments/many-body.yaml")->required();
   place_report_cmd->add_option("--dir", place_report_dir, "folder of seed-S.dat, where in-place.md goes")->required();
-  place_report_cmd->add_flag("--v3", place_v3, "the third version's media seeds (validation.v3_media_seeds), not media_seeds");
+  add_law_version(*place_report_cmd);
   std::string speed_plan, speed_dir;
   std::uint64_t speed_seed = 0;
   int speed_repeats = 3;
   CLI::App* speed_cmd = app.add_subcommand("speed", "the speed-up side by side: one medium resolved, soft pairwise and soft many-body in one process (coarse/speed.hpp)");
-  speed_cmd->add_option("--probe", speed_plan, "the plan: its third version's media seeds, e.g. experiments/many-body.yaml")->required();
-  speed_cmd->add_option("--dir", speed_dir, "the third version's study folder (profiles/, reference/media/; writes speed/), e.g. data/many-body-v3")->required();
-  auto* speed_seed_opt = speed_cmd->add_option("--seed", speed_seed, "the medium's seed (one of the plan's third version's media seeds)");
+  speed_cmd->add_option("--probe", speed_plan, "the plan (its media seeds), e.g. experiments/many-body.yaml")->required();
+  speed_cmd->add_option("--dir", speed_dir, "the version's study folder (profiles/, reference/media/; writes speed/), e.g. data/many-body-v3")->required();
+  add_law_version(*speed_cmd);
+  auto* speed_seed_opt = speed_cmd->add_option("--seed", speed_seed, "the medium's seed (one of the version's media seeds)");
   speed_cmd->add_option("--repeats", speed_repeats, "runs of each soft model (their least time)")->capture_default_str();
   bool speed_report = false;
   speed_cmd->add_flag("--report", speed_report, "instead: speed/speed.md from the seeds' speed/seed-S.dat")->excludes(speed_seed_opt);
   std::string kin_plan, kin_dir;
   CLI::App* kin_cmd = app.add_subcommand("kinematics", "the soft medium's geometry against the resolved one's (coarse/kinematics.hpp)");
-  kin_cmd->add_option("--probe", kin_plan, "the plan: its third version's media seeds, e.g. experiments/many-body.yaml")->required();
-  kin_cmd->add_option("--dir", kin_dir, "the third version's study folder (profiles/, report/contact-rows.dat, in-place/; writes report/kinematics.md)")->required();
+  kin_cmd->add_option("--probe", kin_plan, "the plan (its media seeds), e.g. experiments/many-body.yaml")->required();
+  kin_cmd->add_option("--dir", kin_dir, "the version's study folder (profiles/, report/contact-rows.dat, in-place/; writes report/kinematics.md)")->required();
+  add_law_version(*kin_cmd);
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;
@@ -228,8 +230,8 @@ int main(int argc, char** argv) {
       ->excludes(seeds_config_opt);
   std::string runs_stamp_release;
   auto* runs_stamp_opt = seeds_cmd->add_option("--runs-stamp", runs_stamp_release, "with --probe: print GROUP=STAMP of its groups of runs for this release instead (for make)");
-  bool v3_media = false;
-  seeds_cmd->add_flag("--v3-media", v3_media, "with --probe: print the third version's media seeds (validation.v3_media_seeds) instead (for make)");
+  int media_of = 0;
+  seeds_cmd->add_option("--media-of", media_of, "with --probe: print the media seeds of this version of the law instead (for make)")->check(CLI::Range(1, kLawVersions));
   bool medium_text = false;  // what a medium depends on, as the medium file records it (maintenance)
   seeds_cmd->add_flag("--medium-text", medium_text)->group("");
   std::string stamp_config, release;
@@ -242,8 +244,8 @@ int main(int argc, char** argv) {
       if (seeds_probe.empty() == seeds_config.empty()) throw InputError("seeds: give --config or --probe");
       if (!seeds_probe.empty()) {
         const ManyBodyProbe plan = read_many_body_probe(seeds_probe);
-        if (v3_media) {
-          fmt::print("{}\n", fmt::join(plan.v3_media_seeds, " "));
+        if (media_of > 0) {
+          fmt::print("{}\n", fmt::join(plan.media_seeds_of(media_of), " "));
           return 0;
         }
         const bool stamps = runs_stamp_opt->count() > 0;
@@ -286,13 +288,13 @@ int main(int argc, char** argv) {
     if (*speed_cmd) {
       const ManyBodyProbe plan = read_many_body_probe(speed_plan);
       if (speed_report) {
-        write_speed_report(plan, speed_plan, speed_dir);
+        write_speed_report(plan, speed_plan, speed_dir, law_version);
         fmt::print(stderr, "{} speed: {}/speed/speed.md\n", program, speed_dir);
         return 0;
       }
       const Lines l;
       std::pair<std::string, Stopwatch> run;  // the run under way and its clock
-      const SpeedSeed r = write_speed_seed(plan, speed_plan, speed_dir, speed_seed, speed_repeats, [&](const std::string& model, int k, double done, double total) {
+      const SpeedSeed r = write_speed_seed(plan, speed_plan, speed_dir, law_version, speed_seed, speed_repeats, [&](const std::string& model, int k, double done, double total) {
         if (run.first != model + std::to_string(k)) run = {model + std::to_string(k), Stopwatch()};
         fmt::print(stderr, "{}{} speed seed {}: {} run {}, {:.0f}%, ETA {:.0f} s{}", l.cr(), program, speed_seed, model, k + 1, 100.0 * done / total,
                    run.second.elapsed().wall * (total - done) / done, l.nl());
@@ -304,22 +306,22 @@ int main(int argc, char** argv) {
     if (*kin_cmd) {
       const CoarseGrainSettings s = read_coarse_grain_settings(kin_dir + "/profiles/many-body.yaml");
       write_kinematics_report(read_many_body_probe(kin_plan), kin_plan, soft_particle_laws(read_law_file(s.laws), s.laws), s.laws, kin_dir + "/report/contact-rows.dat",
-                              kin_dir + "/in-place", kin_dir + "/report");
+                              kin_dir + "/in-place", kin_dir + "/report", law_version);
       fmt::print(stderr, "{} kinematics: {}/report/kinematics.md\n", program, kin_dir);
       return 0;
     }
     if (*place_report_cmd) {
-      write_in_place_report(read_many_body_probe(place_report_plan), place_report_plan, place_report_dir, place_v3);
+      write_in_place_report(read_many_body_probe(place_report_plan), place_report_plan, place_report_dir, law_version);
       fmt::print(stderr, "{} in-place-report: {}/in-place.md\n", program, place_report_dir);
       return 0;
     }
     if (*census_cmd) {
-      write_soft_census(read_many_body_probe(census_plan), census_plan, census_config, census_media, census_out, census_v3);
+      write_soft_census(read_many_body_probe(census_plan), census_plan, census_config, census_media, census_out, law_version);
       fmt::print(stderr, "{} soft-contacts: {}/contacts.md\n", program, census_out);
       return 0;
     }
     if (*val_cmd) {
-      for (const ValidationVerdict& v : write_validation(read_many_body_probe(val_plan), val_plan, val_dir, val_settings, val_out, val_v3))
+      for (const ValidationVerdict& v : write_validation(read_many_body_probe(val_plan), val_plan, val_dir, val_settings, val_out, law_version))
         fmt::print(stderr, "{} validation: {}: {} of {} points within the bound, accepted: {}\n", program, v.setting, v.agreeing, v.points,
                    v.accepted ? "yes" : "no");
       return 0;

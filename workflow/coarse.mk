@@ -115,19 +115,19 @@ many-body-census: | $(TOOLS)  ## the validation media's soft-particle contacts a
 .PHONY: many-body-verdict
 many-body-verdict: | $(TOOLS)  ## the many-body law's acceptance on the validation media (DATA/many-body-validation/report/validation.md)
 	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-validation --out $(DATA)/many-body-validation/report
-# The third version's media seeds (softpack-coarse seeds --probe --v3-media), asked of the tool
+# The third version's media seeds (softpack-coarse seeds --probe --media-of 3), asked of the tool
 # once and only for the goals that run on them; empty when the tool is not built yet or refuses the
 # plan (those goals then stop, saying so).
 V3_MEDIA_GOALS := many-body-in-place many-body-speed
-V3_MEDIA_SEEDS := $(if $(filter $(V3_MEDIA_GOALS),$(MAKECMDGOALS)),$(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media))
-v3_media_seeds_known = $(if $(V3_MEDIA_SEEDS),,$(error $(1): $(COARSE_TOOL) gave no media seeds when make started (not built, or it refused the plan: see $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --v3-media); run make build, then make $(1) again))
+V3_MEDIA_SEEDS := $(if $(filter $(V3_MEDIA_GOALS),$(MAKECMDGOALS)),$(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --media-of 3))
+v3_media_seeds_known = $(if $(V3_MEDIA_SEEDS),,$(error $(1): $(COARSE_TOOL) gave no media seeds when make started (not built, or it refused the plan: see $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --media-of 3); run make build, then make $(1) again))
 # The law in place (paper/many-body.md, "Next: measuring the law in place"): the third version's
 # media compressed resolved again, each site's pushes against the law's (coarse/in_place.hpp).
 IN_PLACE_DIR ?= $(DATA)/many-body-v3/in-place
 .PHONY: many-body-in-place
 many-body-in-place: $(foreach s,$(V3_MEDIA_SEEDS),$(IN_PLACE_DIR)/seed-$(s).dat) | $(TOOLS)  ## the law in place on the third version's media (DATA/many-body-v3/in-place/in-place.md)
 	$(call v3_media_seeds_known,many-body-in-place)
-	@$(RUN) $(COARSE_TOOL) in-place-report --probe $(PROBE_PLAN) --dir $(IN_PLACE_DIR) --v3
+	@$(RUN) $(COARSE_TOOL) in-place-report --probe $(PROBE_PLAN) --dir $(IN_PLACE_DIR) --law-version 3
 $(IN_PLACE_DIR)/seed-%.dat: $(DATA)/many-body-v3/reference/media/seed-%.h5 $(DATA)/many-body/report/laws.json | $(TOOLS)
 	@mkdir -p $(@D)
 	@$(RUN) $(COARSE_TOOL) in-place --probe $(PROBE_PLAN) --config $(DATA)/many-body-v3/profiles/many-body.yaml \
@@ -140,7 +140,7 @@ $(IN_PLACE_DIR)/seed-%.dat: $(DATA)/many-body-v3/reference/media/seed-%.h5 $(DAT
 # the comparison of their rows (a second or so).
 .PHONY: many-body-kinematics
 many-body-kinematics: | $(TOOLS)  ## the soft medium's contacts against the resolved one's intrusions (DATA/many-body-v3/report/kinematics.md)
-	@$(RUN) $(COARSE_TOOL) kinematics --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3
+	@$(RUN) $(COARSE_TOOL) kinematics --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --law-version 3
 
 # The speed-up side by side (issue 33's target; paper/many-body.md, "Next: the speed-up side by
 # side"): each third-version medium resolved, soft pairwise and soft many-body in one process on
@@ -152,19 +152,27 @@ SPEED_DIR ?= $(DATA)/many-body-v3/speed
 .PHONY: many-body-speed
 many-body-speed: $(foreach s,$(V3_MEDIA_SEEDS),$(SPEED_DIR)/seed-$(s).dat) | $(TOOLS)  ## the speed-up over resolved side by side (DATA/many-body-v3/speed/speed.md)
 	$(call v3_media_seeds_known,many-body-speed)
-	@$(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --report
+	@$(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --law-version 3 --report
 define speed_seed
 $(SPEED_DIR)/seed-$(1).dat: $(DATA)/many-body-v3/reference/media/seed-$(1).h5 $(DATA)/many-body/report/laws.json \
   $(DATA)/many-body-v3/profiles/reference.yaml $(DATA)/many-body-v3/profiles/many-body.yaml | $(TOOLS) $(2)
 	@mkdir -p $$(@D)
-	@SOFTPACK_THREADS=1 $(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --seed $(1) 2> $$(@D)/seed-$(1).log \
+	@SOFTPACK_THREADS=1 $(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --law-version 3 --seed $(1) 2> $$(@D)/seed-$(1).log \
 	  || { echo "speed: seed $(1) FAILED (log: $$(@D)/seed-$(1).log)"; tr '\r' '\n' < $$(@D)/seed-$(1).log | tail -3; exit 1; }
 	@echo "$$$$(tr '\r' '\n' < $$(@D)/seed-$(1).log | tail -1)"
 endef
 $(foreach s,$(V3_MEDIA_SEEDS),$(eval $(call speed_seed,$(s),$(if $(prev),$(SPEED_DIR)/seed-$(prev).dat)))$(eval prev := $(s)))
-# The third version's (paper/many-body.md, "Next"): after make many-body-v3, on its own media.
-.PHONY: many-body-v3-verdict
+# A version of the law judged on its own media (paper/many-body.md), after make many-body-vN: the
+# criterion on each soft setting of its study (and the resolved one), then the census of its
+# many-body setting. $(1): the version; $(2): its soft settings.
+define version_verdict
+	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v$(1) --out $(DATA)/many-body-v$(1)/report --law-version $(1) \
+	  --settings reference $(2)
+	@$(RUN) $(COARSE_TOOL) soft-contacts --probe $(PROBE_PLAN) --config $(DATA)/many-body-v$(1)/profiles/many-body.yaml \
+	  --media $(DATA)/many-body-v$(1)/many-body/media --out $(DATA)/many-body-v$(1)/report --law-version $(1)
+endef
+.PHONY: many-body-v3-verdict many-body-v4-verdict
 many-body-v3-verdict: | $(TOOLS)  ## the law's third version's acceptance on its media, and its census (DATA/many-body-v3/report/validation.md, contacts.md)
-	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --out $(DATA)/many-body-v3/report --v3
-	@$(RUN) $(COARSE_TOOL) soft-contacts --probe $(PROBE_PLAN) --config $(DATA)/many-body-v3/profiles/many-body.yaml \
-	  --media $(DATA)/many-body-v3/many-body/media --out $(DATA)/many-body-v3/report --v3
+	$(call version_verdict,3,many-body)
+many-body-v4-verdict: | $(TOOLS)  ## the fourth version's and the third's acceptance on the fourth's media, and its census (DATA/many-body-v4/report/)
+	$(call version_verdict,4,many-body-v3 many-body)

@@ -180,8 +180,8 @@ struct Sums {
 
 }  // namespace
 
-void write_in_place_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& out_dir, bool v3) {
-  const std::vector<std::uint64_t>& seeds = v3 ? plan.v3_media_seeds : plan.media_seeds;
+void write_in_place_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& out_dir, int version) {
+  const std::vector<std::uint64_t>& seeds = plan.media_seeds_of(version);
   std::vector<InPlaceContact> all;
   std::string laws;
   for (const std::uint64_t seed : seeds) {

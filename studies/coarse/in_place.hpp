@@ -51,8 +51,8 @@ std::vector<InPlaceContact> in_place_contacts(const Simulation& sim, const Mediu
 void write_in_place_seed(const ManyBodyProbe& plan, const std::string& config, const std::string& media_dir, std::uint64_t seed,
                          const std::string& out_dir, const std::function<void(double, double, const CurveRow&)>& progress = {});
 
-/// Reads OUT/seed-S.dat of each of the plan's seeds (`v3`: the third version's media seeds) and
+/// Reads OUT/seed-S.dat of each of the plan's seeds (the media seeds of the law's `version`) and
 /// writes OUT/in-place.md: per strain and kind of body, the sums and the errors of both laws.
-void write_in_place_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& out_dir, bool v3);
+void write_in_place_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& out_dir, int version);
 
 }  // namespace softpack

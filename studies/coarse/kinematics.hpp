@@ -16,9 +16,9 @@
 namespace softpack {
 
 /// OUT/kinematics.md from CENSUS_ROWS (softpack-coarse soft-contacts' contact-rows.dat of the
-/// third version's media) and IN_PLACE_DIR/seed-S.dat of the same seeds; `laws`: the many-body
+/// media of the law's `version`) and IN_PLACE_DIR/seed-S.dat of the same seeds; `laws`: the many-body
 /// settings' (they give the law alone), read from `laws_source`.
 void write_kinematics_report(const ManyBodyProbe& plan, const std::string& plan_path, const SoftParticleLaws& laws, const std::string& laws_source,
-                             const std::string& census_rows, const std::string& in_place_dir, const std::string& out_dir);
+                             const std::string& census_rows, const std::string& in_place_dir, const std::string& out_dir, int version);
 
 }  // namespace softpack

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <algorithm>
 #include <map>
 #include <optional>
 
@@ -145,6 +146,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
   for (const ProbeCandidate& c : a.candidates)
     if (c.law.name == "volumetric") v = &c;
   std::optional<ThirdVersion> third;
+  std::optional<FourthVersion> fourth;
   if (v) try {
       const std::vector<ProbeWallForce> bodies = read_bodies_files(plan, probe_dir, plan.body_kinds());
       const SecondPart second = write_second_part(plan, plan_path, walls, bodies, read_shear_files(plan, probe_dir), v->law.parameter, out_dir);
@@ -155,7 +157,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
         if (plan.fourth) {
           std::vector<std::string> kinds;
           for (const auto& [kind, runs] : plan.confined_groups) kinds.push_back(kind);
-          write_fourth_version(plan, plan_path, bodies, read_bodies_files(plan, probe_dir, kinds), third->soft_beta.value, out_dir);
+          fourth = write_fourth_version(plan, plan_path, bodies, read_bodies_files(plan, probe_dir, kinds), third->soft_beta.value, out_dir);
           md += fmt::format("\nThe probe's fourth part (the soft-soft contact under confinement): `{}/fourth-version.md`.\n", out_dir);
         }
       }
@@ -188,6 +190,21 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
                       plan.settings.laws, laws.many_body->form, laws.many_body->beta.value, laws.many_body->beta.error,
                       third ? ", with the grains', the soft-particles' and the tangential gain of third-version.md" : "");
     j["laws"] = laws_path;
+    // laws-v4.json: the law's fourth version, the third's with the soft-soft law the fourth part's
+    // rule lets in (the same file format; the third's file stays what its media ran on)
+    const std::string v4_path = out_dir + "/laws-v4.json";
+    const auto* f = fourth && fourth->enters_engine ? &*std::find_if(fourth->forms.begin(), fourth->forms.end(), [&](const auto& c) { return c.name == fourth->chosen; }) : nullptr;
+    if (f && f->name == "volumetric-union") {
+      laws.many_body->soft_beta = LawValue{f->parameter.value, f->parameter.se};
+      laws.many_body->source = fmt::format("{} (softpack-coarse probe-report, {}): {}/third-version.md, β_ss of {}/fourth-version.md", plan_path, code_version(),
+                                           out_dir, out_dir);
+      laws.provenance.notes += " The fourth version: the soft-soft β of the probe's fourth part.";
+      write_law_file_if_changed(v4_path, laws);
+      md += fmt::format("\nThe law's fourth version: `{}` (the third's with β_ss = {:.3f} ± {:.3f}).\n", v4_path, f->parameter.value, f->parameter.se);
+    } else {
+      std::filesystem::remove(v4_path);
+      if (f) md += fmt::format("\nThe fourth part's {} enters by its rule, but the engine has no such form: no fourth version's law file.\n", f->name);
+    }
   } else {
     std::filesystem::remove(laws_path);
     md += "\nNo law file: the engine runs the volumetric form only, once the rule lets a law in.\n";

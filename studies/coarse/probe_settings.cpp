@@ -65,6 +65,14 @@ std::vector<std::string> ManyBodyProbe::body_kinds() const {
   return out;
 }
 
+std::string media_seeds_key(int version) { return version == 1 ? "media_seeds" : fmt::format("v{}_media_seeds", version); }
+
+const std::vector<std::uint64_t>& ManyBodyProbe::media_seeds_of(int version) const {
+  const auto at = media_seeds.find(version);
+  if (at == media_seeds.end()) throw InputError(fmt::format("validation.{}: none in the plan; version {} of the law has no media", media_seeds_key(version), version));
+  return at->second;
+}
+
 std::vector<std::string> ManyBodyProbe::bodies(const std::string& kind) const {
   for (const auto* groups : {&body_groups, &confined_groups})
     for (const auto& [k, arrangements] : *groups)
@@ -250,13 +258,16 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
     p.fourth = fourth;
   }
   const ConfigNode val = c.at("validation");
-  val.allow_only({"media_seeds", "v3_media_seeds", "strain_range", "bound_in_standard_errors"});
-  p.media_seeds = parse_seeds(val, "media_seeds");
-  if (val.has("v3_media_seeds")) {
-    p.v3_media_seeds = parse_seeds(val, "v3_media_seeds");
-    for (const std::uint64_t seed : p.v3_media_seeds)
-      if (std::find(p.media_seeds.begin(), p.media_seeds.end(), seed) != p.media_seeds.end())
-        val.at("v3_media_seeds").fail(fmt::format("seed {} is also in media_seeds: a law is judged on media no earlier run has used", seed));
+  std::vector<std::string> keys{"strain_range", "bound_in_standard_errors"};
+  for (int v = 1; v <= kLawVersions; ++v) keys.push_back(media_seeds_key(v));
+  val.allow_only(keys);
+  for (int v = 1; v <= kLawVersions; ++v) {
+    if (v > 1 && !val.has(media_seeds_key(v))) continue;
+    p.media_seeds[v] = parse_seeds(val, media_seeds_key(v));
+    for (const std::uint64_t seed : p.media_seeds[v])
+      for (const auto& [earlier, seeds] : p.media_seeds)
+        if (earlier < v && std::find(seeds.begin(), seeds.end(), seed) != seeds.end())
+          val.at(media_seeds_key(v)).fail(fmt::format("seed {} is also in {}: a law is judged on media no earlier run has used", seed, media_seeds_key(earlier)));
   }
   const std::vector<ConfigNode> range = val.at("strain_range").items();
   if (range.size() != 2) val.at("strain_range").fail("give two strains, [from, to]");

@@ -50,8 +50,11 @@ struct ManyBodyProbe {
     std::vector<std::string> fit, held_out;  ///< arrangement names of every confined kind
   };
   std::optional<FourthVersionPlan> fourth;
-  std::vector<std::uint64_t> media_seeds;
-  std::vector<std::uint64_t> v3_media_seeds;  ///< the third version's media (none before it)
+  /// The media seeds each version of the law is judged on: 1, validation.media_seeds (the first
+  /// law's); N >= 2, validation.vN_media_seeds (none before that version). No seed in two.
+  std::map<int, std::vector<std::uint64_t>> media_seeds;
+  /// Those of `version`; InputError naming its key when the plan has none.
+  const std::vector<std::uint64_t>& media_seeds_of(int version) const;
   double strain_lo = 0.0, strain_hi = 0.0;
   double bound_in_standard_errors = 0.0;
   std::string section_text;           ///< the section as read (provenance)
@@ -72,6 +75,11 @@ struct ManyBodyProbe {
   /// The settings with the shell of radius `radius` (a name of `radii`; InputError otherwise).
   CoarseGrainSettings settings_at(const std::string& radius) const;
 };
+
+/// The law's versions a plan may judge on media (1 to this), and the key of each one's seeds:
+/// media_seeds (1), vN_media_seeds.
+constexpr int kLawVersions = 9;
+std::string media_seeds_key(int version);
 
 /// Reads and checks the plan; InputError names the file, the key and what is allowed.
 /// `root_dir`: where the settings path starts.

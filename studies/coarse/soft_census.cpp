@@ -69,7 +69,7 @@ SoftCensus soft_census(const std::vector<SoftSide>& sides, const Medium& m, cons
 }
 
 void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& config, const std::string& media_dir,
-                       const std::string& out_dir, bool v3) {
+                       const std::string& out_dir, int version) {
   const CoarseGrainSettings s = read_coarse_grain_settings(config);
   const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
   const double dn_max = plan.delta_n.back(), E_max = 6.0 * cap_volume(dn_max);
@@ -87,7 +87,7 @@ void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, 
   std::string rows = fmt::format("# soft-particle contacts at the loading rows from strain {} to {} (softpack-coarse soft-contacts, {}): {} with the laws {}\n"
                                  "# seed strain soft_particle kind(0 wall, 1 grain, 2 soft) dn r_over_Rs count Fn[N]\n",
                                  plan.strain_lo, plan.strain_hi, code_version(), config, s.laws);
-  for (const std::uint64_t seed : v3 ? plan.v3_media_seeds : plan.media_seeds) {
+  for (const std::uint64_t seed : plan.media_seeds_of(version)) {
     const std::string path = fmt::format("{}/seed-{}.h5", media_dir, seed);
     const MediumFile mf = read_medium_file(path);
     if (mf.settings != s.medium_text) throw InputError(fmt::format("{}: made with other settings than {}", path, config));

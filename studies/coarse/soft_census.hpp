@@ -49,11 +49,11 @@ SoftCensus soft_census(const Simulation& sim, const Medium& m, const CurveRow& r
 SoftCensus soft_census(const std::vector<SoftSide>& sides, const Medium& m, const CurveRow& row, double dn_max, double E_max);
 
 /// Runs the soft model of each media seed of the plan (the medium files MEDIA_DIR/seed-S.h5, the
-/// settings `config`; `v3`: the third version's media seeds) and writes OUT/contacts.dat (every
+/// settings `config`; the media seeds of the law's `version`) and writes OUT/contacts.dat (every
 /// row of every seed), OUT/contacts.md and OUT/contact-rows.dat (every contact at each loading row
 /// within the plan's strain range: seed strain soft-particle kind Δn r/Rs its contacts Fn, the
 /// rows of coarse/kinematics.hpp).
 void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& config, const std::string& media_dir,
-                       const std::string& out_dir, bool v3 = false);
+                       const std::string& out_dir, int version = 1);
 
 }  // namespace softpack

@@ -29,18 +29,18 @@ struct SpeedSeed {
   int repeats = 0;
 };
 
-/// Runs the three models on DIR/reference/media/seed-S.h5 (S one of the plan's third version's
-/// media seeds; DIR/profiles/reference.yaml: the resolved and the pairwise soft model's settings,
+/// Runs the three models on DIR/reference/media/seed-S.h5 (S one of the media seeds of the law's
+/// `version`; DIR/profiles/reference.yaml: the resolved and the pairwise soft model's settings,
 /// DIR/profiles/many-body.yaml: the many-body soft model's, whose medium must be the same) and
 /// writes DIR/speed/seed-S.dat. progress(model, its run k, strain done, strain in all) after each
 /// recorded row of each run.
 using SpeedProgress = std::function<void(const std::string&, int, double, double)>;
-SpeedSeed write_speed_seed(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& dir, std::uint64_t seed, int repeats,
+SpeedSeed write_speed_seed(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& dir, int version, std::uint64_t seed, int repeats,
                            const SpeedProgress& progress = {});
 
-/// DIR/speed/speed.md from each DIR/speed/seed-S.dat of the plan's third-version media seeds: per
+/// DIR/speed/speed.md from each DIR/speed/seed-S.dat of the media seeds of the law's `version`: per
 /// seed the three times and the speed-ups resolved / soft, and their means over the seeds with
 /// standard errors.
-void write_speed_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& dir);
+void write_speed_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& dir, int version);
 
 }  // namespace softpack

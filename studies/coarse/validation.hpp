@@ -27,9 +27,9 @@ struct ValidationVerdict {
 ValidationVerdict judge_validation(const CoarseComparison& c, const ManyBodyProbe& plan, const std::string& setting);
 
 /// The verdict of each setting of the study's folder `data_dir` (its profiles/SETTING.yaml and runs),
-/// on the plan's media seeds (`v3`: the third version's, validation.v3_media_seeds); writes
+/// on the media seeds of the law's `version` (ManyBodyProbe::media_seeds_of); writes
 /// out_dir/validation.md and validation.json.
 std::vector<ValidationVerdict> write_validation(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& data_dir,
-                                                const std::vector<std::string>& settings, const std::string& out_dir, bool v3 = false);
+                                                const std::vector<std::string>& settings, const std::string& out_dir, int version = 1);
 
 }  // namespace softpack

@@ -244,6 +244,9 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("    grain-1: [one,", "    grain-1.0: [one,", "write it grain-1");
   refused("    soft: [one, opposite,", "    soft: [opposite,", "'one'");
   refused("v3_media_seeds: [315,", "v3_media_seeds: [311,", "also in media_seeds");
+  refused("v4_media_seeds: [319,", "v4_media_seeds: [315,", "also in v3_media_seeds");
+  EXPECT_EQ(plan.media_seeds_of(4).front(), 319u);
+  EXPECT_THROW(plan.media_seeds_of(5), InputError);
   refused("    arrangements: [one, opposite, tetrahedral, cube]", "    arrangements: [opposite, tetrahedral, cube]", "'one'");
   refused("    soft: [one, opposite,", "    soft: [one, opposite:soft,", "without :BODY");
   const auto stamps_with = [&](const std::string& from, const std::string& to) {

@@ -327,8 +327,8 @@ TEST(ManyBodyKinematics, TheReportSetsTheSoftContactsAgainstTheResolvedOnes) {
     two << "# the law in place (softpack-coarse in-place): resolved medium, laws " << laws_path << "\n0.0500 1 0 0.050000 0.0000 1 0.1 0 0\n0.0700 1 0 0.090000 0.0000 1 0.3 0 0\n";
   }
   ManyBodyProbe plan;
-  plan.v3_media_seeds = {1, 2};
-  write_kinematics_report(plan, "plan.yaml", laws, laws_path, dir + "/contact-rows.dat", dir, dir);
+  plan.media_seeds[3] = {1, 2};
+  write_kinematics_report(plan, "plan.yaml", laws, laws_path, dir + "/contact-rows.dat", dir, dir, 3);
   std::ifstream in(dir + "/kinematics.md");
   std::stringstream md;
   md << in.rdbuf();
@@ -345,9 +345,9 @@ TEST(ManyBodyKinematics, TheReportSetsTheSoftContactsAgainstTheResolvedOnes) {
   EXPECT_EQ(md.str().find("| 0.07 |"), std::string::npos);
   // soft-particles: one soft contact below the onset, none resolved ("–" where there is nothing to take)
   EXPECT_NE(md.str().find("| 0.05 | soft-particle | 0.25 / 0.00 | 0.150 / – | 0.150 / – | 0 / 0 / 0 | – / – | 1.00 / – |"), std::string::npos) << md.str();
-  EXPECT_THROW(write_kinematics_report(plan, "plan.yaml", laws, "other-laws.json", dir + "/contact-rows.dat", dir, dir), InputError);
+  EXPECT_THROW(write_kinematics_report(plan, "plan.yaml", laws, "other-laws.json", dir + "/contact-rows.dat", dir, dir, 3), InputError);
   std::ofstream(dir + "/seed-2.dat") << "# laws " << laws_path << "\n0.0500 1 0 0.05\n";
-  EXPECT_THROW(write_kinematics_report(plan, "plan.yaml", laws, laws_path, dir + "/contact-rows.dat", dir, dir), InputError);
+  EXPECT_THROW(write_kinematics_report(plan, "plan.yaml", laws, laws_path, dir + "/contact-rows.dat", dir, dir, 3), InputError);
 }
 
 }  // namespace
