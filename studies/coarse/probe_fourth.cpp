@@ -41,7 +41,7 @@ double fit_form(const ManyBodyProbe& plan, const std::string& form, const std::v
 }  // namespace
 
 FourthVersion analyse_fourth_version(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& soft, const std::vector<ProbeWallForce>& confined,
-                                     double beta_ss) {
+                                     const FittedValue& beta_ss) {
   if (!plan.fourth) throw InputError("the plan has no fourth_version: nothing to analyse");
   const ManyBodyProbe::FourthVersionPlan& f = *plan.fourth;
   // The points: every contact of the soft arrangements (each a soft-soft one), the first contact
@@ -61,7 +61,7 @@ FourthVersion analyse_fourth_version(const ManyBodyProbe& plan, const std::vecto
   std::vector<std::string> forms{"third"};
   forms.insert(forms.end(), f.soft_forms.begin(), f.soft_forms.end());
   for (const std::string& name : forms) {
-    FourthVersion::Form c{name, {beta_ss, 0.0}, {}, {}, {}, {}, {}};
+    FourthVersion::Form c{name, beta_ss, {}, {}, {}, {}, {}};
     if (name != "third") {
       c.parameter.value = fit_form(plan, name, points, fit);
       std::vector<double> theta;
@@ -103,7 +103,7 @@ FourthVersion analyse_fourth_version(const ManyBodyProbe& plan, const std::vecto
 }
 
 FourthVersion write_fourth_version(const ManyBodyProbe& plan, const std::string& plan_path, const std::vector<ProbeWallForce>& soft,
-                                   const std::vector<ProbeWallForce>& confined, double beta_ss, const std::string& out_dir) {
+                                   const std::vector<ProbeWallForce>& confined, const FittedValue& beta_ss, const std::string& out_dir) {
   const FourthVersion a = analyse_fourth_version(plan, soft, confined, beta_ss);
   const ManyBodyProbe::FourthVersionPlan& f = *plan.fourth;
   nlohmann::json j;

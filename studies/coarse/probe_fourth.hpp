@@ -43,11 +43,11 @@ struct FourthVersion {
 /// the confined kinds' (the first contact's force is the measured one), `beta_ss` the third
 /// version's.
 FourthVersion analyse_fourth_version(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& soft, const std::vector<ProbeWallForce>& confined,
-                                     double beta_ss);
+                                     const FittedValue& beta_ss);
 
 /// The analysis written to OUT/fourth-version.md, .json and .dat (each radius, arrangement and Δn:
 /// the measured force's mean and standard error over the seeds, and each form's).
 FourthVersion write_fourth_version(const ManyBodyProbe& plan, const std::string& plan_path, const std::vector<ProbeWallForce>& soft,
-                                   const std::vector<ProbeWallForce>& confined, double beta_ss, const std::string& out_dir);
+                                   const std::vector<ProbeWallForce>& confined, const FittedValue& beta_ss, const std::string& out_dir);
 
 }  // namespace softpack

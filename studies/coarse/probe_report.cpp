@@ -157,7 +157,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
         if (plan.fourth) {
           std::vector<std::string> kinds;
           for (const auto& [kind, runs] : plan.confined_groups) kinds.push_back(kind);
-          fourth = write_fourth_version(plan, plan_path, bodies, read_bodies_files(plan, probe_dir, kinds), third->soft_beta.value, out_dir);
+          fourth = write_fourth_version(plan, plan_path, bodies, read_bodies_files(plan, probe_dir, kinds), third->soft_beta, out_dir);
           md += fmt::format("\nThe probe's fourth part (the soft-soft contact under confinement): `{}/fourth-version.md`.\n", out_dir);
         }
       }

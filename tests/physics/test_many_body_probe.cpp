@@ -271,7 +271,7 @@ TEST(ManyBodyProbeLaws, TheFourthPartFindsTheConfinedSoftLawThatMadeTheProbe) {
               }
             }
           }
-  const FourthVersion f = analyse_fourth_version(plan, soft, confined, 0.3);
+  const FourthVersion f = analyse_fourth_version(plan, soft, confined, {0.3, 0.01});
   ASSERT_EQ(f.forms.size(), 3u);
   EXPECT_EQ(f.forms[0].name, "third");
   EXPECT_EQ(f.chosen, "onset-shift");
