@@ -56,17 +56,24 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
     if (!(s >> n >> dn) || n != w.size()) throw fail(fmt::format("expected '{} delta_n' and {} forces", w.size(), w.size()));
     std::vector<double> delta_n;  // with +walls-D the other contacts' walls stand at D (their w_k D)
     for (const double wk : w) delta_n.push_back(wk * (delta_n.empty() || !(geometry.body.walls_at > 0.0) ? dn : geometry.body.walls_at));
+    double total = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
       double F = 0.0;
       if (!(s >> F) || !std::isfinite(F)) throw fail(fmt::format("wall {}: no finite force", k + 1));
       out.push_back(k == 0 ? probe_point(geometry, radius, seed, delta_n, k, F) : out.back());
-      out.back().wall = k, out.back().Fn = F;
+      out.back().wall = k, out.back().Fn = F, total += F;
     }
+    for (std::size_t k = 0; k < n; ++k) out[out.size() - n + k].others_Fn = total - out[out.size() - n + k].Fn;
   }
   return out;
 }
 
 double ProbeLaw::predict(const ProbeWallForce& w) const {
+  const double F = predict_alone(w);
+  return stress > 0.0 ? F + stress * w.others_Fn / 4.0 * cap_area(w.delta_n[w.wall]) : F;
+}
+
+double ProbeLaw::predict_alone(const ProbeWallForce& w) const {
   const fit::PowerLawFit& f1 = F1.at(w.radius);
   const double dk = w.delta_n[w.wall];
   const double x = w.body.radius_ratio, g = w.body.kind == PressingBody::Kind::grain && grain_exponent != 0.0 ? std::pow(x / (1.0 + x), grain_exponent) : 1.0;

@@ -11,6 +11,7 @@
 //   volumetric   F_k = p(ε_k) a(Δn_k),  ε_k = v(Δn_k) + β Σ_{l≠k} v(Δn_l)
 //   ratio        F_k = F1(Δn_k) (Σ_l v(Δn_l) / v(Δn_k))^α
 //   onset-shift  F_k = F1(d*) a(Δn_k) / a(d*),  d* = Δn_k + γ (E_union − v(Δn_k))   (the fourth part's)
+//   any of them with ProbeLaw::stress: + κ p π Rs² a(Δn_k), p = Σ_{l≠k} F_l / (4π Rs²)     (the fifth part's)
 //
 // A candidate's error on a set of points: the root mean square of ln(F_predicted / F_measured) over
 // the points whose measured force exceeds force_floor × F1(largest Δn), a prediction below that floor
@@ -36,6 +37,7 @@ struct ProbeWallForce {
   double Fn = 0.0;              ///< [N]
   PressingBody body{};          ///< what presses (the arrangement's NAME:BODY; a wall without)
   double E_union = 0.0;         ///< the volume their caps cut together (cap_union_volume), over the soft-particle's
+  double others_Fn = 0.0;       ///< the sum of the point's other contacts' measured forces [N]
 };
 
 /// Wall `wall` of arrangement `a` (its directions and shares) at the arrangement's Δn `dn`, with
@@ -61,8 +63,14 @@ struct ProbeLaw {
   /// predicted one is (the fourth part's rule: a moving onset can predict a force where none is
   /// measured); each below it counted as the floor.
   bool count_predicted_force = false;
+  /// > 0: the stress term added to the law's force, stress × others_Fn / 4 × a(Δn_k) (κ p π Rs² a
+  /// with p = others_Fn / (4π Rs²) and κ = stress; the fifth part's `stress` form, where the mean
+  /// rule halves κ as it halves β).
+  double stress = 0.0;
   /// The force of wall w.wall of w's point.
   double predict(const ProbeWallForce& w) const;
+  /// The same without the stress term.
+  double predict_alone(const ProbeWallForce& w) const;
 };
 
 struct ProbeError {

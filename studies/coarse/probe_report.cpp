@@ -11,7 +11,7 @@
 
 #include "analysis/seed_statistics.hpp"
 #include "coarse/probe_second.hpp"
-#include "coarse/probe_fourth.hpp"
+#include "coarse/probe_soft_soft.hpp"
 #include "coarse/probe_third.hpp"
 #include "core/version.hpp"
 #include "formats/law_file.hpp"
@@ -146,7 +146,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
   for (const ProbeCandidate& c : a.candidates)
     if (c.law.name == "volumetric") v = &c;
   std::optional<ThirdVersion> third;
-  std::optional<FourthVersion> fourth;
+  std::optional<SoftSoftVersion> fourth, fifth;
   if (v) try {
       const std::vector<ProbeWallForce> bodies = read_bodies_files(plan, probe_dir, plan.body_kinds());
       const SecondPart second = write_second_part(plan, plan_path, walls, bodies, read_shear_files(plan, probe_dir), v->law.parameter, out_dir);
@@ -157,8 +157,19 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
         if (plan.fourth) {
           std::vector<std::string> kinds;
           for (const auto& [kind, runs] : plan.confined_groups) kinds.push_back(kind);
-          fourth = write_fourth_version(plan, plan_path, bodies, read_bodies_files(plan, probe_dir, kinds), third->soft_beta, out_dir);
+          const std::vector<ProbeWallForce> confined = read_bodies_files(plan, probe_dir, kinds);
+          SoftSoftVersion::Form base;  // the third version's soft-soft law
+          base.name = "third", base.base = "volumetric-union", base.parameter = third->soft_beta;
+          fourth = write_soft_soft(plan, *plan.fourth, plan_path, bodies, confined, base,
+                                   "The probe's fourth part: the soft-soft contact under confinement", out_dir, "fourth-version");
           md += fmt::format("\nThe probe's fourth part (the soft-soft contact under confinement): `{}/fourth-version.md`.\n", out_dir);
+          if (plan.fifth) {  // on the fourth version's law, whether or not it entered the engine
+            base = fourth->form(fourth->chosen);
+            base.name = "fourth";
+            fifth = write_soft_soft(plan, *plan.fifth, plan_path, bodies, confined, base,
+                                    "The probe's fifth part: the soft-soft push carried by the neighbours' stress", out_dir, "fifth-version");
+            md += fmt::format("\nThe probe's fifth part (the neighbours' stress): `{}/fifth-version.md`.\n", out_dir);
+          }
         }
       }
     } catch (const InputError& e) {
@@ -193,7 +204,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     // laws-v4.json: the law's fourth version, the third's with the soft-soft law the fourth part's
     // rule lets in (the same file format; the third's file stays what its media ran on)
     const std::string v4_path = out_dir + "/laws-v4.json";
-    const auto* f = fourth && fourth->enters_engine ? &*std::find_if(fourth->forms.begin(), fourth->forms.end(), [&](const auto& c) { return c.name == fourth->chosen; }) : nullptr;
+    const SoftSoftVersion::Form* f = fourth && fourth->enters_engine ? &fourth->form(fourth->chosen) : nullptr;
     if (f && f->name == "volumetric-union") {
       laws.many_body->soft_beta = LawValue{f->parameter.value, f->parameter.se};
       laws.many_body->source = fmt::format("{} (softpack-coarse probe-report, {}): {}/third-version.md, β_ss of {}/fourth-version.md", plan_path, code_version(),
@@ -204,6 +215,9 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     } else {
       std::filesystem::remove(v4_path);
       if (f) md += fmt::format("\nThe fourth part's {} enters by its rule, but the engine has no such form: no fourth version's law file.\n", f->name);
+    }
+    if (fifth && fifth->enters_engine) {
+      md += fmt::format("\nThe fifth part's {} enters by its rule; the engine has no such form yet (paper/many-body.md, the fifth part's plan, 5).\n", fifth->chosen);
     }
   } else {
     std::filesystem::remove(laws_path);

@@ -113,7 +113,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   const ConfigNode root = ConfigNode::load_file(path);
   root.allow_only({"many_body_probe"});
   const ConfigNode c = root.at("many_body_probe");
-  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "confined", "shear", "third_version", "fourth_version", "validation"});
+  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "confined", "shear", "third_version", "fourth_version", "fifth_version", "validation"});
   ManyBodyProbe p;
   std::ostringstream text;
   text << c.yaml();
@@ -238,24 +238,40 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
           t.at(key).fail(fmt::format("'{}' is also fitted: a run is fitted or held out, not both", a));
     p.third = third;
   }
-  if (c.has("fourth_version")) {
-    const ConfigNode f = c.at("fourth_version");
-    f.allow_only({"soft_forms", "fit", "held_out"});
-    if (!p.third || p.confined_groups.empty()) f.fail("needs third_version (the soft-soft law to beat) and confined (its runs)");
-    ManyBodyProbe::FourthVersionPlan fourth;
-    fourth.soft_forms = names(f.at("soft_forms"), {"volumetric-union", "onset-shift"});
-    for (const auto& [list, key] : {std::pair{&fourth.fit, "fit"}, std::pair{&fourth.held_out, "held_out"}}) {
-      *list = names(f.at(key));
-      plain(f.at(key), *list);
-      for (const std::string& a : *list)
-        for (const auto& [kind, arrangements] : p.confined_groups)
-          if (std::find(arrangements.begin(), arrangements.end(), a) == arrangements.end())
-            f.at(key).fail(fmt::format("'{}' is not run for confined kind {}; allowed: the arrangements every confined kind has", a, kind));
+  for (const auto& [key, before] : {std::pair{"fourth_version", "third_version"}, std::pair{"fifth_version", "fourth_version"}}) {
+    if (!c.has(key)) continue;
+    const ConfigNode f = c.at(key);
+    f.allow_only({"soft_forms", "kinds", "fit", "held_out_kinds", "held_out"});
+    if (!c.has(before) || p.confined_groups.empty()) f.fail(fmt::format("needs {} (the soft-soft law to beat) and confined (its runs)", before));
+    ManyBodyProbe::SoftSoftPlan plan;
+    plan.forms = names(f.at("soft_forms"), {"volumetric-union", "onset-shift", "stress"});
+    const auto kinds_of = [&](const std::string& k) {
+      std::vector<std::string> out;
+      for (const ConfigNode& item : f.at(k).items()) {
+        const std::string kind = item.string();
+        if (std::none_of(p.confined_groups.begin(), p.confined_groups.end(), [&](const auto& g) { return g.first == kind; }))
+          item.fail(fmt::format("'{}' is not a confined kind of the plan", kind));
+        out.push_back(kind);
+      }
+      return out;
+    };
+    const std::vector<std::string> kinds = kinds_of("kinds"), held_kinds = f.has("held_out_kinds") ? kinds_of("held_out_kinds") : kinds;
+    for (const auto& [list, k, of] : {std::tuple{&plan.fit, "fit", &kinds}, std::tuple{&plan.held_out, "held_out", &held_kinds}}) {
+      const std::vector<std::string> arrangements = names(f.at(k));
+      plain(f.at(k), arrangements);
+      for (const std::string& kind : *of) {
+        const auto& runs = std::find_if(p.confined_groups.begin(), p.confined_groups.end(), [&](const auto& g) { return g.first == kind; })->second;
+        for (const std::string& a : arrangements) {
+          if (std::find(runs.begin(), runs.end(), a) == runs.end())
+            f.at(k).fail(fmt::format("'{}' is not run for confined kind {}; allowed: {}", a, kind, fmt::join(runs, ", ")));
+          list->push_back(a + ":" + kind);
+        }
+      }
     }
-    for (const std::string& a : fourth.held_out)
-      if (std::find(fourth.fit.begin(), fourth.fit.end(), a) != fourth.fit.end())
+    for (const std::string& a : plan.held_out)
+      if (std::find(plan.fit.begin(), plan.fit.end(), a) != plan.fit.end())
         f.at("held_out").fail(fmt::format("'{}' is also fitted: a run is fitted or held out, not both", a));
-    p.fourth = fourth;
+    (std::string(key) == "fourth_version" ? p.fourth : p.fifth) = plan;
   }
   const ConfigNode val = c.at("validation");
   std::vector<std::string> keys{"strain_range", "bound_in_standard_errors"};

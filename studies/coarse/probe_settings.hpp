@@ -42,14 +42,17 @@ struct ManyBodyProbe {
     std::vector<std::string> grain_fit, grain_held_out;  ///< grain-X kinds of `bodies`
   };
   std::optional<ThirdVersionPlan> third;
-  /// The fourth part's analysis (`fourth_version`; paper/many-body.md, "The fourth part's
-  /// analysis"): the soft-soft forms, and which arrangements of every confined kind fit and test
-  /// them. Absent: none (it needs the third version and confined).
-  struct FourthVersionPlan {
-    std::vector<std::string> soft_forms;    ///< volumetric-union, onset-shift
-    std::vector<std::string> fit, held_out;  ///< arrangement names of every confined kind
+  /// A soft-soft law's analysis on the confined runs (coarse/probe_soft_soft.hpp): its forms and
+  /// which runs fit and test them, as NAME:KIND of confined (the plan's `fit` or `held_out`
+  /// arrangements of each of its `kinds`, or of `held_out_kinds`).
+  struct SoftSoftPlan {
+    std::vector<std::string> forms;          ///< volumetric-union, onset-shift, stress
+    std::vector<std::string> fit, held_out;  ///< NAME:KIND of confined_groups
   };
-  std::optional<FourthVersionPlan> fourth;
+  /// `fourth_version` (paper/many-body.md, "The fourth part's analysis"; against the third
+  /// version's soft-soft law) and `fifth_version` ("Next: the soft-soft push carried by the
+  /// neighbours' stress"; against the fourth's). Absent: none (each needs the one before).
+  std::optional<SoftSoftPlan> fourth, fifth;
   /// The media seeds each version of the law is judged on: 1, validation.media_seeds (the first
   /// law's); N >= 2, validation.vN_media_seeds (none before that version). No seed in two.
   std::map<int, std::vector<std::uint64_t>> media_seeds;

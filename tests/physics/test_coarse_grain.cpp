@@ -283,10 +283,13 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("    grain-1: [one,", "    grain-1+walls-0.1: [one,", "goes in confined");
   // the fourth part's analysis: its arrangements run for every confined kind, fitted or held out
   ASSERT_TRUE(plan.fourth.has_value());
-  EXPECT_EQ(plan.fourth->held_out, std::vector<std::string>{"tetrahedral"});
+  EXPECT_EQ(plan.fourth->held_out, (std::vector<std::string>{"tetrahedral:soft+walls-0.1", "tetrahedral:soft+walls-0.2"}));
+  ASSERT_TRUE(plan.fifth.has_value());
+  EXPECT_EQ(plan.fifth->held_out, (std::vector<std::string>{"square:soft+walls-0.15", "pyramid:soft+walls-0.15"}));
   refused("    held_out: [tetrahedral]", "    held_out: [square]", "not run for confined kind");
   refused("    held_out: [tetrahedral]", "    held_out: [cube]", "also fitted");
   refused("    soft_forms: [volumetric-union, onset-shift]", "    soft_forms: [volumetric, onset-shift]", "soft_forms");
+  refused("    held_out_kinds: [soft+walls-0.15]", "    held_out_kinds: [soft+walls-0.3]", "not a confined kind");
 }
 
 }  // namespace

@@ -12,7 +12,6 @@
 
 #include "coarse/probe_fit.hpp"
 #include "coarse/probe_second.hpp"
-#include "coarse/probe_fourth.hpp"
 #include "coarse/probe_third.hpp"
 #include "coarse/validation.hpp"
 #include "coarse/kinematics.hpp"
@@ -237,62 +236,6 @@ TEST(ManyBodyProbeLaws, TheThirdVersionFindsTheLawThatMadeTheProbe) {
   EXPECT_NEAR(t.grain_beta.value, 0.7, 0.05);
   EXPECT_LT(t.grain_held_out.rms_log, 0.03);
   EXPECT_NEAR(t.soft_beta.value, 0.3, 0.03);
-}
-
-// The fourth part's analysis (coarse/probe_fourth.hpp) on a synthetic probe made by onset-shift at
-// γ = 3 (the engine's; the probe's centre carries all the others, the mean rule half of them): it
-// finds γ, chooses onset-shift over volumetric-union and lets it in, the third version's β_ss
-// missing the confined force below the onset.
-TEST(ManyBodyProbeLaws, TheFourthPartFindsTheConfinedSoftLawThatMadeTheProbe) {
-  ManyBodyProbe plan;
-  plan.seeds = {1, 2, 3, 4};
-  plan.radii = {{"r", 0.016}, {"s", 0.008}};
-  plan.delta_n = {0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4};
-  plan.force_floor = 0.01;
-  plan.body_groups = {{"soft", {"one", "opposite", "cube"}}};
-  plan.confined_groups = {{"soft+walls-0.1", {"opposite", "tetrahedral", "cube"}}, {"soft+walls-0.2", {"opposite", "tetrahedral", "cube"}}};
-  plan.fourth = ManyBodyProbe::FourthVersionPlan{{"volumetric-union", "onset-shift"}, {"opposite", "cube"}, {"tetrahedral"}};
-  const fit::PowerLawFit X = eq7(40.0 / 3.0, 2.5, -0.05 / 3.0);
-  std::vector<ProbeWallForce> soft, confined;
-  for (const std::uint64_t seed : plan.seeds)
-    for (const auto& [radius, Rs] : plan.radii)
-      for (const auto* groups : {&plan.body_groups, &plan.confined_groups})
-        for (const auto& [kind, names] : *groups)
-          for (const std::string& name : names) {
-            const ProbeArrangement a = builtin_arrangement(name + ":" + kind, seed);
-            const ProbeLaw truth{"onset-shift", 1.5, {{radius, X}}};
-            for (const double dn : plan.delta_n) {
-              std::vector<double> d;
-              for (std::size_t k = 0; k < a.walls.size(); ++k) d.push_back(k == 0 || a.body.walls_at == 0.0 ? dn : a.body.walls_at);
-              for (std::size_t k = 0; k < d.size(); ++k) {
-                ProbeWallForce p = probe_point(a, radius, seed, d, k, 0.0);
-                p.Fn = truth.predict(p) * (1.0 + 0.02 * (static_cast<double>(seed) - 2.5) / 1.5);
-                (groups == &plan.body_groups ? soft : confined).push_back(p);
-              }
-            }
-          }
-  const FourthVersion f = analyse_fourth_version(plan, soft, confined, {0.3, 0.01});
-  ASSERT_EQ(f.forms.size(), 3u);
-  EXPECT_EQ(f.forms[0].name, "third");
-  EXPECT_EQ(f.chosen, "onset-shift");
-  EXPECT_TRUE(f.enters_engine);
-  EXPECT_NEAR(f.forms[2].parameter.value, 3.0, 0.1);
-  EXPECT_LT(f.forms[2].held_out.rms_log, 0.03);
-  EXPECT_GT(f.forms[0].held_out.rms_log, 0.3);  // the third version has no force below its onset
-  for (const auto& [radius, e] : f.forms[2].held_out_by_radius) EXPECT_GT(e.points, 0u) << radius;
-}
-
-// A confined kind's file: the first contact at the row's Δn, the others' walls at D.
-TEST(ManyBodyProbeLaws, AConfinedFileHasItsWallsAtD) {
-  const std::string path = (std::filesystem::temp_directory_path() / "softpack-confined-probe.dat").string();
-  std::ofstream(path) << "# arrangement opposite:soft+walls-0.2: u=(0 0 1) w=1 u=(0 0 -1) w=1\n2 0.0500 1.0e-3 2.0e-2\n2 0.3000 4.0e-2 5.0e-2\n";
-  const std::vector<ProbeWallForce> p = read_probe_file(path, "r", 501);
-  ASSERT_EQ(p.size(), 4u);
-  EXPECT_EQ(p[0].delta_n, (std::vector<double>{0.05, 0.2}));
-  EXPECT_EQ(p[3].delta_n, (std::vector<double>{0.3, 0.2}));
-  EXPECT_EQ(p[3].wall, 1u);
-  EXPECT_DOUBLE_EQ(p[3].Fn, 5.0e-2);
-  std::filesystem::remove(path);
 }
 
 // The soft medium's geometry against the resolved one's (coarse/kinematics.hpp) on rows written

@@ -1,0 +1,194 @@
+#include "coarse/probe_soft_soft.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "analysis/seed_statistics.hpp"
+#include "core/error.hpp"
+#include "core/version.hpp"
+#include "io/atomic_file.hpp"
+
+namespace softpack {
+namespace {
+
+// The engine's parameter in [0, 10] (the plans); the probe's centre carries all the others, which
+// the mean rule halves, so the law below takes half of it.
+constexpr double kParameterMax = 10.0, kMeanRule = 0.5;
+
+// The form's law with its engine parameter (a stress form on its baseline's law).
+ProbeLaw law_of(const SoftSoftVersion::Form& f, const std::map<std::string, fit::PowerLawFit>& X) {
+  ProbeLaw law{f.base, kMeanRule * (f.name == "stress" ? f.beta_ss : f.parameter.value), X};
+  if (f.name == "stress") law.stress = kMeanRule * f.parameter.value;
+  law.count_predicted_force = true;
+  return law;
+}
+
+// The form's engine parameter fitted on `fit` of `points` (X fitted again on them).
+double fit_form(const ManyBodyProbe& plan, SoftSoftVersion::Form f, const std::vector<ProbeWallForce>& points, const std::vector<std::string>& fit) {
+  f.parameter = {};
+  const ProbeLaw law = law_of(f, fit_single_contact(plan, points, "one:soft"));
+  return fit_parameter(law, kMeanRule * kParameterMax, points, fit, plan, f.name == "stress" ? &ProbeLaw::stress : &ProbeLaw::parameter) / kMeanRule;
+}
+
+}  // namespace
+
+const SoftSoftVersion::Form& SoftSoftVersion::form(const std::string& name) const {
+  for (const Form& f : forms)
+    if (f.name == name) return f;
+  throw InputError(fmt::format("no soft-soft form '{}' in the analysis", name));
+}
+
+SoftSoftVersion analyse_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part, const std::vector<ProbeWallForce>& soft,
+                                  const std::vector<ProbeWallForce>& confined, const SoftSoftVersion::Form& baseline) {
+  // The points: every contact of the soft arrangements (each a soft-soft one), the first contact
+  // of the confined runs (the others are walls).
+  std::vector<ProbeWallForce> points = soft;
+  for (const ProbeWallForce& w : confined)
+    if (w.wall == 0) points.push_back(w);
+  std::vector<std::string> unconfined;
+  for (const std::string& a : plan.bodies("soft"))
+    if (a != "one:soft") unconfined.push_back(a);
+  std::vector<std::string> fit = part.fit;
+  fit.insert(fit.end(), unconfined.begin(), unconfined.end());
+  const auto X = fit_single_contact(plan, points, "one:soft");
+
+  SoftSoftVersion out;
+  std::vector<SoftSoftVersion::Form> forms{baseline};
+  for (const std::string& name : part.forms) {
+    SoftSoftVersion::Form f;
+    f.name = name, f.base = name == "stress" ? baseline.base : name, f.beta_ss = baseline.parameter.value;
+    forms.push_back(f);
+  }
+  for (SoftSoftVersion::Form& c : forms) {
+    if (&c != &forms.front()) {
+      c.parameter.value = fit_form(plan, c, points, fit);
+      std::vector<double> theta;
+      for (const std::uint64_t seed : plan.seeds) {
+        std::vector<ProbeWallForce> rest;
+        for (const ProbeWallForce& w : points)
+          if (w.seed != seed) rest.push_back(w);
+        theta.push_back(fit_form(plan, c, rest, fit));
+      }
+      c.parameter.se = jackknife_error(theta);
+      if (c.parameter.value > 0.999 * kParameterMax) out.notes.push_back(fmt::format("{}: its parameter at the end of its range [0, {}]", c.name, kParameterMax));
+    }
+    const ProbeLaw law = law_of(c, X);
+    c.fit = probe_error(law, points, fit, plan), c.held_out = probe_error(law, points, part.held_out, plan);
+    c.unconfined = probe_error(law, points, unconfined, plan);
+    for (const auto& [radius, Rs] : plan.radii) {
+      std::vector<ProbeWallForce> of_radius;
+      for (const ProbeWallForce& w : points)
+        if (w.radius == radius) of_radius.push_back(w);
+      c.held_out_by_radius[radius] = probe_error(law, of_radius, part.held_out, plan);
+    }
+    for (const std::string& a : fit) c.by_arrangement[a] = probe_error(law, points, {a}, plan);
+    for (const std::string& a : part.held_out) c.by_arrangement[a] = probe_error(law, points, {a}, plan);
+  }
+  out.forms = forms;
+  // The rule: the least held-out error among the plan's forms; into the engine only if below the
+  // baseline's at each radius.
+  const SoftSoftVersion::Form* chosen = nullptr;
+  for (const SoftSoftVersion::Form& c : out.forms)
+    if (&c != &out.forms.front() && (!chosen || c.held_out.rms_log < chosen->held_out.rms_log)) chosen = &c;
+  out.chosen = chosen->name;
+  out.enters_engine = true;
+  for (const auto& [radius, e] : chosen->held_out_by_radius)
+    if (!(e.points > 0 && e.rms_log < out.forms.front().held_out_by_radius.at(radius).rms_log)) {
+      out.enters_engine = false;
+      out.notes.push_back(fmt::format("radius {}: {} is not better than {} on the held-out runs{}", radius, out.chosen, out.forms.front().name,
+                                      e.points > 0 ? "" : " (it has none)"));
+    }
+  return out;
+}
+
+SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part, const std::string& plan_path,
+                                const std::vector<ProbeWallForce>& soft, const std::vector<ProbeWallForce>& confined,
+                                const SoftSoftVersion::Form& baseline, const std::string& title, const std::string& out_dir, const std::string& name) {
+  const SoftSoftVersion a = analyse_soft_soft(plan, part, soft, confined, baseline);
+  nlohmann::json j;
+  j["plan"] = plan_path, j["code_version"] = code_version(), j["chosen"] = a.chosen, j["enters_engine"] = a.enters_engine, j["notes"] = a.notes;
+  const auto symbol = [](const SoftSoftVersion::Form& c) { return c.name == "stress" ? "κ" : c.base == "onset-shift" ? "γ" : "β_ss"; };
+  std::string md = fmt::format(
+      "# {} (generated by softpack-coarse probe-report, {})\n\n"
+      "Plan: `{}` (paper/many-body.md). Seeds {}. The force on a soft-particle pressing the centre while walls confine it, against "
+      "each soft-soft form in the engine's mean rule. Fitted on {} with the unconfined soft arrangements; held out: {}. An error is "
+      "exp(rms ln(pred/meas)) (mean of the logarithm), over the points whose measured or predicted force is above the floor; ± is the "
+      "jackknife over the seeds; {}'s parameter is its law file's, not fitted here{}.\n\n"
+      "| form | parameter (engine's) | fit runs | unconfined soft | held-out runs |",
+      title, code_version(), plan_path, fmt::join(plan.seeds, ", "), fmt::join(part.fit, ", "), fmt::join(part.held_out, ", "), baseline.name,
+      std::any_of(a.forms.begin(), a.forms.end(), [](const auto& c) { return c.name == "stress"; }) ? "; stress is on its force" : "");
+  for (const auto& [radius, Rs] : plan.radii) md += fmt::format(" held out, {} |", radius);
+  md += "\n|---|---|---|---|---|";
+  for (std::size_t i = 0; i < plan.radii.size(); ++i) md += "---|";
+  md += "\n";
+  for (const SoftSoftVersion::Form& c : a.forms) {
+    md += fmt::format("| {} | {} {:.3f} ± {:.3f} | {} | {} | {} |", c.name, symbol(c), c.parameter.value, c.parameter.se, error_factor(c.fit),
+                      error_factor(c.unconfined), error_factor(c.held_out));
+    nlohmann::json cj{{"base", c.base},
+                      {"parameter", {{"value", c.parameter.value}, {"se", c.parameter.se}}},
+                      {"fit", probe_error_json(c.fit)},
+                      {"unconfined", probe_error_json(c.unconfined)},
+                      {"held_out", probe_error_json(c.held_out)}};
+    if (c.name == "stress") cj["beta_ss"] = c.beta_ss;
+    for (const auto& [radius, e] : c.held_out_by_radius) md += fmt::format(" {} |", error_factor(e)), cj["held_out_by_radius"][radius] = probe_error_json(e);
+    for (const auto& [arrangement, e] : c.by_arrangement) cj["arrangements"][arrangement] = probe_error_json(e);
+    md += "\n";
+    j["forms"][c.name] = cj;
+  }
+  md += "\n| arrangement | role |";
+  for (const SoftSoftVersion::Form& c : a.forms) md += fmt::format(" {} |", c.name);
+  md += "\n|---|---|";
+  for (std::size_t i = 0; i < a.forms.size(); ++i) md += "---|";
+  md += "\n";
+  for (const auto& [arrangement, e] : a.forms.front().by_arrangement) {
+    const bool held = std::find(part.held_out.begin(), part.held_out.end(), arrangement) != part.held_out.end();
+    md += fmt::format("| {} | {} |", arrangement, held ? "held out" : "fit");
+    for (const SoftSoftVersion::Form& c : a.forms) md += fmt::format(" {} |", error_factor(c.by_arrangement.at(arrangement)));
+    md += "\n";
+  }
+  md += fmt::format("\nChosen by the rule: **{}**; it enters the engine: **{}** (its held-out error below {}'s at each radius).\n", a.chosen,
+                    a.enters_engine ? "yes" : "no", baseline.name);
+  for (const std::string& n : a.notes) md += fmt::format("\n- {}", n);
+
+  // The curves: each radius and confined run of the part (confined's order), the pressing
+  // soft-particle's measured force (mean and se over the seeds) and each form's.
+  std::string dat = "# " + title + ": radius arrangement delta_n F_mean[N] F_se[N]";
+  for (const SoftSoftVersion::Form& c : a.forms) dat += " F_" + c.name;
+  dat += "\n";
+  const auto X = fit_single_contact(plan, soft, "one:soft");  // the analysis's (one:soft is in the bodies files)
+  for (const auto& [radius, Rs] : plan.radii)
+    for (const auto& [kind, runs] : plan.confined_groups)
+      for (const std::string& run : runs) {
+        const std::string arrangement = run + ":" + kind;
+        if (std::find(part.fit.begin(), part.fit.end(), arrangement) == part.fit.end() &&
+            std::find(part.held_out.begin(), part.held_out.end(), arrangement) == part.held_out.end())
+          continue;
+        dat += fmt::format("\n\n# {} {}\n", radius, arrangement);
+        for (const double dn : plan.delta_n) {
+          std::vector<const ProbeWallForce*> at;
+          std::vector<double> F;
+          for (const ProbeWallForce& w : confined)
+            if (w.radius == radius && w.arrangement == arrangement && w.wall == 0 && std::abs(w.delta_n[0] - dn) < 1e-9) F.push_back(w.Fn), at.push_back(&w);
+          if (at.empty()) continue;
+          const MeanError m = mean_error(F);
+          dat += fmt::format("{} {} {:.4f} {:.6e} {:.6e}", radius, arrangement, dn, m.mean, m.error);
+          for (const SoftSoftVersion::Form& c : a.forms) {  // the seeds' mean of the prediction (the stress term has each seed's forces)
+            double sum = 0.0;
+            for (const ProbeWallForce* w : at) sum += law_of(c, X).predict(*w);
+            dat += fmt::format(" {:.6e}", sum / static_cast<double>(at.size()));
+          }
+          dat += "\n";
+        }
+      }
+  std::filesystem::create_directories(out_dir);
+  write_file_atomically(out_dir + "/" + name + ".md", md + "\n");
+  write_file_atomically(out_dir + "/" + name + ".json", j.dump(2) + "\n");
+  write_file_atomically(out_dir + "/" + name + ".dat", dat);
+  return a;
+}
+
+}  // namespace softpack

@@ -1,0 +1,61 @@
+// A soft-soft law analysed on the probe's confined runs (issue 33; paper/many-body.md, "The fourth
+// part's analysis" and "Next: the soft-soft push carried by the neighbours' stress", each written
+// before what it judges was computed; experiments/many-body.yaml, `fourth_version`,
+// `fifth_version`): a resolved soft-particle pressed by another while walls confine it (the
+// confined kinds, coarse/multi_contact.hpp's BODY+walls-D), the force on the pressing one.
+//
+// Each form is applied as the engine applies a soft-soft law, the mean rule: o is the mean over
+// the two soft-particles of their caps' union less this contact's cap, p̄ the mean of their other
+// contacts' stress Σ F_l / (4π R²) — in the probe half the centre's, the pressing soft-particle
+// having no other contact; X the soft-soft single contact (Eq. 7 on one:soft):
+//
+//   baseline          the law to beat: the third version's (volumetric-union with its β_ss) for
+//                     the fourth part, the fourth version's for the fifth (not fitted here)
+//   volumetric-union  F = X(d*) a(Δn) / a(d*), d* the depth of the cap of volume v(Δn) + β o
+//   onset-shift       F = X(d*) a(Δn) / a(d*), d* = Δn + γ o
+//   stress            the baseline's force + κ p̄ π R² a(Δn)
+//
+// Each parameter in [0, 10], fitted on the plan's `fit` runs with the soft arrangements of
+// `bodies`; the form with the least error on `held_out` (both radii) is chosen, and enters the
+// engine only if that error is below the baseline's at each radius. A point counts when the
+// measured or the predicted force is above the floor (ProbeLaw::count_predicted_force).
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "coarse/probe_third.hpp"
+
+namespace softpack {
+
+struct SoftSoftVersion {
+  struct Form {
+    std::string name;       ///< the baseline's name (third, fourth), volumetric-union, onset-shift, stress
+    std::string base;       ///< the form it is made on: volumetric-union or onset-shift
+    FittedValue parameter;  ///< the engine's β_ss, γ or κ (the mean rule's); its se by the jackknife over the seeds
+    double beta_ss = 0.0;   ///< stress: the baseline's β_ss beneath it
+    ProbeError fit, held_out, unconfined;  ///< unconfined: the soft arrangements of bodies (in the fit)
+    std::map<std::string, ProbeError> held_out_by_radius;
+    std::map<std::string, ProbeError> by_arrangement;  ///< every arrangement of the fit and the held-out runs
+  };
+  std::vector<Form> forms;  ///< the baseline's first
+  std::string chosen;       ///< by the plan's rule
+  bool enters_engine = false;
+  std::vector<std::string> notes;
+  const Form& form(const std::string& name) const;  ///< InputError when there is none
+};
+
+/// The analysis of `part` (the plan's fourth or fifth); `soft` the bodies files' points (their
+/// soft arrangements are used), `confined` the confined kinds' (the first contact's force is the
+/// measured one), `baseline` the law to beat (its name, and its form with its β_ss or γ).
+SoftSoftVersion analyse_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part, const std::vector<ProbeWallForce>& soft,
+                                  const std::vector<ProbeWallForce>& confined, const SoftSoftVersion::Form& baseline);
+
+/// The analysis written to OUT/NAME.md, .json and .dat (each radius and confined run of the part:
+/// the measured force's mean and standard error over the seeds, and each form's); `title` heads it.
+SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part, const std::string& plan_path,
+                                const std::vector<ProbeWallForce>& soft, const std::vector<ProbeWallForce>& confined,
+                                const SoftSoftVersion::Form& baseline, const std::string& title, const std::string& out_dir,
+                                const std::string& name);
+
+}  // namespace softpack

@@ -1,0 +1,131 @@
+// The soft-soft law on the probe's confined runs (coarse/probe_soft_soft.hpp, paper/many-body.md):
+// the fourth and fifth parts' analyses finding the law that made a synthetic probe, and a confined
+// file's walls read where they stand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "coarse/probe_soft_soft.hpp"
+#include "core/error.hpp"
+
+namespace softpack {
+namespace {
+
+fit::PowerLawFit confined_eq7(double a, double b, double c) {
+  fit::PowerLawFit f;
+  f.a = a, f.b = b, f.c = c, f.delta = std::pow(-c / a, 1.0 / b);
+  return f;
+}
+
+// A synthetic probe of the soft-soft forms (coarse/probe_soft_soft.hpp): soft arrangements `one`,
+// `opposite`, `cube` and confined kinds at walls 0.1 and 0.2 (opposite, tetrahedral, cube) and 0.15
+// (square, pyramid), both radii; the walls press by the walls' union law, every soft-soft contact
+// by `truth` (its stress term on the row's other forces, solved by iteration), a 2 % seed scatter.
+struct SyntheticSoftProbe {
+  ManyBodyProbe plan;
+  std::vector<ProbeWallForce> soft, confined;
+};
+SyntheticSoftProbe synthetic_soft_probe(ProbeLaw truth) {
+  SyntheticSoftProbe s;
+  ManyBodyProbe& plan = s.plan;
+  plan.seeds = {1, 2, 3, 4};
+  plan.radii = {{"r", 0.016}, {"s", 0.008}};
+  plan.delta_n = {0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4};
+  plan.force_floor = 0.01;
+  plan.body_groups = {{"soft", {"one", "opposite", "cube"}}};
+  plan.confined_groups = {{"soft+walls-0.1", {"opposite", "tetrahedral", "cube"}},
+                          {"soft+walls-0.2", {"opposite", "tetrahedral", "cube"}},
+                          {"soft+walls-0.15", {"square", "pyramid"}}};
+  const fit::PowerLawFit X = confined_eq7(40.0 / 3.0, 2.5, -0.05 / 3.0), W = confined_eq7(40.0, 2.5, -0.05);
+  truth.F1 = {{"r", X}, {"s", X}};
+  const ProbeLaw walls{"volumetric-union", 0.3, {{"r", W}, {"s", W}}};
+  for (const std::uint64_t seed : plan.seeds)
+    for (const auto& [radius, Rs] : plan.radii)
+      for (const auto* groups : {&plan.body_groups, &plan.confined_groups})
+        for (const auto& [kind, names] : *groups)
+          for (const std::string& name : names) {
+            const ProbeArrangement a = builtin_arrangement(name + ":" + kind, seed);
+            for (const double dn : plan.delta_n) {
+              std::vector<double> d;
+              for (std::size_t k = 0; k < a.walls.size(); ++k) d.push_back(k == 0 || a.body.walls_at == 0.0 ? dn : a.body.walls_at);
+              std::vector<ProbeWallForce> row;
+              for (std::size_t k = 0; k < d.size(); ++k) row.push_back(probe_point(a, radius, seed, d, k, 0.0));
+              for (int sweep = 0; sweep < 60; ++sweep) {
+                double total = 0.0;
+                for (const ProbeWallForce& p : row) total += p.Fn;
+                for (ProbeWallForce& p : row) {
+                  p.others_Fn = total - p.Fn;
+                  p.Fn = (a.body.kind_at(p.wall) == PressingBody::Kind::soft ? truth : walls).predict(p);
+                }
+              }
+              for (ProbeWallForce& p : row) {
+                p.Fn *= 1.0 + 0.02 * (static_cast<double>(seed) - 2.5) / 1.5;
+                (groups == &plan.body_groups ? s.soft : s.confined).push_back(p);
+              }
+            }
+          }
+  return s;
+}
+
+SoftSoftVersion::Form baseline(const std::string& name, double beta_ss) {
+  SoftSoftVersion::Form f;
+  f.name = name, f.base = "volumetric-union", f.parameter = {beta_ss, 0.01};
+  return f;
+}
+
+// The fourth part's analysis on a probe made by onset-shift at γ = 3 (the engine's; the probe's
+// centre carries all the others, the mean rule half of them): it finds γ, chooses onset-shift over
+// volumetric-union and lets it in, the third version's β_ss missing the force below the onset.
+TEST(ManyBodyProbeLaws, TheFourthPartFindsTheConfinedSoftLawThatMadeTheProbe) {
+  SyntheticSoftProbe s = synthetic_soft_probe({"onset-shift", 1.5, {}});
+  const ManyBodyProbe::SoftSoftPlan part{{"volumetric-union", "onset-shift"},
+                                         {"opposite:soft+walls-0.1", "cube:soft+walls-0.1", "opposite:soft+walls-0.2", "cube:soft+walls-0.2"},
+                                         {"tetrahedral:soft+walls-0.1", "tetrahedral:soft+walls-0.2"}};
+  const SoftSoftVersion f = analyse_soft_soft(s.plan, part, s.soft, s.confined, baseline("third", 0.3));
+  ASSERT_EQ(f.forms.size(), 3u);
+  EXPECT_EQ(f.forms[0].name, "third");
+  EXPECT_EQ(f.chosen, "onset-shift");
+  EXPECT_TRUE(f.enters_engine);
+  EXPECT_NEAR(f.form("onset-shift").parameter.value, 3.0, 0.1);
+  EXPECT_LT(f.form("onset-shift").held_out.rms_log, 0.03);
+  EXPECT_GT(f.forms[0].held_out.rms_log, 0.3);  // the third version has no force below its onset
+  for (const auto& [radius, e] : f.form("onset-shift").held_out_by_radius) EXPECT_GT(e.points, 0u) << radius;
+  EXPECT_THROW(f.form("stress"), InputError);
+}
+
+// The fifth part's on a probe made by the stress term at κ = 4 on volumetric-union at β_ss = 0.5:
+// it finds κ on its baseline's β_ss and lets it in on the held-out kind, which no fit has seen.
+TEST(ManyBodyProbeLaws, TheFifthPartFindsTheStressTermThatMadeTheProbe) {
+  ProbeLaw truth{"volumetric-union", 0.25, {}};
+  truth.stress = 2.0;
+  SyntheticSoftProbe s = synthetic_soft_probe(truth);
+  const ManyBodyProbe::SoftSoftPlan part{{"stress"},
+                                         {"opposite:soft+walls-0.1", "cube:soft+walls-0.1", "opposite:soft+walls-0.2", "cube:soft+walls-0.2"},
+                                         {"square:soft+walls-0.15", "pyramid:soft+walls-0.15"}};
+  const SoftSoftVersion f = analyse_soft_soft(s.plan, part, s.soft, s.confined, baseline("fourth", 0.5));
+  ASSERT_EQ(f.forms.size(), 2u);
+  EXPECT_EQ(f.chosen, "stress");
+  EXPECT_TRUE(f.enters_engine);
+  EXPECT_NEAR(f.form("stress").parameter.value, 4.0, 0.2);
+  EXPECT_DOUBLE_EQ(f.form("stress").beta_ss, 0.5);
+  EXPECT_LT(f.form("stress").held_out.rms_log, 0.03);
+  EXPECT_GT(f.form("fourth").held_out.rms_log, 0.3);
+}
+
+// A confined kind's file: the first contact at the row's Δn, the others' walls at D.
+TEST(ManyBodyProbeLaws, AConfinedFileHasItsWallsAtD) {
+  const std::string path = (std::filesystem::temp_directory_path() / "softpack-confined-probe.dat").string();
+  std::ofstream(path) << "# arrangement opposite:soft+walls-0.2: u=(0 0 1) w=1 u=(0 0 -1) w=1\n2 0.0500 1.0e-3 2.0e-2\n2 0.3000 4.0e-2 5.0e-2\n";
+  const std::vector<ProbeWallForce> p = read_probe_file(path, "r", 501);
+  ASSERT_EQ(p.size(), 4u);
+  EXPECT_EQ(p[0].delta_n, (std::vector<double>{0.05, 0.2}));
+  EXPECT_EQ(p[3].delta_n, (std::vector<double>{0.3, 0.2}));
+  EXPECT_EQ(p[3].wall, 1u);
+  EXPECT_DOUBLE_EQ(p[3].Fn, 5.0e-2);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace softpack
