@@ -64,6 +64,7 @@ SoftSoftVersion analyse_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe
     forms.push_back(f);
   }
   for (SoftSoftVersion::Form& c : forms) {
+    c.held_out_by_radius.clear(), c.by_arrangement.clear();  // a baseline from an earlier part has that part's
     if (&c != &forms.front()) {
       c.parameter.value = fit_form(plan, c, points, fit);
       std::vector<double> theta;
