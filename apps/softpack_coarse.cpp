@@ -181,7 +181,7 @@ int main(int argc, char** argv) {
   val_cmd->add_option("--out", val_out, "folder of validation.md and validation.json")->required();
   int law_version = 1;  // the version of the law whose media a command reads (one command runs)
   const auto add_law_version = [&](CLI::App& cmd) {  // the plan's validation.media_seeds for 1, vN_media_seeds for N
-    cmd.add_option("--law-version", law_version, "on the media of this version of the law")->check(CLI::Range(1, kLawVersions))->capture_default_str();
+    return cmd.add_option("--law-version", law_version, "on the media of this version of the law")->check(CLI::Range(1, kLawVersions))->capture_default_str();
   };
   add_law_version(*val_cmd);
   std::string census_plan, census_config, census_media, census_out;
@@ -212,7 +212,7 @@ int main(int argc, char** argv) {
   CLI::App* speed_cmd = app.add_subcommand("speed", "the speed-up side by side: one medium resolved, soft pairwise and soft many-body in one process (coarse/speed.hpp)");
   speed_cmd->add_option("--probe", speed_plan, "the plan (its media seeds), e.g. experiments/many-body.yaml")->required();
   speed_cmd->add_option("--dir", speed_dir, "the version's study folder (profiles/, reference/media/; writes speed/), e.g. data/many-body-v3")->required();
-  add_law_version(*speed_cmd);
+  add_law_version(*speed_cmd)->required();
   auto* speed_seed_opt = speed_cmd->add_option("--seed", speed_seed, "the medium's seed (one of the version's media seeds)");
   speed_cmd->add_option("--repeats", speed_repeats, "runs of each soft model (their least time)")->capture_default_str();
   bool speed_report = false;
@@ -221,7 +221,7 @@ int main(int argc, char** argv) {
   CLI::App* kin_cmd = app.add_subcommand("kinematics", "the soft medium's geometry against the resolved one's (coarse/kinematics.hpp)");
   kin_cmd->add_option("--probe", kin_plan, "the plan (its media seeds), e.g. experiments/many-body.yaml")->required();
   kin_cmd->add_option("--dir", kin_dir, "the version's study folder (profiles/, report/contact-rows.dat, in-place/; writes report/kinematics.md)")->required();
-  add_law_version(*kin_cmd);
+  add_law_version(*kin_cmd)->required();
   std::string seeds_config;
   CLI::App* seeds_cmd = app.add_subcommand("seeds", "print the settings' seeds (for make)");
   std::string seeds_probe;

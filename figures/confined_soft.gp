@@ -1,30 +1,30 @@
-# The probe's fourth part (make many-body-report draws it; studies/coarse/probe_fourth.hpp): the
-# force on a resolved soft-particle pressing the centre while walls at Δn_w confine it, against
-# its Δn, mean over the seeds with its standard error, and the soft-soft forms of fourth-version.md
-# (the third version's law; volumetric-union and onset-shift fitted again). One radius per figure;
-# rows: Δn_w 0.1, 0.2; columns: opposite, tetrahedral (held out), cube.
+# A soft-soft part of the probe (make many-body-report draws each; studies/coarse/probe_soft_soft.hpp):
+# the force on a resolved soft-particle pressing the centre while walls confine it, against its
+# Δn, mean over the seeds with its standard error, and each soft-soft form of the part's report.
+# One figure per radius (`out` holds %s for the radius's name), one panel per confined run of the part.
 #
-#   gnuplot -e "data='data/many-body/report/fourth-version.dat'; radius=0; out='confined-soft-half.png'" figures/confined_soft.gp
+#   gnuplot -e "load 'data/many-body/report/fifth-version-vars.gp'; out='fifth-%s.png'" figures/confined_soft.gp
 #
-# data: blocks '# RADIUS ARRANGEMENT:soft+walls-D' (radii, then D, then arrangements, in that
-# order), columns 3 delta_n, 4-5 F measured (mean, se) [N], 6 F third, 7 F volumetric-union,
-# 8 F onset-shift. radius: the radius's place among the plan's (0: the first).
+# The part's variables file (probe-report writes it beside NAME.dat): data (the .dat), radii
+# (their names, in the .dat's order), runs (the confined runs, NAME:KIND, in its order), forms
+# (the forms' names, columns 6 on). data: blocks '# RADIUS RUN', radii then runs; columns 3
+# delta_n, 4-5 F measured (mean, se) [N], then each form's F.
 
-if (!exists("data") || !exists("out") || !exists("radius")) {
-  print "usage: gnuplot -e \"data='.../fourth-version.dat'; radius=0; out='confined-soft.pdf|png'\" figures/confined_soft.gp"
+if (!exists("data") || !exists("out") || !exists("radii") || !exists("runs") || !exists("forms")) {
+  print "usage: gnuplot -e \"load '.../NAME-vars.gp'; out='NAME-%s.pdf|png'\" figures/confined_soft.gp"
   exit status 2
 }
 if (system("test -r '".data."' && echo yes") ne "yes") {
   print "confined_soft.gp: cannot read ".data
   exit status 2
 }
+n = words(runs)
+columns = (n + 1) / 2
 if (out[strlen(out)-3:] eq ".pdf") {
-  set terminal pdfcairo size 24cm,14cm font "Helvetica,7" linewidth 1.2
+  set terminal pdfcairo size (8 * columns)cm,14cm font "Helvetica,7" linewidth 1.2
 } else {
-  set terminal pngcairo size 2400,1400 font "Helvetica,18" linewidth 2
+  set terminal pngcairo size 800 * columns,1400 font "Helvetica,18" linewidth 2
 }
-set output out
-set multiplot layout 2,3
 set grid
 set logscale y
 set yrange [1e-4:10]
@@ -32,16 +32,15 @@ set xrange [0:0.42]
 set key bottom right
 set xlabel "{/Symbol D}n of the pressing soft-particle"
 set ylabel "F_n on it [N]"
-arrangements = "opposite tetrahedral cube"
-walls = "0.1 0.2"
-do for [d = 1:2] {
-  do for [a = 1:3] {
-    i = radius * 6 + (d - 1) * 3 + (a - 1)
-    set title sprintf("%s, walls at {/Symbol D}n_w = %s", word(arrangements, a), word(walls, d))
+colours = "#1f77b4 #d62728 #2ca02c #9467bd"
+do for [radius = 1:words(radii)] {
+  set output sprintf(out, word(radii, radius))
+  set multiplot layout 2,columns
+  do for [b = 1:n] {
+    i = (radius - 1) * n + (b - 1)
+    set title sprintf("%s (%s)", word(runs, b), word(radii, radius))
     plot data index i using 3:4:5 with yerrorbars pt 7 lc rgb "black" title "measured", \
-         ''   index i using 3:6 with lines lw 2 lc rgb "#1f77b4" title "third version", \
-         ''   index i using 3:7 with lines lw 2 dt 2 lc rgb "#d62728" title "volumetric-union", \
-         ''   index i using 3:8 with lines lw 2 dt 3 lc rgb "#2ca02c" title "onset-shift"
+         for [f = 1:words(forms)] '' index i using 3:(column(5 + f)) with lines lw 2 dt f lc rgb word(colours, f) title word(forms, f)
   }
+  unset multiplot
 }
-unset multiplot

@@ -102,10 +102,9 @@ PROBE_REPORT ?= $(DATA)/many-body/report
 .PHONY: many-body-report
 many-body-report: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat) | $(TOOLS)  ## the many-body probe's report (PROBE_REPORT/probe.md)
 	@$(RUN) $(COARSE_TOOL) probe-report --probe $(PROBE_PLAN) --dir $(PROBE_DIR) --out $(PROBE_REPORT)
-	@# the fourth part's figure for each radius (the plan's radii in their order: half, reference)
-	@set -e; if [ -f $(PROBE_REPORT)/fourth-version.dat ]; then i=0; for r in half reference; do \
-	  gnuplot -e "data='$(PROBE_REPORT)/fourth-version.dat'; radius=$$i; out='$(PROBE_REPORT)/confined-soft-$$r.png'" figures/confined_soft.gp; \
-	  i=$$((i+1)); done; echo "many-body probe: $(PROBE_REPORT)/confined-soft-*.png"; fi
+	@# each soft-soft part's figure, one per radius (NAME-RADIUS.png), from the variables it wrote
+	@set -e; for v in $(PROBE_REPORT)/*-vars.gp; do [ -f "$$v" ] || continue; part=$${v%-vars.gp}; \
+	  gnuplot -e "load '$$v'; out='$$part-%s.png'" figures/confined_soft.gp; echo "many-body probe: $$part-*.png"; done
 
 # Where the media use the law (issue 33, item 5): the many-body setting's soft runs again, every
 # soft-particle contact against the probe's range (coarse/soft_census.hpp; a few seconds).

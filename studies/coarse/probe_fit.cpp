@@ -154,16 +154,23 @@ double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>&
   return error(x) < best_e ? x : best;
 }
 
-double jackknife_parameter(const std::string& name, double hi, const std::vector<ProbeWallForce>& walls,
-                           const std::vector<std::string>& arrangements, const ManyBodyProbe& plan, const std::string& one) {
-  std::vector<double> theta;  // F1 and the parameter again without each seed
+double jackknife_over_seeds(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls,
+                            const std::function<double(const std::vector<ProbeWallForce>&)>& fit) {
+  std::vector<double> theta;
   for (const std::uint64_t seed : plan.seeds) {
     std::vector<ProbeWallForce> rest;
     for (const ProbeWallForce& w : walls)
       if (w.seed != seed) rest.push_back(w);
-    theta.push_back(fit_parameter(ProbeLaw{name, 0.0, fit_single_contact(plan, rest, one)}, hi, rest, arrangements, plan));
+    theta.push_back(fit(rest));
   }
   return jackknife_error(theta);
+}
+
+double jackknife_parameter(const std::string& name, double hi, const std::vector<ProbeWallForce>& walls,
+                           const std::vector<std::string>& arrangements, const ManyBodyProbe& plan, const std::string& one) {
+  return jackknife_over_seeds(plan, walls, [&](const std::vector<ProbeWallForce>& rest) {  // F1 and the parameter again
+    return fit_parameter(ProbeLaw{name, 0.0, fit_single_contact(plan, rest, one)}, hi, rest, arrangements, plan);
+  });
 }
 
 ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,

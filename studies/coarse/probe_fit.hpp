@@ -15,8 +15,10 @@
 //
 // A candidate's error on a set of points: the root mean square of ln(F_predicted / F_measured) over
 // the points whose measured force exceeds force_floor × F1(largest Δn), a prediction below that floor
-// counted as the floor.
+// counted as the floor (with ProbeLaw::count_predicted_force, the fourth part's rule, also the
+// points whose predicted force exceeds it, a measured one below counted as the floor).
 #pragma once
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -106,6 +108,10 @@ std::map<std::string, fit::PowerLawFit> fit_single_contact(const ManyBodyProbe& 
 /// `arrangements`: a grid of 1/1000 of the range, then golden sections about its best point.
 double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
                      const ManyBodyProbe& plan, double ProbeLaw::*field = &ProbeLaw::parameter);
+/// The jackknife standard error over the plan's seeds of what `fit` makes of the points without
+/// each seed.
+double jackknife_over_seeds(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls,
+                            const std::function<double(const std::vector<ProbeWallForce>&)>& fit);
 /// Its standard error by the jackknife over the plan's seeds (F1 of `one` and the parameter fitted
 /// again without each seed).
 double jackknife_parameter(const std::string& name, double hi, const std::vector<ProbeWallForce>& walls,

@@ -155,11 +155,9 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
         third = write_third_version(plan, plan_path, walls, bodies, second, v->law.parameter, out_dir);
         md += fmt::format("\nThe law's third version: `{}/third-version.md`.\n", out_dir);
         if (plan.fourth) {
-          std::vector<std::string> kinds;
-          for (const auto& [kind, runs] : plan.confined_groups) kinds.push_back(kind);
-          const std::vector<ProbeWallForce> confined = read_bodies_files(plan, probe_dir, kinds);
-          SoftSoftVersion::Form base;  // the third version's soft-soft law
-          base.name = "third", base.base = "volumetric-union", base.parameter = third->soft_beta;
+          const std::vector<ProbeWallForce> confined = read_bodies_files(plan, probe_dir, plan.confined_kinds());
+          SoftSoftVersion::Form base;  // the third version's soft-soft law (the engine's mean rule on its count form)
+          base.name = "third", base.base = third->count_chosen, base.parameter = third->soft_beta;
           fourth = write_soft_soft(plan, *plan.fourth, plan_path, bodies, confined, base,
                                    "The probe's fourth part: the soft-soft contact under confinement", out_dir, "fourth-version");
           md += fmt::format("\nThe probe's fourth part (the soft-soft contact under confinement): `{}/fourth-version.md`.\n", out_dir);
@@ -173,7 +171,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
         }
       }
     } catch (const InputError& e) {
-      md += fmt::format("\nIts second part or third version could not be analysed: {}\n", e.what());
+      md += fmt::format("\nIts second part, third version or soft-soft parts could not be analysed: {}\n", e.what());
     }
   // laws.json: the plan's law file with the many-body law — the third version where the plan has
   // one, else the first part's volumetric law when the rule lets it into the engine
@@ -212,7 +210,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
       laws.provenance.notes += " The fourth version: the soft-soft β of the probe's fourth part.";
       write_law_file_if_changed(v4_path, laws);
       md += fmt::format("\nThe law's fourth version: `{}` (the third's with β_ss = {:.3f} ± {:.3f}).\n", v4_path, f->parameter.value, f->parameter.se);
-    } else {
+    } else if (fourth) {  // analysed and not let in (a part that could not be analysed leaves the file as it is)
       std::filesystem::remove(v4_path);
       if (f) md += fmt::format("\nThe fourth part's {} enters by its rule, but the engine has no such form: no fourth version's law file.\n", f->name);
     }

@@ -33,6 +33,12 @@ std::vector<double> increasing(const ConfigNode& n) {
   return out;
 }
 
+// A run is fitted or held out, not both: the first of `held` also in `fit` refused at `key`.
+void fitted_or_held_out(const std::vector<std::string>& fit, const std::vector<std::string>& held, const ConfigNode& key) {
+  for (const std::string& a : held)
+    if (std::find(fit.begin(), fit.end(), a) != fit.end()) key.fail(fmt::format("'{}' is also fitted: a run is fitted or held out, not both", a));
+}
+
 std::vector<std::string> names(const ConfigNode& n, const std::vector<std::string>& allowed = {}) {
   std::vector<std::string> out;
   for (const ConfigNode& item : n.items()) {
@@ -62,6 +68,12 @@ std::vector<std::string> ManyBodyProbe::arrangements() const {
 std::vector<std::string> ManyBodyProbe::body_kinds() const {
   std::vector<std::string> out;
   for (const auto& [kind, arrangements] : body_groups) out.push_back(kind);
+  return out;
+}
+
+std::vector<std::string> ManyBodyProbe::confined_kinds() const {
+  std::vector<std::string> out;
+  for (const auto& [kind, arrangements] : confined_groups) out.push_back(kind);
   return out;
 }
 
@@ -158,9 +170,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   p.delta_n = increasing(c.at("delta_n"));
   p.fit = names(c.at("fit"));
   p.held_out = names(c.at("held_out"));
-  for (const std::string& a : p.held_out)
-    if (std::find(p.fit.begin(), p.fit.end(), a) != p.fit.end())
-      c.at("held_out").fail(fmt::format("'{}' is also in fit: an arrangement is fitted or held out, not both", a));
+  fitted_or_held_out(p.fit, p.held_out, c.at("held_out"));
   if (std::find(p.fit.begin(), p.fit.end(), "one") == p.fit.end()) c.at("fit").fail("'one' (the single contact, F1 of every candidate) must be in fit");
   p.candidates = names(c.at("candidates"), {"pairwise", "volumetric", "ratio"});
   const ConfigNode sel = c.at("selection");
@@ -233,9 +243,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
     third.grain_held_out = of_kind("grain_held_out", "", true);
     for (const auto& [fit_list, held_list, key] : {std::tuple{&third.count_fit, &third.count_held_out, "count_held_out"},
                                                    std::tuple{&third.grain_fit, &third.grain_held_out, "grain_held_out"}})
-      for (const std::string& a : *held_list)
-        if (std::find(fit_list->begin(), fit_list->end(), a) != fit_list->end())
-          t.at(key).fail(fmt::format("'{}' is also fitted: a run is fitted or held out, not both", a));
+      fitted_or_held_out(*fit_list, *held_list, t.at(key));
     p.third = third;
   }
   for (const auto& [key, before] : {std::pair{"fourth_version", "third_version"}, std::pair{"fifth_version", "fourth_version"}}) {
@@ -244,15 +252,20 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
     f.allow_only({"soft_forms", "kinds", "fit", "held_out_kinds", "held_out"});
     if (!c.has(before) || p.confined_groups.empty()) f.fail(fmt::format("needs {} (the soft-soft law to beat) and confined (its runs)", before));
     ManyBodyProbe::SoftSoftPlan plan;
-    plan.forms = names(f.at("soft_forms"), {"volumetric-union", "onset-shift", "stress"});
+    // the stress form stands on the fourth version's law (its baseline), so only the fifth has it
+    plan.forms = names(f.at("soft_forms"), std::string(key) == "fifth_version" ? std::vector<std::string>{"volumetric-union", "onset-shift", "stress"}
+                                                                               : std::vector<std::string>{"volumetric-union", "onset-shift"});
     const auto kinds_of = [&](const std::string& k) {
       std::vector<std::string> out;
       for (const ConfigNode& item : f.at(k).items()) {
         const std::string kind = item.string();
-        if (std::none_of(p.confined_groups.begin(), p.confined_groups.end(), [&](const auto& g) { return g.first == kind; }))
-          item.fail(fmt::format("'{}' is not a confined kind of the plan", kind));
+        const std::vector<std::string> allowed = p.confined_kinds();
+        if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
+          item.fail(fmt::format("'{}' is not a confined kind of the plan; allowed: {}", kind, fmt::join(allowed, ", ")));
+        if (std::find(out.begin(), out.end(), kind) != out.end()) item.fail(fmt::format("'{}' is listed twice", kind));
         out.push_back(kind);
       }
+      if (out.empty()) f.at(k).fail("give at least one confined kind");
       return out;
     };
     const std::vector<std::string> kinds = kinds_of("kinds"), held_kinds = f.has("held_out_kinds") ? kinds_of("held_out_kinds") : kinds;
@@ -268,9 +281,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
         }
       }
     }
-    for (const std::string& a : plan.held_out)
-      if (std::find(plan.fit.begin(), plan.fit.end(), a) != plan.fit.end())
-        f.at("held_out").fail(fmt::format("'{}' is also fitted: a run is fitted or held out, not both", a));
+    fitted_or_held_out(plan.fit, plan.held_out, f.at("held_out"));
     (std::string(key) == "fourth_version" ? p.fourth : p.fifth) = plan;
   }
   const ConfigNode val = c.at("validation");

@@ -70,6 +70,8 @@ struct ManyBodyProbe {
   std::vector<std::pair<std::string, std::string>> runs_stamps(const std::string& release) const;
   /// The kinds of body_groups, in order.
   std::vector<std::string> body_kinds() const;
+  /// The kinds of confined_groups, in order.
+  std::vector<std::string> confined_kinds() const;
 
   /// The fit arrangements, then the held-out ones.
   std::vector<std::string> arrangements() const;

@@ -34,7 +34,17 @@ double fit_form(const ManyBodyProbe& plan, SoftSoftVersion::Form f, const std::v
   return fit_parameter(law, kMeanRule * kParameterMax, points, fit, plan, f.name == "stress" ? &ProbeLaw::stress : &ProbeLaw::parameter) / kMeanRule;
 }
 
+bool listed(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
 }  // namespace
+
+std::vector<std::string> reported_runs(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part) {
+  std::vector<std::string> out;
+  for (const auto& [kind, runs] : plan.confined_groups)
+    for (const std::string& run : runs)
+      if (const std::string r = run + ":" + kind; !listed(part.fit, r) && !listed(part.held_out, r)) out.push_back(r);
+  return out;
+}
 
 const SoftSoftVersion::Form& SoftSoftVersion::form(const std::string& name) const {
   for (const Form& f : forms)
@@ -54,6 +64,7 @@ SoftSoftVersion analyse_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe
     if (a != "one:soft") unconfined.push_back(a);
   std::vector<std::string> fit = part.fit;
   fit.insert(fit.end(), unconfined.begin(), unconfined.end());
+  const std::vector<std::string> reported = reported_runs(plan, part);
   const auto X = fit_single_contact(plan, points, "one:soft");
 
   SoftSoftVersion out;
@@ -67,14 +78,7 @@ SoftSoftVersion analyse_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe
     c.held_out_by_radius.clear(), c.by_arrangement.clear();  // a baseline from an earlier part has that part's
     if (&c != &forms.front()) {
       c.parameter.value = fit_form(plan, c, points, fit);
-      std::vector<double> theta;
-      for (const std::uint64_t seed : plan.seeds) {
-        std::vector<ProbeWallForce> rest;
-        for (const ProbeWallForce& w : points)
-          if (w.seed != seed) rest.push_back(w);
-        theta.push_back(fit_form(plan, c, rest, fit));
-      }
-      c.parameter.se = jackknife_error(theta);
+      c.parameter.se = jackknife_over_seeds(plan, points, [&](const std::vector<ProbeWallForce>& rest) { return fit_form(plan, c, rest, fit); });
       if (c.parameter.value > 0.999 * kParameterMax) out.notes.push_back(fmt::format("{}: its parameter at the end of its range [0, {}]", c.name, kParameterMax));
     }
     const ProbeLaw law = law_of(c, X);
@@ -88,6 +92,7 @@ SoftSoftVersion analyse_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe
     }
     for (const std::string& a : fit) c.by_arrangement[a] = probe_error(law, points, {a}, plan);
     for (const std::string& a : part.held_out) c.by_arrangement[a] = probe_error(law, points, {a}, plan);
+    for (const std::string& a : reported) c.by_arrangement[a] = probe_error(law, points, {a}, plan);
   }
   out.forms = forms;
   // The rule: the least held-out error among the plan's forms; into the engine only if below the
@@ -110,6 +115,7 @@ SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::
                                 const std::vector<ProbeWallForce>& soft, const std::vector<ProbeWallForce>& confined,
                                 const SoftSoftVersion::Form& baseline, const std::string& title, const std::string& out_dir, const std::string& name) {
   const SoftSoftVersion a = analyse_soft_soft(plan, part, soft, confined, baseline);
+  const std::vector<std::string> reported = reported_runs(plan, part);
   nlohmann::json j;
   j["plan"] = plan_path, j["code_version"] = code_version(), j["chosen"] = a.chosen, j["enters_engine"] = a.enters_engine, j["notes"] = a.notes;
   const auto symbol = [](const SoftSoftVersion::Form& c) { return c.name == "stress" ? "κ" : c.base == "onset-shift" ? "γ" : "β_ss"; };
@@ -146,8 +152,7 @@ SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::
   for (std::size_t i = 0; i < a.forms.size(); ++i) md += "---|";
   md += "\n";
   for (const auto& [arrangement, e] : a.forms.front().by_arrangement) {
-    const bool held = std::find(part.held_out.begin(), part.held_out.end(), arrangement) != part.held_out.end();
-    md += fmt::format("| {} | {} |", arrangement, held ? "held out" : "fit");
+    md += fmt::format("| {} | {} |", arrangement, listed(part.held_out, arrangement) ? "held out" : listed(part.fit, arrangement) || !listed(reported, arrangement) ? "fit" : "reported");
     for (const SoftSoftVersion::Form& c : a.forms) md += fmt::format(" {} |", error_factor(c.by_arrangement.at(arrangement)));
     md += "\n";
   }
@@ -161,31 +166,37 @@ SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::
   for (const SoftSoftVersion::Form& c : a.forms) dat += " F_" + c.name;
   dat += "\n";
   const auto X = fit_single_contact(plan, soft, "one:soft");  // the analysis's (one:soft is in the bodies files)
-  for (const auto& [radius, Rs] : plan.radii)
-    for (const auto& [kind, runs] : plan.confined_groups)
-      for (const std::string& run : runs) {
-        const std::string arrangement = run + ":" + kind;
-        if (std::find(part.fit.begin(), part.fit.end(), arrangement) == part.fit.end() &&
-            std::find(part.held_out.begin(), part.held_out.end(), arrangement) == part.held_out.end())
-          continue;
-        dat += fmt::format("\n\n# {} {}\n", radius, arrangement);
-        for (const double dn : plan.delta_n) {
-          std::vector<const ProbeWallForce*> at;
-          std::vector<double> F;
-          for (const ProbeWallForce& w : confined)
-            if (w.radius == radius && w.arrangement == arrangement && w.wall == 0 && std::abs(w.delta_n[0] - dn) < 1e-9) F.push_back(w.Fn), at.push_back(&w);
-          if (at.empty()) continue;
-          const MeanError m = mean_error(F);
-          dat += fmt::format("{} {} {:.4f} {:.6e} {:.6e}", radius, arrangement, dn, m.mean, m.error);
-          for (const SoftSoftVersion::Form& c : a.forms) {  // the seeds' mean of the prediction (the stress term has each seed's forces)
-            double sum = 0.0;
-            for (const ProbeWallForce* w : at) sum += law_of(c, X).predict(*w);
-            dat += fmt::format(" {:.6e}", sum / static_cast<double>(at.size()));
-          }
-          dat += "\n";
+  std::vector<std::string> drawn, radii;  // every confined run, in confined's order; the radii
+  for (const auto& [kind, runs] : plan.confined_groups)
+    for (const std::string& run : runs) drawn.push_back(run + ":" + kind);
+  for (const auto& [radius, Rs] : plan.radii) {
+    radii.push_back(radius);
+    for (const std::string& arrangement : drawn) {
+      dat += fmt::format("\n\n# {} {}\n", radius, arrangement);
+      for (const double dn : plan.delta_n) {
+        std::vector<const ProbeWallForce*> at;
+        std::vector<double> F;
+        for (const ProbeWallForce& w : confined)
+          if (w.radius == radius && w.arrangement == arrangement && w.wall == 0 && std::abs(w.delta_n[0] - dn) < 1e-9) F.push_back(w.Fn), at.push_back(&w);
+        if (at.empty()) continue;
+        const MeanError m = mean_error(F);
+        dat += fmt::format("{} {} {:.4f} {:.6e} {:.6e}", radius, arrangement, dn, m.mean, m.error);
+        for (const SoftSoftVersion::Form& c : a.forms) {  // the seeds' mean of the prediction (the stress term has each seed's forces)
+          double sum = 0.0;
+          for (const ProbeWallForce* w : at) sum += law_of(c, X).predict(*w);
+          dat += fmt::format(" {:.6e}", sum / static_cast<double>(at.size()));
         }
+        dat += "\n";
       }
+    }
+  }
+  std::vector<std::string> form_names;
+  for (const SoftSoftVersion::Form& c : a.forms) form_names.push_back(c.name);
+  const std::string vars = fmt::format("# {}: the variables of figures/confined_soft.gp (generated by softpack-coarse probe-report)\n"
+                                       "data = '{}/{}.dat'\nradii = \"{}\"\nruns = \"{}\"\nforms = \"{}\"\n",
+                                       title, out_dir, name, fmt::join(radii, " "), fmt::join(drawn, " "), fmt::join(form_names, " "));
   std::filesystem::create_directories(out_dir);
+  write_file_atomically(out_dir + "/" + name + "-vars.gp", vars);
   write_file_atomically(out_dir + "/" + name + ".md", md + "\n");
   write_file_atomically(out_dir + "/" + name + ".json", j.dump(2) + "\n");
   write_file_atomically(out_dir + "/" + name + ".dat", dat);

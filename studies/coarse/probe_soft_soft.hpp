@@ -36,7 +36,7 @@ struct SoftSoftVersion {
     double beta_ss = 0.0;   ///< stress: the baseline's β_ss beneath it
     ProbeError fit, held_out, unconfined;  ///< unconfined: the soft arrangements of bodies (in the fit)
     std::map<std::string, ProbeError> held_out_by_radius;
-    std::map<std::string, ProbeError> by_arrangement;  ///< every arrangement of the fit and the held-out runs
+    std::map<std::string, ProbeError> by_arrangement;  ///< every arrangement of the fit, the held-out and the reported runs
   };
   std::vector<Form> forms;  ///< the baseline's first
   std::string chosen;       ///< by the plan's rule
@@ -45,6 +45,9 @@ struct SoftSoftVersion {
   const Form& form(const std::string& name) const;  ///< InputError when there is none
 };
 
+/// The confined runs of the plan that `part` neither fits nor holds out: their errors are reported.
+std::vector<std::string> reported_runs(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part);
+
 /// The analysis of `part` (the plan's fourth or fifth); `soft` the bodies files' points (their
 /// soft arrangements are used), `confined` the confined kinds' (the first contact's force is the
 /// measured one), `baseline` the law to beat (its name, and its form with its β_ss or γ).
@@ -52,7 +55,8 @@ SoftSoftVersion analyse_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe
                                   const std::vector<ProbeWallForce>& confined, const SoftSoftVersion::Form& baseline);
 
 /// The analysis written to OUT/NAME.md, .json and .dat (each radius and confined run of the part:
-/// the measured force's mean and standard error over the seeds, and each form's); `title` heads it.
+/// the measured force's mean and standard error over the seeds, and each form's), and the
+/// variables figures/confined_soft.gp draws it with (OUT/NAME-vars.gp); `title` heads them.
 SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part, const std::string& plan_path,
                                 const std::vector<ProbeWallForce>& soft, const std::vector<ProbeWallForce>& confined,
                                 const SoftSoftVersion::Form& baseline, const std::string& title, const std::string& out_dir,

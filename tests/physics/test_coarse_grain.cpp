@@ -235,7 +235,7 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
       EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
     }
   };
-  refused("held_out: [triangle", "held_out: [cube, triangle", "also in fit");
+  refused("held_out: [triangle", "held_out: [cube, triangle", "also fitted");
   refused("held_out: [triangle", "held_out: [hexagon", "allowed: one, opposite");
   refused("delta_n: [0.05, 0.1", "delta_n: [0.1, 0.05", "must increase");
   refused("  candidates:", "  colour: red\n  candidates:", "colour");
@@ -289,7 +289,9 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("    held_out: [tetrahedral]", "    held_out: [square]", "not run for confined kind");
   refused("    held_out: [tetrahedral]", "    held_out: [cube]", "also fitted");
   refused("    soft_forms: [volumetric-union, onset-shift]", "    soft_forms: [volumetric, onset-shift]", "soft_forms");
-  refused("    held_out_kinds: [soft+walls-0.15]", "    held_out_kinds: [soft+walls-0.3]", "not a confined kind");
+  refused("    held_out_kinds: [soft+walls-0.15]", "    held_out_kinds: [soft+walls-0.3]", "allowed: soft+walls-0.1, soft+walls-0.2, soft+walls-0.15");
+  refused("    soft_forms: [volumetric-union, onset-shift]", "    soft_forms: [stress]", "soft_forms");
+  refused("    held_out: [square, pyramid]", "    held_out: []", "an empty list is not allowed");
 }
 
 }  // namespace

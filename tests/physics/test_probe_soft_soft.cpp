@@ -117,6 +117,20 @@ TEST(ManyBodyProbeLaws, TheFifthPartFindsTheStressTermThatMadeTheProbe) {
   EXPECT_GT(f.form("fourth").held_out.rms_log, 0.3);
 }
 
+// The stress term written out: κ p̄ π Rs² a(Δn) with p̄ half the centre's p = others_Fn / (4π Rs²)
+// (ProbeLaw::stress is κ / 2, as the mean rule halves it), on the law alone.
+TEST(ManyBodyProbeLaws, TheStressTermIsTheNeighboursStressOverTheContactsBase) {
+  ProbeLaw law{"volumetric-union", 0.25, {{"r", confined_eq7(40.0, 2.5, -0.05)}}};
+  const ProbeArrangement a = builtin_arrangement("cube:soft+walls-0.2", 1);
+  ProbeWallForce p = probe_point(a, "r", 1, {0.1, 0.2, 0.2, 0.2, 0.2, 0.2}, 0, 0.0);
+  p.others_Fn = 3.0;
+  const double alone = law.predict(p), kappa = 0.8, Rs = 0.016, pi = std::acos(-1.0);
+  law.stress = kappa / 2.0;
+  const double pbar = 0.5 * p.others_Fn / (4.0 * pi * Rs * Rs), base = pi * Rs * Rs * (2.0 * 0.1 - 0.1 * 0.1);
+  EXPECT_NEAR(law.predict(p), alone + kappa * pbar * base, 1e-12);
+  EXPECT_DOUBLE_EQ(law.predict_alone(p), alone);
+}
+
 // A confined kind's file: the first contact at the row's Δn, the others' walls at D.
 TEST(ManyBodyProbeLaws, AConfinedFileHasItsWallsAtD) {
   const std::string path = (std::filesystem::temp_directory_path() / "softpack-confined-probe.dat").string();
