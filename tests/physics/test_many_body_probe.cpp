@@ -17,15 +17,10 @@
 #include "coarse/kinematics.hpp"
 #include "formats/law_file.hpp"
 #include "core/error.hpp"
+#include "support/power_law.hpp"
 
 namespace softpack {
 namespace {
-
-fit::PowerLawFit eq7(double a, double b, double c) {
-  fit::PowerLawFit f;
-  f.a = a, f.b = b, f.c = c, f.delta = std::pow(-c / a, 1.0 / b);
-  return f;
-}
 
 TEST(ManyBodyProbeLaws, CapDepthInvertsCapVolume) {
   EXPECT_EQ(cap_volume(1.0), 0.5);  // a hemisphere
@@ -37,7 +32,7 @@ TEST(ManyBodyProbeLaws, CapDepthInvertsCapVolume) {
 }
 
 TEST(ManyBodyProbeLaws, EveryCandidateIsThePairwiseLawForOneContactAndForNoParameter) {
-  ProbeLaw law{"pairwise", 0.0, {{"r", eq7(40.0, 2.5, -0.05)}}};
+  ProbeLaw law{"pairwise", 0.0, {{"r", testing::eq7_fit(40.0, 2.5, -0.05)}}};
   const ProbeWallForce one{"r", "one", 1, {0.3}, 0, 0.0};
   const ProbeWallForce two{"r", "opposite", 1, {0.3, 0.2}, 0, 0.0};
   const double F1 = 40.0 * std::pow(0.3, 2.5) - 0.05;
@@ -83,7 +78,7 @@ TEST(ManyBodyProbeLaws, TheRuleFindsTheLawThatMadeTheProbe) {
   plan.held_out = {"orthogonal-half", "triangle"};
   plan.candidates = {"pairwise", "volumetric", "ratio"};
   plan.force_floor = 0.01, plan.tie_factor = 1.1;
-  const ProbeLaw truth{"volumetric", 0.6, {{"r", eq7(40.0, 2.5, -0.05)}}};
+  const ProbeLaw truth{"volumetric", 0.6, {{"r", testing::eq7_fit(40.0, 2.5, -0.05)}}};
   const std::map<std::string, std::vector<double>> w{{"one", {1.0}}, {"opposite", {1.0, 1.0}}, {"cube", {1, 1, 1, 1, 1, 1}},
                                                      {"orthogonal-half", {1.0, 0.5}}, {"triangle", {1.0, 1.0, 1.0}}};
   std::vector<ProbeWallForce> walls;
@@ -118,7 +113,7 @@ TEST(ManyBodyProbeLaws, TheSecondPartReadsRatiosErrorsAndTheShearAsMade) {
   plan.force_floor = 0.01;
   plan.body_groups = {{"grain-1", {"one", "opposite", "cube"}}};
   plan.shear_arrangements = {"one", "cube"}, plan.shear_delta_n = {0.2}, plan.shear_ht = {0.0025, 0.005, 0.1};
-  const fit::PowerLawFit wall = eq7(40.0, 2.5, -0.05), grain = eq7(20.0, 2.5, -0.025);
+  const fit::PowerLawFit wall = testing::eq7_fit(40.0, 2.5, -0.05), grain = testing::eq7_fit(20.0, 2.5, -0.025);
   const ProbeLaw truth{"volumetric", 0.6, {{"r", grain}}};
   const std::map<std::string, std::vector<double>> w{{"one", {1.0}}, {"opposite", {1.0, 1.0}}, {"cube", {1, 1, 1, 1, 1, 1}}};
   std::vector<ProbeWallForce> walls, bodies;
@@ -205,7 +200,7 @@ TEST(ManyBodyProbeLaws, TheThirdVersionFindsTheLawThatMadeTheProbe) {
   plan.body_groups = {{"wall", {"random-8", "random-7"}}, {"grain-0.5", {"one", "opposite", "cube"}}, {"grain-2", {"one", "tetrahedral"}},
                       {"soft", {"one", "opposite", "tetrahedral"}}};
   plan.third = ManyBodyProbe::ThirdVersionPlan{{"volumetric", "volumetric-union"}, {"random-8"}, {"random-7"}, {"grain-0.5"}, {"grain-2"}};
-  const fit::PowerLawFit wall = eq7(40.0, 2.5, -0.05), soft = eq7(40.0 / 3.0, 2.5, -0.05 / 3.0);
+  const fit::PowerLawFit wall = testing::eq7_fit(40.0, 2.5, -0.05), soft = testing::eq7_fit(40.0 / 3.0, 2.5, -0.05 / 3.0);
   std::vector<ProbeWallForce> walls, bodies;
   for (const std::uint64_t seed : plan.seeds) {
     const auto add = [&](const std::string& name, std::vector<ProbeWallForce>& to) {

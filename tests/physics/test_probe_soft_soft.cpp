@@ -9,15 +9,10 @@
 
 #include "coarse/probe_soft_soft.hpp"
 #include "core/error.hpp"
+#include "support/power_law.hpp"
 
 namespace softpack {
 namespace {
-
-fit::PowerLawFit confined_eq7(double a, double b, double c) {
-  fit::PowerLawFit f;
-  f.a = a, f.b = b, f.c = c, f.delta = std::pow(-c / a, 1.0 / b);
-  return f;
-}
 
 // A synthetic probe of the soft-soft forms (coarse/probe_soft_soft.hpp): soft arrangements `one`,
 // `opposite`, `cube` and confined kinds at walls 0.1 and 0.2 (opposite, tetrahedral, cube) and 0.15
@@ -38,7 +33,7 @@ SyntheticSoftProbe synthetic_soft_probe(ProbeLaw truth) {
   plan.confined_groups = {{"soft+walls-0.1", {"opposite", "tetrahedral", "cube"}},
                           {"soft+walls-0.2", {"opposite", "tetrahedral", "cube"}},
                           {"soft+walls-0.15", {"square", "pyramid"}}};
-  const fit::PowerLawFit X = confined_eq7(40.0 / 3.0, 2.5, -0.05 / 3.0), W = confined_eq7(40.0, 2.5, -0.05);
+  const fit::PowerLawFit X = testing::eq7_fit(40.0 / 3.0, 2.5, -0.05 / 3.0), W = testing::eq7_fit(40.0, 2.5, -0.05);
   truth.F1 = {{"r", X}, {"s", X}};
   const ProbeLaw walls{"volumetric-union", 0.3, {{"r", W}, {"s", W}}};
   for (const std::uint64_t seed : plan.seeds)
@@ -120,7 +115,7 @@ TEST(ManyBodyProbeLaws, TheFifthPartFindsTheStressTermThatMadeTheProbe) {
 // The stress term written out: κ p̄ π Rs² a(Δn) with p̄ half the centre's p = others_Fn / (4π Rs²)
 // (ProbeLaw::stress is κ / 2, as the mean rule halves it), on the law alone.
 TEST(ManyBodyProbeLaws, TheStressTermIsTheNeighboursStressOverTheContactsBase) {
-  ProbeLaw law{"volumetric-union", 0.25, {{"r", confined_eq7(40.0, 2.5, -0.05)}}};
+  ProbeLaw law{"volumetric-union", 0.25, {{"r", testing::eq7_fit(40.0, 2.5, -0.05)}}};
   const ProbeArrangement a = builtin_arrangement("cube:soft+walls-0.2", 1);
   ProbeWallForce p = probe_point(a, "r", 1, {0.1, 0.2, 0.2, 0.2, 0.2, 0.2}, 0, 0.0);
   p.others_Fn = 3.0;
