@@ -174,8 +174,10 @@ define version_verdict
 	@$(RUN) $(COARSE_TOOL) soft-contacts --probe $(PROBE_PLAN) --config $(DATA)/many-body-v$(1)/profiles/many-body.yaml \
 	  --media $(DATA)/many-body-v$(1)/many-body/media --out $(DATA)/many-body-v$(1)/report --law-version $(1)
 endef
-.PHONY: many-body-v3-verdict many-body-v4-verdict
+.PHONY: many-body-v3-verdict many-body-v4-verdict many-body-v5-verdict
 many-body-v3-verdict: | $(TOOLS)  ## the law's third version's acceptance on its media, and its census (DATA/many-body-v3/report/validation.md, contacts.md)
 	$(call version_verdict,3,many-body)
 many-body-v4-verdict: | $(TOOLS)  ## the fourth version's and the third's acceptance on the fourth's media, and its census (DATA/many-body-v4/report/)
 	$(call version_verdict,4,many-body-v3 many-body)
+many-body-v5-verdict: | $(TOOLS)  ## the fifth version's (the stress term) and the fourth's acceptance on the fifth's media, and its census (DATA/many-body-v5/report/)
+	$(call version_verdict,5,many-body-v4 many-body)
