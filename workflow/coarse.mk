@@ -118,18 +118,22 @@ many-body-census: | $(TOOLS)  ## the validation media's soft-particle contacts a
 .PHONY: many-body-verdict
 many-body-verdict: | $(TOOLS)  ## the many-body law's acceptance on the validation media (DATA/many-body-validation/report/validation.md)
 	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-validation --out $(DATA)/many-body-validation/report
-# The third version's media seeds (softpack-coarse seeds --probe --media-of 3), asked of the tool
-# once and only for the goals that run on them; empty when the tool is not built yet or refuses the
-# plan (those goals then stop, saying so).
+# A version's media seeds (softpack-coarse seeds --probe --media-of N), asked of the tool once and
+# only for the goals that run on them; empty when the tool is not built yet or refuses the plan
+# (those goals then stop, saying so).
 V3_MEDIA_GOALS := many-body-in-place many-body-speed
-V3_MEDIA_SEEDS := $(if $(filter $(V3_MEDIA_GOALS),$(MAKECMDGOALS)),$(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --media-of 3))
-v3_media_seeds_known = $(if $(V3_MEDIA_SEEDS),,$(error $(1): $(COARSE_TOOL) gave no media seeds when make started (not built, or it refused the plan: see $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --media-of 3); run make build, then make $(1) again))
+V5_MEDIA_GOALS := many-body-v5-speed
+media_seeds_of = $(if $(filter $(V$(1)_MEDIA_GOALS),$(MAKECMDGOALS)),$(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --media-of $(1)))
+V3_MEDIA_SEEDS := $(call media_seeds_of,3)
+V5_MEDIA_SEEDS := $(call media_seeds_of,5)
+# $(1): the goal; $(2): the version
+media_seeds_known = $(if $(V$(2)_MEDIA_SEEDS),,$(error $(1): $(COARSE_TOOL) gave no media seeds when make started (not built, or it refused the plan: see $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --media-of $(2)); run make build, then make $(1) again))
 # The law in place (paper/many-body.md, "Next: measuring the law in place"): the third version's
 # media compressed resolved again, each site's pushes against the law's (coarse/in_place.hpp).
 IN_PLACE_DIR ?= $(DATA)/many-body-v3/in-place
 .PHONY: many-body-in-place
 many-body-in-place: $(foreach s,$(V3_MEDIA_SEEDS),$(IN_PLACE_DIR)/seed-$(s).dat) | $(TOOLS)  ## the law in place on the third version's media (DATA/many-body-v3/in-place/in-place.md)
-	$(call v3_media_seeds_known,many-body-in-place)
+	$(call media_seeds_known,many-body-in-place,3)
 	@$(RUN) $(COARSE_TOOL) in-place-report --probe $(PROBE_PLAN) --dir $(IN_PLACE_DIR) --law-version 3
 $(IN_PLACE_DIR)/seed-%.dat: $(DATA)/many-body-v3/reference/media/seed-%.h5 $(DATA)/many-body/report/laws.json | $(TOOLS)
 	@mkdir -p $(@D)
@@ -146,25 +150,33 @@ many-body-kinematics: | $(TOOLS)  ## the soft medium's contacts against the reso
 	@$(RUN) $(COARSE_TOOL) kinematics --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --law-version 3
 
 # The speed-up side by side (issue 33's target; paper/many-body.md, "Next: the speed-up side by
-# side"): each third-version medium resolved, soft pairwise and soft many-body in one process on
-# one thread (coarse/speed.hpp), one seed after the other even under -j (each seed's file waits for
-# the previous one's); run nothing else beside it. About 15 CPU-minutes. A seed is timed again when
-# its medium, the law file or the settings change, not when the code does: to time new code, remove
-# DATA/many-body-v3/speed/seed-*.dat first.
-SPEED_DIR ?= $(DATA)/many-body-v3/speed
-.PHONY: many-body-speed
-many-body-speed: $(foreach s,$(V3_MEDIA_SEEDS),$(SPEED_DIR)/seed-$(s).dat) | $(TOOLS)  ## the speed-up over resolved side by side (DATA/many-body-v3/speed/speed.md)
-	$(call v3_media_seeds_known,many-body-speed)
+# side"): each medium of a version resolved, soft pairwise and soft many-body (the version's study's
+# profiles) in one process on one thread (coarse/speed.hpp), one seed after the other even under -j
+# (each seed's file waits for the previous one's); run nothing else beside it. About 15 CPU-minutes
+# a version. A seed is timed again when its medium, the law file or the settings change, not when
+# the code does: to time new code, remove DATA/many-body-vN/speed/seed-*.dat first.
+#   make many-body-speed      the third version's media (DATA/many-body-v3/speed/speed.md)
+#   make many-body-v5-speed   the fifth's, with the stress term's pass (DATA/many-body-v5/speed/speed.md)
+.PHONY: many-body-speed many-body-v5-speed
+many-body-speed: $(foreach s,$(V3_MEDIA_SEEDS),$(DATA)/many-body-v3/speed/seed-$(s).dat) | $(TOOLS)  ## the speed-up over resolved side by side (DATA/many-body-v3/speed/speed.md)
+	$(call media_seeds_known,many-body-speed,3)
 	@$(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --law-version 3 --report
+many-body-v5-speed: $(foreach s,$(V5_MEDIA_SEEDS),$(DATA)/many-body-v5/speed/seed-$(s).dat) | $(TOOLS)  ## the same on the fifth version's media (DATA/many-body-v5/speed/speed.md)
+	$(call media_seeds_known,many-body-v5-speed,5)
+	@$(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v5 --law-version 5 --report
+# $(1): the version; $(2): its many-body law file; $(3): the seed; $(4): the seed timed before it
 define speed_seed
-$(SPEED_DIR)/seed-$(1).dat: $(DATA)/many-body-v3/reference/media/seed-$(1).h5 $(DATA)/many-body/report/laws.json \
-  $(DATA)/many-body-v3/profiles/reference.yaml $(DATA)/many-body-v3/profiles/many-body.yaml | $(TOOLS) $(2)
+$(DATA)/many-body-v$(1)/speed/seed-$(3).dat: $(DATA)/many-body-v$(1)/reference/media/seed-$(3).h5 $(2) \
+  $(DATA)/many-body-v$(1)/profiles/reference.yaml $(DATA)/many-body-v$(1)/profiles/many-body.yaml | $(TOOLS) $(4)
 	@mkdir -p $$(@D)
-	@SOFTPACK_THREADS=1 $(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --law-version 3 --seed $(1) 2> $$(@D)/seed-$(1).log \
-	  || { echo "speed: seed $(1) FAILED (log: $$(@D)/seed-$(1).log)"; tr '\r' '\n' < $$(@D)/seed-$(1).log | tail -3; exit 1; }
-	@echo "$$$$(tr '\r' '\n' < $$(@D)/seed-$(1).log | tail -1)"
+	@SOFTPACK_THREADS=1 $(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v$(1) --law-version $(1) --seed $(3) 2> $$(@D)/seed-$(3).log \
+	  || { echo "speed: seed $(3) FAILED (log: $$(@D)/seed-$(3).log)"; tr '\r' '\n' < $$(@D)/seed-$(3).log | tail -3; exit 1; }
+	@echo "$$$$(tr '\r' '\n' < $$(@D)/seed-$(3).log | tail -1)"
 endef
-$(foreach s,$(V3_MEDIA_SEEDS),$(eval $(call speed_seed,$(s),$(if $(prev),$(SPEED_DIR)/seed-$(prev).dat)))$(eval prev := $(s)))
+prev :=
+$(foreach s,$(V3_MEDIA_SEEDS),$(eval $(call speed_seed,3,$(DATA)/many-body/report/laws.json,$(s),$(if $(prev),$(DATA)/many-body-v3/speed/seed-$(prev).dat)))$(eval prev := $(s)))
+prev :=
+$(foreach s,$(V5_MEDIA_SEEDS),$(eval $(call speed_seed,5,$(DATA)/many-body/report/laws-v5.json,$(s),$(if $(prev),$(DATA)/many-body-v5/speed/seed-$(prev).dat)))$(eval prev := $(s)))
 # A version of the law judged on its own media (paper/many-body.md), after make many-body-vN: the
 # criterion on each soft setting of its study (and the resolved one), then the census of its
 # many-body setting. $(1): the version; $(2): its soft settings.

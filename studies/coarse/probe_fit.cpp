@@ -22,6 +22,19 @@ ProbeWallForce probe_point(const ProbeArrangement& a, const std::string& radius,
   return p;
 }
 
+void set_other_contacts(ProbeWallForce* row, std::size_t n, const ProbeArrangement& a) {
+  double total = 0.0;
+  for (std::size_t k = 0; k < n; ++k) total += row[k].Fn;
+  for (std::size_t k = 0; k < n; ++k) {
+    row[k].others_Fn = total - row[k].Fn, row[k].others_along = 0.0;
+    for (std::size_t l = 0; l < n; ++l)
+      if (l != k) {
+        const double c = a.walls.at(l).u.dot(a.walls.at(k).u);
+        row[k].others_along += row[l].Fn * c * c;
+      }
+  }
+}
+
 std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::string& radius, std::uint64_t seed) {
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("{}: cannot read the probe file (make many-body-probe writes it)", path));
@@ -56,21 +69,33 @@ std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::
     if (!(s >> n >> dn) || n != w.size()) throw fail(fmt::format("expected '{} delta_n' and {} forces", w.size(), w.size()));
     std::vector<double> delta_n;  // with +walls-D the other contacts' walls stand at D (their w_k D)
     for (const double wk : w) delta_n.push_back(wk * (delta_n.empty() || !(geometry.body.walls_at > 0.0) ? dn : geometry.body.walls_at));
-    double total = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
       double F = 0.0;
       if (!(s >> F) || !std::isfinite(F)) throw fail(fmt::format("wall {}: no finite force", k + 1));
       out.push_back(k == 0 ? probe_point(geometry, radius, seed, delta_n, k, F) : out.back());
-      out.back().wall = k, out.back().Fn = F, total += F;
+      out.back().wall = k, out.back().Fn = F;
     }
-    for (std::size_t k = 0; k < n; ++k) out[out.size() - n + k].others_Fn = total - out[out.size() - n + k].Fn;
+    set_other_contacts(out.data() + (out.size() - n), n, geometry);
   }
   return out;
 }
 
 double ProbeLaw::predict(const ProbeWallForce& w) const {
   const double F = predict_alone(w);
-  return stress > 0.0 ? F + stress * w.others_Fn / 4.0 * cap_area(w.delta_n[w.wall]) : F;
+  if (!(stress > 0.0)) return F;
+  // p π Rs² over κ: mean Σ F_l / 4; along the line 3 Σ F_l (u_l·u_k)² / 4; across it
+  // 3 Σ F_l (1 − (u_l·u_k)²) / 8 (own contact excluded: each sum is over the others)
+  const double p_area = stress_form == StressForm::normal    ? 3.0 * w.others_along / 4.0
+                        : stress_form == StressForm::lateral ? 3.0 * (w.others_Fn - w.others_along) / 8.0
+                                                             : w.others_Fn / 4.0;
+  return F + stress * std::max(0.0, p_area) * cap_area(w.delta_n[w.wall]);
+}
+
+ProbeLaw::StressForm ProbeLaw::stress_form_of(const std::string& name) {
+  if (name == "stress") return StressForm::mean;
+  if (name == "stress-normal") return StressForm::normal;
+  if (name == "stress-lateral") return StressForm::lateral;
+  throw InputError(fmt::format("'{}' is not a stress form; allowed: stress, stress-normal, stress-lateral", name));
 }
 
 double ProbeLaw::predict_alone(const ProbeWallForce& w) const {
@@ -175,14 +200,20 @@ double jackknife_parameter(const std::string& name, double hi, const std::vector
 
 ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
                        const ManyBodyProbe& plan) {
+  return probe_error(law, walls, arrangements, plan, [&](std::size_t i) { return law.predict(walls[i]); });
+}
+
+ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
+                       const ManyBodyProbe& plan, const std::function<double(std::size_t)>& predict) {
   ProbeError e;
   double sum = 0.0, sum2 = 0.0;
   std::map<std::string, double> floors;
   for (const auto& [radius, f] : law.F1) floors[radius] = floor_of(law, radius, plan);
-  for (const ProbeWallForce& w : walls) {
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    const ProbeWallForce& w = walls[i];
     if (!arrangements.empty() && std::find(arrangements.begin(), arrangements.end(), w.arrangement) == arrangements.end()) continue;
     const double floor = floors.at(w.radius);
-    const double predicted = law.count_predicted_force || w.Fn > floor ? law.predict(w) : 0.0;
+    const double predicted = law.count_predicted_force || w.Fn > floor ? predict(i) : 0.0;
     if (!(w.Fn > floor) && !(law.count_predicted_force && predicted > floor)) continue;
     const double r = std::log(std::max(predicted, floor) / std::max(w.Fn, floor));
     sum += r, sum2 += r * r, ++e.points;

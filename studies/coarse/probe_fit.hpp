@@ -12,6 +12,8 @@
 //   ratio        F_k = F1(Δn_k) (Σ_l v(Δn_l) / v(Δn_k))^α
 //   onset-shift  F_k = F1(d*) a(Δn_k) / a(d*),  d* = Δn_k + γ (E_union − v(Δn_k))   (the fourth part's)
 //   any of them with ProbeLaw::stress: + κ p π Rs² a(Δn_k), p = Σ_{l≠k} F_l / (4π Rs²)     (the fifth part's)
+//     or p = 3 Σ_{l≠k} F_l (u_l·u_k)² / (4π Rs²) along the contact, 3 Σ_{l≠k} F_l (1 − (u_l·u_k)²) / (8π Rs²)
+//     across it (ProbeLaw::stress_form; the sixth part's)
 //
 // A candidate's error on a set of points: the root mean square of ln(F_predicted / F_measured) over
 // the points whose measured force exceeds force_floor × F1(largest Δn), a prediction below that floor
@@ -40,12 +42,17 @@ struct ProbeWallForce {
   PressingBody body{};          ///< what presses (the arrangement's NAME:BODY; a wall without)
   double E_union = 0.0;         ///< the volume their caps cut together (cap_union_volume), over the soft-particle's
   double others_Fn = 0.0;       ///< the sum of the point's other contacts' measured forces [N]
+  double others_along = 0.0;    ///< Σ_{l≠k} F_l (u_l·u_k)²: their share along this contact's line [N]
 };
 
 /// Wall `wall` of arrangement `a` (its directions and shares) at the arrangement's Δn `dn`, with
 /// its caps' union E_union and the force Fn.
 ProbeWallForce probe_point(const ProbeArrangement& a, const std::string& radius, std::uint64_t seed, const std::vector<double>& delta_n,
                            std::size_t wall, double Fn);
+
+/// others_Fn and others_along of each of the n points of one row (its walls in the order of
+/// arrangement a's), from their forces Fn.
+void set_other_contacts(ProbeWallForce* row, std::size_t n, const ProbeArrangement& a);
 
 /// The walls of a probe file (PROBE_DIR/RADIUS/seed-S.dat); InputError naming the file and line.
 std::vector<ProbeWallForce> read_probe_file(const std::string& path, const std::string& radius, std::uint64_t seed);
@@ -69,6 +76,12 @@ struct ProbeLaw {
   /// with p = others_Fn / (4π Rs²) and κ = stress; the fifth part's `stress` form, where the mean
   /// rule halves κ as it halves β).
   double stress = 0.0;
+  /// Which stress the term takes (the sixth part's forms): the mean (stress), along the
+  /// contact's line (stress-normal) or across it (stress-lateral).
+  enum class StressForm { mean, normal, lateral };
+  StressForm stress_form = StressForm::mean;
+  /// The form of a name: stress, stress-normal, stress-lateral (InputError otherwise).
+  static StressForm stress_form_of(const std::string& name);
   /// The force of wall w.wall of w's point.
   double predict(const ProbeWallForce& w) const;
   /// The same without the stress term.
@@ -99,6 +112,11 @@ struct ProbeAnalysis {
 /// The points' error under `law`, for the points of the listed arrangements (all when empty).
 ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
                        const ManyBodyProbe& plan);
+
+/// The same with walls[i]'s prediction predict(i) (the law's floors and counting rule; a fit that
+/// has the law's forces at hand).
+ProbeError probe_error(const ProbeLaw& law, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
+                       const ManyBodyProbe& plan, const std::function<double(std::size_t)>& predict);
 
 /// F1 of each radius: Eq. 7 (relative residuals, the plan's floor as onset) on the mean over the
 /// seeds of the single contact `one` (the arrangement `one`, or `one:BODY` of another body).

@@ -146,7 +146,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
   for (const ProbeCandidate& c : a.candidates)
     if (c.law.name == "volumetric") v = &c;
   std::optional<ThirdVersion> third;
-  std::optional<SoftSoftVersion> fourth, fifth;
+  std::optional<SoftSoftVersion> fourth, fifth, sixth;
   if (v) try {
       const std::vector<ProbeWallForce> bodies = read_bodies_files(plan, probe_dir, plan.body_kinds());
       const SecondPart second = write_second_part(plan, plan_path, walls, bodies, read_shear_files(plan, probe_dir), v->law.parameter, out_dir);
@@ -167,6 +167,13 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
             fifth = write_soft_soft(plan, *plan.fifth, plan_path, bodies, confined, base,
                                     "The probe's fifth part: the soft-soft push carried by the neighbours' stress", out_dir, "fifth-version");
             md += fmt::format("\nThe probe's fifth part (the neighbours' stress): `{}/fifth-version.md`.\n", out_dir);
+            if (plan.sixth) {  // against the fifth's stress term on the fourth's β_ss
+              base = fifth->form("stress");
+              base.name = "fifth";
+              sixth = write_soft_soft(plan, *plan.sixth, plan_path, bodies, confined, base,
+                                      "The probe's sixth part: the neighbour's stress along the contact", out_dir, "sixth-version");
+              md += fmt::format("\nThe probe's sixth part (the neighbour's stress along the contact): `{}/sixth-version.md`.\n", out_dir);
+            }
           }
         }
       }

@@ -125,7 +125,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   const ConfigNode root = ConfigNode::load_file(path);
   root.allow_only({"many_body_probe"});
   const ConfigNode c = root.at("many_body_probe");
-  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "confined", "shear", "third_version", "fourth_version", "fifth_version", "validation"});
+  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "confined", "shear", "third_version", "fourth_version", "fifth_version", "sixth_version", "validation"});
   ManyBodyProbe p;
   std::ostringstream text;
   text << c.yaml();
@@ -246,15 +246,21 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
       fitted_or_held_out(*fit_list, *held_list, t.at(key));
     p.third = third;
   }
-  for (const auto& [key, before] : {std::pair{"fourth_version", "third_version"}, std::pair{"fifth_version", "fourth_version"}}) {
+  for (const auto& [key, before] :
+       {std::pair{"fourth_version", "third_version"}, std::pair{"fifth_version", "fourth_version"}, std::pair{"sixth_version", "fifth_version"}}) {
     if (!c.has(key)) continue;
     const ConfigNode f = c.at(key);
-    f.allow_only({"soft_forms", "kinds", "fit", "held_out_kinds", "held_out"});
+    const bool sixth = std::string(key) == "sixth_version";
+    f.allow_only(sixth ? std::vector<std::string>{"soft_forms", "joint_beta_ss", "kinds", "fit", "held_out_kinds", "held_out"}
+                       : std::vector<std::string>{"soft_forms", "kinds", "fit", "held_out_kinds", "held_out"});
     if (!c.has(before) || p.confined_groups.empty()) f.fail(fmt::format("needs {} (the soft-soft law to beat) and confined (its runs)", before));
     ManyBodyProbe::SoftSoftPlan plan;
-    // the stress form stands on the fourth version's law (its baseline), so only the fifth has it
-    plan.forms = names(f.at("soft_forms"), std::string(key) == "fifth_version" ? std::vector<std::string>{"volumetric-union", "onset-shift", "stress"}
-                                                                               : std::vector<std::string>{"volumetric-union", "onset-shift"});
+    // the stress forms stand on the fourth version's law (their baseline's), so only the fifth and
+    // sixth have them; the sixth's take the stress along or across the contact too
+    plan.forms = names(f.at("soft_forms"), sixth                                 ? std::vector<std::string>{"stress", "stress-normal", "stress-lateral"}
+                                           : std::string(key) == "fifth_version" ? std::vector<std::string>{"volumetric-union", "onset-shift", "stress"}
+                                                                                 : std::vector<std::string>{"volumetric-union", "onset-shift"});
+    if (sixth && f.has("joint_beta_ss")) plan.joint_beta_ss = f.at("joint_beta_ss").boolean();
     const auto kinds_of = [&](const std::string& k) {
       std::vector<std::string> out;
       for (const ConfigNode& item : f.at(k).items()) {
@@ -269,11 +275,32 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
       return out;
     };
     const std::vector<std::string> kinds = kinds_of("kinds"), held_kinds = f.has("held_out_kinds") ? kinds_of("held_out_kinds") : kinds;
+    const auto runs_of = [&](const std::string& kind) -> const std::vector<std::string>& {
+      return std::find_if(p.confined_groups.begin(), p.confined_groups.end(), [&](const auto& g) { return g.first == kind; })->second;
+    };
     for (const auto& [list, k, of] : {std::tuple{&plan.fit, "fit", &kinds}, std::tuple{&plan.held_out, "held_out", &held_kinds}}) {
-      const std::vector<std::string> arrangements = names(f.at(k));
+      std::vector<std::string> arrangements = names(f.at(k));
+      if (sixth && std::string(k) == "fit") {  // the sixth's fit may name a run NAME:KIND as it is
+        std::vector<std::string> crossed;
+        for (const std::string& a : arrangements) {
+          const auto colon = a.find(':');
+          if (colon == std::string::npos) {
+            crossed.push_back(a);
+            continue;
+          }
+          const std::string name = a.substr(0, colon), kind = a.substr(colon + 1);
+          const std::vector<std::string> allowed = p.confined_kinds();
+          if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
+            f.at(k).fail(fmt::format("'{}': '{}' is not a confined kind of the plan; allowed: {}", a, kind, fmt::join(allowed, ", ")));
+          if (std::find(runs_of(kind).begin(), runs_of(kind).end(), name) == runs_of(kind).end())
+            f.at(k).fail(fmt::format("'{}' is not run for confined kind {}; allowed: {}", name, kind, fmt::join(runs_of(kind), ", ")));
+          list->push_back(a);
+        }
+        arrangements = crossed;
+      }
       plain(f.at(k), arrangements);
       for (const std::string& kind : *of) {
-        const auto& runs = std::find_if(p.confined_groups.begin(), p.confined_groups.end(), [&](const auto& g) { return g.first == kind; })->second;
+        const auto& runs = runs_of(kind);
         for (const std::string& a : arrangements) {
           if (std::find(runs.begin(), runs.end(), a) == runs.end())
             f.at(k).fail(fmt::format("'{}' is not run for confined kind {}; allowed: {}", a, kind, fmt::join(runs, ", ")));
@@ -282,7 +309,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
       }
     }
     fitted_or_held_out(plan.fit, plan.held_out, f.at("held_out"));
-    (std::string(key) == "fourth_version" ? p.fourth : p.fifth) = plan;
+    (std::string(key) == "fourth_version" ? p.fourth : std::string(key) == "fifth_version" ? p.fifth : p.sixth) = plan;
   }
   const ConfigNode val = c.at("validation");
   std::vector<std::string> keys{"strain_range", "bound_in_standard_errors"};

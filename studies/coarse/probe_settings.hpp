@@ -46,13 +46,15 @@ struct ManyBodyProbe {
   /// which runs fit and test them, as NAME:KIND of confined (the plan's `fit` or `held_out`
   /// arrangements of each of its `kinds`, or of `held_out_kinds`).
   struct SoftSoftPlan {
-    std::vector<std::string> forms;          ///< volumetric-union, onset-shift, stress
+    std::vector<std::string> forms;          ///< volumetric-union, onset-shift, stress, stress-normal, stress-lateral
     std::vector<std::string> fit, held_out;  ///< NAME:KIND of confined_groups
+    bool joint_beta_ss = false;              ///< the sixth's: β_ss fitted with κ (else the baseline's)
   };
   /// `fourth_version` (paper/many-body.md, "The fourth part's analysis"; against the third
-  /// version's soft-soft law) and `fifth_version` ("Next: the soft-soft push carried by the
-  /// neighbours' stress"; against the fourth's). Absent: none (each needs the one before).
-  std::optional<SoftSoftPlan> fourth, fifth;
+  /// version's soft-soft law), `fifth_version` ("Next: the soft-soft push carried by the
+  /// neighbours' stress"; against the fourth's) and `sixth_version` ("Next: the neighbour's stress
+  /// along the contact"; against the fifth's). Absent: none (each needs the one before).
+  std::optional<SoftSoftPlan> fourth, fifth, sixth;
   /// The media seeds each version of the law is judged on: 1, validation.media_seeds (the first
   /// law's); N >= 2, validation.vN_media_seeds (none before that version). No seed in two.
   std::map<int, std::vector<std::uint64_t>> media_seeds;

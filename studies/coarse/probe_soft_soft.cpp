@@ -19,22 +19,61 @@ namespace {
 // the mean rule halves, so the law below takes half of it.
 constexpr double kParameterMax = 10.0, kMeanRule = 0.5;
 
-// The form's law with its engine parameter (a stress form on its baseline's law).
+bool listed(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
+// The form's law with its engine parameters (a stress form on its β_ss's volumetric-union law).
 ProbeLaw law_of(const SoftSoftVersion::Form& f, const std::map<std::string, fit::PowerLawFit>& X) {
-  ProbeLaw law{f.base, kMeanRule * (f.name == "stress" ? f.beta_ss : f.parameter.value), X};
-  if (f.name == "stress") law.stress = kMeanRule * f.parameter.value;
+  ProbeLaw law{f.base, kMeanRule * (f.stress.empty() ? f.parameter.value : f.beta_ss.value), X};
+  if (!f.stress.empty()) law.stress = kMeanRule * f.parameter.value, law.stress_form = ProbeLaw::stress_form_of(f.stress);
   law.count_predicted_force = true;
   return law;
 }
 
-// The form's engine parameter fitted on `fit` of `points` (X fitted again on them).
-double fit_form(const ManyBodyProbe& plan, SoftSoftVersion::Form f, const std::vector<ProbeWallForce>& points, const std::vector<std::string>& fit) {
-  f.parameter = {};
-  const ProbeLaw law = law_of(f, fit_single_contact(plan, points, "one:soft"));
-  return fit_parameter(law, kMeanRule * kParameterMax, points, fit, plan, f.name == "stress" ? &ProbeLaw::stress : &ProbeLaw::parameter) / kMeanRule;
+// x in [0, hi] with the least err(x): a grid of `steps`, then golden sections about its best point.
+template <class Err>
+double least(const Err& err, double hi, int steps) {
+  double best = 0.0, best_e = err(0.0);
+  for (int i = 1; i <= steps; ++i)
+    if (const double x = hi * i / steps, e = err(x); e < best_e) best = x, best_e = e;
+  double a = std::max(0.0, best - hi / steps), b = std::min(hi, best + hi / steps);
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  for (int i = 0; i < 40; ++i) {
+    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    if (err(x1) < err(x2)) b = x2;
+    else a = x1;
+  }
+  const double x = 0.5 * (a + b);
+  return err(x) < best_e ? x : best;
 }
 
-bool listed(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+// The form's engine parameters fitted on `fit` of `points` (X fitted again on them): {its
+// parameter, β_ss} (β_ss the form's own unless joint).
+std::pair<double, double> fit_form(const ManyBodyProbe& plan, SoftSoftVersion::Form f, const std::vector<ProbeWallForce>& points,
+                                   const std::vector<std::string>& fit, bool joint) {
+  f.parameter = {};
+  const auto X = fit_single_contact(plan, points, "one:soft");
+  if (f.stress.empty() || !joint) {
+    const ProbeLaw law = law_of(f, X);
+    const double p = fit_parameter(law, kMeanRule * kParameterMax, points, fit, plan, f.stress.empty() ? &ProbeLaw::parameter : &ProbeLaw::stress);
+    return {p / kMeanRule, f.beta_ss.value};
+  }
+  // β_ss and κ together: for each β_ss the best κ (its error a smooth function of each); the
+  // force is the law's alone plus κ times its term, each computed once per β_ss
+  std::vector<ProbeWallForce> in_fit;
+  for (const ProbeWallForce& w : points)
+    if (listed(fit, w.arrangement)) in_fit.push_back(w);
+  ProbeLaw law = law_of(f, X);
+  std::vector<double> alone(in_fit.size()), term(in_fit.size());
+  const auto kappa_at = [&](double beta) {
+    law.parameter = kMeanRule * beta, law.stress = 1.0;
+    for (std::size_t i = 0; i < in_fit.size(); ++i) alone[i] = law.predict_alone(in_fit[i]), term[i] = law.predict(in_fit[i]) - alone[i];
+    const auto error = [&](double k) { return probe_error(law, in_fit, {}, plan, [&](std::size_t i) { return alone[i] + k * term[i]; }).rms_log; };
+    const double k = least(error, kMeanRule * kParameterMax, 100);
+    return std::pair{k, error(k)};
+  };
+  const double beta = least([&](double b) { return kappa_at(b).second; }, kParameterMax, 50);
+  return {kappa_at(beta).first / kMeanRule, beta};
+}
 
 }  // namespace
 
@@ -71,15 +110,31 @@ SoftSoftVersion analyse_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe
   std::vector<SoftSoftVersion::Form> forms{baseline};
   for (const std::string& name : part.forms) {
     SoftSoftVersion::Form f;
-    f.name = name, f.base = name == "stress" ? baseline.base : name, f.beta_ss = baseline.parameter.value;
+    f.name = name;
+    if (name.rfind("stress", 0) == 0)  // on the baseline's law: its β_ss (a stress baseline's own, else its parameter)
+      f.stress = name, f.base = baseline.base, f.beta_ss = baseline.stress.empty() ? FittedValue{baseline.parameter.value, 0.0} : baseline.beta_ss;
+    else
+      f.base = name;
     forms.push_back(f);
   }
   for (SoftSoftVersion::Form& c : forms) {
     c.held_out_by_radius.clear(), c.by_arrangement.clear();  // a baseline from an earlier part has that part's
     if (&c != &forms.front()) {
-      c.parameter.value = fit_form(plan, c, points, fit);
-      c.parameter.se = jackknife_over_seeds(plan, points, [&](const std::vector<ProbeWallForce>& rest) { return fit_form(plan, c, rest, fit); });
+      const bool joint = part.joint_beta_ss && !c.stress.empty();
+      const auto [value, beta] = fit_form(plan, c, points, fit, joint);
+      c.parameter.value = value;
+      std::vector<double> theta, theta_beta;  // the jackknife over the seeds, both parameters from the same fits
+      for (const std::uint64_t seed : plan.seeds) {
+        std::vector<ProbeWallForce> rest;
+        for (const ProbeWallForce& w : points)
+          if (w.seed != seed) rest.push_back(w);
+        const auto [v, b] = fit_form(plan, c, rest, fit, joint);
+        theta.push_back(v), theta_beta.push_back(b);
+      }
+      c.parameter.se = jackknife_error(theta);
+      if (joint) c.beta_ss = {beta, jackknife_error(theta_beta)};
       if (c.parameter.value > 0.999 * kParameterMax) out.notes.push_back(fmt::format("{}: its parameter at the end of its range [0, {}]", c.name, kParameterMax));
+      if (joint && beta > 0.999 * kParameterMax) out.notes.push_back(fmt::format("{}: its β_ss at the end of its range [0, {}]", c.name, kParameterMax));
     }
     const ProbeLaw law = law_of(c, X);
     c.fit = probe_error(law, points, fit, plan), c.held_out = probe_error(law, points, part.held_out, plan);
@@ -118,7 +173,7 @@ SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::
   const std::vector<std::string> reported = reported_runs(plan, part);
   nlohmann::json j;
   j["plan"] = plan_path, j["code_version"] = code_version(), j["chosen"] = a.chosen, j["enters_engine"] = a.enters_engine, j["notes"] = a.notes;
-  const auto symbol = [](const SoftSoftVersion::Form& c) { return c.name == "stress" ? "κ" : c.base == "onset-shift" ? "γ" : "β_ss"; };
+  const auto symbol = [](const SoftSoftVersion::Form& c) { return !c.stress.empty() ? "κ" : c.base == "onset-shift" ? "γ" : "β_ss"; };
   std::string md = fmt::format(
       "# {} (generated by softpack-coarse probe-report, {})\n\n"
       "Plan: `{}` (paper/many-body.md). Seeds {}. The force on a soft-particle pressing the centre while walls confine it, against "
@@ -127,20 +182,23 @@ SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::
       "jackknife over the seeds; {}'s parameter is its law file's, not fitted here{}.\n\n"
       "| form | parameter (engine's) | fit runs | unconfined soft | held-out runs |",
       title, code_version(), plan_path, fmt::join(plan.seeds, ", "), fmt::join(part.fit, ", "), fmt::join(part.held_out, ", "), baseline.name,
-      std::any_of(a.forms.begin(), a.forms.end(), [](const auto& c) { return c.name == "stress"; }) ? "; stress is on its force" : "");
+      std::any_of(a.forms.begin(), a.forms.end(), [](const auto& c) { return !c.stress.empty(); })
+          ? (part.joint_beta_ss ? "; each stress form's β_ss (in brackets) is fitted with its κ" : "; stress is on its force")
+          : "");
   for (const auto& [radius, Rs] : plan.radii) md += fmt::format(" held out, {} |", radius);
   md += "\n|---|---|---|---|---|";
   for (std::size_t i = 0; i < plan.radii.size(); ++i) md += "---|";
   md += "\n";
   for (const SoftSoftVersion::Form& c : a.forms) {
-    md += fmt::format("| {} | {} {:.3f} ± {:.3f} | {} | {} | {} |", c.name, symbol(c), c.parameter.value, c.parameter.se, error_factor(c.fit),
+    const std::string beneath = c.stress.empty() ? "" : fmt::format(" (β_ss {:.3f} ± {:.3f})", c.beta_ss.value, c.beta_ss.se);
+    md += fmt::format("| {} | {} {:.3f} ± {:.3f}{} | {} | {} | {} |", c.name, symbol(c), c.parameter.value, c.parameter.se, beneath, error_factor(c.fit),
                       error_factor(c.unconfined), error_factor(c.held_out));
     nlohmann::json cj{{"base", c.base},
                       {"parameter", {{"value", c.parameter.value}, {"se", c.parameter.se}}},
                       {"fit", probe_error_json(c.fit)},
                       {"unconfined", probe_error_json(c.unconfined)},
                       {"held_out", probe_error_json(c.held_out)}};
-    if (c.name == "stress") cj["beta_ss"] = c.beta_ss;
+    if (!c.stress.empty()) cj["stress"] = c.stress, cj["beta_ss"] = {{"value", c.beta_ss.value}, {"se", c.beta_ss.se}};
     for (const auto& [radius, e] : c.held_out_by_radius) md += fmt::format(" {} |", error_factor(e)), cj["held_out_by_radius"][radius] = probe_error_json(e);
     for (const auto& [arrangement, e] : c.by_arrangement) cj["arrangements"][arrangement] = probe_error_json(e);
     md += "\n";

@@ -1,5 +1,6 @@
 // A soft-soft law analysed on the probe's confined runs (issue 33; paper/many-body.md, "The fourth
-// part's analysis" and "Next: the soft-soft push carried by the neighbours' stress", each written
+// part's analysis", "Next: the soft-soft push carried by the neighbours' stress" and "Next: the
+// neighbour's stress along the contact", each written
 // before what it judges was computed; experiments/many-body.yaml, `fourth_version`,
 // `fifth_version`): a resolved soft-particle pressed by another while walls confine it (the
 // confined kinds, coarse/multi_contact.hpp's BODY+walls-D), the force on the pressing one.
@@ -10,10 +11,13 @@
 // having no other contact; X the soft-soft single contact (Eq. 7 on one:soft):
 //
 //   baseline          the law to beat: the third version's (volumetric-union with its β_ss) for
-//                     the fourth part, the fourth version's for the fifth (not fitted here)
+//                     the fourth part, the fourth version's for the fifth, the fifth's for the
+//                     sixth (not fitted here)
 //   volumetric-union  F = X(d*) a(Δn) / a(d*), d* the depth of the cap of volume v(Δn) + β o
 //   onset-shift       F = X(d*) a(Δn) / a(d*), d* = Δn + γ o
 //   stress            the baseline's force + κ p̄ π R² a(Δn)
+//   stress-normal     the same with p the stress along the contact's line, stress-lateral across it
+//                     (the sixth part's, β_ss fitted with κ: ProbeLaw::StressForm)
 //
 // Each parameter in [0, 10], fitted on the plan's `fit` runs with the soft arrangements of
 // `bodies`; the form with the least error on `held_out` (both radii) is chosen, and enters the
@@ -30,10 +34,11 @@ namespace softpack {
 
 struct SoftSoftVersion {
   struct Form {
-    std::string name;       ///< the baseline's name (third, fourth), volumetric-union, onset-shift, stress
+    std::string name;       ///< the baseline's name (third, fourth, fifth), or the form's (volumetric-union, onset-shift, stress, ...)
     std::string base;       ///< the form it is made on: volumetric-union or onset-shift
+    std::string stress;     ///< its stress term's form (stress, stress-normal, stress-lateral); empty: none
     FittedValue parameter;  ///< the engine's β_ss, γ or κ (the mean rule's); its se by the jackknife over the seeds
-    double beta_ss = 0.0;   ///< stress: the baseline's β_ss beneath it
+    FittedValue beta_ss;    ///< a stress form's: the β_ss beneath it (its baseline's, or fitted with κ: joint_beta_ss)
     ProbeError fit, held_out, unconfined;  ///< unconfined: the soft arrangements of bodies (in the fit)
     std::map<std::string, ProbeError> held_out_by_radius;
     std::map<std::string, ProbeError> by_arrangement;  ///< every arrangement of the fit, the held-out and the reported runs

@@ -246,7 +246,9 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("v3_media_seeds: [315,", "v3_media_seeds: [311,", "also in media_seeds");
   refused("v4_media_seeds: [319,", "v4_media_seeds: [315,", "also in v3_media_seeds");
   EXPECT_EQ(plan.media_seeds_of(4).front(), 319u);
-  EXPECT_THROW(plan.media_seeds_of(5), InputError);
+  EXPECT_EQ(plan.media_seeds_of(5).front(), 323u);
+  EXPECT_THROW(plan.media_seeds_of(6), InputError);
+  refused("v5_media_seeds: [323,", "v5_media_seeds: [319,", "also in v4_media_seeds");
   refused("    arrangements: [one, opposite, tetrahedral, cube]", "    arrangements: [opposite, tetrahedral, cube]", "'one'");
   refused("    soft: [one, opposite,", "    soft: [one, opposite:soft,", "without :BODY");
   const auto stamps_with = [&](const std::string& from, const std::string& to) {
@@ -292,6 +294,18 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("    held_out_kinds: [soft+walls-0.15]", "    held_out_kinds: [soft+walls-0.3]", "allowed: soft+walls-0.1, soft+walls-0.2, soft+walls-0.15");
   refused("    soft_forms: [volumetric-union, onset-shift]", "    soft_forms: [stress]", "soft_forms");
   refused("    held_out: [square, pyramid]", "    held_out: []", "an empty list is not allowed");
+  // the sixth part's: its fit crosses names with its kinds or takes NAME:KIND as it is
+  ASSERT_TRUE(plan.sixth.has_value());
+  EXPECT_TRUE(plan.sixth->joint_beta_ss);
+  EXPECT_EQ(plan.sixth->held_out,
+            (std::vector<std::string>{"orthogonal:soft+walls-0.15", "triangle:soft+walls-0.15", "random-5:soft+walls-0.15"}));
+  EXPECT_EQ(plan.sixth->fit.size(), 8u);
+  EXPECT_NE(std::find(plan.sixth->fit.begin(), plan.sixth->fit.end(), "square:soft+walls-0.15"), plan.sixth->fit.end());
+  EXPECT_NE(std::find(plan.sixth->fit.begin(), plan.sixth->fit.end(), "tetrahedral:soft+walls-0.2"), plan.sixth->fit.end());
+  refused("square:soft+walls-0.15, pyramid", "square:soft+walls-0.3, pyramid", "not a confined kind");
+  refused("square:soft+walls-0.15, pyramid", "orthogonal:soft+walls-0.1, pyramid", "not run for confined kind");
+  refused("    soft_forms: [stress, stress-normal", "    soft_forms: [onset-shift, stress-normal", "soft_forms");
+  refused("    joint_beta_ss: true", "    joint_beta_ss: yes please", "joint_beta_ss");
 }
 
 }  // namespace

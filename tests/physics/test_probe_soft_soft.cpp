@@ -32,7 +32,7 @@ SyntheticSoftProbe synthetic_soft_probe(ProbeLaw truth) {
   plan.body_groups = {{"soft", {"one", "opposite", "cube"}}};
   plan.confined_groups = {{"soft+walls-0.1", {"opposite", "tetrahedral", "cube"}},
                           {"soft+walls-0.2", {"opposite", "tetrahedral", "cube"}},
-                          {"soft+walls-0.15", {"square", "pyramid"}}};
+                          {"soft+walls-0.15", {"square", "pyramid", "orthogonal", "triangle", "random-5"}}};
   const fit::PowerLawFit X = testing::eq7_fit(40.0 / 3.0, 2.5, -0.05 / 3.0), W = testing::eq7_fit(40.0, 2.5, -0.05);
   truth.F1 = {{"r", X}, {"s", X}};
   const ProbeLaw walls{"volumetric-union", 0.3, {{"r", W}, {"s", W}}};
@@ -48,13 +48,11 @@ SyntheticSoftProbe synthetic_soft_probe(ProbeLaw truth) {
               std::vector<ProbeWallForce> row;
               for (std::size_t k = 0; k < d.size(); ++k) row.push_back(probe_point(a, radius, seed, d, k, 0.0));
               for (int sweep = 0; sweep < 60; ++sweep) {
-                double total = 0.0;
-                for (const ProbeWallForce& p : row) total += p.Fn;
-                for (ProbeWallForce& p : row) {
-                  p.others_Fn = total - p.Fn;
-                  p.Fn = (a.body.kind_at(p.wall) == PressingBody::Kind::soft ? truth : walls).predict(p);
-                }
+                set_other_contacts(row.data(), row.size(), a);
+                for (ProbeWallForce& p : row) p.Fn = (a.body.kind_at(p.wall) == PressingBody::Kind::soft ? truth : walls).predict(p);
               }
+              // each point's force is its law's on the others it was given (where the sweeps have not
+              // settled, the last sweep's), the scatter on the force only
               for (ProbeWallForce& p : row) {
                 p.Fn *= 1.0 + 0.02 * (static_cast<double>(seed) - 2.5) / 1.5;
                 (groups == &plan.body_groups ? s.soft : s.confined).push_back(p);
@@ -107,9 +105,54 @@ TEST(ManyBodyProbeLaws, TheFifthPartFindsTheStressTermThatMadeTheProbe) {
   EXPECT_EQ(f.chosen, "stress");
   EXPECT_TRUE(f.enters_engine);
   EXPECT_NEAR(f.form("stress").parameter.value, 4.0, 0.2);
-  EXPECT_DOUBLE_EQ(f.form("stress").beta_ss, 0.5);
+  EXPECT_DOUBLE_EQ(f.form("stress").beta_ss.value, 0.5);
   EXPECT_LT(f.form("stress").held_out.rms_log, 0.03);
   EXPECT_GT(f.form("fourth").held_out.rms_log, 0.3);
+}
+
+// The sixth part's on a probe made by the stress along the contact (κ = 4 on β_ss = 0.8): with
+// β_ss fitted with κ it finds both, chooses stress-normal over the mean and the lateral stress, and
+// lets it in against the fifth version's term (κ 1 on β_ss 0.3) on held-out arrangements.
+TEST(ManyBodyProbeLaws, TheSixthPartFindsTheDirectionalStressThatMadeTheProbe) {
+  ProbeLaw truth{"volumetric-union", 0.4, {}};
+  truth.stress = 2.0, truth.stress_form = ProbeLaw::StressForm::normal;
+  SyntheticSoftProbe s = synthetic_soft_probe(truth);
+  ManyBodyProbe::SoftSoftPlan part{{"stress", "stress-normal", "stress-lateral"},
+                                   {"opposite:soft+walls-0.1", "tetrahedral:soft+walls-0.1", "cube:soft+walls-0.1", "opposite:soft+walls-0.2",
+                                    "tetrahedral:soft+walls-0.2", "cube:soft+walls-0.2", "square:soft+walls-0.15", "pyramid:soft+walls-0.15"},
+                                   {"orthogonal:soft+walls-0.15", "triangle:soft+walls-0.15", "random-5:soft+walls-0.15"}};
+  part.joint_beta_ss = true;
+  SoftSoftVersion::Form base = baseline("fifth", 1.0);
+  base.stress = "stress", base.beta_ss = {0.3, 0.01};
+  const SoftSoftVersion f = analyse_soft_soft(s.plan, part, s.soft, s.confined, base);
+  ASSERT_EQ(f.forms.size(), 4u);
+  EXPECT_EQ(f.chosen, "stress-normal");
+  EXPECT_TRUE(f.enters_engine);
+  EXPECT_NEAR(f.form("stress-normal").parameter.value, 4.0, 0.2);
+  EXPECT_NEAR(f.form("stress-normal").beta_ss.value, 0.8, 0.05);
+  EXPECT_GT(f.form("stress-normal").beta_ss.se, 0.0);
+  EXPECT_LT(f.form("stress-normal").held_out.rms_log, 0.03);
+  EXPECT_GT(f.form("stress-lateral").held_out.rms_log, 2.0 * f.form("stress-normal").held_out.rms_log);
+}
+
+// The stress along and across the contact written out: in `cube` the walls beside the contact
+// count across it only, the opposite one along it only.
+TEST(ManyBodyProbeLaws, TheDirectionalStressTakesTheWallsByTheirDirection) {
+  ProbeLaw law{"volumetric-union", 0.25, {{"r", testing::eq7_fit(40.0, 2.5, -0.05)}}};
+  const ProbeArrangement a = builtin_arrangement("cube:soft+walls-0.2", 1);
+  std::vector<ProbeWallForce> row;
+  for (std::size_t k = 0; k < 6; ++k) row.push_back(probe_point(a, "r", 1, {0.1, 0.2, 0.2, 0.2, 0.2, 0.2}, k, 1.0 + static_cast<double>(k)));
+  set_other_contacts(row.data(), row.size(), a);
+  const ProbeWallForce& p = row[0];  // +z; -z is wall 1 (force 2), the four beside it 3 + 4 + 5 + 6
+  EXPECT_NEAR(p.others_Fn, 20.0, 1e-12);
+  EXPECT_NEAR(p.others_along, 2.0, 1e-12);
+  const double alone = law.predict(p), kappa = 0.8, a01 = 2.0 * 0.1 - 0.1 * 0.1;
+  law.stress = kappa / 2.0, law.stress_form = ProbeLaw::StressForm::normal;
+  EXPECT_NEAR(law.predict(p), alone + kappa / 2.0 * 3.0 * 2.0 / 4.0 * a01, 1e-12);
+  law.stress_form = ProbeLaw::StressForm::lateral;
+  EXPECT_NEAR(law.predict(p), alone + kappa / 2.0 * 3.0 * 18.0 / 8.0 * a01, 1e-12);
+  EXPECT_EQ(ProbeLaw::stress_form_of("stress-lateral"), ProbeLaw::StressForm::lateral);
+  EXPECT_THROW(ProbeLaw::stress_form_of("stress-radial"), InputError);
 }
 
 // The stress term written out: κ p̄ π Rs² a(Δn) with p̄ half the centre's p = others_Fn / (4π Rs²)
