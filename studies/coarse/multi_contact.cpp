@@ -124,6 +124,17 @@ ProbeArrangement builtin_arrangement(const std::string& full_name, std::uint64_t
   else throw InputError(fmt::format("arrangement '{}' is not allowed; allowed: {}, each alone or as NAME:BODY (BODY: wall, soft, grain-X)", full_name, kAllowed));
   if (a.body.walls_at > 0.0 && w.size() < 2)
     throw InputError(fmt::format("arrangement '{}' is not allowed: +walls-D needs walls besides the first contact (two contacts or more)", full_name));
+  // A plane is unbounded: a confining wall nearer than 90 degrees to the first contact would cut
+  // the body pressing there (a soft-particle or grain standing outside the shell along +z).
+  if (a.body.walls_at > 0.0 && random_count(name) > 0)
+    throw InputError(fmt::format("arrangement '{}' is not allowed: random-N draws its walls 60 (or 40) degrees apart, so a confining wall may "
+                                 "cut the body pressing at the first contact; +walls-D needs every wall at 90 degrees or more from it",
+                                 full_name));
+  for (std::size_t k = 1; a.body.walls_at > 0.0 && k < w.size(); ++k)
+    if (w[k].u.dot(w[0].u) > 1e-12)
+      throw InputError(fmt::format("arrangement '{}' is not allowed: its wall {} stands less than 90 degrees from the first contact and would cut "
+                                   "the body pressing there",
+                                   full_name, k + 1));
   return a;
 }
 

@@ -298,7 +298,7 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   ASSERT_TRUE(plan.sixth.has_value());
   EXPECT_TRUE(plan.sixth->joint_beta_ss);
   EXPECT_EQ(plan.sixth->held_out,
-            (std::vector<std::string>{"orthogonal:soft+walls-0.15", "triangle:soft+walls-0.15", "random-5:soft+walls-0.15"}));
+            (std::vector<std::string>{"orthogonal:soft+walls-0.15", "triangle:soft+walls-0.15", "opposite-half:soft+walls-0.15"}));
   EXPECT_EQ(plan.sixth->fit.size(), 8u);
   EXPECT_NE(std::find(plan.sixth->fit.begin(), plan.sixth->fit.end(), "square:soft+walls-0.15"), plan.sixth->fit.end());
   EXPECT_NE(std::find(plan.sixth->fit.begin(), plan.sixth->fit.end(), "tetrahedral:soft+walls-0.2"), plan.sixth->fit.end());
@@ -306,6 +306,7 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("square:soft+walls-0.15, pyramid", "orthogonal:soft+walls-0.1, pyramid", "not run for confined kind");
   refused("    soft_forms: [stress, stress-normal", "    soft_forms: [onset-shift, stress-normal", "soft_forms");
   refused("    joint_beta_ss: true", "    joint_beta_ss: yes please", "joint_beta_ss");
+  refused("triangle, opposite-half]", "triangle, random-5]", "90 degrees");  // a confining plane would cut the pressing body
 }
 
 }  // namespace

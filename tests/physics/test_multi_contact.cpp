@@ -51,6 +51,17 @@ TEST(MultiContactProbe, TheArrangementsAreWhatTheirNamesSay) {
   EXPECT_EQ(g.body.name(), "grain-0.4");
   EXPECT_EQ(soft.body.kind, PressingBody::Kind::soft);
   EXPECT_EQ(builtin_arrangement("one:wall", 0).body.kind, PressingBody::Kind::wall);
+  // a confining plane must not cut the body pressing at the first contact: random-N (walls 60
+  // degrees apart) is refused with +walls-D, every fixed arrangement's walls stand 90 degrees or more away
+  for (const char* name : {"orthogonal", "triangle", "tetrahedral", "square", "pyramid", "cube", "opposite-half", "orthogonal-half"})
+    EXPECT_NO_THROW(builtin_arrangement(std::string(name) + ":soft+walls-0.15", 0)) << name;
+  try {
+    builtin_arrangement("random-5:soft+walls-0.15", 501);
+    ADD_FAILURE() << "random-5 taken with +walls-D";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("90 degrees"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(builtin_arrangement("random-5:soft", 501));
   for (const char* bad : {"one:rock", "one:grain-0", "one:grain-x", "one:grain-0.4x", "one:"}) {
     try {
       builtin_arrangement(bad, 0);

@@ -32,7 +32,7 @@ SyntheticSoftProbe synthetic_soft_probe(ProbeLaw truth) {
   plan.body_groups = {{"soft", {"one", "opposite", "cube"}}};
   plan.confined_groups = {{"soft+walls-0.1", {"opposite", "tetrahedral", "cube"}},
                           {"soft+walls-0.2", {"opposite", "tetrahedral", "cube"}},
-                          {"soft+walls-0.15", {"square", "pyramid", "orthogonal", "triangle", "random-5"}}};
+                          {"soft+walls-0.15", {"square", "pyramid", "orthogonal", "triangle", "opposite-half"}}};
   const fit::PowerLawFit X = testing::eq7_fit(40.0 / 3.0, 2.5, -0.05 / 3.0), W = testing::eq7_fit(40.0, 2.5, -0.05);
   truth.F1 = {{"r", X}, {"s", X}};
   const ProbeLaw walls{"volumetric-union", 0.3, {{"r", W}, {"s", W}}};
@@ -120,7 +120,7 @@ TEST(ManyBodyProbeLaws, TheSixthPartFindsTheDirectionalStressThatMadeTheProbe) {
   ManyBodyProbe::SoftSoftPlan part{{"stress", "stress-normal", "stress-lateral"},
                                    {"opposite:soft+walls-0.1", "tetrahedral:soft+walls-0.1", "cube:soft+walls-0.1", "opposite:soft+walls-0.2",
                                     "tetrahedral:soft+walls-0.2", "cube:soft+walls-0.2", "square:soft+walls-0.15", "pyramid:soft+walls-0.15"},
-                                   {"orthogonal:soft+walls-0.15", "triangle:soft+walls-0.15", "random-5:soft+walls-0.15"}};
+                                   {"orthogonal:soft+walls-0.15", "triangle:soft+walls-0.15", "opposite-half:soft+walls-0.15"}};
   part.joint_beta_ss = true;
   SoftSoftVersion::Form base = baseline("fifth", 1.0);
   base.stress = "stress", base.beta_ss = {0.3, 0.01};
