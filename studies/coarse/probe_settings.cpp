@@ -211,6 +211,11 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
       plain(confined.at(kind), arrangements);
       if (std::find(arrangements.begin(), arrangements.end(), "one") != arrangements.end())
         confined.at(kind).fail("'one' has no wall to confine it; its single contact is bodies' one:BODY");
+      for (const std::string& a : arrangements) try {  // what the kind asks of its walls (multi_contact.hpp)
+          builtin_arrangement(a + ":" + kind, 0);
+        } catch (const InputError& e) {
+          confined.at(kind).fail(e.what());
+        }
       p.confined_groups.emplace_back(kind, std::move(arrangements));
     }
   }
