@@ -112,7 +112,7 @@ SoftSoftVersion analyse_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe
     SoftSoftVersion::Form f;
     f.name = name;
     if (name.rfind("stress", 0) == 0)  // on the baseline's law: its β_ss (a stress baseline's own, else its parameter)
-      f.stress = name, f.base = baseline.base, f.beta_ss = baseline.stress.empty() ? FittedValue{baseline.parameter.value, 0.0} : baseline.beta_ss;
+      f.stress = name, f.base = baseline.base, f.beta_ss = baseline.stress.empty() ? baseline.parameter : baseline.beta_ss;
     else
       f.base = name;
     forms.push_back(f);

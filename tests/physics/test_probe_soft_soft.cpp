@@ -106,6 +106,7 @@ TEST(ManyBodyProbeLaws, TheFifthPartFindsTheStressTermThatMadeTheProbe) {
   EXPECT_TRUE(f.enters_engine);
   EXPECT_NEAR(f.form("stress").parameter.value, 4.0, 0.2);
   EXPECT_DOUBLE_EQ(f.form("stress").beta_ss.value, 0.5);
+  EXPECT_DOUBLE_EQ(f.form("stress").beta_ss.se, 0.01);  // the baseline's, with its error
   EXPECT_LT(f.form("stress").held_out.rms_log, 0.03);
   EXPECT_GT(f.form("fourth").held_out.rms_log, 0.3);
 }
