@@ -37,12 +37,20 @@
 #include "contact/effects.hpp"
 #include "contact/tsuji_tangential.hpp"
 #include "core/material.hpp"
+#include "core/types.hpp"
 #include "simd/vec3.hpp"
 
 namespace softpack {
 
 struct SoftParticleLaws;      // contact/soft_particle_law.hpp
 enum class GrainContactRule;  // contact/soft_particle_law.hpp
+
+/// A body's stress tensor from the stress pass (BodyStressModel below) and its radius, for a law
+/// with a stress term.
+struct BodyStress {
+  const SymmetricTensor* S = nullptr;  ///< Σ Fn n ⊗ n over the body's closed contacts [N]; null: none
+  double R = 0.0;                      ///< the body's radius [m]
+};
 
 /// What the kind of contact supplies, at the current step.
 template <class T>
@@ -55,6 +63,9 @@ struct ContactGeometry {
   V3<T> n_frame, vc_frame;
   /// The two bodies' states from the per-body pass, for a law that declares one (a wall's: 0).
   T body1, body2;
+  /// The two bodies' stress tensors, for a law with a stress term (BodyStressModel; a
+  /// scalar-only law, set lane by lane): none for a wall, in the stress pass itself and without it.
+  BodyStress stress1{}, stress2{};
 };
 
 template <class T>
@@ -116,6 +127,15 @@ concept BodyStateModel = requires { Model::Normal::kBodyState; } && Model::Norma
 /// body's centre towards the contact), which the pass calls for each body of two caps or more.
 template <class Model>
 concept BodyCapsModel = BodyStateModel<Model> && requires { Model::Normal::kBodyCaps; };
+
+/// A body-state model whose normal law may also read each body's stress tensor (the many-body
+/// law's stress term), summed by a second pass once the body states are final: for each closed
+/// contact its base force, evaluate() without the tensors, times n ⊗ n added to both bodies'
+/// tensors (a grain's is never read). Its normal sub-law declares kBodyStress, body_stress(its
+/// params) (whether the law has the term: without it no pass runs) and reads g.stress1,
+/// g.stress2 in evaluate(); it is scalar-only (the tensors are set lane by lane).
+template <class Model>
+concept BodyStressModel = BodyStateModel<Model> && requires { Model::Normal::kBodyStress; };
 
 /// A model written for one contact at a time (double only).
 template <class Model>
@@ -193,23 +213,17 @@ struct ContactModel {
   }
 
   // One contact's scalar formulas, for the walk over closed contacts (residuals, watchdog,
-  // force between bodies): the same evaluate() as the force.
-  static double Fn(const Params& p, const Constants<double>& k, double h, double s1, double s2) {
-    return Normal::evaluate(p.normal, k.normal, at_overlap(h, s1, s2)).Fn;
+  // force between bodies): the same evaluate() as the force, at the contact's overlap g.h, its
+  // bodies' states and (a law with a stress term) its normal and its bodies' tensors.
+  static double Fn(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {
+    return Normal::evaluate(p.normal, k.normal, g).Fn;
   }
-  static double normal_energy(const Params& p, const Constants<double>& k, double h, double s1, double s2) {
-    return Normal::energy(p.normal, k.normal, h, s1, s2);
+  static double normal_energy(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {
+    return Normal::energy(p.normal, k.normal, g.h, g.body1, g.body2);
   }
-  /// The tangential stiffness kt [N/m] at overlap h and the bodies' states (as the force's).
-  static double kt(const Params& p, const Constants<double>& k, double h, double s1, double s2) {
-    return Tangential::stiffness(p.tangential, k.tangential, Normal::evaluate(p.normal, k.normal, at_overlap(h, s1, s2)));
-  }
-
- private:
-  static ContactGeometry<double> at_overlap(double h, double s1, double s2) {
-    ContactGeometry<double> g{};
-    g.h = h, g.body1 = s1, g.body2 = s2;
-    return g;
+  /// The tangential stiffness kt [N/m] at the contact's overlap and bodies' states (as the force's).
+  static double kt(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {
+    return Tangential::stiffness(p.tangential, k.tangential, Normal::evaluate(p.normal, k.normal, g));
   }
 };
 

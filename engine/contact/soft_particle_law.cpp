@@ -186,10 +186,24 @@ double SoftManyBodyNormal::force(const Params& p, const Constants<double>& k, do
   return many_body_force(p.law(k.scene).normal, k.scale * k.F_scale, dn, others, k.beta);
 }
 
+double SoftManyBodyNormal::stress_on(ManyBodyLaw::SoftStress::Form form, const SymmetricTensor& S, double R, const V3<double>& n, double Fn) {
+  using Form = ManyBodyLaw::SoftStress::Form;
+  const double trace = S[0] + S[1] + S[2];
+  const double nSn = S[0] * n.x * n.x + S[1] * n.y * n.y + S[2] * n.z * n.z + 2.0 * (S[3] * n.x * n.y + S[4] * n.x * n.z + S[5] * n.y * n.z);
+  const double surface = 4.0 * std::numbers::pi * R * R;
+  const double p = form == Form::mean ? (trace - Fn) / surface : form == Form::normal ? 3.0 * (nSn - Fn) / surface : 3.0 * (trace - nSn) / (2.0 * surface);
+  return std::max(p, 0.0);
+}
+
 SoftNormal::Eval SoftManyBodyNormal::evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g) {
   Eval e = SoftNormal::evaluate(p, k, g);
   const double pairwise = e.Fn;  // Eq. 7: the gain is over it (a grain's g included)
-  e.Fn = force(p, k, e.dn, others(k, cap_volume(e.dn), g.body1, g.body2));
+  e.Fn = force(p, k, e.dn, others(k, cap_volume(e.dn), g.body1, g.body2));  // Fn_base
+  const auto& stress = p.laws->many_body->soft_stress;
+  if (stress && k.soft == kBoth && g.stress1.S && g.stress2.S) {
+    const double p1 = stress_on(stress->form, *g.stress1.S, g.stress1.R, g.n, e.Fn), p2 = stress_on(stress->form, *g.stress2.S, g.stress2.R, g.n, e.Fn);
+    e.Fn += stress->kappa * std::numbers::pi * k.R * k.R * cap_area(e.dn) * 0.5 * (p1 + p2);
+  }
   e.gain = pairwise > 0.0 ? e.Fn / pairwise : 1.0;
   return e;
 }

@@ -98,6 +98,25 @@ struct ManyBodyLaw {
   bool union_of_caps = false;
   double grain_exponent = 0.0;
   std::optional<double> grain_beta{}, soft_beta{};
+  /// The stress term of soft-soft contacts (law file version 4, many_body.soft_soft.stress; paper/many-body.md,
+  /// "the soft-soft push carried by the neighbours' stress"): a contact k between soft-particles i and j carries
+  ///
+  ///   Fn_k = Fn_base + κ π R² a(Δn_k) (p_i + p_j) / 2,
+  ///
+  /// Fn_base the force above, R the contact's R, and p_i the stress on soft-particle i (radius R_i)
+  /// from its other contacts, with S_i = Σ Fn_base n ⊗ n over i's closed contacts (the stress pass):
+  ///
+  ///   mean      p_i = (tr S_i − Fn_base,k) / (4π R_i²)
+  ///   normal    p_i = 3 (n·S_i·n − Fn_base,k) / (4π R_i²)        (along the contact's normal)
+  ///   lateral   p_i = 3 (tr S_i − n·S_i·n) / (2 · 4π R_i²)       (across it)
+  ///
+  /// each taken as 0 where rounding makes it negative. Other contacts carry none.
+  struct SoftStress {
+    enum class Form { mean, normal, lateral };
+    Form form = Form::mean;
+    double kappa = 0.0;  ///< κ
+  };
+  std::optional<SoftStress> soft_stress{};
 };
 
 /// v(δ) = δ² (3 − δ) / 4: a cap of depth δ R of a sphere of radius R, over the sphere's volume.
@@ -211,6 +230,7 @@ struct SoftManyBodyNormal : SoftNormal {
   static constexpr double kBody1 = 1.0, kBody2 = 2.0, kBoth = 3.0;  ///< Constants::soft
 
   static constexpr bool kBodyCaps = true;
+  static constexpr bool kBodyStress = true;  ///< with the law's soft_stress (contact/contact_model.hpp BodyStressModel)
 
   template <class T>
   struct Constants : SoftNormal::Constants<T> {
@@ -245,8 +265,16 @@ struct SoftManyBodyNormal : SoftNormal {
     return k.soft.v[m] == kBoth || k.soft.v[m] == body;
   }
   static double body_state(const std::vector<Vec3>& u, const std::vector<double>& depth) { return cap_union_volume(u, depth); }
+  /// Whether the stress pass runs: the law has a stress term (ManyBodyLaw::soft_stress).
+  static bool body_stress(const Params& p) { return p.laws->many_body->soft_stress.has_value(); }
+  /// The force: Fn_base at the bodies' states, plus, for two soft-particles whose stress tensors g
+  /// carries, the stress term (ManyBodyLaw::SoftStress). The gain (Fn over Eq. 7's, the tangential
+  /// gain's) and the Coulomb limit see the whole Fn; the damping's stiffness (Eval::stiffness) is
+  /// Eq. 7's dFn/dh times that gain: the stress term scales it as it scales the force (its own
+  /// slope in h, through a(Δn), is not added: the neighbours' stress is taken as a given load).
   static Eval evaluate(const Params& p, const Constants<double>& k, const ContactGeometry<double>& g);
-  /// ∫ Fn dh from 0 to h with the other contacts' caps as they are: Eq. 7's integral for a contact
+  /// ∫ Fn_base dh from 0 to h with the other contacts' caps as they are (the stress term, not the
+  /// derivative of a potential, is left out): Eq. 7's integral for a contact
   /// alone (the pairwise model's), else Simpson's rule on kEnergyIntervals from where the force
   /// starts (tests/physics ManyBodySoftParticles.TheEnergyIsTheForcesIntegral). Where v(Δn) +
   /// β E_others reaches the ball's volume the force falls back to Eq. 7 (many_body_force) and the
@@ -259,6 +287,8 @@ struct SoftManyBodyNormal : SoftNormal {
   static double others(const Constants<double>& k, double v, double s1, double s2);
   /// Fn at Δn = dn with the other contacts' caps `others`.
   static double force(const Params& p, const Constants<double>& k, double dn, double others);
+  /// p_i of a soft-particle of tensor S and radius R along n, this contact's base force Fn (SoftStress).
+  static double stress_on(ManyBodyLaw::SoftStress::Form form, const SymmetricTensor& S, double R, const V3<double>& n, double Fn);
 };
 
 /// The damping of a soft-particle contact (when the scene declares it): the linear spring's at

@@ -46,7 +46,8 @@ template <class Model, Effects Fx, class Contacts>
   contact_block<Model, Fx>(simd::Portable{}, c, params, dt, closed, begin, end);
 }
 
-// The per-body pass's block (forces/contact_loop.hpp body_block), likewise.
+// The per-body pass's block (forces/contact_loop.hpp body_block) and the stress pass's
+// (stress_block), likewise.
 template <class Model, class Contacts>
 [[gnu::target("arch=x86-64-v4"), gnu::flatten]] void body_avx512(Contacts& c, std::int32_t* closed, std::size_t begin, std::size_t end) {
   body_block<Model>(simd::Avx512{}, c, closed, begin, end);
@@ -57,9 +58,23 @@ template <class Model, class Contacts>
   body_block<Model>(simd::Portable{}, c, closed, begin, end);
 }
 
-/// One block of any kind of contact, on the instruction set chosen at run time: of the force
-/// pass, or with `body` of the per-body pass.
-template <class Model, Effects Fx, bool body = false>
+template <class Model, class Contacts>
+[[gnu::target("arch=x86-64-v4"), gnu::flatten]] void stress_avx512(Contacts& c, const typename Model::Params& params, std::int32_t* closed,
+                                                    std::size_t begin, std::size_t end) {
+  stress_block<Model>(simd::Avx512{}, c, params, closed, begin, end);
+}
+
+template <class Model, class Contacts>
+[[gnu::flatten]] void stress_portable(Contacts& c, const typename Model::Params& params, std::int32_t* closed, std::size_t begin,
+                                      std::size_t end) {
+  stress_block<Model>(simd::Portable{}, c, params, closed, begin, end);
+}
+
+/// Which pass a block is of: the forces, the per-body states or the bodies' stress tensors.
+enum class Pass { force, body, stress };
+
+/// One block of any kind of contact, on the instruction set chosen at run time, of pass `pass`.
+template <class Model, Effects Fx, Pass pass = Pass::force>
 struct BlockOf {
   bool avx512 = build::kAvx512Loops && cpu::vector_isa() == cpu::VectorIsa::avx512;
   const typename Model::Params* params = nullptr;
@@ -67,10 +82,14 @@ struct BlockOf {
 
   template <class Contacts>
   void operator()(Contacts& c, std::int32_t* closed, std::size_t begin, std::size_t end) const {
-    if constexpr (body) {
+    if constexpr (pass == Pass::body) {
       if constexpr (build::kAvx512Loops)
         if (avx512) return body_avx512<Model>(c, closed, begin, end);
       body_portable<Model>(c, closed, begin, end);
+    } else if constexpr (pass == Pass::stress) {
+      if constexpr (build::kAvx512Loops)
+        if (avx512) return stress_avx512<Model>(c, *params, closed, begin, end);
+      stress_portable<Model>(c, *params, closed, begin, end);
     } else {
       if constexpr (build::kAvx512Loops)
         if (avx512) return block_avx512<Model, Fx>(c, *params, dt, closed, begin, end);
@@ -83,18 +102,25 @@ struct BlockOf {
 /// parallel region, core/parallel.hpp run_phases): each thread's ghost pairs, then its own pairs
 /// and its spheres' wall contacts, then the loads of its walls, each in list order. A model with a
 /// body state (contact/contact_model.hpp BodyStateModel) has the per-body pass run first, in
-/// the same order: each sphere's state is summed as its force is.
+/// the same order: each sphere's state is summed as its force is; then, when its law has a stress
+/// term (BodyStressModel), the stress pass, at the final states, in the same order again.
 template <class Model, Effects Fx>
 void all_contacts(World& world, ContactFamily& lists, const typename Model::Params& params, double dt, std::vector<std::int32_t>& closed) {
   Particles& p = world.p;
   constexpr bool kBody = BodyStateModel<Model>;
+  static_assert(!BodyStressModel<Model> || ScalarOnlyModel<Model>, "the stress tensors are set lane by lane (forces/contact_loop.hpp lanes_force)");
   if constexpr (kBody) lists.body_state.resize(p.size());
   bool caps = false;  // the states made from the bodies' caps (contact/contact_model.hpp BodyCapsModel)
   if constexpr (BodyCapsModel<Model>) caps = Model::Normal::body_caps(params.normal);
   if (caps) lists.body_caps.resize(p.size());
   else lists.body_caps.clear();
+  bool stress = false;  // the bodies' stress tensors (BodyStressModel): only for a law with the term
+  if constexpr (BodyStressModel<Model>) stress = Model::Normal::body_stress(params.normal);
+  if (stress) lists.body_stress.resize(p.size());
+  else lists.body_stress.clear();
   const SphereArrays s{p.x.data(), p.v.data(), Fx.rotation ? p.w.data() : nullptr, p.r.data(), p.F.data(),
-                       Fx.rotation ? p.T.data() : nullptr, kBody ? lists.body_state.data() : nullptr, caps ? lists.body_caps.data() : nullptr};
+                       Fx.rotation ? p.T.data() : nullptr, kBody ? lists.body_state.data() : nullptr, caps ? lists.body_caps.data() : nullptr,
+                       stress ? lists.body_stress.data() : nullptr};
   // Spheres [b, e) before the pass (states 0, no caps), and after it (a state from two caps or more).
   const auto clear_states = [&](std::size_t b, std::size_t e) {
     std::fill(lists.body_state.begin() + static_cast<std::ptrdiff_t>(b), lists.body_state.begin() + static_cast<std::ptrdiff_t>(e), 0.0);
@@ -106,10 +132,14 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
       if (caps)
         for (std::size_t i = b; i < e; ++i)
           if (lists.body_caps[i].u.size() >= 2) lists.body_state[i] = Model::Normal::body_state(lists.body_caps[i].u, lists.body_caps[i].depth);
+    if (stress) std::fill(lists.body_stress.begin() + static_cast<std::ptrdiff_t>(b), lists.body_stress.begin() + static_cast<std::ptrdiff_t>(e),
+                          SymmetricTensor{});  // before the stress pass
   };
   BlockOf<Model, Fx> block;
   block.params = &params, block.dt = dt;
-  const BlockOf<Model, Fx, true> body_pass;
+  const BlockOf<Model, Fx, Pass::body> body_pass;
+  BlockOf<Model, Fx, Pass::stress> stress_pass;
+  stress_pass.params = &params;
   PairContacts<Fx> pairs{lists.pairs, s, p.size()};
   // Kept from step to step (no allocation per step); the references, not the thread_local
   // names, are what the threads' phases see.
@@ -131,6 +161,7 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
       for (auto& w : shells) run_blocks(w, closed.data(), b);
     };
     if constexpr (kBody) clear_states(0, p.size()), pass(body_pass), make_states(0, p.size());
+    if (stress) pass(stress_pass);
     pass(block);
     return;
   }
@@ -164,15 +195,21 @@ void all_contacts(World& world, ContactFamily& lists, const typename Model::Para
     for (std::size_t k = t; k < shells.size(); k += parts) shells[k].finish();
   };
   if constexpr (kBody) {
-    parallel::run_phases(
-        parts,
-        [&](std::size_t t) {
-          clear_states(parallel::share_begin(p.size(), t, parts), parallel::share_begin(p.size(), t + 1, parts));
-          ghosts(t, body_pass);
-        },
-        [&](std::size_t t) { own(t, body_pass); },
-        [&](std::size_t t) { make_states(parallel::share_begin(p.size(), t, parts), parallel::share_begin(p.size(), t + 1, parts)); },
-        [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); }, finish);
+    const auto body_phases = [&](auto&&... then) {
+      parallel::run_phases(
+          parts,
+          [&](std::size_t t) {
+            clear_states(parallel::share_begin(p.size(), t, parts), parallel::share_begin(p.size(), t + 1, parts));
+            ghosts(t, body_pass);
+          },
+          [&](std::size_t t) { own(t, body_pass); },
+          [&](std::size_t t) { make_states(parallel::share_begin(p.size(), t, parts), parallel::share_begin(p.size(), t + 1, parts)); }, then...);
+    };
+    if (stress)  // after the states: the ghosts read states other threads made; the forces, tensors others summed
+      body_phases([&](std::size_t t) { ghosts(t, stress_pass); }, [&](std::size_t t) { own(t, stress_pass); },
+                  [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); }, finish);
+    else
+      body_phases([&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); }, finish);
   } else {
     parallel::run_phases(parts, [&](std::size_t t) { ghosts(t, block); }, [&](std::size_t t) { own(t, block); }, finish);
   }
@@ -242,14 +279,14 @@ class ModelOf final : public SceneModel {
                        std::vector<std::int32_t>& closed) const override {
     masked_(world, pairs, params_, mask, sign, F, T, closed);
   }
-  double Fn(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const override {
-    return Model::Fn(params_, constants_at<Model>(a, k), h, s1, s2);
+  double Fn(const ConstantArrays& a, std::size_t k, const ContactGeometry<double>& g) const override {
+    return Model::Fn(params_, constants_at<Model>(a, k), g);
   }
-  double normal_energy(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const override {
-    return Model::normal_energy(params_, constants_at<Model>(a, k), h, s1, s2);
+  double normal_energy(const ConstantArrays& a, std::size_t k, const ContactGeometry<double>& g) const override {
+    return Model::normal_energy(params_, constants_at<Model>(a, k), g);
   }
-  double kt(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const override {
-    return Model::kt(params_, constants_at<Model>(a, k), h, s1, s2);
+  double kt(const ConstantArrays& a, std::size_t k, const ContactGeometry<double>& g) const override {
+    return Model::kt(params_, constants_at<Model>(a, k), g);
   }
   double overlap_scale(const ConstantArrays& a, std::size_t k, double r_min) const override {
     if constexpr (MeasuredRangeModel<Model>) return Model::Normal::overlap_scale(constants_at<Model>(a, k).normal);

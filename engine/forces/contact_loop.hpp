@@ -46,8 +46,9 @@ inline constexpr std::size_t kBlock = 1024;
 
 /// The force of each lane of `c`: eight at once, or for a model written for one contact at a
 /// time (ScalarOnlyModel) one lane after the other (the live ones; the others are copies).
-template <class Model, Effects Fx, class Lanes>
-[[gnu::always_inline]] inline ContactForce<simd::Wide> lanes_force(const typename Model::Params& params, Lanes& c, double dt, int live) {
+template <class Model, Effects Fx, class Lanes, class Contacts>
+[[gnu::always_inline]] inline ContactForce<simd::Wide> lanes_force(const typename Model::Params& params, Lanes& c, double dt, int live,
+                                                                  const Contacts& contacts) {
   if constexpr (!ScalarOnlyModel<Model>) {
     return Model::template force<Fx>(params, c.geometry, c.constants, c.spring, dt);
   } else {
@@ -58,6 +59,7 @@ template <class Model, Effects Fx, class Lanes>
       ContactGeometry<double> g{at(G.n), G.h.v[m], at(G.vc), {}, {}, 0.0, 0.0};
       if constexpr (Fx.friction) g.n_frame = at(G.n_frame), g.vc_frame = at(G.vc_frame);
       if constexpr (BodyStateModel<Model>) g.body1 = G.body1.v[m], g.body2 = G.body2.v[m];
+      if constexpr (BodyStressModel<Model>) contacts.lane_stress(c, m, g);
       typename Model::template Constants<double> k{};
       std::array<double*, Model::constant_count()> field{};
       std::size_t n = 0;
@@ -91,7 +93,7 @@ template <class Model, Effects Fx, class Isa, class Contacts>
     const int live = static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m));
     auto c = contacts.template gather<Model>(isa, k, dt);
     if constexpr (BodyStateModel<Model>) contacts.gather_body(isa, c);
-    const ContactForce<simd::Wide> f = lanes_force<Model, Fx>(params, c, dt, live);
+    const ContactForce<simd::Wide> f = lanes_force<Model, Fx>(params, c, dt, live, contacts);
     contacts.add(c, f, closed + m, live);
   }
 }
@@ -107,6 +109,44 @@ template <class Model, class Isa, class Contacts>
   std::fill(closed + touching, closed + touching + simd::kLanes, closed[touching - 1]);
   for (std::size_t m = 0; m < touching; m += simd::kLanes)
     contacts.template add_body_terms<Model>(isa, simd::load(closed + m), static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
+}
+
+/// The stress pass over positions [begin, end) of `contacts`, for a model whose law has a stress
+/// term (contact/contact_model.hpp BodyStressModel), once the body states are final: select, then
+/// each closed contact's base force times n ⊗ n added to its spheres' tensors (add_stress_terms),
+/// in the order of the per-body pass.
+template <class Model, class Isa, class Contacts>
+[[gnu::always_inline]] inline void stress_block(Isa isa, Contacts& contacts, const typename Model::Params& params, std::int32_t* closed,
+                                                std::size_t begin, std::size_t end) {
+  const std::size_t touching = contacts.template select<SelectOnly>(isa, closed, begin, end);
+  if (touching == 0) return;
+  std::fill(closed + touching, closed + touching + simd::kLanes, closed[touching - 1]);
+  for (std::size_t m = 0; m < touching; m += simd::kLanes)
+    contacts.template add_stress_terms<Model>(isa, params, simd::load(closed + m),
+                                              static_cast<int>(std::min<std::size_t>(simd::kLanes, touching - m)));
+}
+
+/// The normal law's force of lane m of `G` with the normal constants `c`, without the bodies'
+/// tensors (the base force the stress pass sums): the force pass's evaluate(), the same bits.
+template <class Model>
+[[gnu::always_inline]] inline double base_normal_force(const typename Model::Params& params,
+                                                       const typename Model::Normal::template Constants<simd::Wide>& c,
+                                                       const ContactGeometry<simd::Wide>& G, int m) {
+  ContactGeometry<double> g{};
+  g.n = v3(lane(G.n, m)), g.h = G.h.v[m], g.body1 = G.body1.v[m], g.body2 = G.body2.v[m];
+  typename Model::Normal::template Constants<double> k{};
+  std::array<double*, Model::constant_count()> field{};
+  std::size_t n = 0;
+  Model::Normal::each_constant(k, [&](double& x, Need) { field[n++] = &x; });
+  n = 0;
+  Model::Normal::each_constant(c, [&](const simd::Wide& x, Need) { *field[n++] = x.v[m]; });
+  return Model::Normal::evaluate(params.normal, k, g).Fn;
+}
+
+/// S += Fn n ⊗ n.
+[[gnu::always_inline]] inline void add_stress(SymmetricTensor& S, double Fn, const Vec3& n) {
+  S[0] += Fn * n.x() * n.x(), S[1] += Fn * n.y() * n.y(), S[2] += Fn * n.z() * n.z();
+  S[3] += Fn * n.x() * n.y(), S[4] += Fn * n.x() * n.z(), S[5] += Fn * n.y() * n.z();
 }
 
 /// What the blocks of one thread need: kBlock closed indices and a group of lanes.

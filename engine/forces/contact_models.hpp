@@ -54,11 +54,13 @@ class SceneModel {
   virtual void add_pair_forces(World& world, PairList& pairs, const std::uint8_t* mask, double sign, Vec3* F, Vec3* T,
                                std::vector<std::int32_t>& scratch) const = 0;
 
-  // One closed contact k of array `a`, at overlap h, its bodies' states s1, s2.
-  virtual double Fn(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const = 0;  ///< [N]
-  virtual double normal_energy(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const = 0;  ///< [J]
-  /// Tangential stiffness [N/m] at overlap h, the bodies' states s1, s2 (a model with a body state).
-  virtual double kt(const ConstantArrays& a, std::size_t k, double h, double s1, double s2) const = 0;
+  // One closed contact k of array `a`, at overlap g.h, its bodies' states g.body1, g.body2 and
+  // (a law with a stress term) its normal g.n and its bodies' tensors g.stress1, g.stress2.
+  virtual double Fn(const ConstantArrays& a, std::size_t k, const ContactGeometry<double>& g) const = 0;  ///< [N]
+  /// [J]; a law's stress term is not the derivative of a potential and is left out.
+  virtual double normal_energy(const ConstantArrays& a, std::size_t k, const ContactGeometry<double>& g) const = 0;
+  /// Tangential stiffness [N/m] (a model with a body state: at its bodies' states).
+  virtual double kt(const ConstantArrays& a, std::size_t k, const ContactGeometry<double>& g) const = 0;
   /// The length an overlap is measured against: `r_min` (the smaller sphere's radius) unless
   /// the model says otherwise (the soft-particle model: its R, so that h / R is Δn).
   virtual double overlap_scale(const ConstantArrays& a, std::size_t k, double r_min) const = 0;

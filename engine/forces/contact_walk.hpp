@@ -4,6 +4,7 @@
 // it, so they see the law the force loops run.
 #pragma once
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 #include "contact/tsuji_tangential.hpp"
@@ -22,12 +23,21 @@ struct ClosedContact {
   std::size_t k = 0;                  ///< its position in its list (and in `constants`)
   const Vec3* spring = nullptr;       ///< the tangential spring (null without friction)
   double body1 = 0.0, body2 = 0.0;    ///< the bodies' states at the last force evaluation (a model with one)
+  V3<double> n{};                     ///< the unit normal, from body 2 to body 1 (from j to i; a wall's towards the sphere)
+  /// The bodies' stress tensors of the last force evaluation (a law with a stress term; a wall's: none).
+  BodyStress stress1{}, stress2{};
 
-  /// The normal law's force [N] and elastic energy [J].
-  double Fn() const { return model->Fn(*constants, k, h, body1, body2); }
-  double normal_energy() const { return model->normal_energy(*constants, k, h, body1, body2); }
+  /// What the contact's law reads of it.
+  ContactGeometry<double> geometry() const {
+    ContactGeometry<double> g{};
+    g.n = n, g.h = h, g.body1 = body1, g.body2 = body2, g.stress1 = stress1, g.stress2 = stress2;
+    return g;
+  }
+  /// The normal law's force [N] and elastic energy [J] (without a stress term: it has no potential).
+  double Fn() const { return model->Fn(*constants, k, geometry()); }
+  double normal_energy() const { return model->normal_energy(*constants, k, geometry()); }
   /// The tangential stiffness kt [N/m] (Eq. 5; Eq. 8 for a soft-particle).
-  double kt() const { return model->kt(*constants, k, h, body1, body2); }
+  double kt() const { return model->kt(*constants, k, geometry()); }
   /// The spring's elastic energy, 1/2 kt |xi|^2 [J] (0 without friction).
   double spring_energy() const { return spring ? tsuji::energy(kt(), v3(*spring)) : 0.0; }
   /// The length the overlap is measured against (the smaller sphere's radius; a soft-particle's
@@ -44,12 +54,18 @@ void for_each_closed_in_family(const World& world, const ContactFamily& lists, c
   const Particles& p = world.p;
   const PairList& pairs = lists.pairs;
   const auto body = [&](int i) { return lists.body_state.empty() ? 0.0 : lists.body_state[static_cast<std::size_t>(i)]; };
+  const auto stress = [&](int i) {
+    const auto s = static_cast<std::size_t>(i);
+    return lists.body_stress.empty() ? BodyStress{} : BodyStress{&lists.body_stress[s], p.r[s]};
+  };
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const int i = pairs.i[k], j = pairs.j[k];
-    const double h = pairs.r_sum[k] - (p.x[i] - p.x[j]).norm();
+    const Vec3 d = p.x[i] - p.x[j];
+    const double dist = d.norm(), h = pairs.r_sum[k] - dist;
     if (!(h > 0.0)) continue;
     ClosedContact c{ClosedContact::Kind::pair, i, j, -1, h, &model, &pairs.k, k, pairs.spring.empty() ? nullptr : &pairs.spring[k]};
-    c.body1 = body(i), c.body2 = body(j);
+    c.body1 = body(i), c.body2 = body(j), c.n = v3(Vec3(d * (1.0 / dist)));  // as the force loop's
+    c.stress1 = stress(i), c.stress2 = stress(j);
     f(std::as_const(c));
   }
   const auto walls = [&](const auto& shapes, const std::vector<WallList>& wall_lists, ClosedContact::Kind kind) {
@@ -60,7 +76,9 @@ void for_each_closed_in_family(const World& world, const ContactFamily& lists, c
         const double h = shapes[w].overlap(p.x[i], p.r[i]);
         if (!(h > 0.0)) continue;
         ClosedContact c{kind, i, -1, static_cast<int>(w), h, &model, &l.k, k, l.spring.empty() ? nullptr : &l.spring[k]};
-        c.body1 = body(i);
+        c.body1 = body(i), c.stress1 = stress(i);
+        if constexpr (std::is_same_v<std::decay_t<decltype(shapes[w])>, PlaneWall>) c.n = v3(shapes[w].normal);
+        else c.n = v3(Vec3(-(p.x[i] - shapes[w].centre).normalized()));  // inwards
         f(std::as_const(c));
       }
     }

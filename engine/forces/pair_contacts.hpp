@@ -44,6 +44,7 @@ struct SphereArrays {
   Vec3* T = nullptr;
   double* body = nullptr;  ///< the per-body pass's state (a model with one: contact/contact_model.hpp BodyStateModel)
   BodyCaps* caps = nullptr;  ///< the per-body pass's caps (a model whose state is made from them: BodyCapsModel)
+  SymmetricTensor* stress = nullptr;  ///< the stress pass's tensors (a law with a stress term: BodyStressModel)
 };
 
 template <Effects Fx>
@@ -257,6 +258,31 @@ struct PairContacts {
             s.caps[j.v[m]].u.push_back(u), s.caps[j.v[m]].depth.push_back(lane(depth, m));
         }
       }
+  }
+
+  /// The stress pass: each of pairs k's base force (evaluate() at the final states) times n ⊗ n
+  /// added to the tensors of spheres i and j, for the first `live` lanes in order, as add_body_terms.
+  template <class Model, class Isa>
+  [[gnu::always_inline]] void add_stress_terms(Isa isa, const typename Model::Params& params, simd::Index k, int live) {
+    using simd::Wide;
+    const simd::Index i = simd::gather(isa, list.i.data(), k), j = simd::gather(isa, list.j.data(), k);
+    const V3<Wide> d = gather_vec3(isa, s.x, i) - gather_vec3(isa, s.x, j);
+    const Wide dist = simd::sqrt(dot(d, d));
+    ContactGeometry<Wide> g{};  // as gather() makes it
+    g.n = d * (Wide(1.0) / dist), g.h = simd::gather(isa, list.r_sum.data(), k) - dist;
+    g.body1 = simd::gather(isa, s.body, i), g.body2 = simd::gather(isa, s.body, j);
+    const auto constants = gather_normal_constants<Model>(isa, list.k, k);
+    for (int m = 0; m < live; ++m) {
+      const double Fn = base_normal_force<Model>(params, constants, g, m);
+      if (!ghost) add_stress(s.stress[i.v[m]], Fn, lane(g.n, m));
+      if (static_cast<std::size_t>(j.v[m]) < j_end) add_stress(s.stress[j.v[m]], Fn, lane(g.n, m));
+    }
+  }
+  /// Lane m's tensors and radii of spheres i and j, for a law with a stress term (none without the pass).
+  template <class Lanes>
+  [[gnu::always_inline]] void lane_stress(const Lanes& c, int m, ContactGeometry<double>& g) const {
+    if (!s.stress) return;
+    g.stress1 = {&s.stress[c.i.v[m]], s.r[c.i.v[m]]}, g.stress2 = {&s.stress[c.j.v[m]], s.r[c.j.v[m]]};
   }
 
   /// The bodies' states of the lanes' pairs, for a law that reads them.

@@ -111,6 +111,24 @@ struct WallContacts {
       }
   }
 
+  /// The stress pass: each of entries k's base force times n ⊗ n added to its sphere's tensor.
+  template <class Model, class Isa>
+  [[gnu::always_inline]] void add_stress_terms(Isa isa, const typename Model::Params& params, simd::Index k, int live) {
+    const simd::Index i = simd::gather(isa, list.i.data(), k);
+    ContactGeometry<W> g{};  // as gather() makes it
+    V3<W> u;
+    W ai;
+    geometry(gather_vec3(isa, s.x, i), simd::gather(isa, s.r, i), g.n, g.h, ai, u);
+    g.body1 = simd::gather(isa, s.body, i), g.body2 = W(0.0);
+    const auto constants = gather_normal_constants<Model>(isa, list.k, k);
+    for (int m = 0; m < live; ++m) add_stress(s.stress[i.v[m]], base_normal_force<Model>(params, constants, g, m), lane(g.n, m));
+  }
+  /// Lane m's tensor and radius of the sphere, for a law with a stress term (the wall has none).
+  template <class Lanes>
+  [[gnu::always_inline]] void lane_stress(const Lanes& c, int m, ContactGeometry<double>& g) const {
+    if (s.stress) g.stress1 = {&s.stress[c.i.v[m]], s.r[c.i.v[m]]};
+  }
+
   /// The sphere's state of the lanes' entries (the wall has none: 0), for a law that reads them.
   template <class Isa, class Lanes>
   [[gnu::always_inline]] void gather_body(Isa isa, Lanes& c) const {

@@ -111,6 +111,9 @@ struct ContactFamily {
   std::vector<double> body_state;
   /// Each sphere's caps, when the model's state is made from them (BodyCapsModel); empty otherwise.
   std::vector<BodyCaps> body_caps;
+  /// Each sphere's stress tensor from the stress pass of the last force evaluation, Σ Fn n ⊗ n over
+  /// its closed contacts [N], when the model's law has a stress term (BodyStressModel); empty otherwise.
+  std::vector<SymmetricTensor> body_stress;
 };
 
 /// Every list of a scene, one family per contact model: family 0 the scene's model

@@ -15,6 +15,7 @@
 #include "core/suggest.hpp"
 #include "core/types.hpp"
 #include "formats/json_input.hpp"
+#include "formats/law_file_json.hpp"
 #include "io/atomic_file.hpp"
 
 namespace softpack {
@@ -23,13 +24,14 @@ namespace {
 using json = nlohmann::ordered_json;
 using Keys = std::vector<std::string>;
 
-constexpr const char* kFormat = "softpack-laws";
-constexpr const char *kForce = "N", *kStiffness = "N/m", *kOne = "1", *kMetre = "m";
+using law_json::kFormat, law_json::kForce, law_json::kStiffness, law_json::kOne, law_json::kMetre;
 const Keys kTopKeys = {"format", "version", "reference_radius", "models", "scenes", "mixing", "many_body", "provenance"};
 const Keys kManyBodyKeys = {"form", "beta", "tangential", "source", "grain", "soft_soft"};
 const Keys kManyBodyForms = {"volumetric", "volumetric-union"};
 const Keys kGrainKeys = {"exponent", "beta"};
-const Keys kSoftSoftKeys = {"beta"};
+const Keys kSoftSoftKeys = {"beta", "stress"};
+const Keys kStressKeys = {"form", "kappa"};
+const Keys kStressForms = {"mean", "normal", "lateral"};
 const Keys kManyBodyTangential = {"pairwise", "gain"};
 const Keys kSceneNames = {"soft-solid", "soft-soft"};
 const Keys kSceneKeys = {"normal", "tangential", "friction", "normal_scaling", "tangential_scaling"};
@@ -42,74 +44,6 @@ const Keys kVariants = {"fixed", "self-similar"};
 const Keys kMixingKeys = {"rule", "checked_ratio", "deviation"};
 const Keys kRules = {"reduced-radius"};
 const Keys kProvenanceKeys = {"study", "seeds", "code_version", "created", "notes"};
-
-// ---- writing ----
-
-json num(double x) { return std::isnan(x) ? json(nullptr) : json(x); }  // ±inf stays: the check refuses it
-
-json value_json(const LawValue& v, const char* unit) { return {{"value", num(v.value)}, {"error", num(v.error)}, {"unit", unit}}; }
-
-json law_json(const LawFit& f, const char* unit) {
-  return {{"a", value_json(f.a, unit)},
-          {"b", value_json(f.b, kOne)},
-          {"c", value_json(f.c, unit)},
-          {"delta", value_json(f.delta, kOne)},
-          {"delta_n_range", json::array({num(f.delta_n_min), num(f.delta_n_max)})}};
-}
-
-json scaling_json(const RadiusScaling& s) {
-  return {{"exponent", value_json(s.exponent, kOne)},
-          {"radius_range", {{"value", json::array({num(s.R_min), num(s.R_max)})}, {"unit", kMetre}}},
-          {"variant", s.variant}};
-}
-
-json file_json(const LawFile& f) {
-  json out;
-  out["format"] = kFormat;
-  out["version"] = f.version;
-  out["reference_radius"] = {{"value", num(f.reference_radius)}, {"unit", kMetre}};
-  out["models"] = {{"normal", "Fn = a dn^b + c for dn >= delta, 0 below (Eq. 7); dn = hn / R"},
-                   {"tangential", "kt = a dn^b + c for dn >= delta, 0 below (Eq. 8); Ft = kt ht until |Ft| = mu_soft Fn"},
-                   {"friction", "mu_soft = |Ft| / Fn while the contact slides, measured at each dn"},
-                   {"radius_scaling", "X(R) = X(R0) (R/R0)^exponent at fixed dn"},
-                   {"mixing", "radii R1 != R2: the soft-soft law at R_eq = 2 R1 R2 / (R1 + R2)"}};
-  if (f.many_body)
-    out["models"]["many_body"] =
-        "volumetric: Fn_k = X(d*) a(dn_k) / a(d*), v(d*) = v(dn_k) + beta (E - v(dn_k)), v(d) = d^2 (3 - d) / 4, a(d) = 2d - d^2, " +
-        std::string(f.many_body->form == "volumetric-union" ? "E the volume the soft-particle's contact caps cut together (their union)"
-                                                            : "E the sum of v over the soft-particle's contacts") +
-        std::string(f.many_body->grain ? "; a grain of radius r: X times ((r/R) / (1 + r/R))^grain.exponent, beta = grain.beta" : "") +
-        std::string(f.many_body->soft_beta ? "; two soft-particles: beta = soft_soft.beta, E - v the mean of theirs" : "") +
-        std::string(f.many_body->tangential == "gain" ? "; kt_k = Eq. 8 at dn_k times Fn_k / X(dn_k)" : "");
-  json scenes = json::object();
-  for (const auto& [name, s] : f.scenes) {
-    json j;
-    j["normal"] = law_json(s.normal, kForce);
-    if (s.tangential) j["tangential"] = law_json(*s.tangential, kStiffness);
-    if (s.friction) {
-      json mu = json::array();
-      for (const LawValue& m : s.friction->mu) mu.push_back(value_json(m, kOne));
-      json dn = json::array();
-      for (double x : s.friction->delta_n) dn.push_back(num(x));
-      j["friction"] = {{"delta_n", dn}, {"mu", mu}};
-    }
-    if (s.normal_scaling) j["normal_scaling"] = scaling_json(*s.normal_scaling);
-    if (s.tangential_scaling) j["tangential_scaling"] = scaling_json(*s.tangential_scaling);
-    scenes[name] = j;
-  }
-  out["scenes"] = scenes;
-  if (f.mixing)
-    out["mixing"] = {{"rule", f.mixing->rule}, {"checked_ratio", num(f.mixing->checked_ratio)}, {"deviation", value_json(f.mixing->deviation, kOne)}};
-  if (f.many_body) {
-    const ManyBodyFit& m = *f.many_body;
-    out["many_body"] = {{"form", m.form}, {"beta", value_json(m.beta, kOne)}, {"tangential", m.tangential}, {"source", m.source}};
-    if (m.grain) out["many_body"]["grain"] = {{"exponent", value_json(m.grain->exponent, kOne)}, {"beta", value_json(m.grain->beta, kOne)}};
-    if (m.soft_beta) out["many_body"]["soft_soft"] = {{"beta", value_json(*m.soft_beta, kOne)}};
-  }
-  const LawFileProvenance& p = f.provenance;
-  out["provenance"] = {{"study", p.study}, {"seeds", p.seeds}, {"code_version", p.code_version}, {"created", p.created}, {"notes", p.notes}};
-  return out;
-}
 
 // ---- reading: every refusal "<file>: <field>: <what was found> ...; allowed: <what is>" ----
 
@@ -228,9 +162,21 @@ class Reader {
     if (const json* g = find(m, "grain"))
       object(*g, "many_body.grain", kGrainKeys),
           mb.grain = ManyBodyGrainFit{bounded(*g, "many_body.grain", "exponent", 0.0, 10.0), bounded(*g, "many_body.grain", "beta", 0.0, 10.0)};
-    if (const json* ss = find(m, "soft_soft"))
+    if (const json* ss = find(m, "soft_soft")) {
       object(*ss, "many_body.soft_soft", kSoftSoftKeys), mb.soft_beta = bounded(*ss, "many_body.soft_soft", "beta", 0.0, 10.0);
+      if (const json* st = find(*ss, "stress")) mb.soft_stress = stress(*st, f);
+    }
     return mb;
+  }
+
+  ManyBodyStressFit stress(const json& st, const LawFile& f) const {
+    const std::string field = "many_body.soft_soft.stress";
+    if (f.version < 4) fail(field, fmt::format("not allowed in a version {} file; allowed: version 4 or later (the soft-soft stress term)", f.version));
+    object(st, field, kStressKeys);
+    ManyBodyStressFit s;
+    s.form = literal(need(st, field, "form", quoted(kStressForms)), child(field, "form"), kStressForms);
+    s.kappa = bounded(st, field, "kappa", 0.0, 10.0);
+    return s;
   }
 
   LawFit law(const json& j, const std::string& field, const char* unit) const {
@@ -382,7 +328,7 @@ class Reader {
 }  // namespace
 
 void write_law_file(const std::string& path, const LawFile& f) {
-  const json j = file_json(f);
+  const json j = law_json::file(f);
   Reader(path).file(j);  // what would not be read back is refused before anything is written
   write_file_atomically(path, j.dump(2) + "\n");
 }

@@ -1,9 +1,9 @@
 // The law file: the measured soft-particle contact laws in one versioned JSON file that a
 // simulation can read (a soft-particle as one sphere with these laws). Version 2 (issue 33) adds
-// the many-body law (contact/soft_particle_law.hpp ManyBodyLaw); version 1 files are read as they
-// were. JSON:
+// the many-body law (contact/soft_particle_law.hpp ManyBodyLaw), version 3 its third version's
+// keys, version 4 the soft-soft stress term; earlier files are read as they were. JSON:
 //
-//   {"format": "softpack-laws", "version": 2,
+//   {"format": "softpack-laws", "version": 4,
 //    "reference_radius": {"value": R0, "unit": "m"},
 //    "models": {"normal", "tangential", "friction", "radius_scaling", "mixing"}  (texts; not read),
 //    "scenes": {"soft-solid": {                       (and/or "soft-soft"; at least one)
@@ -21,9 +21,11 @@
 //    "many_body": {"form": "volumetric" | "volumetric-union", "beta": {…, "unit": "1"},
 //                  "tangential": "pairwise" | "gain", "source": text,
 //                  "grain": {"exponent": {…, "unit": "1"}, "beta": {…, "unit": "1"}},
-//                  "soft_soft": {"beta": {…, "unit": "1"}}}
+//                  "soft_soft": {"beta": {…, "unit": "1"},
+//                                "stress": {"form": "mean" | "normal" | "lateral", "kappa": {…, "unit": "1"}}}}
 //                  (optional; version 2: form volumetric, no grain, no soft_soft; version 3 (the
-//                  third version, paper/many-body.md): all; tangential absent: pairwise),
+//                  third version, paper/many-body.md): all but stress; version 4: stress too (the
+//                  soft-soft stress term, ManyBodyLaw::SoftStress); tangential absent: pairwise),
 //    "provenance": {"study", "seeds": [...], "code_version", "created", "notes"}}
 //
 // NaN is written as null and read back as NaN: an "error" may always be null (not known), a
@@ -35,7 +37,8 @@
 // another length than mu (or empty), a variant or rule not listed above, a radius_range not
 // 0 < R_min <= R_max, a checked_ratio <= 0, a many_body in a version 1 file, a form other than
 // "volumetric" (version 2) or "volumetric-union" (version 3), a beta outside 0 <= beta <= 10, a grain
-// exponent outside 0 <= p <= 10, grain or soft_soft in a version 2 file.
+// exponent outside 0 <= p <= 10, grain or soft_soft in a version 2 file, a stress in a file before
+// version 4, a stress form not listed above, a kappa outside 0 <= kappa <= 10.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -49,7 +52,7 @@
 namespace softpack {
 
 /// The version of the law file this build writes; it reads this one and every earlier one.
-inline constexpr int kLawFileVersion = 3;
+inline constexpr int kLawFileVersion = 4;
 
 /// A measured value and its standard error (NaN: not known).
 struct LawValue {
@@ -102,8 +105,16 @@ struct ManyBodyGrainFit {
   LawValue exponent, beta;
 };
 
+/// The soft-soft stress term (version 4; contact/soft_particle_law.hpp ManyBodyLaw::SoftStress):
+/// the stress of each soft-particle's other contacts, by `form`, pushing on the contact's cap.
+struct ManyBodyStressFit {
+  std::string form = "mean";  ///< "mean", "normal" (along the contact) or "lateral" (across it)
+  LawValue kappa;             ///< κ, 0 <= κ <= 10
+};
+
 /// The many-body law (version 2; version 3 adds the union form, the grains' and the
-/// soft-particles' own): the volumetric form's β, fitted on the many-body probe.
+/// soft-particles' own; version 4 the soft-soft stress term): the volumetric form's β, fitted on
+/// the many-body probe.
 struct ManyBodyFit {
   std::string form = "volumetric";      ///< "volumetric-union": E the union of the caps (version 3)
   LawValue beta;                        ///< the walls' (and every contact's without its own)
@@ -111,6 +122,7 @@ struct ManyBodyFit {
   std::string tangential = "pairwise";  ///< "gain": kt times the normal gain (absent: pairwise)
   std::optional<ManyBodyGrainFit> grain{};  ///< none: a grain as a wall, the walls' β
   std::optional<LawValue> soft_beta{};    ///< β of soft-soft contacts; none: the walls'
+  std::optional<ManyBodyStressFit> soft_stress{};  ///< the soft-soft stress term (with soft_beta); none: no term
 };
 
 struct LawFileProvenance {
@@ -140,7 +152,8 @@ LawFile read_law_file(const std::string& path);
 /// c >= 0), the radius exponents with their measured radii, μ_soft per Δn. `source` names the
 /// file in messages. The scaling is used whatever its variant: with "fixed" a larger
 /// soft-particle holds more grains of the same size, with "self-similar" larger grains; the
-/// many-body law's β (version 2). Defined with the scene files' laws, formats/scene_laws.cpp.
+/// many-body law (version 2 on; its stress term, version 4). Defined with the scene files' laws,
+/// formats/scene_laws.cpp.
 SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source);
 
 }  // namespace softpack

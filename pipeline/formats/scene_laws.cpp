@@ -85,6 +85,11 @@ SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source)
     law.beta = m.beta.value, law.tangential_gain = m.tangential == "gain", law.union_of_caps = m.form == "volumetric-union";
     if (m.grain) law.grain_exponent = m.grain->exponent.value, law.grain_beta = m.grain->beta.value;
     if (m.soft_beta) law.soft_beta = m.soft_beta->value;
+    if (m.soft_stress) {
+      using Form = ManyBodyLaw::SoftStress::Form;
+      const std::string& form = m.soft_stress->form;
+      law.soft_stress = ManyBodyLaw::SoftStress{form == "normal" ? Form::normal : form == "lateral" ? Form::lateral : Form::mean, m.soft_stress->kappa.value};
+    }
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "profile/profile.hpp"
 
 namespace softpack {
 namespace {

@@ -186,7 +186,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
   const std::string source = fmt::format("{} (softpack-coarse probe-report, {}): {}/{}", plan_path, code_version(), out_dir, third ? "third-version.md" : "probe.md");
   if (third || (a.enters_engine && a.chosen == "volumetric")) {
     LawFile laws = read_law_file(plan.settings.laws);
-    laws.version = kLawFileVersion;
+    laws.version = 3;  // the third version's keys, no stress term (version 4's): the file as before version 4
     if (third) {
       const auto c = std::find_if(third->count.begin(), third->count.end(), [&](const auto& f) { return f.name == third->count_chosen; });
       laws.many_body = ManyBodyFit{};
@@ -202,7 +202,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     laws.provenance.notes += fmt::format("many_body added from the many-body probe ({}, seeds {}{}).", plan_path, fmt::join(plan.seeds, ", "),
                                          third ? ", its third version" : "");
     write_law_file_if_changed(laws_path, laws);
-    md += fmt::format("\nThe law file with it: `{}` (version {}: {}'s laws, many_body {} β = {:.3f} ± {:.3f}{}).\n", laws_path, kLawFileVersion,
+    md += fmt::format("\nThe law file with it: `{}` (version {}: {}'s laws, many_body {} β = {:.3f} ± {:.3f}{}).\n", laws_path, laws.version,
                       plan.settings.laws, laws.many_body->form, laws.many_body->beta.value, laws.many_body->beta.error,
                       third ? ", with the grains', the soft-particles' and the tangential gain of third-version.md" : "");
     j["laws"] = laws_path;
