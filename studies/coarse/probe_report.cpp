@@ -221,8 +221,26 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
       std::filesystem::remove(v4_path);
       if (f) md += fmt::format("\nThe fourth part's {} enters by its rule, but the engine has no such form: no fourth version's law file.\n", f->name);
     }
-    if (fifth && fifth->enters_engine) {
-      md += fmt::format("\nThe fifth part's {} enters by its rule; the engine has no such form yet (paper/many-body.md, the fifth part's plan, 5).\n", fifth->chosen);
+    // laws-v5.json: the law's fifth version, the fourth's with the soft-soft stress term — the
+    // sixth part's form where its rule lets it in, else the fifth part's where its own did
+    // (paper/many-body.md, "Next: the neighbour's stress along the contact", 4)
+    const std::string v5_path = out_dir + "/laws-v5.json";
+    const SoftSoftVersion::Form* s6 = sixth && sixth->enters_engine ? &sixth->form(sixth->chosen) : nullptr;
+    const SoftSoftVersion::Form* s5 = fifth && fifth->enters_engine ? &fifth->form(fifth->chosen) : nullptr;
+    if (const SoftSoftVersion::Form* st = s6 ? s6 : s5; st && f && f->name == "volumetric-union") {
+      const std::string form = st->stress == "stress-normal" ? "normal" : st->stress == "stress-lateral" ? "lateral" : "mean";
+      laws.version = kLawFileVersion;
+      laws.many_body->soft_beta = LawValue{st->beta_ss.value, st->beta_ss.se};
+      laws.many_body->soft_stress = ManyBodyStressFit{form, LawValue{st->parameter.value, st->parameter.se}};
+      const std::string part = s6 ? "sixth-version.md" : "fifth-version.md";
+      laws.many_body->source = fmt::format("{} (softpack-coarse probe-report, {}): {}/third-version.md, β_ss and the stress term of {}/{}", plan_path,
+                                           code_version(), out_dir, out_dir, part);
+      laws.provenance.notes += fmt::format(" The fifth version: the soft-soft stress term of the probe's {} part.", s6 ? "sixth" : "fifth");
+      write_law_file_if_changed(v5_path, laws);
+      md += fmt::format("\nThe law's fifth version: `{}` (the fourth's with β_ss = {:.3f} ± {:.3f} and the {} stress term, κ = {:.3f} ± {:.3f}, of {}).\n", v5_path,
+                        st->beta_ss.value, st->beta_ss.se, form, st->parameter.value, st->parameter.se, part);
+    } else if (fifth) {  // analysed and not let in
+      std::filesystem::remove(v5_path);
     }
   } else {
     std::filesystem::remove(laws_path);
