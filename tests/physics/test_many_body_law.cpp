@@ -20,35 +20,24 @@
 #include "forces/contact_walk.hpp"
 #include "state/state_digest.hpp"
 #include "sim/simulation.hpp"
+#include "support/written_out_laws.hpp"
 #include "support/scenes.hpp"
 
 namespace softpack {
 namespace {
 
-const std::string kLaws = std::string(SOFTPACK_SOURCE_DIR) + "/data/radius/report/laws.json";
+using testing::cap_base;
+using testing::cap_depth;
+using testing::cap_volume;
+using testing::eq7;
+using testing::soft_particle;
+
 constexpr double kBeta = 0.9;
 
-const LawFile& pairwise_file() {
-  static const LawFile f = read_law_file(kLaws);
-  return f;
-}
-
 SoftParticleLaws laws(bool many_body, bool kt_gain = false) {
-  LawFile f = pairwise_file();
+  LawFile f = testing::pairwise_law_file();
   if (many_body) f.version = 2, f.many_body = ManyBodyFit{"volumetric", {kBeta, 0.0}, "test", kt_gain ? "gain" : "pairwise"};
-  return soft_particle_laws(f, kLaws);
-}
-
-double eq7(double dn) {
-  const LawFit& f = pairwise_file().scenes.at("soft-solid").normal;
-  return dn >= f.delta.value ? f.a.value * std::pow(dn, f.b.value) + f.c.value : 0.0;
-}
-double v(double d) { return d * d * (3.0 - d) / 4.0; }
-double a(double d) { return 2.0 * d - d * d; }
-double depth(double eps) {  // v(δ) = eps by bisection
-  double lo = 0.0, hi = 2.0;
-  for (int i = 0; i < 100; ++i) (v(0.5 * (lo + hi)) < eps ? lo : hi) = 0.5 * (lo + hi);
-  return 0.5 * (lo + hi);
+  return soft_particle_laws(f, testing::kPairwiseLaws);
 }
 
 SceneDef soft_scene(bool many_body, bool friction, bool kt_gain = false) {
@@ -56,13 +45,6 @@ SceneDef soft_scene(bool many_body, bool friction, bool kt_gain = false) {
   s.effects.soft_particles = SoftParticlesDef{laws(many_body, kt_gain), GrainContactRule::wall, SoftParticlesDef::BeyondRange::report};
   s.effects.friction = friction;
   return s;
-}
-
-ParticleDef soft_particle(const Vec3& x, double r) {
-  ParticleDef p;
-  p.x = x, p.r = r, p.soft = true;
-  p.mass = 0.65 * 2500.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  return p;
 }
 
 // A soft-particle of radius R at the origin, held, pressed to dn by the plane z = -R (1 - dn) and,
@@ -77,7 +59,7 @@ SceneDef between_walls(bool many_body, double R, double dn, bool two, bool kt_ga
 }
 
 TEST(ManyBodySoftParticles, OneContactIsThePairwiseLawOfTheSameFile) {
-  const double R0 = pairwise_file().reference_radius;
+  const double R0 = testing::pairwise_law_file().reference_radius;
   for (const double dn : {0.12, 0.2, 0.3, 0.45}) {
     Simulation one(between_walls(true, R0, dn, false)), pairwise(between_walls(false, R0, dn, false));
     EXPECT_STREQ(one.force_field().model(1).name(), "soft-particle-many-body");
@@ -88,12 +70,12 @@ TEST(ManyBodySoftParticles, OneContactIsThePairwiseLawOfTheSameFile) {
 }
 
 TEST(ManyBodySoftParticles, TwoOppositeWallsPressByTheLawWrittenOut) {
-  const double R0 = pairwise_file().reference_radius;
+  const double R0 = testing::pairwise_law_file().reference_radius;
   for (const double dn : {0.08, 0.15, 0.25, 0.35}) {
     Simulation sim(between_walls(true, R0, dn, true));
-    const double star = depth(v(dn) + kBeta * v(dn));
-    const double expected = eq7(star) * a(dn) / a(star);
-    ASSERT_GT(expected, eq7(dn)) << dn;  // the other wall stiffens the contact
+    const double star = cap_depth(cap_volume(dn) + kBeta * cap_volume(dn));
+    const double expected = eq7("soft-solid", star) * cap_base(dn) / cap_base(star);
+    ASSERT_GT(expected, eq7("soft-solid", dn)) << dn;  // the other wall stiffens the contact
     EXPECT_NEAR(-sim.plane_loads()[0].force.z(), expected, 1e-9 * expected) << dn;
     EXPECT_NEAR(sim.plane_loads()[1].force.z(), expected, 1e-9 * expected) << dn;
     EXPECT_NEAR(sim.particles().F[0].norm(), 0.0, 1e-12 * expected);
@@ -103,8 +85,8 @@ TEST(ManyBodySoftParticles, TwoOppositeWallsPressByTheLawWrittenOut) {
 // kt (Eq. 8, the law file's) with tangential "gain": times the contact's normal gain, Fn over
 // Eq. 7 (the probe's confined shear); one contact keeps Eq. 8's kt exactly.
 TEST(ManyBodySoftParticles, TheTangentialGainScalesKtAsTheNormalForce) {
-  const double R0 = pairwise_file().reference_radius;
-  const LawFit& t = *pairwise_file().scenes.at("soft-solid").tangential;
+  const double R0 = testing::pairwise_law_file().reference_radius;
+  const LawFit& t = *testing::pairwise_law_file().scenes.at("soft-solid").tangential;
   const auto eq8 = [&](double dn) { return t.a.value * std::pow(dn, t.b.value) + t.c.value; };
   const auto kts = [](const Simulation& sim) {
     std::vector<double> out;
@@ -112,8 +94,8 @@ TEST(ManyBodySoftParticles, TheTangentialGainScalesKtAsTheNormalForce) {
     return out;
   };
   for (const double dn : {0.15, 0.25, 0.35}) {
-    const double star = depth(v(dn) + kBeta * v(dn));
-    const double gain = eq7(star) * a(dn) / a(star) / eq7(dn);
+    const double star = cap_depth(cap_volume(dn) + kBeta * cap_volume(dn));
+    const double gain = eq7("soft-solid", star) * cap_base(dn) / cap_base(star) / eq7("soft-solid", dn);
     const auto two = kts(Simulation(between_walls(true, R0, dn, true, true)));
     ASSERT_EQ(two.size(), 2u);
     for (const double kt : two) EXPECT_NEAR(kt, gain * eq8(dn), 1e-9 * gain * eq8(dn)) << dn;
@@ -125,11 +107,11 @@ TEST(ManyBodySoftParticles, TheTangentialGainScalesKtAsTheNormalForce) {
 
 // A scene whose law file has no many_body pays nothing: the pairwise model, no body state.
 TEST(ManyBodySoftParticles, AVersion1LawFileRunsThePairwiseModelWithoutAPerBodyPass) {
-  Simulation sim(between_walls(false, pairwise_file().reference_radius, 0.2, true));
+  Simulation sim(between_walls(false, testing::pairwise_law_file().reference_radius, 0.2, true));
   EXPECT_STREQ(sim.force_field().model(1).name(), "soft-particle");
   EXPECT_FALSE(sim.force_field().model(1).body_state());
   EXPECT_TRUE(sim.contact_lists().family.at(kSoftParticleFamily).body_state.empty());
-  Simulation many(between_walls(true, pairwise_file().reference_radius, 0.2, true));
+  Simulation many(between_walls(true, testing::pairwise_law_file().reference_radius, 0.2, true));
   EXPECT_TRUE(many.force_field().model(1).body_state());
 }
 
@@ -140,9 +122,9 @@ TEST(ManyBodySoftParticles, AVersion1LawFileRunsThePairwiseModelWithoutAPerBodyP
 TEST(ManyBodySoftParticles, TheCapsUnionIsExactWhereItIsKnown) {
   const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
   const int m = kCapUnionMeridians;
-  EXPECT_NEAR(cap_union_volume({z}, {0.3}, m), v(0.3), 1e-15);
-  EXPECT_NEAR(cap_union_volume({z, -z}, {0.3, 0.2}, m), v(0.3) + v(0.2), 1e-15);
-  EXPECT_NEAR(cap_union_volume({z, z}, {0.3, 0.2}, m), v(0.3), 1e-15);
+  EXPECT_NEAR(cap_union_volume({z}, {0.3}, m), cap_volume(0.3), 1e-15);
+  EXPECT_NEAR(cap_union_volume({z, -z}, {0.3, 0.2}, m), cap_volume(0.3) + cap_volume(0.2), 1e-15);
+  EXPECT_NEAR(cap_union_volume({z, z}, {0.3, 0.2}, m), cap_volume(0.3), 1e-15);
   EXPECT_NEAR(cap_union_volume({z, x}, {1.0, 1.0}, m), 0.75, 1e-4);
   EXPECT_NEAR(cap_union_volume({z, x, y}, {1.0, 1.0, 1.0}, m), 0.875, 1e-4);
   testing::Random rng(3);
@@ -150,7 +132,7 @@ TEST(ManyBodySoftParticles, TheCapsUnionIsExactWhereItIsKnown) {
     std::vector<Vec3> u;
     std::vector<double> d;
     double sum = 0.0, most = 0.0;
-    for (int k = 0; k < 12; ++k) u.push_back(rng.in_box(1.0).normalized()), d.push_back(0.05 + 0.35 * rng.uniform()), sum += v(d.back()), most = std::max(most, v(d.back()));
+    for (int k = 0; k < 12; ++k) u.push_back(rng.in_box(1.0).normalized()), d.push_back(0.05 + 0.35 * rng.uniform()), sum += cap_volume(d.back()), most = std::max(most, cap_volume(d.back()));
     const double U = cap_union_volume(u, d, m);
     EXPECT_LT(U, sum);
     EXPECT_GT(U, most);
@@ -223,23 +205,23 @@ TEST(ManyBodySoftParticles, TheCapsUnionHasTheBitsOfOneMeridianAtATime) {
 // (1 + r/R))^p of Eq. 7; each kind of contact has its β; the grain factor refuses the
 // reduced-radius rule.
 SoftParticleLaws third(double p) {
-  LawFile f = pairwise_file();
+  LawFile f = testing::pairwise_law_file();
   f.version = 3, f.many_body = ManyBodyFit{"volumetric-union", {kBeta, 0.0}, "test", "pairwise"};
   f.many_body->grain = ManyBodyGrainFit{{p, 0.0}, {0.7, 0.0}};
   f.many_body->soft_beta = LawValue{0.3, 0.0};
-  return soft_particle_laws(f, kLaws);
+  return soft_particle_laws(f, testing::kPairwiseLaws);
 }
 
 TEST(ManyBodySoftParticles, TheThirdVersionPressesByItsCapsUnionAndItsGrainFactor) {
-  const double R = pairwise_file().reference_radius, p = 1.3;
+  const double R = testing::pairwise_law_file().reference_radius, p = 1.3;
   for (const double dn : {0.2, 0.35}) {
     SceneDef s = between_walls(true, R, dn, false);
     s.effects.soft_particles->laws = third(p);
     s.planes.push_back(PlaneDef{"side", Vec3(-R * (1.0 - dn), 0, 0), Vec3::UnitX(), 0});
     Simulation sim(s);
     const double U = cap_union_volume({-Vec3::UnitZ(), -Vec3::UnitX()}, {dn, dn}, kCapUnionMeridians);
-    const double star = depth(v(dn) + kBeta * (U - v(dn))), expected = eq7(star) * a(dn) / a(star);
-    EXPECT_EQ(U < 2.0 * v(dn) - 1e-6, dn > 0.3) << dn;  // the caps meet once their half-angles add to more than 90 degrees
+    const double star = cap_depth(cap_volume(dn) + kBeta * (U - cap_volume(dn))), expected = eq7("soft-solid", star) * cap_base(dn) / cap_base(star);
+    EXPECT_EQ(U < 2.0 * cap_volume(dn) - 1e-6, dn > 0.3) << dn;  // the caps meet once their half-angles add to more than 90 degrees
     EXPECT_NEAR(sim.plane_loads()[0].force.norm(), expected, 1e-9 * expected) << dn;
     EXPECT_NEAR(sim.plane_loads()[1].force.norm(), expected, 1e-9 * expected) << dn;
   }
@@ -251,7 +233,7 @@ TEST(ManyBodySoftParticles, TheThirdVersionPressesByItsCapsUnionAndItsGrainFacto
     s.particles = {soft_particle(Vec3::Zero(), R), grain};
     s.drivers = {HoldGroupDef{GroupDef{}}};
     Simulation sim(s);
-    const double expected = std::pow(x / (1.0 + x), p) * eq7(0.25);
+    const double expected = std::pow(x / (1.0 + x), p) * eq7("soft-solid", 0.25);
     EXPECT_NEAR(sim.particles().F[0].norm(), expected, 1e-9 * expected) << x;
   }
   const SoftParticleLaws laws = third(p);
@@ -273,7 +255,7 @@ TEST(ManyBodySoftParticles, TheThirdVersionPressesByItsCapsUnionAndItsGrainFacto
 // cloud of soft-particles and grains under the third version gives the bits of one thread on 2, 3
 // and 8, with soft-particles of two caps or more.
 TEST(ManyBodySoftParticles, TheThirdVersionGivesTheSameBitsForAnyThreadCount) {
-  const double R0 = pairwise_file().reference_radius;
+  const double R0 = testing::pairwise_law_file().reference_radius;
   const auto run = [&] {
     SceneDef s = soft_scene(true, true, true);
     s.effects.soft_particles->laws = third(1.3);
@@ -315,7 +297,7 @@ TEST(ManyBodySoftParticles, TheThirdVersionGivesTheSameBitsForAnyThreadCount) {
 // δ, so a jump there is not tried), for walls and grains, alone and with others' caps below,
 // across and far beyond the onset; a contact alone has the pairwise model's energy, bit for bit.
 TEST(ManyBodySoftParticles, TheEnergyIsTheForcesIntegral) {
-  const double R = pairwise_file().reference_radius;
+  const double R = testing::pairwise_law_file().reference_radius;
   const SoftParticleLaws laws = third(1.3);
   const SoftNormal::Params params{&laws, GrainContactRule::wall, false};
   const ContactPartners wall{ContactPartners::Kind::plane, R, 0.0, R, 1.0, 1.0, 0, true, false};
@@ -324,10 +306,10 @@ TEST(ManyBodySoftParticles, TheEnergyIsTheForcesIntegral) {
     const auto k = SoftManyBodyNormal::constants(params, b);
     for (const double dn : {0.05, 0.12, 0.3})
       for (const double rest : {0.0, 0.004, 0.05, 0.3}) {
-        const double s1 = v(dn) + rest, h = dn * R;
+        const double s1 = cap_volume(dn) + rest, h = dn * R;
         const auto Fn = [&](double x) {  // the body's E as it is, the contact's own cap at x
           ContactGeometry<double> g{};
-          g.h = x, g.body1 = s1 - v(dn) + v(x / R);
+          g.h = x, g.body1 = s1 - cap_volume(dn) + cap_volume(x / R);
           return x > 0.0 ? SoftManyBodyNormal::evaluate(params, k, g).Fn : 0.0;
         };
         constexpr int n = 200000;

@@ -14,55 +14,38 @@
 #include "forces/contact_walk.hpp"
 #include "sim/simulation.hpp"
 #include "state/state_digest.hpp"
+#include "support/written_out_laws.hpp"
 #include "support/scenes.hpp"
 
 namespace softpack {
 namespace many_body_stress {  // a name of its own: the unity build may put it beside test_many_body_law.cpp
 namespace {
 
-const std::string kLaws = std::string(SOFTPACK_SOURCE_DIR) + "/data/radius/report/laws.json";
+using testing::cap_base;
+using testing::cap_depth;
+using testing::cap_volume;
+using testing::eq7;
+using testing::soft_particle;
+
 constexpr double kBetaSoft = 0.4, kKappa = 2.5;
 
-const LawFile& pairwise_file() {
-  static const LawFile f = read_law_file(kLaws);
-  return f;
-}
-double R0() { return pairwise_file().reference_radius; }
+double R0() { return testing::pairwise_law_file().reference_radius; }
 
 // The file's laws with the many-body law (volumetric), β_ss and, with a form, the stress term.
 SoftParticleLaws laws(const std::string& form, double kappa = kKappa) {
-  LawFile f = pairwise_file();
+  LawFile f = testing::pairwise_law_file();
   f.version = 4, f.many_body = ManyBodyFit{"volumetric", {0.9, 0.0}, "test", "pairwise"};
   f.many_body->soft_beta = LawValue{kBetaSoft, 0.0};
   if (!form.empty()) f.many_body->soft_stress = ManyBodyStressFit{form, {kappa, 0.0}};
-  return soft_particle_laws(f, kLaws);
+  return soft_particle_laws(f, testing::kPairwiseLaws);
 }
 
-// Eq. 7 of the soft-soft scene at R0, from the file's numbers.
-double eq7(double dn) {
-  const LawFit& f = pairwise_file().scenes.at("soft-soft").normal;
-  return dn >= f.delta.value ? f.a.value * std::pow(dn, f.b.value) + f.c.value : 0.0;
-}
-double v(double d) { return d * d * (3.0 - d) / 4.0; }
-double a(double d) { return 2.0 * d - d * d; }
-double depth(double eps) {  // v(δ) = eps by bisection
-  double lo = 0.0, hi = 2.0;
-  for (int i = 0; i < 100; ++i) (v(0.5 * (lo + hi)) < eps ? lo : hi) = 0.5 * (lo + hi);
-  return 0.5 * (lo + hi);
-}
 // The many-body law's base force of a soft-soft contact at dn whose two soft-particles' other caps are o1, o2.
 double base(double dn, double o1, double o2) {
   const double others = 0.5 * (o1 + o2);
-  if (others == 0.0) return eq7(dn);
-  const double star = depth(v(dn) + kBetaSoft * others);
-  return eq7(star) * a(dn) / a(star);
-}
-
-ParticleDef soft_particle(const Vec3& x, double r) {
-  ParticleDef p;
-  p.x = x, p.r = r, p.soft = true;
-  p.mass = 0.65 * 2500.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  return p;
+  if (others == 0.0) return eq7("soft-soft", dn);
+  const double star = cap_depth(cap_volume(dn) + kBetaSoft * others);
+  return eq7("soft-soft", star) * cap_base(dn) / cap_base(star);
 }
 
 SceneDef held(const SoftParticleLaws& l, std::vector<ParticleDef> particles) {
@@ -77,7 +60,7 @@ TEST(ManyBodyStress, OneSoftSoftContactIsTheLawWithoutTheTerm) {
   for (const std::string form : {"mean", "normal", "lateral"})
     for (const double dn : {0.25, 0.32, 0.4}) {
       Simulation sim(held(laws(form), {soft_particle(Vec3::Zero(), R0()), soft_particle(Vec3(2.0 * R0() * (1.0 - dn / 2.0), 0, 0), R0())}));
-      const double F = eq7(dn);
+      const double F = eq7("soft-soft", dn);
       ASSERT_GT(F, 0.0);
       EXPECT_NEAR(-sim.particles().F[0].x(), F, 1e-9 * F) << form << ", dn " << dn;
       EXPECT_NEAR(sim.particles().F[1].x(), F, 1e-9 * F) << form << ", dn " << dn;
@@ -86,13 +69,13 @@ TEST(ManyBodyStress, OneSoftSoftContactIsTheLawWithoutTheTerm) {
 }
 
 // A, B, C of radius R0 along x (line) or A, B along x and C above B (L), held: the force on A is
-// the A-B contact's, Fn_base + κ π R0² a(Δn_AB) (p_A + p_B) / 2 with the tensors written out (S_A
+// the A-B contact's, Fn_base + κ π R0² cap_base(Δn_AB) (p_A + p_B) / 2 with the tensors written out (S_A
 // = F_AB x x, S_B = F_AB x x + F_BC u u, u = x or y): in the line `normal` gets the B-C contact's
 // push (n·S_B·n − F_AB = F_BC) and `lateral` none; in the L the other way round.
 TEST(ManyBodyStress, ThreeSoftParticlesPressByTheFormulaWrittenOut) {
   const double R = R0(), dAB = 0.3, dBC = 0.36, surface = 4.0 * std::numbers::pi * R * R;
-  const double F_AB = base(dAB, 0.0, v(dBC)), F_BC = base(dBC, v(dAB), 0.0);
-  ASSERT_GT(F_AB, eq7(dAB));  // the caps' part of the law is in the base force
+  const double F_AB = base(dAB, 0.0, cap_volume(dBC)), F_BC = base(dBC, cap_volume(dAB), 0.0);
+  ASSERT_GT(F_AB, eq7("soft-soft", dAB));  // the caps' part of the law is in the base force
   for (const bool line : {true, false})
     for (const std::string form : {"mean", "normal", "lateral"}) {
       const Vec3 B(2.0 * R - dAB * R, 0, 0), C = B + (2.0 * R - dBC * R) * (line ? Vec3::UnitX() : Vec3::UnitY());
@@ -100,7 +83,7 @@ TEST(ManyBodyStress, ThreeSoftParticlesPressByTheFormulaWrittenOut) {
       const double nSn_B = F_AB + (line ? F_BC : 0.0), tr_B = F_AB + F_BC;  // along x
       const double p_A = 0.0;  // A's only contact is this one: tr S_A − F_AB, n·S_A·n − F_AB, tr S_A − n·S_A·n are 0
       const double p_B = form == "mean" ? (tr_B - F_AB) / surface : form == "normal" ? 3.0 * (nSn_B - F_AB) / surface : 3.0 * (tr_B - nSn_B) / (2.0 * surface);
-      const double expected = F_AB + kKappa * std::numbers::pi * R * R * a(dAB) * 0.5 * (p_A + p_B);
+      const double expected = F_AB + kKappa * std::numbers::pi * R * R * cap_base(dAB) * 0.5 * (p_A + p_B);
       if ((form == "normal") == line || form == "mean") EXPECT_GT(expected, 1.05 * F_AB) << form << (line ? ", line" : ", L");
       else EXPECT_EQ(expected, F_AB) << form << (line ? ", line" : ", L");
       EXPECT_NEAR(-sim.particles().F[0].x(), expected, 1e-9 * expected) << form << (line ? ", line" : ", L");

@@ -16,19 +16,15 @@
 #include "sim/simulation.hpp"
 #include "state/state_digest.hpp"
 #include "support/scenes.hpp"
+#include "support/written_out_laws.hpp"
 
 namespace softpack {
 namespace {
 
-const std::string kLaws = std::string(SOFTPACK_SOURCE_DIR) + "/data/radius/report/laws.json";
-
-const LawFile& law_file() {
-  static const LawFile f = read_law_file(kLaws);
-  return f;
-}
-
-// Eq. 7 / Eq. 8 from the file's numbers: a dn^b + c above delta, 0 below.
-double eq7(const LawFit& f, double dn) { return dn >= f.delta.value ? f.a.value * std::pow(dn, f.b.value) + f.c.value : 0.0; }
+using testing::eq7;
+using testing::soft_particle;
+const std::string& kLaws = testing::kPairwiseLaws;
+const LawFile& law_file() { return testing::pairwise_law_file(); }
 
 const SceneLaws& scene_laws(const std::string& name) { return law_file().scenes.at(name); }
 
@@ -40,12 +36,6 @@ SceneDef soft_scene(bool friction) {
   return s;
 }
 
-ParticleDef soft_particle(const Vec3& x, double r) {
-  ParticleDef p;
-  p.x = x, p.r = r, p.soft = true;
-  p.mass = 0.65 * 2500.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r;  // its grains' mass
-  return p;
-}
 
 // One soft-particle of radius R held at overlap h = dn R above the plane z = 0.
 SceneDef on_a_wall(double R, double dn, bool friction) {

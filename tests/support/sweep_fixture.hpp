@@ -4,12 +4,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 #include "profile/profile.hpp"
 #include "measure/sweeps.hpp"
 #include "packing/generator.hpp"
 #include "packing/packing_profile.hpp"
+#include "support/temp_dir.hpp"
 
 namespace softpack::testing {
 
@@ -29,16 +29,6 @@ inline PackingFile sweep_packing(std::uint64_t seed) {
   f.provenance.seed = seed;
   return f;
 }
-
-struct TempDir {
-  std::filesystem::path path;
-  explicit TempDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / ("softpack-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-  std::string operator/(const std::string& sub) const { return (path / sub).string(); }
-};
 
 inline SweepContext sweep_context(const ContactSetup& setup, const std::string& dir) {
   SweepContext c;

@@ -2,7 +2,6 @@
 // absent parts stay absent), the JSON has the documented layout, and every mistake of a
 // hand-edited file is refused with an InputError naming the file, the field and what is allowed.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -17,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/types.hpp"
 #include "formats/law_file.hpp"
+#include "support/temp_dir.hpp"
 
 namespace {
 
@@ -24,16 +24,7 @@ using namespace softpack;
 using json = nlohmann::ordered_json;
 
 
-struct TempDir {  // as tests/support/sweep_fixture.hpp
-  std::filesystem::path path;
-  explicit TempDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / ("softpack-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-  std::string operator/(const std::string& sub) const { return (path / sub).string(); }
-};
+using softpack::testing::TempDir;
 
 // Every field set, with odd doubles (exactness), NaN errors and a null c; soft-soft without its
 // optional parts.

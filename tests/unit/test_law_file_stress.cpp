@@ -3,7 +3,6 @@
 // kappa out of [0, 10] and the key in a file of an earlier version are refused naming the key;
 // files of every earlier version still read.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "formats/law_file.hpp"
+#include "support/temp_dir.hpp"
 
 namespace law_file_stress {  // a name of its own: the unity build puts the unit tests in one file
 namespace {
@@ -20,16 +20,7 @@ namespace {
 using namespace softpack;
 using json = nlohmann::ordered_json;
 
-struct TempDir {  // as tests/support/sweep_fixture.hpp
-  std::filesystem::path path;
-  explicit TempDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / ("softpack-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-  std::string operator/(const std::string& sub) const { return (path / sub).string(); }
-};
+using softpack::testing::TempDir;
 
 const std::string kThirdVersion = std::string(SOFTPACK_SOURCE_DIR) + "/data/many-body/report/laws.json";
 
