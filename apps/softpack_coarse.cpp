@@ -341,7 +341,7 @@ int main(int argc, char** argv) {
         s = plan.settings_at(probe_radius);
         if ((probe_part == "bodies") == probe_kind.empty()) throw InputError("multi-contact: --kind goes with --part bodies, and only with it");
         probe_arrangements = probe_part == "walls" ? plan.arrangements() : probe_part == "bodies" ? plan.bodies(probe_kind) : plan.shear_arrangements;
-        probe_dn = probe_part == "shear" ? plan.shear_delta_n : plan.delta_n;
+        probe_dn = probe_part == "shear" ? plan.shear_delta_n : probe_part == "bodies" ? plan.delta_n_of(probe_kind) : plan.delta_n;
         source = fmt::format("{} (radius {}: Rs = {} m; part {}{})", probe_plan, probe_radius, s.packing.Rs, probe_part, probe_kind.empty() ? "" : " " + probe_kind);
         if (probe_part == "shear") return confined_shear(program, s, probe_seed, probe_arrangements, probe_dn, plan.shear_ht, source, probe_out);
       } else {

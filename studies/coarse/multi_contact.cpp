@@ -78,8 +78,8 @@ PressingBody parse_pressing_body(const std::string& full_name) {
     } catch (const std::exception&) {
       used = 0;
     }
-    if (name == "wall" || used == 0 || used != full_name.size() - plus - 7 || !(d > 0.0 && d <= 0.5))
-      throw InputError(fmt::format("pressing body '{}' is not allowed; allowed: soft or grain-X followed by +walls-D, D in (0, 0.5] "
+    if (used == 0 || used != full_name.size() - plus - 7 || !(d > 0.0 && d <= 0.5))
+      throw InputError(fmt::format("pressing body '{}' is not allowed; allowed: wall, soft or grain-X followed by +walls-D, D in (0, 0.5] "
                                    "(the other contacts' walls' Δn)",
                                    full_name));
     PressingBody b = parse_pressing_body(name);

@@ -65,8 +65,8 @@ struct PressingBody {
   /// The body at contact k.
   Kind kind_at(std::size_t k) const { return k == 0 || walls_at == 0.0 ? kind : Kind::wall; }
 };
-/// "wall", "soft" or "grain-X" (0.05 <= X <= 20), "soft" and "grain-X" also followed by
-/// "+walls-D" (0 < D <= 0.5); InputError naming the allowed ones otherwise.
+/// "wall", "soft" or "grain-X" (0.05 <= X <= 20), each also followed by "+walls-D" (0 < D <= 0.5;
+/// wall+walls-D: the first wall moved, the others held at D); InputError naming the allowed ones otherwise.
 PressingBody parse_pressing_body(const std::string& name);
 
 struct ProbeArrangement {

@@ -155,7 +155,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
         third = write_third_version(plan, plan_path, walls, bodies, second, v->law.parameter, out_dir);
         md += fmt::format("\nThe law's third version: `{}/third-version.md`.\n", out_dir);
         if (plan.fourth) {
-          const std::vector<ProbeWallForce> confined = read_bodies_files(plan, probe_dir, plan.confined_kinds());
+          const std::vector<ProbeWallForce> confined = read_bodies_files(plan, probe_dir, plan.confined_kinds(true));
           SoftSoftVersion::Form base;  // the third version's soft-soft law (the engine's mean rule on its count form)
           base.name = "third", base.base = third->count_chosen, base.parameter = third->soft_beta;
           fourth = write_soft_soft(plan, *plan.fourth, plan_path, bodies, confined, base,

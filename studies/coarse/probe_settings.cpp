@@ -77,6 +77,18 @@ std::vector<std::string> ManyBodyProbe::confined_kinds() const {
   return out;
 }
 
+const std::vector<double>& ManyBodyProbe::delta_n_of(const std::string& kind) const {
+  const auto own = kind_delta_n.find(kind);
+  return own == kind_delta_n.end() ? delta_n : own->second;
+}
+
+std::vector<std::string> ManyBodyProbe::confined_kinds(bool soft) const {
+  std::vector<std::string> out;
+  for (const auto& [kind, arrangements] : confined_groups)
+    if ((parse_pressing_body(kind).kind == PressingBody::Kind::soft) == soft) out.push_back(kind);
+  return out;
+}
+
 std::string media_seeds_key(int version) { return version == 1 ? "media_seeds" : fmt::format("v{}_media_seeds", version); }
 
 const std::vector<std::uint64_t>& ManyBodyProbe::media_seeds_of(int version) const {
@@ -125,7 +137,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   const ConfigNode root = ConfigNode::load_file(path);
   root.allow_only({"many_body_probe"});
   const ConfigNode c = root.at("many_body_probe");
-  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "confined", "shear", "third_version", "fourth_version", "fifth_version", "sixth_version", "validation"});
+  c.allow_only({"settings", "seeds", "radii", "delta_n", "fit", "held_out", "candidates", "selection", "bodies", "confined", "shear", "third_version", "fourth_version", "fifth_version", "sixth_version", "seventh_version", "validation"});
   ManyBodyProbe p;
   std::ostringstream text;
   text << c.yaml();
@@ -152,7 +164,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
   for (const std::string& kind : c.at("bodies").keys()) p.runs_text.emplace_back("bodies-" + kind, common + yaml_of(c, "delta_n") + yaml_of(c.at("bodies"), kind));
   if (c.has("confined"))
     for (const std::string& kind : c.at("confined").keys())
-      p.runs_text.emplace_back("bodies-" + kind, common + yaml_of(c, "delta_n") + yaml_of(c.at("confined"), kind));
+      p.runs_text.emplace_back("bodies-" + kind, common + (c.at("confined").at(kind).yaml().IsMap() ? "" : yaml_of(c, "delta_n")) + yaml_of(c.at("confined"), kind));
   p.runs_text.emplace_back("shear", common + yaml_of(c, "shear"));
   p.seeds = parse_seeds(c);
   const ConfigNode radii = c.at("radii");
@@ -207,14 +219,22 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
       } catch (const InputError& e) {
         confined.fail(fmt::format("body '{}': {}", kind, e.what()));
       }
-      std::vector<std::string> arrangements = names(confined.at(kind));
-      plain(confined.at(kind), arrangements);
+      // A list of arrangements (run through delta_n), or {arrangements, delta_n} with a grid of its own.
+      const ConfigNode entry = confined.at(kind);
+      const bool own_grid = entry.yaml().IsMap();
+      if (own_grid) {
+        entry.allow_only({"arrangements", "delta_n"});
+        p.kind_delta_n[kind] = increasing(entry.at("delta_n"));
+      }
+      const ConfigNode list = own_grid ? entry.at("arrangements") : entry;
+      std::vector<std::string> arrangements = names(list);
+      plain(list, arrangements);
       if (std::find(arrangements.begin(), arrangements.end(), "one") != arrangements.end())
-        confined.at(kind).fail("'one' has no wall to confine it; its single contact is bodies' one:BODY");
+        list.fail("'one' has no wall to confine it; its single contact is bodies' one:BODY");
       for (const std::string& a : arrangements) try {  // what the kind asks of its walls (multi_contact.hpp)
           builtin_arrangement(a + ":" + kind, 0);
         } catch (const InputError& e) {
-          confined.at(kind).fail(e.what());
+          list.fail(e.what());
         }
       p.confined_groups.emplace_back(kind, std::move(arrangements));
     }
@@ -251,20 +271,24 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
       fitted_or_held_out(*fit_list, *held_list, t.at(key));
     p.third = third;
   }
-  for (const auto& [key, before] :
-       {std::pair{"fourth_version", "third_version"}, std::pair{"fifth_version", "fourth_version"}, std::pair{"sixth_version", "fifth_version"}}) {
+  for (const auto& [key, before] : {std::pair{"fourth_version", "third_version"}, std::pair{"fifth_version", "fourth_version"},
+                                    std::pair{"sixth_version", "fifth_version"}, std::pair{"seventh_version", "sixth_version"}}) {
     if (!c.has(key)) continue;
     const ConfigNode f = c.at(key);
-    const bool sixth = std::string(key) == "sixth_version";
+    const bool sixth = std::string(key) == "sixth_version", seventh = std::string(key) == "seventh_version";
+    const char* forms_key = seventh ? "forms" : "soft_forms";
     f.allow_only(sixth ? std::vector<std::string>{"soft_forms", "joint_beta_ss", "kinds", "fit", "held_out_kinds", "held_out"}
-                       : std::vector<std::string>{"soft_forms", "kinds", "fit", "held_out_kinds", "held_out"});
-    if (!c.has(before) || p.confined_groups.empty()) f.fail(fmt::format("needs {} (the soft-soft law to beat) and confined (its runs)", before));
+                       : std::vector<std::string>{forms_key, "kinds", "fit", "held_out_kinds", "held_out"});
+    if (!c.has(before) || p.confined_groups.empty())
+      f.fail(fmt::format("needs {} (the law to beat{}) and confined (its runs)", before, seventh ? " is the fifth version, which it decides" : ""));
     ManyBodyProbe::SoftSoftPlan plan;
     // the stress forms stand on the fourth version's law (their baseline's), so only the fifth and
-    // sixth have them; the sixth's take the stress along or across the contact too
-    plan.forms = names(f.at("soft_forms"), sixth                                 ? std::vector<std::string>{"stress", "stress-normal", "stress-lateral"}
-                                           : std::string(key) == "fifth_version" ? std::vector<std::string>{"volumetric-union", "onset-shift", "stress"}
-                                                                                 : std::vector<std::string>{"volumetric-union", "onset-shift"});
+    // sixth have them; the sixth's take the stress along or across the contact too; the seventh's
+    // are a grain's or a wall's (coarse/probe_body.hpp)
+    plan.forms = names(f.at(forms_key), seventh                                 ? std::vector<std::string>{"union-refit", "stress", "stress-joint"}
+                                        : sixth                                 ? std::vector<std::string>{"stress", "stress-normal", "stress-lateral"}
+                                        : std::string(key) == "fifth_version" ? std::vector<std::string>{"volumetric-union", "onset-shift", "stress"}
+                                                                              : std::vector<std::string>{"volumetric-union", "onset-shift"});
     if (sixth && f.has("joint_beta_ss")) plan.joint_beta_ss = f.at("joint_beta_ss").boolean();
     const auto kinds_of = [&](const std::string& k) {
       std::vector<std::string> out;
@@ -274,6 +298,9 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
         if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
           item.fail(fmt::format("'{}' is not a confined kind of the plan; allowed: {}", kind, fmt::join(allowed, ", ")));
         if (std::find(out.begin(), out.end(), kind) != out.end()) item.fail(fmt::format("'{}' is listed twice", kind));
+        // the soft-soft parts judge a soft-particle at the first contact, the seventh a grain or a wall
+        if ((parse_pressing_body(kind).kind == PressingBody::Kind::soft) == seventh)
+          item.fail(fmt::format("'{}' is not allowed here; allowed: confined kinds with {} at the first contact", kind, seventh ? "a grain or a wall" : "a soft-particle"));
         out.push_back(kind);
       }
       if (out.empty()) f.at(k).fail("give at least one confined kind");
@@ -314,7 +341,7 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
       }
     }
     fitted_or_held_out(plan.fit, plan.held_out, f.at("held_out"));
-    (std::string(key) == "fourth_version" ? p.fourth : std::string(key) == "fifth_version" ? p.fifth : p.sixth) = plan;
+    (std::string(key) == "fourth_version" ? p.fourth : std::string(key) == "fifth_version" ? p.fifth : sixth ? p.sixth : p.seventh) = plan;
   }
   const ConfigNode val = c.at("validation");
   std::vector<std::string> keys{"strain_range", "bound_in_standard_errors"};

@@ -32,6 +32,11 @@ struct ManyBodyProbe {
   /// confinement"): BODY+walls-D kinds (coarse/multi_contact.hpp) with their arrangements, run as
   /// bodies-KIND like body_groups' but not in the second part's analysis. Absent: none.
   std::vector<std::pair<std::string, std::vector<std::string>>> confined_groups;
+  /// A confined kind given as {arrangements, delta_n} (the seventh part's) runs its own Δn grid;
+  /// the others run delta_n.
+  std::map<std::string, std::vector<double>> kind_delta_n;
+  /// The Δn a group of bodies-KIND runs through (KIND's own grid, else delta_n).
+  const std::vector<double>& delta_n_of(const std::string& kind) const;
   std::vector<std::string> shear_arrangements;
   std::vector<double> shear_delta_n, shear_ht;  ///< Δn; the slides ht / Rs
   /// The law's third version (`third_version`; paper/many-body.md, "Next"): which runs fit and
@@ -55,6 +60,10 @@ struct ManyBodyProbe {
   /// neighbours' stress"; against the fourth's) and `sixth_version` ("Next: the neighbour's stress
   /// along the contact"; against the fifth's). Absent: none (each needs the one before).
   std::optional<SoftSoftPlan> fourth, fifth, sixth;
+  /// `seventh_version` ("Next: a grain or a wall pressing a confined soft-particle"): a grain-X or
+  /// wall at the first contact of confined kinds, its forms union-refit, stress, stress-joint
+  /// (coarse/probe_body.hpp) against the fifth version's law; fit and held_out as NAME:KIND.
+  std::optional<SoftSoftPlan> seventh;
   /// The media seeds each version of the law is judged on: 1, validation.media_seeds (the first
   /// law's); N >= 2, validation.vN_media_seeds (none before that version). No seed in two.
   std::map<int, std::vector<std::uint64_t>> media_seeds;
@@ -74,6 +83,9 @@ struct ManyBodyProbe {
   std::vector<std::string> body_kinds() const;
   /// The kinds of confined_groups, in order.
   std::vector<std::string> confined_kinds() const;
+  /// Those with a soft-particle at the first contact (the fourth to sixth parts': soft=true), or
+  /// with a grain or a wall there (the seventh's: soft=false).
+  std::vector<std::string> confined_kinds(bool soft) const;
 
   /// The fit arrangements, then the held-out ones.
   std::vector<std::string> arrangements() const;

@@ -79,9 +79,9 @@ std::pair<double, double> fit_form(const ManyBodyProbe& plan, SoftSoftVersion::F
 
 std::vector<std::string> reported_runs(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part) {
   std::vector<std::string> out;
-  for (const auto& [kind, runs] : plan.confined_groups)
-    for (const std::string& run : runs)
-      if (const std::string r = run + ":" + kind; !listed(part.fit, r) && !listed(part.held_out, r)) out.push_back(r);
+  for (const std::string& kind : plan.confined_kinds(true))
+    for (const std::string& r : plan.bodies(kind))
+      if (!listed(part.fit, r) && !listed(part.held_out, r)) out.push_back(r);
   return out;
 }
 
@@ -225,8 +225,8 @@ SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::
   dat += "\n";
   const auto X = fit_single_contact(plan, soft, "one:soft");  // the analysis's (one:soft is in the bodies files)
   std::vector<std::string> drawn, radii;  // every confined run, in confined's order; the radii
-  for (const auto& [kind, runs] : plan.confined_groups)
-    for (const std::string& run : runs) drawn.push_back(run + ":" + kind);
+  for (const std::string& kind : plan.confined_kinds(true))
+    for (const std::string& r : plan.bodies(kind)) drawn.push_back(r);
   for (const auto& [radius, Rs] : plan.radii) {
     radii.push_back(radius);
     for (const std::string& arrangement : drawn) {

@@ -247,7 +247,8 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("v4_media_seeds: [319,", "v4_media_seeds: [315,", "also in v3_media_seeds");
   EXPECT_EQ(plan.media_seeds_of(4).front(), 319u);
   EXPECT_EQ(plan.media_seeds_of(5).front(), 323u);
-  EXPECT_THROW(plan.media_seeds_of(6), InputError);
+  EXPECT_EQ(plan.media_seeds_of(6).front(), 327u);
+  EXPECT_THROW(plan.media_seeds_of(7), InputError);
   refused("v5_media_seeds: [323,", "v5_media_seeds: [319,", "also in v4_media_seeds");
   refused("    arrangements: [one, opposite, tetrahedral, cube]", "    arrangements: [opposite, tetrahedral, cube]", "'one'");
   refused("    soft: [one, opposite,", "    soft: [one, opposite:soft,", "without :BODY");
@@ -307,6 +308,22 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("    soft_forms: [stress, stress-normal", "    soft_forms: [onset-shift, stress-normal", "soft_forms");
   refused("    joint_beta_ss: true", "    joint_beta_ss: yes please", "joint_beta_ss");
   refused("triangle, opposite-half]", "triangle, random-5]", "90 degrees");  // a confining plane would cut the pressing body
+  // the seventh part's: confined kinds with a grid of their own, a grain or a wall at the first contact
+  EXPECT_EQ(plan.delta_n_of("grain-0.4+walls-0.1").front(), 0.01);
+  EXPECT_EQ(plan.delta_n_of("soft+walls-0.1"), plan.delta_n);
+  EXPECT_EQ(plan.bodies("wall+walls-0.15").back(), "cube:wall+walls-0.15");
+  ASSERT_TRUE(plan.seventh.has_value());
+  EXPECT_EQ(plan.seventh->fit.size(), 18u);
+  EXPECT_EQ(plan.seventh->held_out.size(), 8u);
+  EXPECT_EQ(plan.seventh->held_out.front(), "opposite:grain-0.6+walls-0.15");
+  EXPECT_EQ(stamps_with("delta_n: [0.05, ", "delta_n: [0.04, ")[stamps.size() - 3], stamps[stamps.size() - 3]) << "a kind with its own grid keeps it";
+  refused("delta_n: &shallow [0.01, 0.02", "delta_n: &shallow [0.02, 0.01", "must increase");
+  refused("grain-0.4+walls-0.1: {arrangements:", "grain-0.4+walls-0.1: {grid: 1, arrangements:", "grid");
+  refused("    forms: [union-refit, stress, stress-joint]", "    forms: [union-refit, stress-normal]", "forms");
+  refused("    held_out_kinds: [grain-0.6+walls-0.15, wall+walls-0.15]", "    held_out_kinds: [grain-0.6+walls-0.15, soft+walls-0.15]",
+          "a grain or a wall at the first contact");
+  refused("    kinds: [soft+walls-0.1, soft+walls-0.2]\n    fit: [opposite, tetrahedral", "    kinds: [soft+walls-0.1, wall+walls-0.2]\n    fit: [opposite, tetrahedral",
+          "a soft-particle at the first contact");
 }
 
 }  // namespace

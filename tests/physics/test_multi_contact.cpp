@@ -142,8 +142,8 @@ TEST(MultiContactProbe, TheConfinedShearSlidesTheFirstWallAndLeavesNoTrace) {
 }
 
 // BODY+walls-D: the first contact is the body, the others walls moved in to D first and held:
-// the name reads back, D out of (0, 0.5] or a wall as the body or a single contact is refused; the
-// wall pushes as the body arrives, the body pushes as it comes in.
+// the name reads back, D out of (0, 0.5] or a single contact is refused; the wall pushes as the
+// body arrives, the body pushes as it comes in — a grain, or a wall (the seventh part's).
 TEST(MultiContactProbe, ABodyPressesASoftParticleTheWallsConfine) {
   const ProbeArrangement a = builtin_arrangement("opposite:grain-1+walls-0.45", 3);
   EXPECT_EQ(a.body.kind, PressingBody::Kind::grain);
@@ -152,7 +152,8 @@ TEST(MultiContactProbe, ABodyPressesASoftParticleTheWallsConfine) {
   EXPECT_EQ(a.body.kind_at(0), PressingBody::Kind::grain);
   EXPECT_EQ(a.body.kind_at(1), PressingBody::Kind::wall);
   EXPECT_EQ(parse_pressing_body("soft+walls-0.1").name(), "soft+walls-0.1");
-  for (const char* bad : {"opposite:wall+walls-0.2", "opposite:soft+walls-0", "opposite:soft+walls-0.6", "opposite:soft+walls-x", "one:soft+walls-0.2"})
+  EXPECT_EQ(parse_pressing_body("wall+walls-0.2").name(), "wall+walls-0.2");
+  for (const char* bad : {"opposite:wall+walls-0", "opposite:soft+walls-0", "opposite:soft+walls-0.6", "opposite:soft+walls-x", "one:soft+walls-0.2"})
     EXPECT_THROW(builtin_arrangement(bad, 3), InputError) << bad;
   const auto points = measure_multi_contact(coarse_grain_tiny(), 3, {a}, {0.02, 0.5});
   ASSERT_EQ(points.size(), 2u);
@@ -160,6 +161,11 @@ TEST(MultiContactProbe, ABodyPressesASoftParticleTheWallsConfine) {
   EXPECT_GT(points[0].Fn[1], 0.0) << "the confining wall pushes as the grain barely arrives";
   EXPECT_GT(points[1].Fn[0], points[0].Fn[0]) << "the grain pushes as it comes in";
   EXPECT_GT(points[1].Fn[1], 0.0);
+  const auto walls = measure_multi_contact(coarse_grain_tiny(), 3, {builtin_arrangement("opposite:wall+walls-0.45", 3)}, {0.02, 0.5});
+  ASSERT_EQ(walls.size(), 2u);
+  for (const MultiContactPoint& p : walls) ASSERT_TRUE(p.failed.empty()) << p.failed;
+  EXPECT_GT(walls[0].Fn[1], 0.0) << "the confining wall pushes as the first wall barely arrives";
+  EXPECT_GT(walls[1].Fn[0], walls[0].Fn[0]) << "the first wall pushes as it comes in";
 }
 
 }  // namespace
