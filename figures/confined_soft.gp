@@ -1,13 +1,15 @@
-# A soft-soft part of the probe (make many-body-report draws each; studies/coarse/probe_soft_soft.hpp):
-# the force on a resolved soft-particle pressing the centre while walls confine it, against its
-# Δn, mean over the seeds with its standard error, and each soft-soft form of the part's report.
+# A confined part of the probe (make many-body-report draws each; studies/coarse/probe_soft_soft.hpp,
+# probe_body.hpp): the force on the body pressing the centre while walls confine it (a resolved
+# soft-particle, or a grain or a wall), against its Δn, mean over the seeds with its standard
+# error, and each form of the part's report.
 # One figure per radius (`out` holds %s for the radius's name), one panel per confined run of the part.
 #
 #   gnuplot -e "load 'data/many-body/report/fifth-version-vars.gp'; out='fifth-%s.png'" figures/confined_soft.gp
 #
 # The part's variables file (probe-report writes it beside NAME.dat): data (the .dat), radii
 # (their names, in the .dat's order), runs (the confined runs, NAME:KIND, in its order), forms
-# (the forms' names, columns 6 on). data: blocks '# RADIUS RUN', radii then runs; columns 3
+# (the forms' names, columns 6 on), and optionally body (what presses; a soft-particle if not
+# given). data: blocks '# RADIUS RUN', radii then runs; columns 3
 # delta_n, 4-5 F measured (mean, se) [N], then each form's F.
 
 if (!exists("data") || !exists("out") || !exists("radii") || !exists("runs") || !exists("forms")) {
@@ -18,6 +20,7 @@ if (system("test -r '".data."' && echo yes") ne "yes") {
   print "confined_soft.gp: cannot read ".data
   exit status 2
 }
+if (!exists("body")) body = "soft-particle"
 n = words(runs)
 columns = (n + 1) / 2
 if (out[strlen(out)-3:] eq ".pdf") {
@@ -30,7 +33,7 @@ set logscale y
 set yrange [1e-4:10]
 set xrange [0:0.42]
 set key bottom right
-set xlabel "{/Symbol D}n of the pressing soft-particle"
+set xlabel sprintf("{/Symbol D}n of the pressing %s", body)
 set ylabel "F_n on it [N]"
 colours = "#1f77b4 #d62728 #2ca02c #9467bd"
 do for [radius = 1:words(radii)] {

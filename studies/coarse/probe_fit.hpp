@@ -20,6 +20,8 @@
 // counted as the floor (with ProbeLaw::count_predicted_force, the fourth part's rule, also the
 // points whose predicted force exceeds it, a measured one below counted as the floor).
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <string>
@@ -126,6 +128,26 @@ std::map<std::string, fit::PowerLawFit> fit_single_contact(const ManyBodyProbe& 
 /// `arrangements`: a grid of 1/1000 of the range, then golden sections about its best point.
 double fit_parameter(ProbeLaw law, double hi, const std::vector<ProbeWallForce>& walls, const std::vector<std::string>& arrangements,
                      const ManyBodyProbe& plan, double ProbeLaw::*field = &ProbeLaw::parameter);
+/// Whether run `s` is in the list `v` (a plan's fit or held-out runs).
+inline bool listed(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
+/// x in [0, hi] with the least err(x): a grid of `steps`, then golden sections about its best
+/// point (a fit with the laws' forces at hand: coarse/probe_soft_soft.cpp, coarse/probe_body.cpp).
+template <class Err>
+double least_of(const Err& err, double hi, int steps) {
+  double best = 0.0, best_e = err(0.0);
+  for (int i = 1; i <= steps; ++i)
+    if (const double x = hi * i / steps, e = err(x); e < best_e) best = x, best_e = e;
+  double a = std::max(0.0, best - hi / steps), b = std::min(hi, best + hi / steps);
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  for (int i = 0; i < 40; ++i) {
+    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    if (err(x1) < err(x2)) b = x2;
+    else a = x1;
+  }
+  const double x = 0.5 * (a + b);
+  return err(x) < best_e ? x : best;
+}
 /// The jackknife standard error over the plan's seeds of what `fit` makes of the points without
 /// each seed.
 double jackknife_over_seeds(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& walls,

@@ -11,6 +11,7 @@
 
 #include "analysis/seed_statistics.hpp"
 #include "coarse/probe_second.hpp"
+#include "coarse/probe_body.hpp"
 #include "coarse/probe_soft_soft.hpp"
 #include "coarse/probe_third.hpp"
 #include "core/version.hpp"
@@ -173,12 +174,19 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
               sixth = write_soft_soft(plan, *plan.sixth, plan_path, bodies, confined, base,
                                       "The probe's sixth part: the neighbour's stress along the contact", out_dir, "sixth-version");
               md += fmt::format("\nThe probe's sixth part (the neighbour's stress along the contact): `{}/sixth-version.md`.\n", out_dir);
+              if (plan.seventh) {  // a grain or a wall under confinement, against the fifth version's law of theirs
+                const auto count = std::find_if(third->count.begin(), third->count.end(), [&](const auto& f) { return f.name == third->count_chosen; });
+                const FifthBodyLaw fifth_law{third->count_chosen, count->beta.value, third->grain_beta.value, third->grain_p.value};
+                write_body_version(plan, *plan.seventh, plan_path, walls, read_bodies_files(plan, probe_dir, plan.confined_kinds(false)), fifth_law,
+                                   out_dir, "seventh-version");
+                md += fmt::format("\nThe probe's seventh part (a grain or a wall pressing a confined soft-particle): `{}/seventh-version.md`.\n", out_dir);
+              }
             }
           }
         }
       }
     } catch (const InputError& e) {
-      md += fmt::format("\nIts second part, third version or soft-soft parts could not be analysed: {}\n", e.what());
+      md += fmt::format("\nIts second part, third version, soft-soft parts or seventh part could not be analysed: {}\n", e.what());
     }
   // laws.json: the plan's law file with the many-body law — the third version where the plan has
   // one, else the first part's volumetric law when the rule lets it into the engine

@@ -19,31 +19,12 @@ namespace {
 // the mean rule halves, so the law below takes half of it.
 constexpr double kParameterMax = 10.0, kMeanRule = 0.5;
 
-bool listed(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
-
 // The form's law with its engine parameters (a stress form on its β_ss's volumetric-union law).
 ProbeLaw law_of(const SoftSoftVersion::Form& f, const std::map<std::string, fit::PowerLawFit>& X) {
   ProbeLaw law{f.base, kMeanRule * (f.stress.empty() ? f.parameter.value : f.beta_ss.value), X};
   if (!f.stress.empty()) law.stress = kMeanRule * f.parameter.value, law.stress_form = ProbeLaw::stress_form_of(f.stress);
   law.count_predicted_force = true;
   return law;
-}
-
-// x in [0, hi] with the least err(x): a grid of `steps`, then golden sections about its best point.
-template <class Err>
-double least(const Err& err, double hi, int steps) {
-  double best = 0.0, best_e = err(0.0);
-  for (int i = 1; i <= steps; ++i)
-    if (const double x = hi * i / steps, e = err(x); e < best_e) best = x, best_e = e;
-  double a = std::max(0.0, best - hi / steps), b = std::min(hi, best + hi / steps);
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  for (int i = 0; i < 40; ++i) {
-    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
-    if (err(x1) < err(x2)) b = x2;
-    else a = x1;
-  }
-  const double x = 0.5 * (a + b);
-  return err(x) < best_e ? x : best;
 }
 
 // The form's engine parameters fitted on `fit` of `points` (X fitted again on them): {its
@@ -68,10 +49,10 @@ std::pair<double, double> fit_form(const ManyBodyProbe& plan, SoftSoftVersion::F
     law.parameter = kMeanRule * beta, law.stress = 1.0;
     for (std::size_t i = 0; i < in_fit.size(); ++i) alone[i] = law.predict_alone(in_fit[i]), term[i] = law.predict(in_fit[i]) - alone[i];
     const auto error = [&](double k) { return probe_error(law, in_fit, {}, plan, [&](std::size_t i) { return alone[i] + k * term[i]; }).rms_log; };
-    const double k = least(error, kMeanRule * kParameterMax, 100);
+    const double k = least_of(error, kMeanRule * kParameterMax, 100);
     return std::pair{k, error(k)};
   };
-  const double beta = least([&](double b) { return kappa_at(b).second; }, kParameterMax, 50);
+  const double beta = least_of([&](double b) { return kappa_at(b).second; }, kParameterMax, 50);
   return {kappa_at(beta).first / kMeanRule, beta};
 }
 
