@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <tuple>
 
 #include "analysis/seed_statistics.hpp"
 #include "core/error.hpp"
@@ -94,7 +95,7 @@ const BodyVersion::Form& BodyVersion::form(const std::string& name) const {
 }
 
 BodyVersion analyse_body_version(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part, const std::vector<ProbeWallForce>& walls,
-                                 const std::vector<ProbeWallForce>& confined, const FifthBodyLaw& fifth) {
+                                 const std::vector<ProbeWallForce>& confined, const FifthBodyLaw& fifth, const std::vector<ProbeWallForce>& grains) {
   // The points: the first part's single contact (X1), the first contact of the confined runs
   // (the others are walls).
   std::vector<ProbeWallForce> points;
@@ -152,6 +153,16 @@ BodyVersion analyse_body_version(const ManyBodyProbe& plan, const ManyBodyProbe:
       out.enters_engine = false;
       out.notes.push_back(fmt::format("radius {}: {} is not better than fifth on the held-out runs{}", radius, out.chosen, e.points > 0 ? "" : " (it has none)"));
     }
+  // Reported: fifth and the chosen form where every contact moves at once (the first part's walls'
+  // arrangements, the second part's grains'), their single contacts left out.
+  std::vector<std::string> wall_runs, grain_runs;
+  for (const std::string& a : plan.arrangements())
+    if (a != "one") wall_runs.push_back(a);
+  for (const ProbeWallForce& w : grains)
+    if (w.body.kind == PressingBody::Kind::grain && w.arrangement.rfind("one:", 0) != 0 && !listed(grain_runs, w.arrangement)) grain_runs.push_back(w.arrangement);
+  for (const auto& [what, from, runs] : {std::tuple{"walls", &walls, &wall_runs}, std::tuple{"grains", &grains, &grain_runs}})
+    if (!runs->empty())
+      out.earlier[what] = {error_of(out.forms.front(), fifth, X1, *from, *runs, plan), error_of(*chosen, fifth, X1, *from, *runs, plan)};
   // What the fifth version gives of the shallow contacts, kind by kind.
   for (const auto& [radius, Rs] : plan.radii)
     for (const std::string& kind : plan.confined_kinds(false))
@@ -172,8 +183,8 @@ BodyVersion analyse_body_version(const ManyBodyProbe& plan, const ManyBodyProbe:
 
 BodyVersion write_body_version(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part, const std::string& plan_path,
                                const std::vector<ProbeWallForce>& walls, const std::vector<ProbeWallForce>& confined, const FifthBodyLaw& fifth,
-                               const std::string& out_dir, const std::string& name) {
-  const BodyVersion a = analyse_body_version(plan, part, walls, confined, fifth);
+                               const std::vector<ProbeWallForce>& grains, const std::string& out_dir, const std::string& name) {
+  const BodyVersion a = analyse_body_version(plan, part, walls, confined, fifth, grains);
   const std::string title = "The probe's seventh part: a grain or a wall pressing a confined soft-particle";
   nlohmann::json j;
   j["plan"] = plan_path, j["code_version"] = code_version(), j["chosen"] = a.chosen, j["enters_engine"] = a.enters_engine, j["notes"] = a.notes;
@@ -219,6 +230,16 @@ BodyVersion write_body_version(const ManyBodyProbe& plan, const ManyBodyProbe::S
   md += fmt::format("\nChosen by the rule: **{}**; it enters the engine: **{}** (its held-out error below fifth's at each radius).\n", a.chosen,
                     a.enters_engine ? "yes" : "no");
   for (const std::string& n : a.notes) md += fmt::format("\n- {}", n);
+  if (!a.earlier.empty()) {
+    md += fmt::format("\n\nReported, not in the rule: fifth and {} on the earlier parts' runs, where every contact moves at once (the "
+                      "first part's walls' arrangements, the second part's grains'; the single contacts left out), with this part's error.\n\n"
+                      "| runs | fifth | {} |\n|---|---|---|\n",
+                      a.chosen, a.chosen);
+    for (const auto& [what, e] : a.earlier) {
+      md += fmt::format("| {} | {} | {} |\n", what, error_factor(e.first), error_factor(e.second));
+      j["earlier"][what] = {{"fifth", probe_error_json(e.first)}, {a.chosen, probe_error_json(e.second)}};
+    }
+  }
   md += "\n\n## What the fifth version gives of a shallow contact under confinement\n\n"
         "Each kind at each Δn up to 0.1 of its grid, over its arrangements and seeds: the first contacts, those with a measured force "
         "above 0, the mean measured force and the fifth version's mean prediction (the law file's, without any stress term on grains "

@@ -57,6 +57,9 @@ struct BodyVersion {
   };
   std::vector<Form> forms;  ///< fifth first
   std::vector<Shallow> shallow;
+  /// Reported, not in the rule: fifth and the chosen form on the earlier parts' runs, where every
+  /// contact moves at once (the first part's walls, the second's grains): "walls", "grains".
+  std::map<std::string, std::pair<ProbeError, ProbeError>> earlier;
   std::string chosen;       ///< by the plan's rule
   bool enters_engine = false;
   std::vector<std::string> notes;
@@ -67,15 +70,17 @@ struct BodyVersion {
 std::string body_of(const PressingBody& b);
 
 /// The analysis of `part` (the plan's seventh); `walls` the seed files' points (X1 from their
-/// `one`), `confined` the bodies files' points of the grain and wall confined kinds.
+/// `one`), `confined` the bodies files' points of the grain and wall confined kinds, `grains`
+/// the bodies files' points of the grain-X kinds (for BodyVersion::earlier; may be empty).
 BodyVersion analyse_body_version(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part, const std::vector<ProbeWallForce>& walls,
-                                 const std::vector<ProbeWallForce>& confined, const FifthBodyLaw& fifth);
+                                 const std::vector<ProbeWallForce>& confined, const FifthBodyLaw& fifth,
+                                 const std::vector<ProbeWallForce>& grains = {});
 
 /// The analysis written to OUT/NAME.md, .json and .dat (each radius and run of the part: the
 /// measured force's mean and standard error over the seeds, and each form's), and the variables
 /// figures/confined_soft.gp draws it with (OUT/NAME-vars.gp).
 BodyVersion write_body_version(const ManyBodyProbe& plan, const ManyBodyProbe::SoftSoftPlan& part, const std::string& plan_path,
                                const std::vector<ProbeWallForce>& walls, const std::vector<ProbeWallForce>& confined, const FifthBodyLaw& fifth,
-                               const std::string& out_dir, const std::string& name);
+                               const std::vector<ProbeWallForce>& grains, const std::string& out_dir, const std::string& name);
 
 }  // namespace softpack

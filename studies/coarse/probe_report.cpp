@@ -148,6 +148,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     if (c.law.name == "volumetric") v = &c;
   std::optional<ThirdVersion> third;
   std::optional<SoftSoftVersion> fourth, fifth, sixth;
+  std::optional<BodyVersion> seventh;
   if (v) try {
       const std::vector<ProbeWallForce> bodies = read_bodies_files(plan, probe_dir, plan.body_kinds());
       const SecondPart second = write_second_part(plan, plan_path, walls, bodies, read_shear_files(plan, probe_dir), v->law.parameter, out_dir);
@@ -177,8 +178,8 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
               if (plan.seventh) {  // a grain or a wall under confinement, against the fifth version's law of theirs
                 const auto count = std::find_if(third->count.begin(), third->count.end(), [&](const auto& f) { return f.name == third->count_chosen; });
                 const FifthBodyLaw fifth_law{third->count_chosen, count->beta.value, third->grain_beta.value, third->grain_p.value};
-                write_body_version(plan, *plan.seventh, plan_path, walls, read_bodies_files(plan, probe_dir, plan.confined_kinds(false)), fifth_law,
-                                   out_dir, "seventh-version");
+                seventh = write_body_version(plan, *plan.seventh, plan_path, walls, read_bodies_files(plan, probe_dir, plan.confined_kinds(false)),
+                                             fifth_law, bodies, out_dir, "seventh-version");
                 md += fmt::format("\nThe probe's seventh part (a grain or a wall pressing a confined soft-particle): `{}/seventh-version.md`.\n", out_dir);
               }
             }
@@ -235,6 +236,7 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     const std::string v5_path = out_dir + "/laws-v5.json";
     const SoftSoftVersion::Form* s6 = sixth && sixth->enters_engine ? &sixth->form(sixth->chosen) : nullptr;
     const SoftSoftVersion::Form* s5 = fifth && fifth->enters_engine ? &fifth->form(fifth->chosen) : nullptr;
+    bool v5_written = false;  // laws holds the fifth version
     if (const SoftSoftVersion::Form* st = s6 ? s6 : s5; st && f && f->name == "volumetric-union") {
       const std::string form = st->stress == "stress-normal" ? "normal" : st->stress == "stress-lateral" ? "lateral" : "mean";
       laws.version = kLawFileVersion;
@@ -245,10 +247,30 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
                                            code_version(), out_dir, out_dir, part);
       laws.provenance.notes += fmt::format(" The fifth version: the soft-soft stress term of the probe's {} part.", s6 ? "sixth" : "fifth");
       write_law_file_if_changed(v5_path, laws);
+      v5_written = true;
       md += fmt::format("\nThe law's fifth version: `{}` (the fourth's with β_ss = {:.3f} ± {:.3f} and the {} stress term, κ = {:.3f} ± {:.3f}, of {}).\n", v5_path,
                         st->beta_ss.value, st->beta_ss.se, form, st->parameter.value, st->parameter.se, part);
     } else if (fifth) {  // analysed and not let in
       std::filesystem::remove(v5_path);
+    }
+    // laws-v6.json: the law's sixth version, the fifth's with the grains' and the wall's law the
+    // seventh part's rule lets in (paper/many-body.md, "Next: a grain or a wall pressing a
+    // confined soft-particle", 5) — union-refit's β; the engine has no stress term on them yet
+    const std::string v6_path = out_dir + "/laws-v6.json";
+    const BodyVersion::Form* b7 = seventh && seventh->enters_engine ? &seventh->form(seventh->chosen) : nullptr;
+    if (b7 && b7->name == "union-refit" && v5_written) {
+      const BodyVersion::BodyLaw &grain = b7->body.at("grain"), &wall = b7->body.at("wall");
+      laws.many_body->beta = {wall.beta.value, wall.beta.se};
+      laws.many_body->grain->beta = {grain.beta.value, grain.beta.se};
+      laws.many_body->source += fmt::format(", the grains' and the wall's β of {}/seventh-version.md", out_dir);
+      laws.provenance.notes += " The sixth version: the grains' and the walls' β of the probe's seventh part.";
+      write_law_file_if_changed(v6_path, laws);
+      md += fmt::format("\nThe law's sixth version: `{}` (the fifth's with the walls' β = {:.3f} ± {:.3f} and the grains' β = {:.3f} ± {:.3f} of "
+                        "seventh-version.md).\n",
+                        v6_path, wall.beta.value, wall.beta.se, grain.beta.value, grain.beta.se);
+    } else if (seventh) {
+      std::filesystem::remove(v6_path);
+      if (b7) md += fmt::format("\nThe seventh part's {} enters by its rule, but the engine has no such form: no sixth version's law file.\n", b7->name);
     }
   } else {
     std::filesystem::remove(laws_path);

@@ -30,6 +30,7 @@ SyntheticBodyProbe synthetic_body_probe(double beta_grain, double kappa_grain, d
   plan.radii = {{"r", 0.016}, {"s", 0.008}};
   plan.delta_n = {0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4};
   plan.force_floor = 0.01;
+  plan.fit = {"one", "opposite"};
   const std::vector<std::string> fit{"opposite", "tetrahedral", "cube"}, held{"orthogonal", "cube"};
   plan.confined_groups = {{"grain-0.4+walls-0.1", fit}, {"grain-1+walls-0.2", fit}, {"wall+walls-0.1", fit},
                           {"wall+walls-0.2", fit},      {"grain-0.6+walls-0.15", held}, {"wall+walls-0.15", held}};
@@ -44,6 +45,11 @@ SyntheticBodyProbe synthetic_body_probe(double beta_grain, double kappa_grain, d
         ProbeWallForce one = probe_point(builtin_arrangement("one", seed), radius, seed, {dn}, 0, 0.0);
         one.Fn = scatter * fit::evaluate(W, dn);
         s.walls.push_back(one);
+        for (std::size_t k = 0; k < 2; ++k) {  // the first part's opposite walls, moving at once
+          ProbeWallForce w = probe_point(builtin_arrangement("opposite", seed), radius, seed, {dn, dn}, k, 0.0);
+          w.Fn = scatter * confining.predict(w);
+          s.walls.push_back(w);
+        }
       }
       for (const auto& [kind, names] : plan.confined_groups)
         for (const std::string& name : names) {
@@ -101,6 +107,11 @@ TEST(ManyBodyProbeLaws, TheSeventhPartFindsTheGrainsAndTheWallsStressTerms) {
   EXPECT_GT(b.form("union-refit").held_out.rms_log, 2.0 * stress.held_out.rms_log);
   for (const auto& [radius, e] : stress.held_out_by_radius) EXPECT_GT(e.points, 0u) << radius;
   EXPECT_THROW(b.form("stress-normal"), InputError);
+  // reported: the first part's walls moving at once, made by the fifth's β, which the stress form keeps
+  ASSERT_EQ(b.earlier.count("walls"), 1u);
+  EXPECT_GT(b.earlier.at("walls").first.points, 0u);
+  EXPECT_LT(b.earlier.at("walls").first.rms_log, 0.03);
+  EXPECT_LT(b.earlier.at("walls").second.rms_log, 0.03);
   // the shallow table: every kind, both radii, Δn up to 0.1; the fifth gives less than measured
   EXPECT_EQ(b.shallow.size(), 2u * 6u * 6u);
   for (const BodyVersion::Shallow& sh : b.shallow) {
