@@ -22,11 +22,12 @@ if (system("test -r '".data."' && echo yes") ne "yes") {
 }
 if (!exists("body")) body = "soft-particle"
 n = words(runs)
-columns = (n + 1) / 2
+rows = n > 12 ? 4 : 2  # two rows up to twelve runs, four beyond
+columns = (n + rows - 1) / rows
 if (out[strlen(out)-3:] eq ".pdf") {
-  set terminal pdfcairo size (8 * columns)cm,14cm font "Helvetica,7" linewidth 1.2
+  set terminal pdfcairo size (8 * columns)cm,(7 * rows)cm font "Helvetica,7" linewidth 1.2
 } else {
-  set terminal pngcairo size 800 * columns,1400 font "Helvetica,18" linewidth 2
+  set terminal pngcairo size 800 * columns,700 * rows font "Helvetica,18" linewidth 2
 }
 set grid
 set logscale y
@@ -38,7 +39,7 @@ set ylabel "F_n on it [N]"
 colours = "#1f77b4 #d62728 #2ca02c #9467bd"
 do for [radius = 1:words(radii)] {
   set output sprintf(out, word(radii, radius))
-  set multiplot layout 2,columns
+  set multiplot layout rows,columns
   do for [b = 1:n] {
     i = (radius - 1) * n + (b - 1)
     set title sprintf("%s (%s)", word(runs, b), word(radii, radius))
