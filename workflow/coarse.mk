@@ -123,9 +123,11 @@ many-body-verdict: | $(TOOLS)  ## the many-body law's acceptance on the validati
 # (those goals then stop, saying so).
 V3_MEDIA_GOALS := many-body-in-place many-body-speed
 V5_MEDIA_GOALS := many-body-v5-speed
+V6_MEDIA_GOALS := many-body-v6-speed
 media_seeds_of = $(if $(filter $(V$(1)_MEDIA_GOALS),$(MAKECMDGOALS)),$(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --media-of $(1)))
 V3_MEDIA_SEEDS := $(call media_seeds_of,3)
 V5_MEDIA_SEEDS := $(call media_seeds_of,5)
+V6_MEDIA_SEEDS := $(call media_seeds_of,6)
 # $(1): the goal; $(2): the version
 media_seeds_known = $(if $(V$(2)_MEDIA_SEEDS),,$(error $(1): $(COARSE_TOOL) gave no media seeds when make started (not built, or it refused the plan: see $(COARSE_TOOL) seeds --probe $(PROBE_PLAN) --media-of $(2)); run make build, then make $(1) again))
 # The law in place (paper/many-body.md, "Next: measuring the law in place"): the third version's
@@ -157,13 +159,17 @@ many-body-kinematics: | $(TOOLS)  ## the soft medium's contacts against the reso
 # the code does: to time new code, remove DATA/many-body-vN/speed/seed-*.dat first.
 #   make many-body-speed      the third version's media (DATA/many-body-v3/speed/speed.md)
 #   make many-body-v5-speed   the fifth's, with the stress term's pass (DATA/many-body-v5/speed/speed.md)
-.PHONY: many-body-speed many-body-v5-speed
+#   make many-body-v6-speed   the sixth's (DATA/many-body-v6/speed/speed.md)
+.PHONY: many-body-speed many-body-v5-speed many-body-v6-speed
 many-body-speed: $(foreach s,$(V3_MEDIA_SEEDS),$(DATA)/many-body-v3/speed/seed-$(s).dat) | $(TOOLS)  ## the speed-up over resolved side by side (DATA/many-body-v3/speed/speed.md)
 	$(call media_seeds_known,many-body-speed,3)
 	@$(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v3 --law-version 3 --report
 many-body-v5-speed: $(foreach s,$(V5_MEDIA_SEEDS),$(DATA)/many-body-v5/speed/seed-$(s).dat) | $(TOOLS)  ## the same on the fifth version's media (DATA/many-body-v5/speed/speed.md)
 	$(call media_seeds_known,many-body-v5-speed,5)
 	@$(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v5 --law-version 5 --report
+many-body-v6-speed: $(foreach s,$(V6_MEDIA_SEEDS),$(DATA)/many-body-v6/speed/seed-$(s).dat) | $(TOOLS)  ## the same on the sixth version's media (DATA/many-body-v6/speed/speed.md)
+	$(call media_seeds_known,many-body-v6-speed,6)
+	@$(RUN) $(COARSE_TOOL) speed --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v6 --law-version 6 --report
 # $(1): the version; $(2): its many-body law file; $(3): the seed; $(4): the seed timed before it
 define speed_seed
 $(DATA)/many-body-v$(1)/speed/seed-$(3).dat: $(DATA)/many-body-v$(1)/reference/media/seed-$(3).h5 $(2) \
@@ -177,6 +183,8 @@ prev :=
 $(foreach s,$(V3_MEDIA_SEEDS),$(eval $(call speed_seed,3,$(DATA)/many-body/report/laws.json,$(s),$(if $(prev),$(DATA)/many-body-v3/speed/seed-$(prev).dat)))$(eval prev := $(s)))
 prev :=
 $(foreach s,$(V5_MEDIA_SEEDS),$(eval $(call speed_seed,5,$(DATA)/many-body/report/laws-v5.json,$(s),$(if $(prev),$(DATA)/many-body-v5/speed/seed-$(prev).dat)))$(eval prev := $(s)))
+prev :=
+$(foreach s,$(V6_MEDIA_SEEDS),$(eval $(call speed_seed,6,$(DATA)/many-body/report/laws-v6.json,$(s),$(if $(prev),$(DATA)/many-body-v6/speed/seed-$(prev).dat)))$(eval prev := $(s)))
 # A version of the law judged on its own media (paper/many-body.md), after make many-body-vN: the
 # criterion on each soft setting of its study (and the resolved one), then the census of its
 # many-body setting. $(1): the version; $(2): its soft settings.
@@ -186,10 +194,12 @@ define version_verdict
 	@$(RUN) $(COARSE_TOOL) soft-contacts --probe $(PROBE_PLAN) --config $(DATA)/many-body-v$(1)/profiles/many-body.yaml \
 	  --media $(DATA)/many-body-v$(1)/many-body/media --out $(DATA)/many-body-v$(1)/report --law-version $(1)
 endef
-.PHONY: many-body-v3-verdict many-body-v4-verdict many-body-v5-verdict
+.PHONY: many-body-v3-verdict many-body-v4-verdict many-body-v5-verdict many-body-v6-verdict
 many-body-v3-verdict: | $(TOOLS)  ## the law's third version's acceptance on its media, and its census (DATA/many-body-v3/report/validation.md, contacts.md)
 	$(call version_verdict,3,many-body)
 many-body-v4-verdict: | $(TOOLS)  ## the fourth version's and the third's acceptance on the fourth's media, and its census (DATA/many-body-v4/report/)
 	$(call version_verdict,4,many-body-v3 many-body)
 many-body-v5-verdict: | $(TOOLS)  ## the fifth version's (the stress term) and the fourth's acceptance on the fifth's media, and its census (DATA/many-body-v5/report/)
 	$(call version_verdict,5,many-body-v4 many-body)
+many-body-v6-verdict: | $(TOOLS)  ## the sixth version's (the seventh part's β) and the fifth's acceptance on the sixth's media, and its census (DATA/many-body-v6/report/)
+	$(call version_verdict,6,many-body-v5 many-body)
