@@ -99,7 +99,8 @@ int run(const RunOptions& o, const std::string& program) {
 
 // multi-contact --part shear: the confined shear's runs, a block per arrangement and Δn.
 int confined_shear(const std::string& program, const CoarseGrainSettings& s, std::uint64_t seed, const std::vector<std::string>& names,
-                   const std::vector<double>& delta_n, const std::vector<double>& ht, const std::string& source, const std::string& out) {
+                   const std::vector<double>& delta_n, const std::vector<double>& ht, const std::string& source, const std::string& out,
+                   const std::string& stamp) {
   std::vector<ProbeArrangement> arrangements;
   for (const std::string& name : names) arrangements.push_back(builtin_arrangement(name, seed));
   const Stopwatch clock;
@@ -115,7 +116,7 @@ int confined_shear(const std::string& program, const CoarseGrainSettings& s, std
       fmt::print(stderr, "{} multi-contact: {}, delta_n {:.3f}, ht/Rs {}: Fn {:.5g} N, Ft {:.5g} N ({}/{}, {:.0f} s, ETA {:.0f} s)\n", program,
                  p.arrangement, p.delta_n, p.ht, p.Fn, p.Ft, done, points, t, t / static_cast<double>(done) * static_cast<double>(points - done));
   });
-  write_confined_shear(out, source, seed, sheared, clock.elapsed().cpu);
+  write_confined_shear(out, source, seed, sheared, clock.elapsed().cpu, stamp);
   return 0;
 }
 }  // namespace
@@ -334,7 +335,7 @@ int main(int argc, char** argv) {
     if (*probe_cmd) {
       if (probe_plan.empty() == probe_config.empty()) throw InputError("multi-contact: give --config or --probe");
       CoarseGrainSettings s;
-      std::string source = probe_config;
+      std::string source = probe_config, stamp_line;
       if (!probe_plan.empty()) {
         if (probe_radius.empty()) throw InputError("multi-contact: --probe needs --radius (one of the plan's radii)");
         const ManyBodyProbe plan = read_many_body_probe(probe_plan);
@@ -343,7 +344,12 @@ int main(int argc, char** argv) {
         probe_arrangements = probe_part == "walls" ? plan.arrangements() : probe_part == "bodies" ? plan.bodies(probe_kind) : plan.shear_arrangements;
         probe_dn = probe_part == "shear" ? plan.shear_delta_n : probe_part == "bodies" ? plan.delta_n_of(probe_kind) : plan.delta_n;
         source = fmt::format("{} (radius {}: Rs = {} m; part {}{})", probe_plan, probe_radius, s.packing.Rs, probe_part, probe_kind.empty() ? "" : " " + probe_kind);
-        if (probe_part == "shear") return confined_shear(program, s, probe_seed, probe_arrangements, probe_dn, plan.shear_ht, source, probe_out);
+        // the group's stamp first: make compares it with the plan's (workflow/coarse.mk), so the
+        // results say what decided them and a fresh clone reruns nothing
+        const std::string group = probe_part == "walls" ? "seed" : probe_part == "bodies" ? "bodies-" + probe_kind : "shear";
+        for (const auto& [name, hash] : plan.runs_stamps(release_version()))
+          if (name == group) stamp_line = fmt::format("# stamp {}\n", hash);
+        if (probe_part == "shear") return confined_shear(program, s, probe_seed, probe_arrangements, probe_dn, plan.shear_ht, source, probe_out, stamp_line);
       } else {
         s = read_coarse_grain_settings(probe_config);
       }
@@ -367,7 +373,7 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "{} multi-contact: {} ({} walls), delta_n {:.3f}: Fn {:.5g} N on the first wall ({}/{}, {:.0f} s, ETA {:.0f} s)\n", program,
                    p.arrangement, p.Fn.size(), p.delta_n, p.Fn[0], done, points, t, t / static_cast<double>(done) * static_cast<double>(points - done));
       });
-      std::string text = fmt::format(
+      std::string text = stamp_line + fmt::format(
           "# softpack-coarse multi-contact: {}, packing seed {}, {}, {:.1f} CPU-s\n"
           "# one block per arrangement; wall k along u_k (from the centre), moved in by w_k delta_n Rs\n"
           "# walls delta_n Fn_1 ... Fn_walls [N]\n",

@@ -79,21 +79,28 @@ many-body-probe: $(foreach r,$(PROBE_RUNS),$(PROBE_DIR)/$(r).dat)  ## the many-b
 # The runs come in groups (seed: the walls' arrangements; bodies-KIND; shear), each redone when
 # what decides it changes (softpack-coarse seeds --probe --runs-stamp: the plan's settings, seeds,
 # radii and the group's own keys, and the release; not the selection rule, the validation or
-# another group) or the settings file does, never because the tool was relinked.
+# another group), never because the tool was relinked or a file is older than another. Each file
+# holds its group's stamp on its first line ("# stamp HASH", written by the tool); a file whose
+# stamp is not its group's now (or that has none) is made again. No stamp file and no time
+# stamp decide it, so a fresh clone, whose files' times are those of the checkout, reruns nothing.
 probe_group = $(patsubst %-$(lastword $(subst -, ,$(1))),%,$(1))
 probe_options = $(if $(filter seed,$(1)),--part walls,$(if $(filter shear,$(1)),--part shear,--part bodies --kind $(patsubst bodies-%,%,$(1))))
+# $(1): a group's file; $(2): the group's stamp -> the file, when it holds another stamp (or none)
+probe_stale = $(if $(wildcard $(1)),$(call probe_differs,$(strip $(wordlist 2,3,$(file < $(1)))),stamp $(2),$(1)))
+# $(1), $(2): two texts; $(3) when they differ
+probe_differs = $(if $(and $(findstring $(1),$(2)),$(findstring $(2),$(1))),,$(3))
 define probe_group_rule
-$(eval $(call stamp_rule,$(PROBE_DIR)/stamps/$(1).hash,$(2)))
 $(eval probe_targets := $(foreach r,$(PROBE_RUNS),$(if $(filter $(1),$(call probe_group,$(notdir $(r)))),$(PROBE_DIR)/$(r).dat)))
 $(if $(probe_targets),$(eval $(call probe_group_recipe,$(1))))
+$(foreach t,$(probe_targets),$(if $(call probe_stale,$(t),$(2)),$(eval $(t): FORCE)))
 endef
 define probe_group_recipe
-$(probe_targets): $(PROBE_DIR)/%.dat: $(COARSE_CONFIG) $(PROBE_DIR)/stamps/$(1).hash | $(TOOLS)
+$(probe_targets): $(PROBE_DIR)/%.dat: | $(TOOLS)
 	@mkdir -p $$(@D)
 	@$$(RUN) $$(COARSE_TOOL) multi-contact --probe $$(PROBE_PLAN) --radius $$(patsubst %/,%,$$(dir $$*)) \
 	  $(call probe_options,$(1)) --packing-seed $$(lastword $$(subst -, ,$$(notdir $$*))) --out $$@ 2> $$(basename $$@).log \
 	  || { echo "many-body probe: $$* FAILED (log: $$(basename $$@).log)"; tail -2 $$(basename $$@).log; exit 1; }
-	@echo "many-body probe: $$@ ($$$$(head -1 $$@ | grep -o '[0-9.]* CPU-s'))"
+	@echo "many-body probe: $$@ ($$$$(head -2 $$@ | grep -o '[0-9.]* CPU-s'))"
 endef
 $(foreach e,$(PROBE_STAMPS),$(eval $(call probe_group_rule,$(firstword $(subst =, ,$(e))),$(lastword $(subst =, ,$(e))))))
 

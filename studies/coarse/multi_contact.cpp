@@ -317,8 +317,9 @@ std::vector<ShearPoint> measure_confined_shear(const CoarseGrainSettings& s, std
   return out;
 }
 
-void write_confined_shear(const std::string& out, const std::string& source, std::uint64_t seed, const std::vector<ShearPoint>& sheared, double cpu_seconds) {
-  std::string text = fmt::format(
+void write_confined_shear(const std::string& out, const std::string& source, std::uint64_t seed, const std::vector<ShearPoint>& sheared, double cpu_seconds,
+                          const std::string& stamp) {
+  std::string text = stamp + fmt::format(
       "# softpack-coarse multi-contact: {}, packing seed {}, {}, {:.1f} CPU-s\n"
       "# the confined shear: the first wall (+z) slid along +x by ht, each from the previous; Fn along +z, Ft along -x, on it\n"
       "# arrangement delta_n ht/Rs Fn Ft [N]\n",

@@ -112,6 +112,8 @@ std::vector<ShearPoint> measure_confined_shear(const CoarseGrainSettings& s, std
 
 /// OUT: the confined shear's points, a row each (arrangement delta_n ht/Rs Fn Ft), with a header
 /// naming `source`, the packing seed, the code version and the CPU time.
-void write_confined_shear(const std::string& out, const std::string& source, std::uint64_t seed, const std::vector<ShearPoint>& sheared, double cpu_seconds);
+/// `stamp`: the first line, "# stamp HASH" of the run's group (a plan's runs_stamps), or empty.
+void write_confined_shear(const std::string& out, const std::string& source, std::uint64_t seed, const std::vector<ShearPoint>& sheared, double cpu_seconds,
+                          const std::string& stamp = "");
 
 }  // namespace softpack

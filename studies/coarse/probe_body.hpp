@@ -47,7 +47,7 @@ struct BodyVersion {
     std::map<std::string, ProbeError> held_out_by_radius;
     std::map<std::string, ProbeError> by_arrangement;  ///< every run of the fit and the held-out
   };
-  /// What the fifth version gives of a shallow contact: one kind at one Δn of its grid (Δn <= 0.1),
+  /// What the fifth version gives of a shallow contact: one kind at one Δn of its grid (Δn < 0.1),
   /// over every arrangement and seed of a radius.
   struct Shallow {
     std::string radius, kind;

@@ -258,7 +258,9 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
     // confined soft-particle", 5) — union-refit's β; the engine has no stress term on them yet
     const std::string v6_path = out_dir + "/laws-v6.json";
     const BodyVersion::Form* b7 = seventh && seventh->enters_engine ? &seventh->form(seventh->chosen) : nullptr;
-    if (b7 && b7->name == "union-refit" && v5_written) {
+    // a stress form whose κ came out 0 for both bodies is union-refit's law with its own β
+    const bool no_term = b7 && b7->body.at("grain").kappa.value == 0.0 && b7->body.at("wall").kappa.value == 0.0;
+    if (b7 && no_term && v5_written) {
       const BodyVersion::BodyLaw &grain = b7->body.at("grain"), &wall = b7->body.at("wall");
       laws.many_body->beta = {wall.beta.value, wall.beta.se};
       laws.many_body->grain->beta = {grain.beta.value, grain.beta.se};
@@ -266,11 +268,15 @@ ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& p
       laws.provenance.notes += " The sixth version: the grains' and the walls' β of the probe's seventh part.";
       write_law_file_if_changed(v6_path, laws);
       md += fmt::format("\nThe law's sixth version: `{}` (the fifth's with the walls' β = {:.3f} ± {:.3f} and the grains' β = {:.3f} ± {:.3f} of "
-                        "seventh-version.md).\n",
-                        v6_path, wall.beta.value, wall.beta.se, grain.beta.value, grain.beta.se);
+                        "seventh-version.md's {}).\n",
+                        v6_path, wall.beta.value, wall.beta.se, grain.beta.value, grain.beta.se, b7->name);
     } else if (seventh) {
       std::filesystem::remove(v6_path);
-      if (b7) md += fmt::format("\nThe seventh part's {} enters by its rule, but the engine has no such form: no sixth version's law file.\n", b7->name);
+      if (b7 && !no_term)
+        md += fmt::format("\nThe seventh part's {} enters by its rule, but the engine has no stress term on grains and walls: no sixth version's law file.\n",
+                          b7->name);
+      else if (b7)
+        md += "\nThe seventh part's form enters by its rule, but there is no fifth version to make the sixth from: no sixth version's law file.\n";
     }
   } else {
     std::filesystem::remove(laws_path);

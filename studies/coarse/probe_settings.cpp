@@ -307,6 +307,12 @@ ManyBodyProbe read_many_body_probe(const std::string& path, const std::string& r
       return out;
     };
     const std::vector<std::string> kinds = kinds_of("kinds"), held_kinds = f.has("held_out_kinds") ? kinds_of("held_out_kinds") : kinds;
+    if (seventh)  // each body's β and κ are fitted on its own runs and judged on its own held-out ones
+      for (const auto& [list, k] : {std::pair{&kinds, "kinds"}, std::pair{&held_kinds, "held_out_kinds"}})
+        for (const PressingBody::Kind body : {PressingBody::Kind::grain, PressingBody::Kind::wall})
+          if (std::none_of(list->begin(), list->end(), [&](const std::string& kind) { return parse_pressing_body(kind).kind == body; }))
+            f.at(f.has(k) ? k : "kinds").fail(fmt::format("give a {} kind: the grains' and the wall's laws are each fitted and judged on their own runs",
+                                                          body == PressingBody::Kind::grain ? "grain-X+walls-D" : "wall+walls-D"));
     const auto runs_of = [&](const std::string& kind) -> const std::vector<std::string>& {
       return std::find_if(p.confined_groups.begin(), p.confined_groups.end(), [&](const auto& g) { return g.first == kind; })->second;
     };

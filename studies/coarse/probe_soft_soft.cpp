@@ -212,7 +212,7 @@ SoftSoftVersion write_soft_soft(const ManyBodyProbe& plan, const ManyBodyProbe::
     radii.push_back(radius);
     for (const std::string& arrangement : drawn) {
       dat += fmt::format("\n\n# {} {}\n", radius, arrangement);
-      for (const double dn : plan.delta_n) {
+      for (const double dn : plan.delta_n_of(arrangement.substr(arrangement.find(':') + 1))) {
         std::vector<const ProbeWallForce*> at;
         std::vector<double> F;
         for (const ProbeWallForce& w : confined)

@@ -57,4 +57,15 @@ same_but "$tmp/laws.yaml" "an older law file of the same content" ""
 sed -i 's/"version": 1/"version": 1 /' "$tmp/laws.json"
 same_but "$tmp/laws.yaml" "a law file of other bytes" "soft"
 [[ $(field "$(stamps "$config")" medium) == $(field "$(stamps "$tmp/contact.yaml")" medium) ]] || fail "stamps are not stable"
+
+# A probe run's file begins with its group's stamp (workflow/coarse.mk compares that line, not
+# times): here a confined kind of the plan, on a grid of one Δn, one seed, the small radius.
+sed 's/delta_n: &shallow \[[^]]*\]/delta_n: \&shallow [0.05]/' experiments/many-body.yaml > "$tmp/probe.yaml"
+grep -q 'delta_n: &shallow \[0.05\]' "$tmp/probe.yaml" || fail "the probe plan's shallow grid was not replaced"
+release=$(awk '/^project/ { print $3; exit }' CMakeLists.txt)
+group_stamp=$("$exe" seeds --probe "$tmp/probe.yaml" --runs-stamp "$release" | tr ' ' '\n' | sed -n 's/^bodies-wall+walls-0.1=//p')
+[[ $group_stamp =~ ^[0-9a-f]{16}$ ]] || fail "seeds --runs-stamp gave no stamp for bodies-wall+walls-0.1"
+"$exe" multi-contact --probe "$tmp/probe.yaml" --radius half --part bodies --kind wall+walls-0.1 --packing-seed 501 --out "$tmp/probe.dat" 2> /dev/null
+[ "$(head -1 "$tmp/probe.dat")" = "# stamp $group_stamp" ] || fail "the probe file's first line is '$(head -1 "$tmp/probe.dat")', not its group's stamp"
+[ "$(grep -c '^[0-9] 0.0500 ' "$tmp/probe.dat")" = 3 ] || fail "the probe file has not its three arrangements at Δn 0.05"
 echo "ok"

@@ -320,6 +320,7 @@ TEST(ManyBodyProbePlan, TheCommittedPlanReadsAndABadOneIsRefusedByName) {
   refused("delta_n: &shallow [0.01, 0.02", "delta_n: &shallow [0.02, 0.01", "must increase");
   refused("grain-0.4+walls-0.1: {arrangements:", "grain-0.4+walls-0.1: {grid: 1, arrangements:", "grid");
   refused("    forms: [union-refit, stress, stress-joint]", "    forms: [union-refit, stress-normal]", "forms");
+  refused("    held_out_kinds: [grain-0.6+walls-0.15, wall+walls-0.15]", "    held_out_kinds: [grain-0.6+walls-0.15]", "give a wall+walls-D kind");
   refused("    held_out_kinds: [grain-0.6+walls-0.15, wall+walls-0.15]", "    held_out_kinds: [grain-0.6+walls-0.15, soft+walls-0.15]",
           "a grain or a wall at the first contact");
   refused("    kinds: [soft+walls-0.1, soft+walls-0.2]\n    fit: [opposite, tetrahedral", "    kinds: [soft+walls-0.1, wall+walls-0.2]\n    fit: [opposite, tetrahedral",
