@@ -3,10 +3,8 @@
 //   softpack-coarse medium --config experiments/coarse-grain.yaml --seed S --out medium-S.h5
 //       builds the medium of seed S: grains, sites and their packings (coarse/medium_file.hpp);
 //   softpack-coarse run --config ... --model resolved|soft --medium medium-S.h5 --out F.h5
-//       runs its oedometric compression with that model and writes the curve
-//       (coarse/result_file.hpp);
-//   softpack-coarse stamp --config ... --release V
-//       the stages' configuration stamps, for make (coarse/settings.hpp).
+//       runs its oedometric compression with that model, writes the curve (coarse/result_file.hpp);
+//   softpack-coarse stamp --config ... --release V: the stages' stamps, for make (coarse/settings.hpp).
 // The comparison of the two models is a study's report (`make coarse-grain`, softpack-study
 // report: report kind `coarse`).
 #include <CLI/CLI.hpp>
@@ -344,11 +342,7 @@ int main(int argc, char** argv) {
         probe_arrangements = probe_part == "walls" ? plan.arrangements() : probe_part == "bodies" ? plan.bodies(probe_kind) : plan.shear_arrangements;
         probe_dn = probe_part == "shear" ? plan.shear_delta_n : probe_part == "bodies" ? plan.delta_n_of(probe_kind) : plan.delta_n;
         source = fmt::format("{} (radius {}: Rs = {} m; part {}{})", probe_plan, probe_radius, s.packing.Rs, probe_part, probe_kind.empty() ? "" : " " + probe_kind);
-        // the group's stamp first: make compares it with the plan's (workflow/coarse.mk), so the
-        // results say what decided them and a fresh clone reruns nothing
-        const std::string group = probe_part == "walls" ? "seed" : probe_part == "bodies" ? "bodies-" + probe_kind : "shear";
-        for (const auto& [name, hash] : plan.runs_stamps(release_version()))
-          if (name == group) stamp_line = fmt::format("# stamp {}\n", hash);
+        stamp_line = plan.stamp_line(probe_part, probe_kind, release_version());  // first: make compares it (workflow/coarse.mk)
         if (probe_part == "shear") return confined_shear(program, s, probe_seed, probe_arrangements, probe_dn, plan.shear_ht, source, probe_out, stamp_line);
       } else {
         s = read_coarse_grain_settings(probe_config);

@@ -117,6 +117,13 @@ std::vector<std::pair<std::string, std::string>> ManyBodyProbe::runs_stamps(cons
   return out;
 }
 
+std::string ManyBodyProbe::stamp_line(const std::string& part, const std::string& kind, const std::string& release) const {
+  const std::string group = part == "walls" ? "seed" : part == "bodies" ? "bodies-" + kind : "shear";
+  for (const auto& [name, hash] : runs_stamps(release))
+    if (name == group) return fmt::format("# stamp {}\n", hash);
+  throw InputError(fmt::format("the plan has no group of runs '{}'", group));
+}
+
 CoarseGrainSettings ManyBodyProbe::settings_at(const std::string& radius) const {
   const auto it = radii.find(radius);
   if (it == radii.end()) {

@@ -79,6 +79,10 @@ struct ManyBodyProbe {
   /// redone when its stamp changes, not when the plan's selection, validation or another group
   /// do): a hash of what decides them and the release.
   std::vector<std::pair<std::string, std::string>> runs_stamps(const std::string& release) const;
+  /// "# stamp HASH\n": the first line of a file of the group of `part` (walls: seed; bodies with
+  /// `kind`: bodies-KIND; shear), which make compares with the group's stamp now (workflow/coarse.mk),
+  /// so the results say what decided them and a fresh clone reruns nothing.
+  std::string stamp_line(const std::string& part, const std::string& kind, const std::string& release) const;
   /// The kinds of body_groups, in order.
   std::vector<std::string> body_kinds() const;
   /// The kinds of confined_groups, in order.
