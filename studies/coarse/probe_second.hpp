@@ -9,6 +9,7 @@
 #pragma once
 #include <nlohmann/json_fwd.hpp>
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -26,6 +27,15 @@ struct LogRatio {
 /// An error as the reports show it: "exp(rms) (mean of the logarithm)", "–" without points.
 std::string error_factor(const ProbeError& e);
 nlohmann::json probe_error_json(const ProbeError& e);
+
+/// The curves figures/confined_soft.gp draws of a confined part of the probe: OUT/NAME.dat, a block
+/// '# RADIUS RUN' per radius and run of `runs` (NAME:KIND, on the kind's Δn grid) with the first
+/// contact's measured force (mean and standard error over the seeds) and each form's prediction
+/// predict(form index, point) (the seeds' mean: a stress term has each seed's forces), and its
+/// variables OUT/NAME-vars.gp (`body`: what presses, when not a soft-particle).
+void write_confined_curves(const ManyBodyProbe& plan, const std::vector<ProbeWallForce>& confined, const std::vector<std::string>& runs,
+                           const std::vector<std::string>& forms, const std::function<double(std::size_t, const ProbeWallForce&)>& predict,
+                           const std::string& title, const std::string& out_dir, const std::string& name, const std::string& body = "");
 
 /// One confined shear point of a file (multi-contact --part shear).
 struct ShearRow {
