@@ -23,7 +23,6 @@
 #include "coarse/in_place.hpp"
 #include "coarse/speed.hpp"
 #include "coarse/kinematics.hpp"
-#include "io/atomic_file.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -171,13 +170,14 @@ int main(int argc, char** argv) {
   report_cmd->add_option("--probe", report_plan, "the plan, e.g. experiments/many-body.yaml")->required();
   report_cmd->add_option("--dir", report_dir, "the probe files' folder (RADIUS/seed-S.dat), e.g. data/many-body/probe")->required();
   report_cmd->add_option("--out", report_out, "folder of probe.md, probe.json, probe.dat")->required();
-  std::string val_plan, val_dir, val_out;
+  std::string val_plan, val_dir, val_out, val_against;
   std::vector<std::string> val_settings{"reference", "many-body"};
   CLI::App* val_cmd = app.add_subcommand("validation", "the many-body law's acceptance on media, by the plan's criterion (coarse/validation.hpp)");
   val_cmd->add_option("--probe", val_plan, "the plan, e.g. experiments/many-body.yaml")->required();
   val_cmd->add_option("--dir", val_dir, "the validation study's folder, e.g. data/many-body-validation")->required();
   val_cmd->add_option("--settings", val_settings, "its settings to judge");
   val_cmd->add_option("--out", val_out, "folder of validation.md and validation.json")->required();
+  val_cmd->add_option("--against", val_against, "one of the settings: the others read against it too (a bound against the version it changes)");
   int law_version = 1;  // the version of the law whose media a command reads (one command runs)
   const auto add_law_version = [&](CLI::App& cmd) {  // the plan's validation.media_seeds for 1, vN_media_seeds for N
     return cmd.add_option("--law-version", law_version, "on the media of this version of the law")->check(CLI::Range(1, kLawVersions))->capture_default_str();
@@ -320,7 +320,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*val_cmd) {
-      for (const ValidationVerdict& v : write_validation(read_many_body_probe(val_plan), val_plan, val_dir, val_settings, val_out, law_version))
+      for (const ValidationVerdict& v : write_validation(read_many_body_probe(val_plan), val_plan, val_dir, val_settings, val_out, law_version, val_against))
         fmt::print(stderr, "{} validation: {}: {} of {} points within the bound, accepted: {}\n", program, v.setting, v.agreeing, v.points,
                    v.accepted ? "yes" : "no");
       return 0;
@@ -367,27 +367,7 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "{} multi-contact: {} ({} walls), delta_n {:.3f}: Fn {:.5g} N on the first wall ({}/{}, {:.0f} s, ETA {:.0f} s)\n", program,
                    p.arrangement, p.Fn.size(), p.delta_n, p.Fn[0], done, points, t, t / static_cast<double>(done) * static_cast<double>(points - done));
       });
-      std::string text = stamp_line + fmt::format(
-          "# softpack-coarse multi-contact: {}, packing seed {}, {}, {:.1f} CPU-s\n"
-          "# one block per arrangement; wall k along u_k (from the centre), moved in by w_k delta_n Rs\n"
-          "# walls delta_n Fn_1 ... Fn_walls [N]\n",
-          source, probe_seed, code_version(), clock.elapsed().cpu);
-      for (const ProbeArrangement& a : arrangements) {
-        text += fmt::format("\n# arrangement {}:", a.name);
-        for (const ProbeWall& w : a.walls) text += fmt::format(" u=({:.6f} {:.6f} {:.6f}) w={}", w.u.x() + 0.0, w.u.y() + 0.0, w.u.z() + 0.0, w.w);  // + 0.0: no -0
-        text += "\n";
-        for (const MultiContactPoint& p : points_of) {
-          if (p.arrangement != a.name) continue;
-          if (!p.failed.empty()) {
-            text += fmt::format("# delta_n {:.4f} not measured (nor the larger): {}\n", p.delta_n, p.failed);
-            continue;
-          }
-          text += fmt::format("{} {:.4f}", p.Fn.size(), p.delta_n);
-          for (const double F : p.Fn) text += fmt::format(" {:.6e}", F + 0.0);
-          text += "\n";
-        }
-      }
-      write_file_atomically(probe_out, text);
+      write_multi_contact(probe_out, source, probe_seed, arrangements, points_of, clock.elapsed().cpu, stamp_line);
       return 0;
     }
     if (*medium_cmd) return medium(o, program);

@@ -194,10 +194,11 @@ prev :=
 $(foreach s,$(V6_MEDIA_SEEDS),$(eval $(call speed_seed,6,$(DATA)/many-body/report/laws-v6.json,$(s),$(if $(prev),$(DATA)/many-body-v6/speed/seed-$(prev).dat)))$(eval prev := $(s)))
 # A version of the law judged on its own media (paper/many-body.md), after make many-body-vN: the
 # criterion on each soft setting of its study (and the resolved one), then the census of its
-# many-body setting. $(1): the version; $(2): its soft settings.
+# many-body setting. $(1): the version; $(2): its soft settings; $(3), if given: the setting the
+# others are also read against (a bound against the version it changes: validation --against).
 define version_verdict
 	@$(RUN) $(COARSE_TOOL) validation --probe $(PROBE_PLAN) --dir $(DATA)/many-body-v$(1) --out $(DATA)/many-body-v$(1)/report --law-version $(1) \
-	  --settings reference $(2)
+	  --settings reference $(2)$(if $(3), --against $(3))
 	@$(RUN) $(COARSE_TOOL) soft-contacts --probe $(PROBE_PLAN) --config $(DATA)/many-body-v$(1)/profiles/many-body.yaml \
 	  --media $(DATA)/many-body-v$(1)/many-body/media --out $(DATA)/many-body-v$(1)/report --law-version $(1)
 endef
@@ -208,5 +209,5 @@ many-body-v4-verdict: | $(TOOLS)  ## the fourth version's and the third's accept
 	$(call version_verdict,4,many-body-v3 many-body)
 many-body-v5-verdict: | $(TOOLS)  ## the fifth version's (the stress term) and the fourth's acceptance on the fifth's media, and its census (DATA/many-body-v5/report/)
 	$(call version_verdict,5,many-body-v4 many-body)
-many-body-v6-verdict: | $(TOOLS)  ## the sixth version's (the seventh part's β) and the fifth's acceptance on the sixth's media, and its census (DATA/many-body-v6/report/)
-	$(call version_verdict,6,many-body-v5 many-body)
+many-body-v6-verdict: | $(TOOLS)  ## the sixth version's (the seventh part's β) and the fifth's acceptance on the sixth's media, the spin-locked bound against the sixth, and its census (DATA/many-body-v6/report/)
+	$(call version_verdict,6,many-body-v5 many-body spin-locked,many-body)

@@ -29,6 +29,9 @@ struct ParticleDef {
   /// Its mass [kg] when set (a soft-particle weighs its grains, not a full sphere); otherwise
   /// 4/3 pi r^3 rho.
   std::optional<double> mass;
+  /// Its spin held at zero (effects.rotation; I taken infinite): an infinite resistance to rolling
+  /// and torsion, as a bound (paper/many-body.md), not a law. Scene key `rotation: locked`.
+  bool spin_locked = false;
 };
 
 struct ShellDef {

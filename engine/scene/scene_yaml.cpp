@@ -222,7 +222,7 @@ SceneFile parse_scene(const ConfigNode& root) {
   if (auto c = effects.find("soft_particles")) s.effects.soft_particles = parse_soft_particles(*c);
 
   for (const ConfigNode& p : root.at("particles").items()) {
-    p.allow_only({"x", "r", "material", "body", "v", "w", "mass", "soft"});
+    p.allow_only({"x", "r", "material", "body", "v", "w", "mass", "soft", "rotation"});
     ParticleDef d;
     d.x = p.at("x").vec3();
     d.r = p.at("r").number();
@@ -232,6 +232,7 @@ SceneFile parse_scene(const ConfigNode& root) {
     if (auto w = p.find("w")) d.w = w->vec3();
     if (auto m = p.find("mass")) d.mass = m->number();
     if (auto soft = p.find("soft")) d.soft = soft->boolean();
+    if (auto rot = p.find("rotation")) d.spin_locked = rot->choice({"free", "locked"}) == "locked";
     s.particles.push_back(d);
   }
 

@@ -216,6 +216,8 @@ void validate(const SceneDef& s, SoftLaws laws) {
     check_point(key + ".x", p.x);
     check(key + ".v", p.v.stableNorm(), limits::kSpeed);
     check(key + ".w", p.w.stableNorm() * p.r, limits::kSurfaceSpeed);
+    if (p.spin_locked && !s.effects.rotation) fail(key + ".rotation", "locked needs effects.rotation (without it no sphere spins)");
+    if (p.spin_locked && p.w != Vec3::Zero()) fail(key + ".w", "a sphere whose rotation is locked cannot spin: remove w or rotation: locked");
     if (p.body < kNoBody) fail(key + ".body", fmt::format("{} is not allowed; allowed: a body id >= 0, or none", p.body));
     check_material_ref(s, p.material, key + ".material");
   }

@@ -48,7 +48,7 @@ Measurement residuals(const World& world, const ContactLists& lists, const Force
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.is_driven(i)) continue;
     const double translation = 0.5 * p.m[i] * p.v[i].squaredNorm();
-    const double rotation = p.rotates() ? 0.5 * p.w[i].squaredNorm() / p.inv_I[i] : 0.0;
+    const double rotation = p.rotates() && p.inv_I[i] > 0.0 ? 0.5 * p.w[i].squaredNorm() / p.inv_I[i] : 0.0;  // a locked spin stays 0
     m.kinetic_energy += translation;  // two sums, in this order: the recorded residuals keep their bits
     if (p.rotates()) m.kinetic_energy += rotation;
     if (translation + rotation > m.hottest_energy) m.hottest_energy = translation + rotation, m.hottest = static_cast<int>(i);

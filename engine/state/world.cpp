@@ -35,8 +35,8 @@ World make_world(const SceneDef& scene) {
     p.material[i] = d.material;
     if (!p.family.empty()) p.family[i] = d.soft ? kSoftParticleFamily : 0;
     if (rotation) {
-      p.w[i] = d.w;
-      p.inv_I[i] = 1.0 / (0.4 * p.m[i] * d.r * d.r);  // solid sphere, I = 2/5 m r^2
+      p.w[i] = d.spin_locked ? Vec3(Vec3::Zero()) : d.w;
+      p.inv_I[i] = d.spin_locked ? 0.0 : 1.0 / (0.4 * p.m[i] * d.r * d.r);  // solid sphere, I = 2/5 m r^2; locked: I infinite
     }
   }
   for (const PlaneDef& d : scene.planes) w.planes.push_back(PlaneWall{d.point, d.normal.normalized(), Vec3::Zero(), d.material});

@@ -128,7 +128,7 @@ SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel
                                       s.shell_mass_fraction * grains_mass});
     } else {
       ParticleDef p;
-      p.x = m.sites[k], p.r = m.Rs, p.material = kGrain, p.soft = true;
+      p.x = m.sites[k], p.r = m.Rs, p.material = kGrain, p.soft = true, p.spin_locked = s.spin_locked;
       p.mass = (1.0 + s.shell_mass_fraction) * grains_mass;
       scene.particles.push_back(p);
     }

@@ -317,6 +317,31 @@ std::vector<ShearPoint> measure_confined_shear(const CoarseGrainSettings& s, std
   return out;
 }
 
+void write_multi_contact(const std::string& out, const std::string& source, std::uint64_t seed, const std::vector<ProbeArrangement>& arrangements,
+                         const std::vector<MultiContactPoint>& points, double cpu_seconds, const std::string& stamp) {
+  std::string text = stamp + fmt::format(
+      "# softpack-coarse multi-contact: {}, packing seed {}, {}, {:.1f} CPU-s\n"
+      "# one block per arrangement; wall k along u_k (from the centre), moved in by w_k delta_n Rs\n"
+      "# walls delta_n Fn_1 ... Fn_walls [N]\n",
+      source, seed, code_version(), cpu_seconds);
+  for (const ProbeArrangement& a : arrangements) {
+    text += fmt::format("\n# arrangement {}:", a.name);
+    for (const ProbeWall& w : a.walls) text += fmt::format(" u=({:.6f} {:.6f} {:.6f}) w={}", w.u.x() + 0.0, w.u.y() + 0.0, w.u.z() + 0.0, w.w);  // + 0.0: no -0
+    text += "\n";
+    for (const MultiContactPoint& p : points) {
+      if (p.arrangement != a.name) continue;
+      if (!p.failed.empty()) {
+        text += fmt::format("# delta_n {:.4f} not measured (nor the larger): {}\n", p.delta_n, p.failed);
+        continue;
+      }
+      text += fmt::format("{} {:.4f}", p.Fn.size(), p.delta_n);
+      for (const double F : p.Fn) text += fmt::format(" {:.6e}", F + 0.0);
+      text += "\n";
+    }
+  }
+  write_file_atomically(out, text);
+}
+
 void write_confined_shear(const std::string& out, const std::string& source, std::uint64_t seed, const std::vector<ShearPoint>& sheared, double cpu_seconds,
                           const std::string& stamp) {
   std::string text = stamp + fmt::format(

@@ -110,6 +110,12 @@ std::vector<ShearPoint> measure_confined_shear(const CoarseGrainSettings& s, std
                                                const std::vector<double>& ht_over_Rs,
                                                const std::function<void(const ShearPoint&)>& progress = {});
 
+/// OUT: the probe's points, a block per arrangement (its walls' directions and weights, then a row
+/// per Δn: walls delta_n Fn_1 ... Fn_walls), with a header naming `source`, the packing seed, the
+/// code version and the CPU time; `stamp` as below.
+void write_multi_contact(const std::string& out, const std::string& source, std::uint64_t seed, const std::vector<ProbeArrangement>& arrangements,
+                         const std::vector<MultiContactPoint>& points, double cpu_seconds, const std::string& stamp = "");
+
 /// OUT: the confined shear's points, a row each (arrangement delta_n ht/Rs Fn Ft), with a header
 /// naming `source`, the packing seed, the code version and the CPU time.
 /// `stamp`: the first line, "# stamp HASH" of the run's group (a plan's runs_stamps), or empty.

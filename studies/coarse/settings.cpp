@@ -64,7 +64,7 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
   }
 
   const ConfigNode sp = c.at("soft_particle");
-  sp.allow_only({"profile", "packing", "laws", "grain_contact", "beyond_range", "shell_mass_fraction"});
+  sp.allow_only({"profile", "packing", "laws", "grain_contact", "beyond_range", "shell_mass_fraction", "rotation"});
   s.profile = sp.at("profile").string();
   const ConfigNode profile = ConfigNode::load_file(resolve(root_dir, s.profile));
   {
@@ -90,6 +90,11 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
   s.beyond_range = sp.at("beyond_range").choice({"report", "stop"}) == "report" ? SoftParticlesDef::BeyondRange::report
                                                                                : SoftParticlesDef::BeyondRange::stop;
   s.shell_mass_fraction = in_range(sp.at("shell_mass_fraction"), 0.0, 10.0, true);
+  if (auto r = sp.find("rotation")) {
+    s.spin_locked = r->choice({"free", "locked"}) == "locked";
+    if (s.spin_locked && !s.simulation.effects.rotation)
+      r->fail(fmt::format("locked needs the profile's effects.rotation ({} has none: no sphere spins)", s.profile));
+  }
 
   const ConfigNode m = c.at("medium");
   m.allow_only({"grains", "r_min_over_Rs", "decade", "exponent", "initial_fraction", "aspect", "placement_trials"});
@@ -139,7 +144,7 @@ CoarseStamps coarse_stamps(const ConfigNode& root, const std::string& version, c
   std::string resolved = medium + section_text(profile, "material") + section_text(profile, "simulation") +
                          "shell_mass_fraction: " + text(sp.at("shell_mass_fraction")) + "compression:\n" + text(c.at("compression"));
   std::string soft = resolved + "laws: " + sha256_of_file(s.laws) + "\ngrain_contact: " + text(sp.at("grain_contact")) +
-                     "beyond_range: " + text(sp.at("beyond_range"));
+                     "beyond_range: " + text(sp.at("beyond_range")) + (s.spin_locked ? "rotation: locked\n" : "");
   return {stamp("medium", medium), stamp("resolved", resolved), stamp("soft", soft)};
 }
 

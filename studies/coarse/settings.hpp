@@ -31,6 +31,9 @@ struct CoarseGrainSettings {
   GrainContactRule grain_contact = GrainContactRule::wall;
   SoftParticlesDef::BeyondRange beyond_range = SoftParticlesDef::BeyondRange::report;
   double shell_mass_fraction = 0.0;  ///< resolved: free shell mass / its grains' mass
+  /// soft: the soft-particles' spin held at zero (`rotation: locked`; default free): a bound on
+  /// what a rolling and torsion resistance could give (paper/many-body.md), not a law.
+  bool spin_locked = false;
 
   // The medium: first-decade grains from P(r) ~ r^-exponent on [r_min, decade r_min], the
   // local packings' solid volume from the same law one decade below (docs/coarse-grain.md).
@@ -76,7 +79,7 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
 ///   resolved  the medium's, the profile's `material` and `simulation` sections, shell_mass_fraction,
 ///             `compression`;
 ///   soft      the resolved model's, the law file's SHA-256 (its content, not its time), grain_contact,
-///             beyond_range.
+///             beyond_range, and `rotation: locked` when set (a free spin leaves the stamp as before).
 /// So a variant that changes only how a soft-particle meets a grain keeps its media and resolved runs.
 struct CoarseStamps {
   std::string medium, resolved, soft;

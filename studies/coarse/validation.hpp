@@ -26,10 +26,27 @@ struct ValidationVerdict {
 
 ValidationVerdict judge_validation(const CoarseComparison& c, const ManyBodyProbe& plan, const std::string& setting);
 
+/// One soft setting against another on the same media and resolved runs (a bound read against the
+/// version it changes, paper/many-body.md): at each loading point of the plan's strain range, the
+/// difference of their mean σzz against bound × sqrt(se² + se²) of it.
+struct SettingShift {
+  std::string setting, base;
+  std::size_t points = 0;       ///< loading points in the strain range
+  std::size_t above = 0;        ///< the setting's σzz above the base's by more than the bound
+  std::size_t below = 0;        ///< below it by more than the bound
+  double gap_share = 0.0;       ///< mean of (σzz setting − σzz base) / (σzz resolved − σzz base)
+  bool moves_up() const { return points > 0 && 2 * above >= points; }  ///< at at least half the points
+};
+/// InputError when the two comparisons' points are not the same strains (not the same study's runs).
+SettingShift shift_against(const CoarseComparison& base, const CoarseComparison& c, const ManyBodyProbe& plan, const std::string& base_name,
+                           const std::string& setting);
+
 /// The verdict of each setting of the study's folder `data_dir` (its profiles/SETTING.yaml and runs),
 /// on the media seeds of the law's `version` (ManyBodyProbe::media_seeds_of); writes
-/// out_dir/validation.md and validation.json.
+/// out_dir/validation.md and validation.json. With `against` (one of `settings`), each other soft
+/// setting is also read against it (SettingShift), in a section of its own.
 std::vector<ValidationVerdict> write_validation(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& data_dir,
-                                                const std::vector<std::string>& settings, const std::string& out_dir, int version = 1);
+                                                const std::vector<std::string>& settings, const std::string& out_dir, int version = 1,
+                                                const std::string& against = "");
 
 }  // namespace softpack

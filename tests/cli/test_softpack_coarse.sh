@@ -27,6 +27,12 @@ sed 's/    grains: 12/    grian: 12/' "$config" > "$tmp/typo.yaml"
 expect_error "coarse_grain.medium.grian: unknown key" "$tmp/m.h5" "$exe" medium --config "$tmp/typo.yaml" --seed 1 --out "$tmp/m.h5"
 sed 's/    shear: 0.02/    shear: 0.0/' "$config" > "$tmp/noshear.yaml"
 expect_error "record_shear is not read; remove it" "$tmp/x.h5" "$exe" run --config "$tmp/noshear.yaml" --model soft --medium "$tmp/medium.h5" --out "$tmp/x.h5"
+# rotation: locked (the soft-particles' spin held at zero, a bound) runs on the same medium.
+sed 's/    grain_contact: wall/    grain_contact: wall\n    rotation: locked/' "$config" > "$tmp/locked.yaml"
+"$exe" run --config "$tmp/locked.yaml" --model soft --medium "$tmp/medium.h5" --out "$tmp/runs/locked-901.h5" --quiet
+sed 's/    grain_contact: wall/    grain_contact: wall\n    rotation: spinning/' "$config" > "$tmp/spinning.yaml"
+expect_error "coarse_grain.soft_particle.rotation: 'spinning' is not allowed; allowed: free, locked" "$tmp/x.h5" \
+  "$exe" run --config "$tmp/spinning.yaml" --model soft --medium "$tmp/medium.h5" --out "$tmp/x.h5"
 
 # The stages' stamps (workflow/coarse.mk): each changes with exactly what its stage reads.
 stamps() { "$exe" stamp --config "$1" --release 9.9.9 | tr '\n' ' '; }
@@ -45,6 +51,9 @@ same_but() {  # same_but CONFIG WHAT STAGES-THAT-CHANGE
 }
 sed 's/    grain_contact: wall/    grain_contact: reduced-radius/' "$config" > "$tmp/contact.yaml"
 same_but "$tmp/contact.yaml" "grain_contact" "soft"
+same_but "$tmp/locked.yaml" "rotation: locked" "soft"
+sed 's/    grain_contact: wall/    grain_contact: wall\n    rotation: free/' "$config" > "$tmp/free.yaml"
+same_but "$tmp/free.yaml" "rotation: free (the default, written out)" ""
 sed 's/    speed: 0.05/    speed: 0.04/' "$config" > "$tmp/speed.yaml"
 same_but "$tmp/speed.yaml" "compression.speed" "resolved soft"
 sed 's/    grains: 12/    grains: 13/' "$config" > "$tmp/grains.yaml"

@@ -1,6 +1,7 @@
 // The Tsuji tangential spring (Eq. 5-6) with Coulomb limit and its history rules.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -127,6 +128,43 @@ TEST_P(RigidRotation, OfALoadedContactKeepsItsForce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SizeRatios, RigidRotation, ::testing::Values(1.0, 1.5));
+
+// A sphere on a plane dragged at speed u along x (gravity presses it, friction drags it): a free
+// solid sphere ends rolling with v = 2/7 u (angular momentum about the contact point is conserved,
+// m v r + I w = 0 with v - w r = u and I = 2/5 m r^2); one whose rotation is locked
+// (particles[].rotation: locked) cannot roll and ends moving with the plane, its spin exactly 0.
+double belt_speed(bool locked, double& max_spin) {
+  SceneDef s = testing::basic_scene();
+  s.effects.friction = true;
+  s.effects.rotation = true;
+  s.effects.restitution = 0.5;
+  s.effects.gravity = Vec3(0, 0, -9.81);
+  const double r = 1e-3;
+  s.planes = {PlaneDef{"plane", Vec3::Zero(), Vec3::UnitZ(), 0}};
+  ParticleDef p;
+  p.r = r;
+  p.x = Vec3(0, 0, r);
+  p.spin_locked = locked;
+  s.particles = {p};
+  Simulation sim(s);
+  sim.run_for(0.05);  // settles on the plane
+  const double u = 2e-3;
+  sim.add_driver(MoveWallDef{"plane", Vec3(u, 0, 0), 0.05 * r, std::nullopt});
+  max_spin = 0.0;
+  while (sim.drivers_moving()) {
+    sim.step();
+    max_spin = std::max(max_spin, sim.particles().w[0].norm());
+  }
+  return sim.particles().v[0].x() / u;
+}
+
+TEST(LockedRotation, AFreeSphereRollsAtTwoSeventhsOfTheBeltAndALockedOneMovesWithIt) {
+  double spin_free = 0.0, spin_locked = 1.0;
+  EXPECT_NEAR(belt_speed(false, spin_free), 2.0 / 7.0, 0.02);
+  EXPECT_GT(spin_free, 0.5);  // [rad/s]: it rolls, at 5/7 u / r = 1.4 rad/s in the end
+  EXPECT_NEAR(belt_speed(true, spin_locked), 1.0, 0.02);
+  EXPECT_EQ(spin_locked, 0.0);
+}
 
 }  // namespace
 }  // namespace softpack

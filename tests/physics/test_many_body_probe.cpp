@@ -11,6 +11,8 @@
 #include <tuple>
 
 #include "coarse/probe_fit.hpp"
+#include "coarse/validation.hpp"
+#include "core/error.hpp"
 #include "coarse/probe_second.hpp"
 #include "coarse/probe_third.hpp"
 #include "coarse/validation.hpp"
@@ -185,6 +187,33 @@ TEST(ManyBodyValidation, ThePreregisteredCriterionJudgesEveryPointOfItsRangeAndT
   EXPECT_FALSE(judge_validation(c, plan, "s").accepted);
   c.points.pop_back();  // no shear: not accepted (the criterion asks for τ)
   EXPECT_FALSE(judge_validation(c, plan, "s").accepted);
+}
+
+// A soft setting read against another on the same resolved runs (validation --against): only the
+// loading points of the range count; above and below by more than 2 sqrt(se^2 + se^2); the gap's
+// share is the mean of (σ − σ_base) / (σ_resolved − σ_base); points of other strains are refused.
+TEST(ManyBodyValidation, ASettingAgainstAnotherCountsItsLoadingPointsBeyondTheBoundAndTheGapItCloses) {
+  ManyBodyProbe plan;
+  plan.strain_lo = 0.02, plan.strain_hi = 0.35, plan.bound_in_standard_errors = 2.0;
+  const auto point = [](double strain, int phase, double res, double soft) {
+    CoarsePoint p;
+    p.strain = strain, p.phase = phase;
+    p.sigma[0] = {res, 1.0}, p.sigma[1] = {soft, 1.0};
+    return p;
+  };
+  CoarseComparison base, c;
+  base.points = {point(0.01, 1, 10, 1), point(0.1, 1, 100, 50), point(0.2, 1, 200, 100), point(0.3, 1, 300, 100), point(0.3, -1, 250, 80)};
+  c.points = {point(0.01, 1, 10, 9), point(0.1, 1, 100, 75), point(0.2, 1, 200, 102), point(0.3, 1, 300, 96), point(0.3, -1, 250, 250)};
+  const SettingShift s = shift_against(base, c, plan, "v6", "locked");
+  EXPECT_EQ(s.points, 3u);  // 0.01 outside the range, the unloading point not a loading one
+  EXPECT_EQ(s.above, 1u);   // 25 > 2 sqrt(2); 2 is within it
+  EXPECT_EQ(s.below, 1u);   // -4
+  EXPECT_FALSE(s.moves_up());
+  EXPECT_NEAR(s.gap_share, (25.0 / 50 + 2.0 / 100 - 4.0 / 200) / 3, 1e-12);
+  c.points[2].sigma[1].mean = 110;  // 10 above as well: two of three
+  EXPECT_TRUE(shift_against(base, c, plan, "v6", "locked").moves_up());
+  c.points[3].strain = 0.31;
+  EXPECT_THROW(shift_against(base, c, plan, "v6", "locked"), InputError);
 }
 
 // The third version's analysis (coarse/probe_third.hpp) on a synthetic probe made by its own law:

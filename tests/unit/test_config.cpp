@@ -83,6 +83,18 @@ TEST(SceneFile, UnknownEffectIsRejectedWithASuggestion) {
   EXPECT_CONTAINS(msg, "allowed: normal, friction, rotation, damping, gravity");
 }
 
+// particles[].rotation: locked holds a sphere's spin at zero; it needs effects.rotation and no w.
+TEST(SceneFile, ALockedRotationIsReadAndItsConflictsAreNamed) {
+  const std::string second = "{x: [0, 0, 0.0025], r: 1.0e-3, material: grain, body: 0}";
+  const auto with = [&](const std::string& keys) { return replace(kValid, second, "{x: [0, 0, 0.0025], r: 1.0e-3, material: grain, body: 0, " + keys + "}"); };
+  EXPECT_EQ(error_of(with("rotation: locked")), "");
+  EXPECT_TRUE(parse_scene(ConfigNode::load_string(with("rotation: locked"), "scene.yaml")).scene.particles[1].spin_locked);
+  EXPECT_FALSE(parse_scene(ConfigNode::load_string(with("rotation: free"), "scene.yaml")).scene.particles[1].spin_locked);
+  EXPECT_CONTAINS(error_of(with("rotation: spinning")), "particles[1].rotation: 'spinning' is not allowed; allowed: free, locked");
+  EXPECT_CONTAINS(error_of(replace(with("rotation: locked"), "  rotation: true\n", "")), "particles[1].rotation: locked needs effects.rotation");
+  EXPECT_CONTAINS(error_of(with("rotation: locked, w: [0, 0, 1]")), "particles[1].w: a sphere whose rotation is locked cannot spin");
+}
+
 TEST(SceneFile, UnknownTopLevelKeyIsRejected) {
   EXPECT_CONTAINS(error_of(kValid + "neighbour: {skin: 0.1}\n"), "did you mean 'neighbor'?");
 }
