@@ -26,7 +26,7 @@ CMAKE_FLAGS := -DCMAKE_BUILD_TYPE=Release $(if $(filter true,$(CI)),-DSOFTPACK_W
 APT_PACKAGES := cmake g++ make git pkg-config gnuplot-nox \
   libeigen3-dev libyaml-cpp-dev libhdf5-dev hdf5-tools nlohmann-json3-dev \
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev libssl-dev \
-  lammps python3-numpy python3-h5py clang libclang-rt-14-dev
+  lammps liblammps-dev python3-numpy python3-h5py clang libclang-rt-14-dev
 # Installed without their recommends (about a tenth of the download): the report (make paper,
 # TeX Live); a one-node Slurm cluster for the tests (tests/cluster/); the readers users open our
 # files with, in the tests (ParaView's pvpython and VTK, ASE, matplotlib; tests/readers/). Debian 12's

@@ -26,6 +26,10 @@ void validate_material(const Material& m, const std::string& key);
 /// Soft-particle contacts: the laws the scene's contacts need, the radii they were measured at
 /// (scene/validate_soft.cpp).
 void validate_soft_particles(const SceneDef& scene, SoftLaws laws = SoftLaws::loaded);
+/// Why a soft-particle of radius r cannot run on `law` (named `law_key`) of `laws`, or "": r must be
+/// the reference radius R0 without a radius scaling, within the measured radii with one (the
+/// scaling of the tangential law too with friction). Also the LAMMPS pair style's rule.
+std::string soft_radius_refusal(const SoftParticleLaws& laws, const SoftSceneLaw& law, const std::string& law_key, double r, bool friction);
 void validate_effects(const EffectsDef& e, const std::vector<Material>& materials, const std::string& key = "effects");
 void validate_integration(const IntegrationDef& in, const std::string& key = "integration");
 void validate_neighbor(const NeighborDef& nb, const std::string& key = "neighbor");

@@ -27,20 +27,24 @@ void check_law(const SoftSceneLaw& law, const std::string& key, bool friction) {
     if (!(std::isfinite(mu) && mu >= 0.0)) fail(key + ".friction.mu", fmt::format("{} is not allowed; allowed: a finite mu >= 0", mu));
 }
 
-// A soft-particle of radius r on `law`: r = R0 without a radius scaling, in its measured range with one.
 void check_radius(const SoftParticleLaws& laws, const SoftSceneLaw& law, const std::string& law_key, double r, const std::string& key,
                   bool friction) {
-  const bool scaled = law.normal_exponent.has_value() && (!friction || law.tangential_exponent.has_value());
-  if (!scaled && std::abs(r / laws.R0 - 1.0) > 1e-9)
-    fail(key + ".r", fmt::format("{:.6g} m differs from the law file's reference radius {:.6g} m and {} has no radius scaling "
-                                 "of the laws the scene runs ({}); allowed: r = {:.6g} m",
-                                 r, laws.R0, law_key, laws.source, laws.R0));
-  if (scaled && (r < law.R_min * (1.0 - 1e-9) || r > law.R_max * (1.0 + 1e-9)))
-    fail(key + ".r", fmt::format("{:.6g} m is outside the radii {} was measured at ({}); allowed: {:.6g} to {:.6g} m", r, law_key,
-                                 laws.source, law.R_min, law.R_max));
+  if (const std::string why = soft_radius_refusal(laws, law, law_key, r, friction); !why.empty()) fail(key + ".r", why);
 }
 
 }  // namespace
+
+std::string soft_radius_refusal(const SoftParticleLaws& laws, const SoftSceneLaw& law, const std::string& law_key, double r, bool friction) {
+  const bool scaled = law.normal_exponent.has_value() && (!friction || law.tangential_exponent.has_value());
+  if (!scaled && std::abs(r / laws.R0 - 1.0) > 1e-9)
+    return fmt::format("{:.6g} m differs from the law file's reference radius {:.6g} m and {} has no radius scaling "
+                       "of the laws the scene runs ({}); allowed: r = {:.6g} m",
+                       r, laws.R0, law_key, laws.source, laws.R0);
+  if (scaled && (r < law.R_min * (1.0 - 1e-9) || r > law.R_max * (1.0 + 1e-9)))
+    return fmt::format("{:.6g} m is outside the radii {} was measured at ({}); allowed: {:.6g} to {:.6g} m", r, law_key, laws.source,
+                       law.R_min, law.R_max);
+  return "";
+}
 
 void validate_soft_particles(const SceneDef& s, SoftLaws laws) {
   std::size_t soft = 0, solid = 0;

@@ -2,7 +2,7 @@
 """The architecture rules of docs/architecture.md, checked on the sources:
 
   1. wings: engine/ (the DEM engine), pipeline/ (files, packings, sweeps, analysis), studies/,
-     apps/, in that order; a file includes only its own wing's files and those of wings before it;
+     lammps/ (softpack's styles in LAMMPS), apps/, in that order; a file includes only its own wing's files and those of wings before it;
   2. the other wings reach the engine through its public face only (ENGINE_FACE below, the table
      of docs/architecture.md): the rest of engine/ is the engine's own business;
   3. the engine needs the standard library, Eigen, yaml-cpp and fmt only (its other includes:
@@ -21,7 +21,7 @@ import re
 import sys
 from pathlib import Path
 
-WINGS = ["engine", "pipeline", "studies", "apps"]
+WINGS = ["engine", "pipeline", "studies", "lammps", "apps"]
 # The engine's public face: what the pipeline, the studies and the commands may include from it.
 ENGINE_FACE = {
     "core/error.hpp", "core/types.hpp", "core/version.hpp", "core/stopwatch.hpp", "core/random.hpp",
@@ -100,7 +100,8 @@ def main(root: Path) -> int:
             problems.append(f"{shown}: {text.count(chr(10))} lines, more than {MAX_LINES}")
         if not shown.startswith("engine/simd/") and INTRINSIC.search(text):
             problems.append(f"{shown}: intrinsics outside engine/simd/ ({INTRINSIC.search(text).group(0)})")
-        if FORCE_RESULT.search(text) and not shown.startswith("engine/contact/") and shown not in FORCE_LOOP_FILES:
+        # LAMMPS's pair styles (lammps/pair/) are LAMMPS's loop over its own neighbour lists calling the same model.
+        if FORCE_RESULT.search(text) and not shown.startswith(("engine/contact/", "lammps/pair/")) and shown not in FORCE_LOOP_FILES:
             problems.append(f"{shown}: evaluates a contact model's force (ContactForce) outside the one force loop "
                             f"(engine/forces/contact_loop.hpp and the kinds of contact it runs): a second force path")
         if DEFINE.search(text):

@@ -1,0 +1,12 @@
+#include "host/styles.hpp"
+
+#include "pair/lammps_headers.hpp"
+#include "pair/pair_soft_particle.hpp"
+
+namespace softpack::lammps {
+
+void register_styles(LAMMPS_NS::LAMMPS* lmp) {
+  (*lmp->force->pair_map)[PairSoftParticle::kStyle] = &PairSoftParticle::create;
+}
+
+}  // namespace softpack::lammps

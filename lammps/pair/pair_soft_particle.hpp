@@ -1,0 +1,55 @@
+// The soft-particle contact model as a LAMMPS pair style (issue 34): LAMMPS finds the pairs,
+// ranks and ghosts; each pair's force is softpack's own model (contact/soft_particle_law.hpp
+// SoftParticleModel, the one the engine's loops call), fed with the pair's geometry as the
+// engine's sphere-sphere contacts make it (forces/pair_contacts.hpp):
+//
+//   d = x_i - x_j,  h = R_i + R_j - |d|,  n = d / |d|,  vc = v_i - v_j  (the normal damping's)
+//
+// so a pair of LAMMPS is a pair of the engine: the same law file, radius scaling, mixing rule
+// and grain rule, the same damping at the contact's current stiffness.
+//
+//   pair_style softpack/soft LAWFILE [grain_contact wall|reduced-radius] [restitution E]
+//   pair_coeff I J ROLE_I ROLE_J      ROLE: soft (a soft-particle) or grain (a solid sphere);
+//                                     at least one soft: grain-grain pairs are `pair granular`'s
+//                                     under pair_style hybrid (docs/lammps.md)
+//
+// Needs atom_style sphere (radius, rmass) and, with `restitution`, comm_modify vel yes. What is
+// not here yet (docs/lammps.md): the tangential spring and its history, the walls, the many-body
+// law's per-body state.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "contact/soft_particle_law.hpp"
+#include "pair/lammps_headers.hpp"
+
+namespace softpack::lammps {
+
+class PairSoftParticle : public LAMMPS_NS::Pair {
+ public:
+  static constexpr const char* kStyle = "softpack/soft";
+  explicit PairSoftParticle(LAMMPS_NS::LAMMPS* lmp);
+  ~PairSoftParticle() override;
+  static LAMMPS_NS::Pair* create(LAMMPS_NS::LAMMPS* lmp) { return new PairSoftParticle(lmp); }
+
+  void compute(int eflag, int vflag) override;
+  void settings(int narg, char** arg) override;
+  void coeff(int narg, char** arg) override;
+  void init_style() override;
+  double init_one(int i, int j) override;
+
+ private:
+  template <bool Damped>
+  void compute_pairs();
+  void allocate();
+  [[noreturn]] void fail(const std::string& what) const;
+
+  SoftParticleLaws laws_;
+  GrainContactRule grain_rule_ = GrainContactRule::wall;
+  double restitution_ = -1.0;  ///< < 0: no damping
+  SoftParticleModel::Params params_{};
+  std::vector<int> soft_;          ///< per atom type (1-based): 1 soft, 0 grain, -1 not set
+  std::vector<double> max_radius_;  ///< per atom type, over all ranks (init_style)
+};
+
+}  // namespace softpack::lammps

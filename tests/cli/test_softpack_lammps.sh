@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# softpack-lammps (issue 34, docs/lammps.md) answers --help, runs the example of docs/lammps.md with
+# the forces of the law file's Eq. 7 (soft-soft at Δn 0.3, soft-solid at 0.15, to 1e-12), on one
+# rank and on two, and stops with LAMMPS's ERROR line naming the bad value for a bad role.
+source "$(dirname "$0")/common.sh"
+exe=$1
+root=$2
+cd "$root"  # the example names the law file from the repository's root
+
+"$exe" --help | grep -q "pair_style softpack/soft" || fail "--help does not name the pair style"
+expected=$(python3 - <<'PY'
+import json
+d = json.load(open("data/radius/report/laws.json"))["scenes"]
+def eq7(scene, dn):
+    n = d[scene]["normal"]
+    return n["a"]["value"] * dn ** n["b"]["value"] + n["c"]["value"] if dn >= n["delta"]["value"] else 0.0
+print(f"{eq7('soft-soft', 0.0048 / 0.016):.17g} {eq7('soft-solid', 0.0024 / 0.016):.17g}")
+PY
+)
+check() {  # check LINE: the printed forces against Eq. 7
+  python3 - "$1" $expected <<'PY' || fail "forces: $1 (expected $expected)"
+import re, sys
+line, soft, grain = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+got = [float(v) for v in re.findall(r"(-?[0-9.]+(?:e-?[0-9]+)?) N", line)]
+assert len(got) == 2 and abs(got[0] - soft) <= 1e-12 * soft and abs(got[1] - grain) <= 1e-12 * grain, (got, soft, grain)
+PY
+}
+check "$("$exe" -in examples/lammps/two-soft-particles.in -log none | grep '^soft-soft Fx')"
+check "$(mpirun --allow-run-as-root --oversubscribe -np 2 "$exe" -in examples/lammps/two-soft-particles.in -log none | grep '^soft-soft Fx')"
+
+sed 's/softpack\/soft soft grain/softpack\/soft soft graim/' examples/lammps/two-soft-particles.in > "$tmp/bad.in"
+set +e
+"$exe" -in "$tmp/bad.in" -log none > "$tmp/out" 2>&1
+code=$?
+set -e
+[ "$code" -ne 0 ] || fail "a bad role ran (exit 0)"
+grep -qF "ERROR: softpack/soft: role 'graim' is not allowed; allowed: soft, grain" "$tmp/out" || fail "bad role: $(grep ERROR "$tmp/out")"
