@@ -139,7 +139,7 @@ void Drivers::advance(World& world, double dt, Neighbours& neighbours) {
               const Vec3 x_new = def.centre + R * (p.x[i] - def.centre);
               p.v[i] = (x_new - p.x[i]) / dt;
               p.x[i] = x_new;
-              if (p.rotates()) p.w[i] = Omega;
+              if (p.rotates() && p.inv_I[i] > 0.0) p.w[i] = Omega;  // a locked spin stays 0 (it is carried round, not turned)
             }
             if (d.shell >= 0) {  // the shell turns with its spheres (about its own centre: its centre stays, exactly)
               SphericalShell& shell = world.shells[d.shell];

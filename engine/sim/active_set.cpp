@@ -51,7 +51,7 @@ std::size_t ActiveSet::sleep(World& world, ContactLists& lists, ForceField& forc
     if (asleep_[i] || p.is_driven(i)) continue;
     const double F2 = (def_.sleep_force * scale_[i]) * (def_.sleep_force * scale_[i]);
     if (!(p.F[i].squaredNorm() <= F2 && p.v[i].squaredNorm() <= v2)) continue;
-    if (p.rotates()) {
+    if (p.rotates() && p.inv_I[i] > 0.0) {  // a locked spin's torque is held by the lock
       const double r2 = p.r[i] * p.r[i];
       if (!(p.T[i].squaredNorm() <= F2 * r2 && p.w[i].squaredNorm() * r2 <= v2)) continue;
       p.w[i].setZero();
@@ -77,7 +77,7 @@ std::size_t ActiveSet::wake(World& world, ContactLists& lists, ForceField& force
     const auto i = static_cast<std::size_t>(k);
     const double F2 = wake_limit_[i] * wake_limit_[i];
     bool up = p.F[i].squaredNorm() > F2 || p.is_driven(i);
-    if (!up && p.rotates()) up = p.T[i].squaredNorm() > F2 * p.r[i] * p.r[i];
+    if (!up && p.rotates() && p.inv_I[i] > 0.0) up = p.T[i].squaredNorm() > F2 * p.r[i] * p.r[i];
     if (!up) continue;
     asleep_[i] = 0;
     ++woke;

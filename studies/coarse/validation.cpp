@@ -59,12 +59,19 @@ SettingShift shift_against(const CoarseComparison& base, const CoarseComparison&
       throw InputError(fmt::format("{} against {}: point {} at strain {} (phase {}) and {} (phase {}): not runs of the same study", setting,
                                    base_name, k, p.strain, p.phase, b.strain, b.phase));
     if (p.phase != 1 || p.strain < plan.strain_lo - 1e-9 || p.strain > plan.strain_hi + 1e-9) continue;
+    if (p.sigma[0].mean != b.sigma[0].mean)
+      throw InputError(fmt::format("{} against {}: at strain {} their resolved σzz differ ({} and {} Pa): not the same resolved runs", setting,
+                                   base_name, p.strain, p.sigma[0].mean, b.sigma[0].mean));
     const double bound = plan.bound_in_standard_errors * std::hypot(p.sigma[1].error, b.sigma[1].error);
     const double diff = p.sigma[1].mean - b.sigma[1].mean;
     ++s.points;
     s.above += diff > bound;
     s.below += -diff > bound;
-    share += diff / (p.sigma[0].mean - b.sigma[1].mean);
+    const double gap = p.sigma[0].mean - b.sigma[1].mean;
+    if (gap == 0.0)
+      throw InputError(fmt::format("{} against {}: at strain {} {} equals the resolved σzz: the gap's share is undefined", setting, base_name,
+                                   p.strain, base_name));
+    share += diff / gap;
   }
   s.gap_share = s.points ? share / static_cast<double>(s.points) : 0.0;
   return s;
@@ -114,7 +121,7 @@ std::vector<ValidationVerdict> write_validation(const ManyBodyProbe& plan, const
         "| setting | loading points | above the bound | below the bound | moves σzz up | the gap's share |\n|---|---|---|---|---|---|\n",
         against, plan.strain_lo, plan.strain_hi, plan.bound_in_standard_errors);
     for (const std::string& setting : settings) {
-      if (setting == against || setting == "reference") continue;
+      if (setting == against) continue;
       const SettingShift s = shift_against(compared.at(against), compared.at(setting), plan, against, setting);
       md += fmt::format("| {} | {} | {} | {} | **{}** | {:.3f} |\n", s.setting, s.points, s.above, s.below, s.moves_up() ? "yes" : "no", s.gap_share);
       j["against"][against][setting] = {{"points", s.points}, {"above", s.above}, {"below", s.below}, {"moves_up", s.moves_up()},

@@ -99,6 +99,13 @@ TEST(CoarseGrain, BothModelsHoldTheSameGrainsAndTheSiteMassesAgree) {
   }
   EXPECT_TRUE(b.effects.soft_particles.has_value());
   EXPECT_FALSE(a.effects.soft_particles.has_value());
+  // rotation: locked holds the soft-particles' spin, and only theirs; free (the default) none.
+  for (const ParticleDef& p : b.particles) EXPECT_FALSE(p.spin_locked);
+  CoarseGrainSettings locked = tiny();
+  locked.spin_locked = true;
+  const SceneDef c = medium_scene(locked, m, CoarseModel::soft, laws());
+  for (const ParticleDef& p : c.particles) EXPECT_EQ(p.spin_locked, p.soft);
+  for (const ParticleDef& p : medium_scene(locked, m, CoarseModel::resolved, laws()).particles) EXPECT_FALSE(p.spin_locked);
 }
 
 TEST(CoarseGrain, ACompressionOfEitherModelWritesAFileThatReadsBack) {

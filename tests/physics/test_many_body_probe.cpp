@@ -11,7 +11,6 @@
 #include <tuple>
 
 #include "coarse/probe_fit.hpp"
-#include "coarse/validation.hpp"
 #include "core/error.hpp"
 #include "coarse/probe_second.hpp"
 #include "coarse/probe_third.hpp"
@@ -212,7 +211,9 @@ TEST(ManyBodyValidation, ASettingAgainstAnotherCountsItsLoadingPointsBeyondTheBo
   EXPECT_NEAR(s.gap_share, (25.0 / 50 + 2.0 / 100 - 4.0 / 200) / 3, 1e-12);
   c.points[2].sigma[1].mean = 110;  // 10 above as well: two of three
   EXPECT_TRUE(shift_against(base, c, plan, "v6", "locked").moves_up());
-  c.points[3].strain = 0.31;
+  c.points[1].sigma[0].mean = 101;  // another resolved run
+  EXPECT_THROW(shift_against(base, c, plan, "v6", "locked"), InputError);
+  c.points[1].sigma[0].mean = 100, c.points[3].strain = 0.31;
   EXPECT_THROW(shift_against(base, c, plan, "v6", "locked"), InputError);
 }
 
