@@ -15,8 +15,10 @@ int main(int argc, char** argv) {
           "softpack-lammps: LAMMPS (the Debian package's liblammps) with softpack's soft-particle styles\n\n"
           "usage: [mpirun -np N] softpack-lammps -in INPUT [LAMMPS's options: -log, -screen, -var, ...; -h lists them]\n\n"
           "styles added:\n"
-          "  pair_style softpack/soft LAWFILE [grain_contact wall|reduced-radius] [restitution E]\n"
-          "  pair_coeff I J ROLE_I ROLE_J   (ROLE: soft or grain, at least one soft)\n\n"
+          "  pair_style softpack/soft LAWFILE [grain_contact wall|reduced-radius] [restitution E] [tangential_ratio X]\n"
+          "             [friction yes|no] [rotation yes|no] [history_update synchronized|standard] [history K]\n"
+          "  pair_coeff I J ROLE_I ROLE_J   (ROLE: soft or grain, at least one soft)\n"
+          "  (with friction: newton off; the springs' fix SOFTPACK/HISTORY is made by the pair style)\n\n"
           "docs/lammps.md says how a soft-particle medium is run with them.\n");
       return 0;
     }

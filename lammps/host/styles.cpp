@@ -2,11 +2,13 @@
 
 #include "pair/lammps_headers.hpp"
 #include "pair/pair_soft_particle.hpp"
+#include "pair/soft_history.hpp"
 
 namespace softpack::lammps {
 
 void register_styles(LAMMPS_NS::LAMMPS* lmp) {
   (*lmp->force->pair_map)[PairSoftParticle::kStyle] = &PairSoftParticle::create;
+  (*lmp->modify->fix_map)[FixSoftHistory::kStyle] = &FixSoftHistory::create;
 }
 
 }  // namespace softpack::lammps

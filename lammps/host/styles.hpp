@@ -9,8 +9,8 @@ class LAMMPS;
 
 namespace softpack::lammps {
 
-/// The names this adds: pair_style softpack/soft (pair/pair_soft_particle.hpp).
-inline constexpr const char* kStyles[] = {"softpack/soft"};
+/// What this adds: pair_style softpack/soft (pair/pair_soft_particle.hpp) and the fix of its springs,
+/// SOFTPACK/HISTORY (pair/soft_history.hpp), which the pair style makes itself.
 
 /// Adds softpack's styles to `lmp` (before its input is read).
 void register_styles(LAMMPS_NS::LAMMPS* lmp);

@@ -1,5 +1,7 @@
 #include "pair/pair_soft_particle.hpp"
 
+#include "pair/soft_history.hpp"
+
 #include <fmt/format.h>
 #include <mpi.h>
 
@@ -41,35 +43,47 @@ void PairSoftParticle::allocate() {
   max_radius_.assign(static_cast<std::size_t>(n) + 1, 0.0);
 }
 
-// pair_style softpack/soft LAWFILE [grain_contact wall|reduced-radius] [restitution E]
+// pair_style softpack/soft LAWFILE [keyword value] ...
 void PairSoftParticle::settings(int narg, char** arg) {
   if (narg < 1 || narg % 2 != 1)
-    fail("expected: pair_style softpack/soft LAWFILE [grain_contact wall|reduced-radius] [restitution E]");
+    fail("expected: pair_style softpack/soft LAWFILE [grain_contact wall|reduced-radius] [restitution E] [tangential_ratio X] "
+         "[friction yes|no] [rotation yes|no] [history_update standard|synchronized] [history K]");
   const std::string path = arg[0];
   try {
     laws_ = soft_particle_laws(read_law_file(path), path);
   } catch (const std::exception& e) {
     fail(e.what());
   }
+  const auto number = [&](const std::string& key, const std::string& value, double lo, double hi) {
+    char* end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (end == value.c_str() || *end != '\0' || !(v > lo && v <= hi))
+      fail(fmt::format("{} '{}' is not allowed; allowed: {} < {} <= {}", key, value, lo, key, hi));
+    return v;
+  };
+  const auto choice = [&](const std::string& key, const std::string& value, const char* yes, const char* no) {
+    if (value != yes && value != no) fail(fmt::format("{} '{}' is not allowed; allowed: {}, {}", key, value, yes, no));
+    return value == yes;
+  };
+  setting_ = ContactSetting{};
+  fx_ = Effects{true, false, true, true};  // the engine's defaults: friction, rotation, synchronized history
   for (int k = 1; k < narg; k += 2) {
     const std::string key = arg[k], value = arg[k + 1];
-    if (key == "grain_contact") {
-      if (value != "wall" && value != "reduced-radius") fail(fmt::format("grain_contact '{}' is not allowed; allowed: wall, reduced-radius", value));
-      grain_rule_ = value == "wall" ? GrainContactRule::wall : GrainContactRule::reduced_radius;
-    } else if (key == "restitution") {
-      char* end = nullptr;
-      restitution_ = std::strtod(value.c_str(), &end);
-      if (end == value.c_str() || *end != '\0' || !(restitution_ > 0.0 && restitution_ <= 1.0))
-        fail(fmt::format("restitution '{}' is not allowed; allowed: 0 < e <= 1", value));
-    } else {
-      fail(fmt::format("'{}' is not a keyword; allowed: grain_contact, restitution", key));
-    }
+    if (key == "grain_contact") grain_rule_ = choice(key, value, "wall", "reduced-radius") ? GrainContactRule::wall : GrainContactRule::reduced_radius;
+    else if (key == "restitution") setting_.restitution = number(key, value, 0.0, 1.0), fx_.damping = true;
+    else if (key == "tangential_ratio") setting_.tangential_ratio = number(key, value, -1e-300, 100.0);
+    else if (key == "friction") fx_.friction = choice(key, value, "yes", "no");
+    else if (key == "rotation") fx_.rotation = choice(key, value, "yes", "no");
+    else if (key == "history_update") fx_.synchronized = choice(key, value, "synchronized", "standard");
+    else if (key == "history") history_capacity_ = static_cast<int>(number(key, value, 0.0, 100000.0));
+    else fail(fmt::format("'{}' is not a keyword; allowed: grain_contact, restitution, tangential_ratio, friction, rotation, history_update, history", key));
   }
-  ContactSetting s;
-  s.soft_laws = &laws_;
-  s.grain_rule = grain_rule_;
-  if (restitution_ > 0.0) s.restitution = restitution_;
-  params_ = SoftParticleModel::params(s);
+  if (fx_.rotation && !fx_.friction) fail("rotation yes needs friction yes (without friction no contact turns a sphere)");
+  if (fx_.friction && ((laws_.soft_solid && !laws_.soft_solid->tangential) || (laws_.soft_soft && !laws_.soft_soft->tangential)))
+    fail(fmt::format("friction yes: {} has no tangential law (Eq. 8) for each of its scenes; allowed: friction no", laws_.source));
+  setting_.soft_laws = &laws_;
+  setting_.grain_rule = grain_rule_;
+  params_ = SoftParticleModel::params(setting_);
 }
 
 // pair_coeff I J ROLE_I ROLE_J (ROLE: soft or grain; at least one soft)
@@ -106,8 +120,23 @@ void PairSoftParticle::coeff(int narg, char** arg) {
 
 void PairSoftParticle::init_style() {
   if (!atom->radius_flag || !atom->rmass_flag) fail("needs per-atom radius and mass: atom_style sphere");
-  if (restitution_ > 0.0 && !comm->ghost_velocity) fail("restitution damps with the ghosts' velocities: add comm_modify vel yes");
+  if ((fx_.damping || fx_.friction) && !comm->ghost_velocity)
+    fail("damping and friction read the ghosts' velocities: add comm_modify vel yes");
+  if (fx_.rotation && !atom->omega_flag) fail("rotation yes needs per-atom angular velocities: atom_style sphere");
+  if (fx_.friction && force->newton_pair)
+    fail("friction keeps each contact's spring on both of its atoms' ranks: add newton off (or newton on off)");
   neighbor->request(this, instance_me);
+  if (fx_.friction && !history_) {
+    const int at = modify->find_fix(FixSoftHistory::kId);
+    if (at >= 0) {
+      history_ = dynamic_cast<FixSoftHistory*>(modify->fix[at]);
+    } else {
+      std::string cmd = fmt::format("{} all {}", FixSoftHistory::kId, FixSoftHistory::kStyle);
+      if (history_capacity_ > 0) cmd += fmt::format(" {}", history_capacity_);
+      history_ = dynamic_cast<FixSoftHistory*>(modify->add_fix(cmd));
+    }
+    if (!history_) fail(fmt::format("fix {} is not a {}", FixSoftHistory::kId, FixSoftHistory::kStyle));
+  }
   // The largest radius of each type, over all ranks: the types' cutoffs (init_one).
   std::vector<double> local(max_radius_.size(), 0.0);
   for (int i = 0; i < atom->nlocal; ++i) {
@@ -135,56 +164,98 @@ double PairSoftParticle::init_one(int i, int j) {
   return max_radius_[static_cast<std::size_t>(i)] + max_radius_[static_cast<std::size_t>(j)];
 }
 
-template <bool Damped>
+template <Effects Fx>
 void PairSoftParticle::compute_pairs() {
-  constexpr Effects Fx{false, Damped, false, false};
   double** x = atom->x;
   double** v = atom->v;
   double** f = atom->f;
+  double** w = atom->omega;
+  double** T = atom->torque;
   const double* radius = atom->radius;
   const double* rmass = atom->rmass;
   const int* type = atom->type;
+  const LAMMPS_NS::tagint* tag = atom->tag;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
-  const double dt = update->dt;
+  const double dt = update->setupflag ? 0.0 : update->dt;  // the springs advance in steps, not in a run's setup (the engine's F(t0))
+  const auto inv_I_r2 = [&](int a) { return radius[a] * radius[a] * (1.0 / (0.4 * rmass[a] * radius[a] * radius[a])); };
+  const auto vec = [](const double* p) { return V3<double>{p[0], p[1], p[2]}; };
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
     const int* neighbours = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; ++jj) {
       const int j = neighbours[jj] & NEIGHMASK;
-      const bool soft_i = soft_[static_cast<std::size_t>(type[i])] == 1, soft_j = soft_[static_cast<std::size_t>(type[j])] == 1;
-      if (!soft_i && !soft_j) continue;
-      const V3<double> d{x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-      const double r_sum = radius[i] + radius[j];
+      if (soft_[static_cast<std::size_t>(type[i])] != 1 && soft_[static_cast<std::size_t>(type[j])] != 1) continue;
+      // Body 1 the smaller tag: a pair on two ranks is the same arithmetic on both (its springs).
+      const int a = tag[i] < tag[j] ? i : j, b = a == i ? j : i;
+      const V3<double> d = vec(x[a]) - vec(x[b]);
+      const double r_sum = radius[a] + radius[b];
       if (!(dot(d, d) < r_sum * r_sum)) continue;
       // The engine's pair (forces/force_field.cpp pair_partners, forces/pair_contacts.hpp gather).
-      ContactPartners b;
-      b.kind = ContactPartners::Kind::pair;
-      b.R1 = radius[i], b.R2 = radius[j];
-      b.R12 = radius[i] * radius[j] / (radius[i] + radius[j]);
-      b.m12 = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-      b.inv_mt = 1.0 / rmass[i] + 1.0 / rmass[j];
-      b.soft1 = soft_i, b.soft2 = soft_j;
-      const SoftParticleModel::Constants<double> k = SoftParticleModel::constants(params_, b);
+      ContactPartners p;
+      p.kind = ContactPartners::Kind::pair;
+      p.R1 = radius[a], p.R2 = radius[b];
+      p.R12 = radius[a] * radius[b] / (radius[a] + radius[b]);
+      p.m12 = rmass[a] * rmass[b] / (rmass[a] + rmass[b]);
+      p.inv_mt = 1.0 / rmass[a] + 1.0 / rmass[b];
+      if constexpr (Fx.rotation) p.inv_mt += inv_I_r2(a) + inv_I_r2(b);
+      p.soft1 = soft_[static_cast<std::size_t>(type[a])] == 1, p.soft2 = soft_[static_cast<std::size_t>(type[b])] == 1;
+      const SoftParticleModel::Constants<double> k = SoftParticleModel::constants(params_, p);
       ContactGeometry<double> g{};
+      const V3<double> vab = vec(v[a]) - vec(v[b]);
       const double dist = std::sqrt(dot(d, d));
       g.n = d * (1.0 / dist);
       g.h = r_sum - dist;
-      g.vc = V3<double>{v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-      g.n_frame = g.n, g.vc_frame = g.vc;
-      V3<double> spring{0.0, 0.0, 0.0};
-      const ContactForce<double> F = SoftParticleModel::force<Fx>(params_, g, k, spring, dt);
-      f[i][0] += F.F.x, f[i][1] += F.F.y, f[i][2] += F.F.z;
-      if (newton_pair || j < nlocal) f[j][0] -= F.F.x, f[j][1] -= F.F.y, f[j][2] -= F.F.z;
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, F.F.x, F.F.y, F.F.z, d.x, d.y, d.z);
+      g.vc = vab;
+      double arm_a = 0.0, arm_b = 0.0;
+      if constexpr (Fx.rotation) {
+        arm_a = radius[a] - 0.5 * g.h, arm_b = radius[b] - 0.5 * g.h;
+        g.vc = g.vc - cross(arm_a * vec(w[a]) + arm_b * vec(w[b]), g.n);
+      }
+      V3<double> xi{0.0, 0.0, 0.0};
+      double* spring = nullptr;
+      if constexpr (Fx.friction) {
+        g.n_frame = g.n, g.vc_frame = g.vc;
+        if constexpr (Fx.synchronized) {
+          const V3<double> d_half = d - (0.5 * dt) * vab;
+          const double dist_half = std::sqrt(dot(d_half, d_half));
+          g.n_frame = d_half * (1.0 / dist_half);
+          g.vc_frame = vab;
+          if constexpr (Fx.rotation) {
+            const double h_half = r_sum - dist_half;
+            g.vc_frame = g.vc_frame - cross((radius[a] - 0.5 * h_half) * vec(w[a]) + (radius[b] - 0.5 * h_half) * vec(w[b]), g.n_frame);
+          }
+        }
+        spring = history_->find_or_add(i, tag[j]);  // atom i is local
+        xi = vec(spring);
+      }
+      const ContactForce<double> F = SoftParticleModel::force<Fx>(params_, g, k, xi, dt);
+      if constexpr (Fx.friction) {
+        spring[0] = xi.x, spring[1] = xi.y, spring[2] = xi.z;
+        history_->touch(i, spring);
+        if (j < nlocal) {  // both local: the pair is listed once, both atoms keep the spring
+          double* other = history_->find_or_add(j, tag[i]);
+          other[0] = xi.x, other[1] = xi.y, other[2] = xi.z;
+          history_->touch(j, other);
+        }
+      }
+      const bool add_b = newton_pair || b < nlocal, add_a = newton_pair || a < nlocal;
+      if (add_a) f[a][0] += F.F.x, f[a][1] += F.F.y, f[a][2] += F.F.z;
+      if (add_b) f[b][0] -= F.F.x, f[b][1] -= F.F.y, f[b][2] -= F.F.z;
+      if constexpr (Fx.rotation) {
+        const V3<double> nxFt = cross(g.n, F.Ft);
+        if (add_a) T[a][0] -= arm_a * nxFt.x, T[a][1] -= arm_a * nxFt.y, T[a][2] -= arm_a * nxFt.z;
+        if (add_b) T[b][0] -= arm_b * nxFt.x, T[b][1] -= arm_b * nxFt.y, T[b][2] -= arm_b * nxFt.z;
+      }
+      if (evflag) ev_tally_xyz(a, b, nlocal, newton_pair, 0.0, 0.0, F.F.x, F.F.y, F.F.z, d.x, d.y, d.z);
     }
   }
+  if constexpr (Fx.friction) history_->prune(nlocal);
 }
 
 void PairSoftParticle::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
-  if (restitution_ > 0.0) compute_pairs<true>();
-  else compute_pairs<false>();
+  with_effects(fx_, [&]<Effects Fx>() { compute_pairs<Fx>(); });
 }
 
 }  // namespace softpack::lammps

@@ -1,21 +1,26 @@
 // The soft-particle contact model as a LAMMPS pair style (issue 34): LAMMPS finds the pairs,
 // ranks and ghosts; each pair's force is softpack's own model (contact/soft_particle_law.hpp
 // SoftParticleModel, the one the engine's loops call), fed with the pair's geometry as the
-// engine's sphere-sphere contacts make it (forces/pair_contacts.hpp):
+// engine's sphere-sphere contacts make it (forces/pair_contacts.hpp), body 1 the atom of the
+// smaller tag:
 //
-//   d = x_i - x_j,  h = R_i + R_j - |d|,  n = d / |d|,  vc = v_i - v_j  (the normal damping's)
+//   d = x_1 - x_2,  h = R_1 + R_2 - |d|,  n = d / |d|,
+//   vc = v_1 - v_2 - (a_1 w_1 + a_2 w_2) x n,  a = R - h/2 (with rotation)
 //
-// so a pair of LAMMPS is a pair of the engine: the same law file, radius scaling, mixing rule
-// and grain rule, the same damping at the contact's current stiffness.
+// so a pair of LAMMPS is a pair of the engine: the same law file, radius scaling, mixing rule and
+// grain rule, the same damping at the contact's current stiffness, the same Tsuji spring (Eq. 8,
+// μ_soft) with its history (pair/soft_history.hpp) and torques.
 //
 //   pair_style softpack/soft LAWFILE [grain_contact wall|reduced-radius] [restitution E]
+//              [tangential_ratio X] [friction yes|no] [rotation yes|no]
+//              [history_update synchronized|standard] [history K]
 //   pair_coeff I J ROLE_I ROLE_J      ROLE: soft (a soft-particle) or grain (a solid sphere);
 //                                     at least one soft: grain-grain pairs are `pair granular`'s
 //                                     under pair_style hybrid (docs/lammps.md)
 //
-// Needs atom_style sphere (radius, rmass) and, with `restitution`, comm_modify vel yes. What is
-// not here yet (docs/lammps.md): the tangential spring and its history, the walls, the many-body
-// law's per-body state.
+// Needs atom_style sphere (radius, rmass), comm_modify vel yes with damping or friction, and
+// newton_pair off with friction (pair/soft_history.hpp says why). docs/lammps.md lists what is
+// not here yet (the walls, the many-body law's per-body state).
 #pragma once
 #include <string>
 #include <vector>
@@ -39,14 +44,17 @@ class PairSoftParticle : public LAMMPS_NS::Pair {
   double init_one(int i, int j) override;
 
  private:
-  template <bool Damped>
+  template <Effects Fx>
   void compute_pairs();
   void allocate();
   [[noreturn]] void fail(const std::string& what) const;
 
   SoftParticleLaws laws_;
   GrainContactRule grain_rule_ = GrainContactRule::wall;
-  double restitution_ = -1.0;  ///< < 0: no damping
+  ContactSetting setting_{};
+  Effects fx_{true, false, true, true};  ///< friction, damping, rotation, synchronized (the engine's defaults)
+  int history_capacity_ = 0;              ///< springs per atom (0: the fix's default)
+  class FixSoftHistory* history_ = nullptr;
   SoftParticleModel::Params params_{};
   std::vector<int> soft_;          ///< per atom type (1-based): 1 soft, 0 grain, -1 not set
   std::vector<double> max_radius_;  ///< per atom type, over all ranks (init_style)

@@ -1,8 +1,10 @@
-// softpack-lammps against softpack's engine on a frozen configuration (issue 34, item 3a): a row of
-// soft-particles pressing each other and grains pressing them, with random velocities (the normal
-// damping), the forces computed once by the engine (Simulation's F(t0)) and once by LAMMPS with the
-// pair style softpack/soft, on the ranks this test is started on (mpirun -np 1, 2, 3): every body's
-// force equal to 1e-10 of the largest, the pairs that straddle two ranks included.
+// softpack-lammps against softpack's engine (issue 34, item 3a): a row of soft-particles pressing each
+// other and grains pressing them, with random velocities and spins, friction and rotation on, run
+// by the engine and by LAMMPS (pair style softpack/soft, fix nve/sphere) on the ranks this test is
+// started on (mpirun -np 1, 2, 3): at the start every body's force and torque equal the engine's to
+// 1e-10 of the largest, contacts across a rank boundary included; after steps in which bodies
+// change rank (fix balance moves the cuts mid-run, the springs travel with them), positions,
+// velocities, spins, forces and torques stay the engine's to 1e-12.
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <unistd.h>
@@ -10,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -24,7 +27,9 @@
 namespace softpack {
 namespace {
 
-constexpr double kRelative = 1e-10;
+// After the steps: the two integrators' roundings apart (measured: 1e-14 of the largest value,
+// on 1, 2 and 3 ranks alike).
+constexpr double kMotion = 1e-12;
 
 struct Frozen {
   SceneDef scene;
@@ -39,6 +44,8 @@ Frozen frozen_configuration(const SoftParticleLaws& laws) {
   SceneDef& s = f.scene;
   s = testing::basic_scene();
   s.effects.restitution = 0.5;
+  s.effects.friction = true;
+  s.effects.rotation = true;
   s.effects.soft_particles = SoftParticlesDef{laws, GrainContactRule::wall, SoftParticlesDef::BeyondRange::report};
   testing::Random rng(3401);
   const double R = laws.R0;
@@ -48,6 +55,7 @@ Frozen frozen_configuration(const SoftParticleLaws& laws) {
     p.x = Vec3(x, 0.002 * rng.uniform(-1, 1), 0.002 * rng.uniform(-1, 1));
     p.r = R, p.soft = true, p.mass = 0.02 * rng.uniform(0.8, 1.2);
     p.v = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) * 1e-3;
+    p.w = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) * 0.05;
     s.particles.push_back(p);
     x += R * (2.0 - rng.uniform(0.22, 0.40));
   }
@@ -66,6 +74,7 @@ Frozen frozen_configuration(const SoftParticleLaws& laws) {
     if (!free) continue;
     g.mass = 2500.0 * 4.0 / 3.0 * 3.14159 * g.r * g.r * g.r;
     g.v = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) * 1e-3;
+    g.w = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) * 0.2;
     s.particles.push_back(g);
   }
   return f;
@@ -77,7 +86,47 @@ std::string number(double v) {
   return text;
 }
 
-TEST(LammpsPair, EveryBodysForceIsTheEnginesOnAnyNumberOfRanks) {
+struct State {
+  std::vector<Vec3> x, v, w, F, T;
+};
+
+State engine_state(const Simulation& sim) {
+  const auto& p = sim.particles();
+  return {{p.x.begin(), p.x.end()}, {p.v.begin(), p.v.end()}, {p.w.begin(), p.w.end()}, {p.F.begin(), p.F.end()}, {p.T.begin(), p.T.end()}};
+}
+
+std::vector<Vec3> gathered(LAMMPS_NS::LAMMPS* lmp, const char* name, std::size_t n) {
+  std::vector<double> raw(3 * n);
+  lammps_gather_atoms(lmp, const_cast<char*>(name), 1, 3, raw.data());
+  std::vector<Vec3> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = Vec3(raw[3 * i], raw[3 * i + 1], raw[3 * i + 2]);
+  return out;
+}
+
+State lammps_state(LAMMPS_NS::LAMMPS* lmp, std::size_t n) {
+  return {gathered(lmp, "x", n), gathered(lmp, "v", n), gathered(lmp, "omega", n), gathered(lmp, "f", n), gathered(lmp, "torque", n)};
+}
+
+double largest(const std::vector<Vec3>& a) {
+  double m = 0.0;
+  for (const Vec3& e : a) m = std::max(m, e.norm());
+  return m;
+}
+
+// |a_i - b_i| <= tolerance * max |b| for every body; the largest ratio found, for the message.
+void expect_close(const std::vector<Vec3>& lmp, const std::vector<Vec3>& engine, double tolerance, const std::string& what) {
+  const double scale = largest(engine);
+  ASSERT_GT(scale, 0.0) << what;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < engine.size(); ++i) worst = std::max(worst, (lmp[i] - engine[i]).norm() / scale);
+  EXPECT_LE(worst, tolerance) << what << ": the largest difference is " << worst << " of the largest value";
+
+}
+
+// The bodies' owners: this rank's tags.
+std::vector<LAMMPS_NS::tagint> local_tags(LAMMPS_NS::LAMMPS* lmp) { return {lmp->atom->tag, lmp->atom->tag + lmp->atom->nlocal}; }
+
+TEST(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
@@ -86,16 +135,21 @@ TEST(LammpsPair, EveryBodysForceIsTheEnginesOnAnyNumberOfRanks) {
   const Frozen f = frozen_configuration(laws);
   const std::size_t n = f.scene.particles.size();
   ASSERT_GT(n, 20u);
+  // Steps before any two grains meet (near step 40 two do in the engine, whose Hertz law LAMMPS
+  // leaves to pair granular: pair_coeff 2 2 none here).
+  constexpr long kSteps = 30;
 
-  // The engine.
+  // The engine: F(t0), then kSteps steps.
   Simulation sim(f.scene);
-  std::vector<Vec3> engine(sim.particles().F.begin(), sim.particles().F.end());
+  const State engine0 = engine_state(sim);
+  sim.run_steps(kSteps);
+  const State engine1 = engine_state(sim);
 
   // LAMMPS: the same bodies, read from a data file rank 0 writes (type 1 soft, 2 grain).
   int id = static_cast<int>(::getpid());  // rank 0's, so that every rank names the same folder
   MPI_Bcast(&id, 1, MPI_INT, 0, MPI_COMM_WORLD);
   const std::string dir = (std::filesystem::temp_directory_path() / ("softpack-lammps-" + std::to_string(id))).string();
-  const std::string data = dir + "/frozen-" + std::to_string(ranks) + ".data";
+  const std::string data = dir + "/frozen.data";
   if (rank == 0) {
     std::filesystem::create_directories(dir);
     std::ofstream out(data);
@@ -108,26 +162,27 @@ TEST(LammpsPair, EveryBodysForceIsTheEnginesOnAnyNumberOfRanks) {
     out << "\nVelocities\n\n";
     for (std::size_t i = 0; i < n; ++i) {
       const ParticleDef& p = f.scene.particles[i];
-      out << i + 1 << " " << number(p.v.x()) << " " << number(p.v.y()) << " " << number(p.v.z()) << " 0 0 0\n";
+      out << i + 1 << " " << number(p.v.x()) << " " << number(p.v.y()) << " " << number(p.v.z()) << " " << number(p.w.x()) << " "
+          << number(p.w.y()) << " " << number(p.w.z()) << "\n";
     }
   }
   MPI_Barrier(MPI_COMM_WORLD);
-  const char* args[] = {"softpack-lammps", "-log", "none", "-screen", "none", "-nocite"};
+  const char* args[] = {"softpack-lammps", "-log", "none", "-screen", std::getenv("SOFTPACK_LAMMPS_SCREEN") ? "/dev/stdout" : "none", "-nocite"};
   auto* lmp = new LAMMPS_NS::LAMMPS(6, const_cast<char**>(args), MPI_COMM_WORLD);
   lammps::register_styles(lmp);
   const std::vector<std::string> commands = {
-      "units si", "atom_style sphere", "atom_modify map array", "boundary f f f", "comm_modify vel yes", "read_data " + data,
+      "units si", "atom_style sphere", "atom_modify map array", "boundary m m m", "newton off", "comm_modify vel yes", "read_data " + data,
       "pair_style hybrid softpack/soft " + law_path + " restitution 0.5", "pair_coeff 1 1 softpack/soft soft soft",
-      "pair_coeff 1 2 softpack/soft soft grain", "pair_coeff 2 2 none", "neighbor 0.001 bin", "timestep 1e-6"};
+      "pair_coeff 1 2 softpack/soft soft grain", "pair_coeff 2 2 none", "neighbor 0.001 bin", "neigh_modify every 1 delay 0 check yes",
+      "timestep " + number(sim.dt()), "fix move all nve/sphere"};
   for (const std::string& c : commands) lmp->input->one(c);
   for (std::size_t i = 0; i < n; ++i) lmp->input->one("set atom " + std::to_string(i + 1) + " mass " + number(*f.scene.particles[i].mass));
   lmp->input->one("run 0");
-  std::vector<double> F(3 * n);
-  lammps_gather_atoms(lmp, const_cast<char*>("f"), 1, 3, F.data());
+  const State lammps0 = lammps_state(lmp, n);
 
-  // Pairs of bodies on two ranks (each body's owner by its sub-box along the split axes).
-  const auto owner_of = [&](const Vec3& x) {
-    int mine = 1;
+  // Contacts whose two bodies are on two ranks, at the start.
+  const auto owned = [&](const Vec3& x) {
+    bool mine = true;
     for (int a = 0; a < 3; ++a) mine = mine && x[a] >= lmp->domain->sublo[a] && x[a] < lmp->domain->subhi[a];
     return mine;
   };
@@ -135,29 +190,42 @@ TEST(LammpsPair, EveryBodysForceIsTheEnginesOnAnyNumberOfRanks) {
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
       const ParticleDef &a = f.scene.particles[i], &b = f.scene.particles[j];
-      if ((a.x - b.x).norm() >= a.r + b.r || !(a.soft || b.soft)) continue;
-      straddling += owner_of(a.x) != owner_of(b.x);
+      if ((a.x - b.x).norm() < a.r + b.r && (a.soft || b.soft) && owned(a.x) && !owned(b.x)) ++straddling;
     }
-  int all_straddling = 0;
+  // The steps in one run (a run's setup computes the forces again, with full-step velocities: a
+  // second run would not be the engine's steps), the cuts between ranks moved every 10 steps to
+  // even the bodies out (fix balance): bodies change rank, with their springs.
+  const std::vector<LAMMPS_NS::tagint> before = local_tags(lmp);
+  if (ranks > 1) lmp->input->one("fix even all balance 10 1.0 shift x 20 1.0");
+  lmp->input->one("run " + std::to_string(kSteps));
+  const std::vector<LAMMPS_NS::tagint> after = local_tags(lmp);
+  int left = 0;
+  for (LAMMPS_NS::tagint t : before) left += std::find(after.begin(), after.end(), t) == after.end();
+  const State lammps1 = lammps_state(lmp, n);
+  int all_straddling = 0, all_left = 0;
   MPI_Allreduce(&straddling, &all_straddling, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(&left, &all_left, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   delete lmp;
   MPI_Barrier(MPI_COMM_WORLD);
   if (rank == 0) std::filesystem::remove_all(dir);
   if (ranks > 1) {
     EXPECT_GT(all_straddling, 0) << "no contact crosses a rank boundary";
+    EXPECT_GT(all_left, 0) << "no body changed rank";
   }
 
-  double largest = 0.0;
-  for (const Vec3& e : engine) largest = std::max(largest, e.norm());
-  ASSERT_GT(largest, 0.0);
+  expect_close(lammps0.F, engine0.F, 1e-10, "F at the start");
+  expect_close(lammps0.T, engine0.T, 1e-10, "T at the start");
   int loaded = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 lmp_F(F[3 * i], F[3 * i + 1], F[3 * i + 2]);
-    EXPECT_LE((lmp_F - engine[i]).norm(), kRelative * largest) << "body " << i << " (" << (f.scene.particles[i].soft ? "soft" : "grain")
-                                                              << "): LAMMPS " << lmp_F.transpose() << ", engine " << engine[i].transpose();
-    loaded += engine[i].norm() > 1e-3 * largest;
-  }
+  for (const Vec3& e : engine0.F) loaded += e.norm() > 1e-3 * largest(engine0.F);
   EXPECT_GT(loaded, static_cast<int>(n) / 2) << "most bodies should be pressed";
+  // After the steps: the displacements, velocities, spins, forces and torques.
+  std::vector<Vec3> moved_lmp(n), moved_engine(n);
+  for (std::size_t i = 0; i < n; ++i) moved_lmp[i] = lammps1.x[i] - f.scene.particles[i].x, moved_engine[i] = engine1.x[i] - f.scene.particles[i].x;
+  expect_close(moved_lmp, moved_engine, kMotion, "displacement after the steps");
+  expect_close(lammps1.v, engine1.v, kMotion, "v after the steps");
+  expect_close(lammps1.w, engine1.w, kMotion, "w after the steps");
+  expect_close(lammps1.F, engine1.F, kMotion, "F after the steps");
+  expect_close(lammps1.T, engine1.T, kMotion, "T after the steps");
 }
 
 }  // namespace

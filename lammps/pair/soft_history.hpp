@@ -1,0 +1,52 @@
+// The soft-particle pairs' tangential springs in LAMMPS (issue 34): a fix that keeps, per atom, the
+// springs of its open contacts keyed by the partner's tag, and carries them with the atom between
+// ranks (pack_exchange) and into restart files (pack_restart) — LAMMPS's own history fix is not
+// among Debian's headers. The pair style softpack/soft creates it (fix ID SOFTPACK_HISTORY) and runs
+// with newton_pair off: a contact across two ranks is then computed on both, each keeping its own
+// atom's copy, and both copies follow the same arithmetic (the pair oriented by tag, smaller first),
+// so they stay the same bits. A spring is the engine's ξ of the pair (body 1 the smaller tag).
+#pragma once
+#include "pair/lammps_headers.hpp"
+
+namespace softpack::lammps {
+
+class FixSoftHistory : public LAMMPS_NS::Fix {
+ public:
+  static constexpr const char* kStyle = "SOFTPACK/HISTORY";
+  static constexpr const char* kId = "SOFTPACK_HISTORY";
+  /// fix ID group SOFTPACK/HISTORY [K]: K springs per atom at most (default kDefaultCapacity).
+  FixSoftHistory(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
+  ~FixSoftHistory() override;
+  static LAMMPS_NS::Fix* create(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) { return new FixSoftHistory(lmp, narg, arg); }
+  static constexpr int kDefaultCapacity = 64;
+
+  int setmask() override { return 0; }
+  void grow_arrays(int nmax) override;
+  void copy_arrays(int i, int j, int delflag) override;
+  void set_arrays(int i) override { count_[i] = 0; }
+  int pack_exchange(int i, double* buf) override;
+  int unpack_exchange(int nlocal, double* buf) override;
+  int pack_restart(int i, double* buf) override;
+  void unpack_restart(int nlocal, int nth) override;
+  int size_restart(int i) override { return 2 + 4 * count_[i]; }
+  int maxsize_restart() override { return 2 + 4 * capacity_; }
+  double memory_usage() override;
+
+  /// Atom i's spring with the atom of tag `partner`: a pointer to its 3 doubles, or null.
+  double* find(int i, LAMMPS_NS::tagint partner);
+  /// The same, made (zero) when absent; an error when atom i has `capacity` springs already.
+  double* find_or_add(int i, LAMMPS_NS::tagint partner);
+  /// Marks atom i's spring k as used this step (`touched`); prune() drops the others (the
+  /// contacts that opened: the engine clears their spring).
+  void touch(int i, const double* spring);
+  void prune(int nlocal);
+
+ private:
+  int capacity_ = kDefaultCapacity;
+  int* count_ = nullptr;
+  LAMMPS_NS::tagint** partner_ = nullptr;
+  double** spring_ = nullptr;  ///< 3 per partner
+  char** touched_ = nullptr;
+};
+
+}  // namespace softpack::lammps
