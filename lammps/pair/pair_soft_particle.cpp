@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -84,6 +85,8 @@ void PairSoftParticle::settings(int narg, char** arg) {
   setting_.soft_laws = &laws_;
   setting_.grain_rule = grain_rule_;
   params_ = SoftParticleModel::params(setting_);
+  if (laws_.many_body) many_params_ = SoftManyBodyModel::params(setting_);
+  comm_forward = laws_.many_body ? 7 : 0;  // a body's state, or its stress tensor
 }
 
 // pair_coeff I J ROLE_I ROLE_J (ROLE: soft or grain; at least one soft)
@@ -123,8 +126,9 @@ void PairSoftParticle::init_style() {
   if ((fx_.damping || fx_.friction) && !comm->ghost_velocity)
     fail("damping and friction read the ghosts' velocities: add comm_modify vel yes");
   if (fx_.rotation && !atom->omega_flag) fail("rotation yes needs per-atom angular velocities: atom_style sphere");
-  if (fx_.friction && force->newton_pair)
-    fail("friction keeps each contact's spring on both of its atoms' ranks: add newton off (or newton on off)");
+  if ((fx_.friction || laws_.many_body) && force->newton_pair)
+    fail(fmt::format("{} on both of a contact's ranks: add newton off (or newton on off) before the box is made",
+                     fx_.friction ? "friction keeps each contact's spring" : "the many-body law sums each body's contacts"));
   neighbor->request(this, instance_me);
   if (fx_.friction && !history_) {
     const int at = modify->find_fix(FixSoftHistory::kId);
@@ -164,22 +168,12 @@ double PairSoftParticle::init_one(int i, int j) {
   return max_radius_[static_cast<std::size_t>(i)] + max_radius_[static_cast<std::size_t>(j)];
 }
 
-template <Effects Fx>
-void PairSoftParticle::compute_pairs() {
+template <class F>
+void PairSoftParticle::each_contact(F&& fn) {
   double** x = atom->x;
-  double** v = atom->v;
-  double** f = atom->f;
-  double** w = atom->omega;
-  double** T = atom->torque;
   const double* radius = atom->radius;
-  const double* rmass = atom->rmass;
   const int* type = atom->type;
   const LAMMPS_NS::tagint* tag = atom->tag;
-  const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
-  const double dt = update->setupflag ? 0.0 : update->dt;  // the springs advance in steps, not in a run's setup (the engine's F(t0))
-  const auto inv_I_r2 = [&](int a) { return radius[a] * radius[a] * (1.0 / (0.4 * rmass[a] * radius[a] * radius[a])); };
-  const auto vec = [](const double* p) { return V3<double>{p[0], p[1], p[2]}; };
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
     const int* neighbours = list->firstneigh[i];
@@ -188,74 +182,186 @@ void PairSoftParticle::compute_pairs() {
       if (soft_[static_cast<std::size_t>(type[i])] != 1 && soft_[static_cast<std::size_t>(type[j])] != 1) continue;
       // Body 1 the smaller tag: a pair on two ranks is the same arithmetic on both (its springs).
       const int a = tag[i] < tag[j] ? i : j, b = a == i ? j : i;
-      const V3<double> d = vec(x[a]) - vec(x[b]);
+      const V3<double> d{x[a][0] - x[b][0], x[a][1] - x[b][1], x[a][2] - x[b][2]};
       const double r_sum = radius[a] + radius[b];
-      if (!(dot(d, d) < r_sum * r_sum)) continue;
-      // The engine's pair (forces/force_field.cpp pair_partners, forces/pair_contacts.hpp gather).
-      ContactPartners p;
-      p.kind = ContactPartners::Kind::pair;
-      p.R1 = radius[a], p.R2 = radius[b];
-      p.R12 = radius[a] * radius[b] / (radius[a] + radius[b]);
-      p.m12 = rmass[a] * rmass[b] / (rmass[a] + rmass[b]);
-      p.inv_mt = 1.0 / rmass[a] + 1.0 / rmass[b];
-      if constexpr (Fx.rotation) p.inv_mt += inv_I_r2(a) + inv_I_r2(b);
-      p.soft1 = soft_[static_cast<std::size_t>(type[a])] == 1, p.soft2 = soft_[static_cast<std::size_t>(type[b])] == 1;
-      const SoftParticleModel::Constants<double> k = SoftParticleModel::constants(params_, p);
-      ContactGeometry<double> g{};
-      const V3<double> vab = vec(v[a]) - vec(v[b]);
-      const double dist = std::sqrt(dot(d, d));
-      g.n = d * (1.0 / dist);
-      g.h = r_sum - dist;
-      g.vc = vab;
-      double arm_a = 0.0, arm_b = 0.0;
-      if constexpr (Fx.rotation) {
-        arm_a = radius[a] - 0.5 * g.h, arm_b = radius[b] - 0.5 * g.h;
-        g.vc = g.vc - cross(arm_a * vec(w[a]) + arm_b * vec(w[b]), g.n);
-      }
-      V3<double> xi{0.0, 0.0, 0.0};
-      double* spring = nullptr;
-      if constexpr (Fx.friction) {
-        g.n_frame = g.n, g.vc_frame = g.vc;
-        if constexpr (Fx.synchronized) {
-          const V3<double> d_half = d - (0.5 * dt) * vab;
-          const double dist_half = std::sqrt(dot(d_half, d_half));
-          g.n_frame = d_half * (1.0 / dist_half);
-          g.vc_frame = vab;
-          if constexpr (Fx.rotation) {
-            const double h_half = r_sum - dist_half;
-            g.vc_frame = g.vc_frame - cross((radius[a] - 0.5 * h_half) * vec(w[a]) + (radius[b] - 0.5 * h_half) * vec(w[b]), g.n_frame);
-          }
-        }
-        spring = history_->find_or_add(i, tag[j]);  // atom i is local
-        xi = vec(spring);
-      }
-      const ContactForce<double> F = SoftParticleModel::force<Fx>(params_, g, k, xi, dt);
-      if constexpr (Fx.friction) {
-        spring[0] = xi.x, spring[1] = xi.y, spring[2] = xi.z;
-        history_->touch(i, spring);
-        if (j < nlocal) {  // both local: the pair is listed once, both atoms keep the spring
-          double* other = history_->find_or_add(j, tag[i]);
-          other[0] = xi.x, other[1] = xi.y, other[2] = xi.z;
-          history_->touch(j, other);
-        }
-      }
-      const bool add_b = newton_pair || b < nlocal, add_a = newton_pair || a < nlocal;
-      if (add_a) f[a][0] += F.F.x, f[a][1] += F.F.y, f[a][2] += F.F.z;
-      if (add_b) f[b][0] -= F.F.x, f[b][1] -= F.F.y, f[b][2] -= F.F.z;
-      if constexpr (Fx.rotation) {
-        const V3<double> nxFt = cross(g.n, F.Ft);
-        if (add_a) T[a][0] -= arm_a * nxFt.x, T[a][1] -= arm_a * nxFt.y, T[a][2] -= arm_a * nxFt.z;
-        if (add_b) T[b][0] -= arm_b * nxFt.x, T[b][1] -= arm_b * nxFt.y, T[b][2] -= arm_b * nxFt.z;
-      }
-      if (evflag) ev_tally_xyz(a, b, nlocal, newton_pair, 0.0, 0.0, F.F.x, F.F.y, F.F.z, d.x, d.y, d.z);
+      if (dot(d, d) < r_sum * r_sum) fn(i, j, a, b, d, r_sum);
     }
   }
+}
+
+// The engine's pair (forces/force_field.cpp pair_partners): body 1 is atom a.
+ContactPartners PairSoftParticle::partners(int a, int b, bool rotation) const {
+  const double* radius = atom->radius;
+  const double* rmass = atom->rmass;
+  const auto inv_I_r2 = [&](int c) { return radius[c] * radius[c] * (1.0 / (0.4 * rmass[c] * radius[c] * radius[c])); };
+  ContactPartners p;
+  p.kind = ContactPartners::Kind::pair;
+  p.R1 = radius[a], p.R2 = radius[b];
+  p.R12 = radius[a] * radius[b] / (radius[a] + radius[b]);
+  p.m12 = rmass[a] * rmass[b] / (rmass[a] + rmass[b]);
+  p.inv_mt = 1.0 / rmass[a] + 1.0 / rmass[b];
+  if (rotation) p.inv_mt += inv_I_r2(a) + inv_I_r2(b);
+  p.soft1 = soft_[static_cast<std::size_t>(atom->type[a])] == 1, p.soft2 = soft_[static_cast<std::size_t>(atom->type[b])] == 1;
+  return p;
+}
+
+// The many-body law's passes before the forces (the engine's, forces/compile_loops.hpp; LAMMPS's
+// EAM pattern): each local body's state from its contacts (with newton off a rank sees every
+// contact of its own atoms), sent to the ghosts; then, for a law with a stress term, each body's
+// tensor from its contacts' base forces at those states, sent likewise.
+void PairSoftParticle::body_passes() {
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  state_.assign(static_cast<std::size_t>(nall), 0.0);
+  const bool caps = SoftManyBodyNormal::body_caps(many_params_.normal), stress = SoftManyBodyNormal::body_stress(many_params_.normal);
+  if (caps) {
+    caps_.resize(static_cast<std::size_t>(nlocal));
+    for (int i = 0; i < nlocal; ++i) caps_[static_cast<std::size_t>(i)].clear();
+  }
+  each_contact([&](int i, int j, int a, int b, const V3<double>& d, double r_sum) {
+    const auto k = SoftManyBodyModel::constants(many_params_, partners(a, b, false)).normal;
+    const double h = r_sum - std::sqrt(dot(d, d));
+    const double term = SoftManyBodyNormal::body_term(h, k);
+    state_[static_cast<std::size_t>(i)] += term;
+    if (j < nlocal) state_[static_cast<std::size_t>(j)] += term;
+    if (!caps) return;
+    const double depth = SoftManyBodyNormal::cap_depth_of(h, k);
+    const Vec3 u = Vec3(d.x, d.y, d.z).normalized();  // from b towards a: b's cap, a's the other way
+    const auto keep = [&](int atom_index, int body, const Vec3& direction, LAMMPS_NS::tagint partner) {
+      if (atom_index >= nlocal || !(k.soft == SoftManyBodyNormal::kBoth || k.soft == body)) return;
+      caps_[static_cast<std::size_t>(atom_index)].push_back({partner, direction, depth});
+    };
+    keep(a, 1, -u, atom->tag[b]), keep(b, 2, u, atom->tag[a]);
+  });
+  if (caps)  // each body's caps in its partners' order: the same sums on any number of ranks
+    for (int i = 0; i < nlocal; ++i) {
+      auto& c = caps_[static_cast<std::size_t>(i)];
+      if (c.size() < 2) continue;
+      std::sort(c.begin(), c.end(), [](const Cap& x, const Cap& y) { return x.partner < y.partner; });
+      cap_u_.clear(), cap_depth_.clear();
+      for (const Cap& cap : c) cap_u_.push_back(cap.u), cap_depth_.push_back(cap.depth);
+      state_[static_cast<std::size_t>(i)] = SoftManyBodyNormal::body_state(cap_u_, cap_depth_);
+    }
+  forwarding_ = Forward::state;
+  comm->forward_comm_pair(this);
+  stress_.clear();
+  if (!stress) return;
+  stress_.assign(static_cast<std::size_t>(nall), SymmetricTensor{});
+  each_contact([&](int i, int j, int a, int b, const V3<double>& d, double r_sum) {
+    const auto k = SoftManyBodyModel::constants(many_params_, partners(a, b, false)).normal;
+    ContactGeometry<double> g{};
+    const double dist = std::sqrt(dot(d, d));
+    g.n = d * (1.0 / dist), g.h = r_sum - dist;
+    g.body1 = state_[static_cast<std::size_t>(a)], g.body2 = state_[static_cast<std::size_t>(b)];
+    const double Fn = SoftManyBodyNormal::evaluate(many_params_.normal, k, g).Fn;
+    const auto add = [&](SymmetricTensor& S) {
+      S[0] += Fn * g.n.x * g.n.x, S[1] += Fn * g.n.y * g.n.y, S[2] += Fn * g.n.z * g.n.z;
+      S[3] += Fn * g.n.x * g.n.y, S[4] += Fn * g.n.x * g.n.z, S[5] += Fn * g.n.y * g.n.z;
+    };
+    add(stress_[static_cast<std::size_t>(i)]);
+    if (j < nlocal) add(stress_[static_cast<std::size_t>(j)]);
+  });
+  forwarding_ = Forward::stress;
+  comm->forward_comm_pair(this);
+}
+
+int PairSoftParticle::pack_forward_comm(int n, int* list_of, double* buf, int, int*) {
+  int m = 0;
+  for (int k = 0; k < n; ++k) {
+    const auto j = static_cast<std::size_t>(list_of[k]);
+    if (forwarding_ == Forward::state) buf[m++] = state_[j];
+    else
+      for (double c : stress_[j]) buf[m++] = c;
+  }
+  return m;
+}
+
+void PairSoftParticle::unpack_forward_comm(int n, int first, double* buf) {
+  int m = 0;
+  for (int i = first; i < first + n; ++i) {
+    const auto j = static_cast<std::size_t>(i);
+    if (forwarding_ == Forward::state) state_[j] = buf[m++];
+    else
+      for (double& c : stress_[j]) c = buf[m++];
+  }
+}
+
+template <class Model, Effects Fx>
+void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
+  double** v = atom->v;
+  double** f = atom->f;
+  double** w = atom->omega;
+  double** T = atom->torque;
+  const double* radius = atom->radius;
+  const LAMMPS_NS::tagint* tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double dt = update->setupflag ? 0.0 : update->dt;  // the springs advance in steps, not in a run's setup (the engine's F(t0))
+  const auto vec = [](const double* p) { return V3<double>{p[0], p[1], p[2]}; };
+  each_contact([&](int i, int j, int a, int b, const V3<double>& d, double r_sum) {
+    const typename Model::template Constants<double> k = Model::constants(params, partners(a, b, Fx.rotation));
+    ContactGeometry<double> g{};  // the engine's (forces/pair_contacts.hpp gather)
+    const V3<double> vab = vec(v[a]) - vec(v[b]);
+    const double dist = std::sqrt(dot(d, d));
+    g.n = d * (1.0 / dist);
+    g.h = r_sum - dist;
+    g.vc = vab;
+    if constexpr (BodyStateModel<Model>) {
+      g.body1 = state_[static_cast<std::size_t>(a)], g.body2 = state_[static_cast<std::size_t>(b)];
+      if (!stress_.empty()) g.stress1 = {&stress_[static_cast<std::size_t>(a)], radius[a]}, g.stress2 = {&stress_[static_cast<std::size_t>(b)], radius[b]};
+    }
+    double arm_a = 0.0, arm_b = 0.0;
+    if constexpr (Fx.rotation) {
+      arm_a = radius[a] - 0.5 * g.h, arm_b = radius[b] - 0.5 * g.h;
+      g.vc = g.vc - cross(arm_a * vec(w[a]) + arm_b * vec(w[b]), g.n);
+    }
+    V3<double> xi{0.0, 0.0, 0.0};
+    double* spring = nullptr;
+    if constexpr (Fx.friction) {
+      g.n_frame = g.n, g.vc_frame = g.vc;
+      if constexpr (Fx.synchronized) {
+        const V3<double> d_half = d - (0.5 * dt) * vab;
+        const double dist_half = std::sqrt(dot(d_half, d_half));
+        g.n_frame = d_half * (1.0 / dist_half);
+        g.vc_frame = vab;
+        if constexpr (Fx.rotation) {
+          const double h_half = r_sum - dist_half;
+          g.vc_frame = g.vc_frame - cross((radius[a] - 0.5 * h_half) * vec(w[a]) + (radius[b] - 0.5 * h_half) * vec(w[b]), g.n_frame);
+        }
+      }
+      spring = history_->find_or_add(i, tag[j]);  // atom i is local
+      xi = vec(spring);
+    }
+    const ContactForce<double> F = Model::template force<Fx>(params, g, k, xi, dt);
+    if constexpr (Fx.friction) {
+      spring[0] = xi.x, spring[1] = xi.y, spring[2] = xi.z;
+      history_->touch(i, spring);
+      if (j < nlocal) {  // both local: the pair is listed once, both atoms keep the spring
+        double* other = history_->find_or_add(j, tag[i]);
+        other[0] = xi.x, other[1] = xi.y, other[2] = xi.z;
+        history_->touch(j, other);
+      }
+    }
+    const bool add_a = newton_pair || a < nlocal, add_b = newton_pair || b < nlocal;
+    if (add_a) f[a][0] += F.F.x, f[a][1] += F.F.y, f[a][2] += F.F.z;
+    if (add_b) f[b][0] -= F.F.x, f[b][1] -= F.F.y, f[b][2] -= F.F.z;
+    if constexpr (Fx.rotation) {
+      const V3<double> nxFt = cross(g.n, F.Ft);
+      if (add_a) T[a][0] -= arm_a * nxFt.x, T[a][1] -= arm_a * nxFt.y, T[a][2] -= arm_a * nxFt.z;
+      if (add_b) T[b][0] -= arm_b * nxFt.x, T[b][1] -= arm_b * nxFt.y, T[b][2] -= arm_b * nxFt.z;
+    }
+    if (evflag) ev_tally_xyz(a, b, nlocal, newton_pair, 0.0, 0.0, F.F.x, F.F.y, F.F.z, d.x, d.y, d.z);
+  });
   if constexpr (Fx.friction) history_->prune(nlocal);
 }
 
 void PairSoftParticle::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
-  with_effects(fx_, [&]<Effects Fx>() { compute_pairs<Fx>(); });
+  if (laws_.many_body) {
+    body_passes();
+    with_effects(fx_, [&]<Effects Fx>() { compute_pairs<SoftManyBodyModel, Fx>(many_params_); });
+  } else {
+    with_effects(fx_, [&]<Effects Fx>() { compute_pairs<SoftParticleModel, Fx>(params_); });
+  }
 }
 
 }  // namespace softpack::lammps

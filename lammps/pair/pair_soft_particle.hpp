@@ -18,9 +18,12 @@
 //                                     at least one soft: grain-grain pairs are `pair granular`'s
 //                                     under pair_style hybrid (docs/lammps.md)
 //
+// With a law file's many_body (law file version 2 on), each soft-particle's state (its contacts'
+// caps) and, for a law with a stress term, its stress tensor are summed over its contacts before
+// the forces and sent to the ghosts, as the engine's per-body passes (the pattern of LAMMPS's EAM).
 // Needs atom_style sphere (radius, rmass), comm_modify vel yes with damping or friction, and
-// newton_pair off with friction (pair/soft_history.hpp says why). docs/lammps.md lists what is
-// not here yet (the walls, the many-body law's per-body state).
+// newton_pair off with friction or the many-body law (pair/soft_history.hpp says why).
+// docs/lammps.md lists what is not here yet (the walls).
 #pragma once
 #include <string>
 #include <vector>
@@ -42,10 +45,18 @@ class PairSoftParticle : public LAMMPS_NS::Pair {
   void coeff(int narg, char** arg) override;
   void init_style() override;
   double init_one(int i, int j) override;
+  int pack_forward_comm(int n, int* list, double* buf, int pbc_flag, int* pbc) override;
+  void unpack_forward_comm(int n, int first, double* buf) override;
 
  private:
-  template <Effects Fx>
-  void compute_pairs();
+  template <class Model, Effects Fx>
+  void compute_pairs(const typename Model::Params& params);
+  /// fn(i, j, a, b, d, r_sum) for each listed pair in contact with a soft-particle: i the local
+  /// atom of the list, a and b the pair by tag (a the smaller), d = x_a - x_b.
+  template <class F>
+  void each_contact(F&& fn);
+  ContactPartners partners(int a, int b, bool rotation) const;
+  void body_passes();
   void allocate();
   [[noreturn]] void fail(const std::string& what) const;
 
@@ -56,6 +67,19 @@ class PairSoftParticle : public LAMMPS_NS::Pair {
   int history_capacity_ = 0;              ///< springs per atom (0: the fix's default)
   class FixSoftHistory* history_ = nullptr;
   SoftParticleModel::Params params_{};
+  SoftManyBodyModel::Params many_params_{};  ///< with a law file's many_body
+  // The many-body law's per-body values (body_passes), local and ghost atoms.
+  std::vector<double> state_;
+  std::vector<SymmetricTensor> stress_;
+  struct Cap {
+    LAMMPS_NS::tagint partner;
+    Vec3 u;  ///< from the body's centre towards the contact
+    double depth;
+  };
+  std::vector<std::vector<Cap>> caps_;  ///< per local atom
+  std::vector<Vec3> cap_u_;             ///< one body's, for body_state
+  std::vector<double> cap_depth_;
+  enum class Forward { state, stress } forwarding_ = Forward::state;
   std::vector<int> soft_;          ///< per atom type (1-based): 1 soft, 0 grain, -1 not set
   std::vector<double> max_radius_;  ///< per atom type, over all ranks (init_style)
 };
