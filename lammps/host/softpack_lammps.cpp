@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
           "  pair_style softpack/soft LAWFILE [grain_contact wall|reduced-radius] [restitution E] [tangential_ratio X]\n"
           "             [friction yes|no] [rotation yes|no] [history_update synchronized|standard] [history K]\n"
           "  pair_coeff I J ROLE_I ROLE_J   (ROLE: soft or grain, at least one soft)\n"
-          "  (with friction: newton off; the springs' fix SOFTPACK/HISTORY is made by the pair style)\n\n"
+          "  (with friction: newton off; the springs' fix SOFTPACK/HISTORY is made by the pair style)\n"
+          "  fix ID group softpack/wall AXIS lo|hi POSITION [velocity VX VY VZ]   (f_ID[1..3]: its load)\n\n"
           "docs/lammps.md says how a soft-particle medium is run with them.\n");
       return 0;
     }

@@ -1,6 +1,8 @@
 #include "pair/pair_soft_particle.hpp"
 
 #include "pair/soft_history.hpp"
+#include "pair/soft_contacts.hpp"
+#include "pair/soft_wall.hpp"
 
 #include <fmt/format.h>
 #include <mpi.h>
@@ -130,6 +132,9 @@ void PairSoftParticle::init_style() {
     fail(fmt::format("{} on both of a contact's ranks: add newton off (or newton on off) before the box is made",
                      fx_.friction ? "friction keeps each contact's spring" : "the many-body law sums each body's contacts"));
   neighbor->request(this, instance_me);
+  walls_.clear();
+  for (int k = 0; k < modify->nfix; ++k)
+    if (auto* wall = dynamic_cast<FixSoftWall*>(modify->fix[k])) walls_.push_back(wall);
   if (fx_.friction && !history_) {
     const int at = modify->find_fix(FixSoftHistory::kId);
     if (at >= 0) {
@@ -168,27 +173,6 @@ double PairSoftParticle::init_one(int i, int j) {
   return max_radius_[static_cast<std::size_t>(i)] + max_radius_[static_cast<std::size_t>(j)];
 }
 
-template <class F>
-void PairSoftParticle::each_contact(F&& fn) {
-  double** x = atom->x;
-  const double* radius = atom->radius;
-  const int* type = atom->type;
-  const LAMMPS_NS::tagint* tag = atom->tag;
-  for (int ii = 0; ii < list->inum; ++ii) {
-    const int i = list->ilist[ii];
-    const int* neighbours = list->firstneigh[i];
-    for (int jj = 0; jj < list->numneigh[i]; ++jj) {
-      const int j = neighbours[jj] & NEIGHMASK;
-      if (soft_[static_cast<std::size_t>(type[i])] != 1 && soft_[static_cast<std::size_t>(type[j])] != 1) continue;
-      // Body 1 the smaller tag: a pair on two ranks is the same arithmetic on both (its springs).
-      const int a = tag[i] < tag[j] ? i : j, b = a == i ? j : i;
-      const V3<double> d{x[a][0] - x[b][0], x[a][1] - x[b][1], x[a][2] - x[b][2]};
-      const double r_sum = radius[a] + radius[b];
-      if (dot(d, d) < r_sum * r_sum) fn(i, j, a, b, d, r_sum);
-    }
-  }
-}
-
 // The engine's pair (forces/force_field.cpp pair_partners): body 1 is atom a.
 ContactPartners PairSoftParticle::partners(int a, int b, bool rotation) const {
   const double* radius = atom->radius;
@@ -205,84 +189,15 @@ ContactPartners PairSoftParticle::partners(int a, int b, bool rotation) const {
   return p;
 }
 
-// The many-body law's passes before the forces (the engine's, forces/compile_loops.hpp; LAMMPS's
-// EAM pattern): each local body's state from its contacts (with newton off a rank sees every
-// contact of its own atoms), sent to the ghosts; then, for a law with a stress term, each body's
-// tensor from its contacts' base forces at those states, sent likewise.
-void PairSoftParticle::body_passes() {
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  state_.assign(static_cast<std::size_t>(nall), 0.0);
-  const bool caps = SoftManyBodyNormal::body_caps(many_params_.normal), stress = SoftManyBodyNormal::body_stress(many_params_.normal);
-  if (caps) {
-    caps_.resize(static_cast<std::size_t>(nlocal));
-    for (int i = 0; i < nlocal; ++i) caps_[static_cast<std::size_t>(i)].clear();
-  }
-  each_contact([&](int i, int j, int a, int b, const V3<double>& d, double r_sum) {
-    const auto k = SoftManyBodyModel::constants(many_params_, partners(a, b, false)).normal;
-    const double h = r_sum - std::sqrt(dot(d, d));
-    const double term = SoftManyBodyNormal::body_term(h, k);
-    state_[static_cast<std::size_t>(i)] += term;
-    if (j < nlocal) state_[static_cast<std::size_t>(j)] += term;
-    if (!caps) return;
-    const double depth = SoftManyBodyNormal::cap_depth_of(h, k);
-    const Vec3 u = Vec3(d.x, d.y, d.z).normalized();  // from b towards a: b's cap, a's the other way
-    const auto keep = [&](int atom_index, int body, const Vec3& direction, LAMMPS_NS::tagint partner) {
-      if (atom_index >= nlocal || !(k.soft == SoftManyBodyNormal::kBoth || k.soft == body)) return;
-      caps_[static_cast<std::size_t>(atom_index)].push_back({partner, direction, depth});
-    };
-    keep(a, 1, -u, atom->tag[b]), keep(b, 2, u, atom->tag[a]);
-  });
-  if (caps)  // each body's caps in its partners' order: the same sums on any number of ranks
-    for (int i = 0; i < nlocal; ++i) {
-      auto& c = caps_[static_cast<std::size_t>(i)];
-      if (c.size() < 2) continue;
-      std::sort(c.begin(), c.end(), [](const Cap& x, const Cap& y) { return x.partner < y.partner; });
-      cap_u_.clear(), cap_depth_.clear();
-      for (const Cap& cap : c) cap_u_.push_back(cap.u), cap_depth_.push_back(cap.depth);
-      state_[static_cast<std::size_t>(i)] = SoftManyBodyNormal::body_state(cap_u_, cap_depth_);
-    }
-  forwarding_ = Forward::state;
-  comm->forward_comm_pair(this);
-  stress_.clear();
-  if (!stress) return;
-  stress_.assign(static_cast<std::size_t>(nall), SymmetricTensor{});
-  each_contact([&](int i, int j, int a, int b, const V3<double>& d, double r_sum) {
-    const auto k = SoftManyBodyModel::constants(many_params_, partners(a, b, false)).normal;
-    ContactGeometry<double> g{};
-    const double dist = std::sqrt(dot(d, d));
-    g.n = d * (1.0 / dist), g.h = r_sum - dist;
-    g.body1 = state_[static_cast<std::size_t>(a)], g.body2 = state_[static_cast<std::size_t>(b)];
-    const double Fn = SoftManyBodyNormal::evaluate(many_params_.normal, k, g).Fn;
-    const auto add = [&](SymmetricTensor& S) {
-      S[0] += Fn * g.n.x * g.n.x, S[1] += Fn * g.n.y * g.n.y, S[2] += Fn * g.n.z * g.n.z;
-      S[3] += Fn * g.n.x * g.n.y, S[4] += Fn * g.n.x * g.n.z, S[5] += Fn * g.n.y * g.n.z;
-    };
-    add(stress_[static_cast<std::size_t>(i)]);
-    if (j < nlocal) add(stress_[static_cast<std::size_t>(j)]);
-  });
-  forwarding_ = Forward::stress;
-  comm->forward_comm_pair(this);
-}
-
-int PairSoftParticle::pack_forward_comm(int n, int* list_of, double* buf, int, int*) {
-  int m = 0;
-  for (int k = 0; k < n; ++k) {
-    const auto j = static_cast<std::size_t>(list_of[k]);
-    if (forwarding_ == Forward::state) buf[m++] = state_[j];
-    else
-      for (double c : stress_[j]) buf[m++] = c;
-  }
-  return m;
-}
-
-void PairSoftParticle::unpack_forward_comm(int n, int first, double* buf) {
-  int m = 0;
-  for (int i = first; i < first + n; ++i) {
-    const auto j = static_cast<std::size_t>(i);
-    if (forwarding_ == Forward::state) state_[j] = buf[m++];
-    else
-      for (double& c : stress_[j]) c = buf[m++];
-  }
+// The engine's sphere on a wall (forces/force_field.cpp wall_partners): a plane's R12 is the sphere's radius.
+ContactPartners PairSoftParticle::wall_partners(int i, bool rotation) const {
+  const double r = atom->radius[i], m = atom->rmass[i];
+  ContactPartners p;
+  p.kind = ContactPartners::Kind::plane;
+  p.R1 = r, p.R12 = r, p.m12 = m;
+  p.inv_mt = 1.0 / m + (rotation ? r * r * (1.0 / (0.4 * m * r * r)) : 0.0);
+  p.soft1 = true;
+  return p;
 }
 
 template <class Model, Effects Fx>
@@ -350,6 +265,45 @@ void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
       if (add_b) T[b][0] -= arm_b * nxFt.x, T[b][1] -= arm_b * nxFt.y, T[b][2] -= arm_b * nxFt.z;
     }
     if (evflag) ev_tally_xyz(a, b, nlocal, newton_pair, 0.0, 0.0, F.F.x, F.F.y, F.F.z, d.x, d.y, d.z);
+  });
+  for (FixSoftWall* wall : walls_) wall->load = Vec3::Zero();
+  each_wall_contact([&](int i, std::size_t wi, double h) {  // the engine's (forces/wall_contacts.hpp gather, add)
+    FixSoftWall& wall = *walls_[wi];
+    const typename Model::template Constants<double> k = Model::constants(params, wall_partners(i, Fx.rotation));
+    const V3<double> n{wall.normal.x(), wall.normal.y(), wall.normal.z()}, u{wall.surface_velocity.x(), wall.surface_velocity.y(), wall.surface_velocity.z()};
+    ContactGeometry<double> g{};
+    g.n = n, g.h = h;
+    const V3<double> vu = vec(v[i]) - u;
+    g.vc = vu;
+    const double arm = radius[i] - 0.5 * h;
+    if constexpr (Fx.rotation) g.vc = g.vc - cross(arm * vec(w[i]), g.n);
+    if constexpr (BodyStateModel<Model>) {
+      g.body1 = state_[static_cast<std::size_t>(i)], g.body2 = 0.0;
+      if (!stress_.empty()) g.stress1 = {&stress_[static_cast<std::size_t>(i)], radius[i]};
+    }
+    V3<double> xi{0.0, 0.0, 0.0};
+    double* spring = nullptr;
+    if constexpr (Fx.friction) {
+      g.n_frame = g.n, g.vc_frame = g.vc;
+      if constexpr (Fx.synchronized) {
+        const double h_half = h + 0.5 * dt * dot(vu, g.n);
+        g.vc_frame = vu;
+        if constexpr (Fx.rotation) g.vc_frame = g.vc_frame - cross((radius[i] - 0.5 * h_half) * vec(w[i]), g.n);
+      }
+      spring = history_->find_or_add(i, -static_cast<LAMMPS_NS::tagint>(wi) - 1);  // a wall's key: -(its index + 1)
+      xi = vec(spring);
+    }
+    const ContactForce<double> F = Model::template force<Fx>(params, g, k, xi, dt);
+    if constexpr (Fx.friction) {
+      spring[0] = xi.x, spring[1] = xi.y, spring[2] = xi.z;
+      history_->touch(i, spring);
+    }
+    f[i][0] += F.F.x, f[i][1] += F.F.y, f[i][2] += F.F.z;
+    if constexpr (Fx.rotation) {
+      const V3<double> nxFt = cross(g.n, F.Ft);
+      T[i][0] -= arm * nxFt.x, T[i][1] -= arm * nxFt.y, T[i][2] -= arm * nxFt.z;
+    }
+    wall.load -= Vec3(F.F.x, F.F.y, F.F.z);
   });
   if constexpr (Fx.friction) history_->prune(nlocal);
 }

@@ -23,7 +23,8 @@
 // the forces and sent to the ghosts, as the engine's per-body passes (the pattern of LAMMPS's EAM).
 // Needs atom_style sphere (radius, rmass), comm_modify vel yes with damping or friction, and
 // newton_pair off with friction or the many-body law (pair/soft_history.hpp says why).
-// docs/lammps.md lists what is not here yet (the walls).
+// Its planes are fixes softpack/wall (pair/soft_wall.hpp), whose contacts it evaluates with the same
+// model, in the same passes. docs/lammps.md lists what is not here yet.
 #pragma once
 #include <string>
 #include <vector>
@@ -57,6 +58,10 @@ class PairSoftParticle : public LAMMPS_NS::Pair {
   void each_contact(F&& fn);
   ContactPartners partners(int a, int b, bool rotation) const;
   void body_passes();
+  /// fn(i, wall index, h) for each local soft-particle of a wall's group touching it (h > 0).
+  template <class F>
+  void each_wall_contact(F&& fn);
+  ContactPartners wall_partners(int i, bool rotation) const;
   void allocate();
   [[noreturn]] void fail(const std::string& what) const;
 
@@ -66,6 +71,7 @@ class PairSoftParticle : public LAMMPS_NS::Pair {
   Effects fx_{true, false, true, true};  ///< friction, damping, rotation, synchronized (the engine's defaults)
   int history_capacity_ = 0;              ///< springs per atom (0: the fix's default)
   class FixSoftHistory* history_ = nullptr;
+  std::vector<class FixSoftWall*> walls_;  ///< the fixes softpack/wall (init_style)
   SoftParticleModel::Params params_{};
   SoftManyBodyModel::Params many_params_{};  ///< with a law file's many_body
   // The many-body law's per-body values (body_passes), local and ghost atoms.

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # softpack-lammps (issue 34, docs/lammps.md) answers --help, runs the example of docs/lammps.md with
-# the forces of the law file's Eq. 7 (soft-soft at Δn 0.3, soft-solid at 0.15, to 1e-12), on one
+# the forces of the law file's Eq. 7 (soft-soft at Δn 0.3, soft-solid at 0.15, a wall's load at 0.2,
+# to 1e-12), on one
 # rank and on two, and stops with LAMMPS's ERROR line naming the bad value for a bad role.
 source "$(dirname "$0")/common.sh"
 exe=$1
@@ -14,15 +15,15 @@ d = json.load(open("data/radius/report/laws.json"))["scenes"]
 def eq7(scene, dn):
     n = d[scene]["normal"]
     return n["a"]["value"] * dn ** n["b"]["value"] + n["c"]["value"] if dn >= n["delta"]["value"] else 0.0
-print(f"{eq7('soft-soft', 0.0048 / 0.016):.17g} {eq7('soft-solid', 0.0024 / 0.016):.17g}")
+print(f"{eq7('soft-soft', 0.0048 / 0.016):.17g} {eq7('soft-solid', 0.0024 / 0.016):.17g} {-2 * eq7('soft-solid', 0.0032 / 0.016):.17g}")
 PY
 )
 check() {  # check LINE: the printed forces against Eq. 7
   python3 - "$1" $expected <<'PY' || fail "forces: $1 (expected $expected)"
 import re, sys
-line, soft, grain = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+line, expected = sys.argv[1], [float(v) for v in sys.argv[2:]]
 got = [float(v) for v in re.findall(r"(-?[0-9.]+(?:e-?[0-9]+)?) N", line)]
-assert len(got) == 2 and abs(got[0] - soft) <= 1e-12 * soft and abs(got[1] - grain) <= 1e-12 * grain, (got, soft, grain)
+assert len(got) == 3 and all(abs(g - e) <= 1e-12 * abs(e) for g, e in zip(got, expected)), (got, expected)
 PY
 }
 check "$("$exe" -in examples/lammps/two-soft-particles.in -log none | grep '^soft-soft Fx')"

@@ -1,10 +1,11 @@
 // softpack-lammps against softpack's engine (issue 34, item 3a): a row of soft-particles pressing each
-// other and grains pressing them, with random velocities and spins, friction and rotation on, run
+// other, grains pressing them and two walls (fix softpack/wall, the ceiling moving down) pressing
+// the row, with random velocities and spins, friction and rotation on, run
 // by the engine and by LAMMPS (pair style softpack/soft, fix nve/sphere) on the ranks this test is
 // started on (mpirun -np 1, 2, 3): at the start every body's force and torque equal the engine's to
 // 1e-10 of the largest, contacts across a rank boundary included; after steps in which bodies
 // change rank (fix balance moves the cuts mid-run, the springs travel with them), positions,
-// velocities, spins, forces and torques stay the engine's to 1e-11. Both with the pairwise laws
+// velocities, spins, forces, torques and the walls' loads stay the engine's to 1e-11. Both with the pairwise laws
 // and with the many-body law (its per-body states and stress tensors summed across ranks).
 #include <gtest/gtest.h>
 #include <mpi.h>
@@ -28,9 +29,11 @@
 namespace softpack {
 namespace {
 
-// After the steps: the two programs' roundings apart, the sums in other orders (measured: the
-// pairwise laws 1e-14 of the largest value, the many-body law 2.4e-12 on 2 and 3 ranks).
+// After the steps: the two programs' roundings apart, their sums in other orders (measured with
+// SOFTPACK_LAMMPS_DIFFERENCES=1: at most 1e-13 of the largest value, both laws, 1 to 3 ranks).
 constexpr double kMotion = 1e-11;
+
+constexpr double kWall = 0.012, kCeilingSpeed = 0.01;  // [m], [m/s]
 
 struct Frozen {
   SceneDef scene;
@@ -69,15 +72,19 @@ Frozen frozen_configuration(const SoftParticleLaws& laws) {
     ParticleDef g;
     g.r = rng.uniform(0.004, 0.006);
     g.x = host.x + u * (host.r + g.r - rng.uniform(0.11, 0.30) * R);
+    if (std::abs(g.x.z()) + g.r > kWall - 3e-3) continue;  // grains away from the walls (solid grains meet LAMMPS's own)
     bool free = true;
     for (std::size_t k = static_cast<std::size_t>(f.soft); k < s.particles.size(); ++k)
-      free = free && (s.particles[k].x - g.x).norm() > s.particles[k].r + g.r + 1e-4;
+      free = free && (s.particles[k].x - g.x).norm() > s.particles[k].r + g.r + 2e-3;  // apart: no two grains meet in the steps (LAMMPS leaves them to pair granular)
     if (!free) continue;
     g.mass = 2500.0 * 4.0 / 3.0 * 3.14159 * g.r * g.r * g.r;
     g.v = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) * 1e-3;
     g.w = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) * 0.2;
     s.particles.push_back(g);
   }
+  // A floor and a ceiling pressing the row (Δn 0.1-0.4), the ceiling moving down.
+  s.planes = {PlaneDef{"floor", Vec3(0, 0, -kWall), Vec3::UnitZ(), 0}, PlaneDef{"ceiling", Vec3(0, 0, kWall), -Vec3::UnitZ(), 0}};
+  if (kCeilingSpeed > 0.0) s.drivers = {MoveWallDef{"ceiling", Vec3(0, 0, -kCeilingSpeed), 0.01, std::nullopt}};
   return f;
 }
 
@@ -108,6 +115,9 @@ State lammps_state(LAMMPS_NS::LAMMPS* lmp, std::size_t n) {
   return {gathered(lmp, "x", n), gathered(lmp, "v", n), gathered(lmp, "omega", n), gathered(lmp, "f", n), gathered(lmp, "torque", n)};
 }
 
+// The force on each wall (floor, ceiling) [N].
+std::vector<Vec3> engine_loads(const Simulation& s) { return {s.plane_loads()[0].force, s.plane_loads()[1].force}; }
+
 double largest(const std::vector<Vec3>& a) {
   double m = 0.0;
   for (const Vec3& e : a) m = std::max(m, e.norm());
@@ -121,6 +131,7 @@ void expect_close(const std::vector<Vec3>& lmp, const std::vector<Vec3>& engine,
   double worst = 0.0;
   for (std::size_t i = 0; i < engine.size(); ++i) worst = std::max(worst, (lmp[i] - engine[i]).norm() / scale);
   EXPECT_LE(worst, tolerance) << what << ": the largest difference is " << worst << " of the largest value";
+  if (std::getenv("SOFTPACK_LAMMPS_DIFFERENCES")) std::printf("%s: %.2e\n", what.c_str(), worst);
 
 }
 
@@ -140,15 +151,17 @@ TEST_P(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
   const Frozen f = frozen_configuration(laws);
   const std::size_t n = f.scene.particles.size();
   ASSERT_GT(n, 20u);
-  // Steps before any two grains meet (near step 40 two do in the engine, whose Hertz law LAMMPS
-  // leaves to pair granular: pair_coeff 2 2 none here).
-  constexpr long kSteps = 30;
+  // Steps before any grain meets another grain or a wall (the walls squeeze grains out: near step
+  // 18 one reaches the floor in the engine, whose Hertz law LAMMPS leaves to its own styles).
+  constexpr long kSteps = 15;
 
   // The engine: F(t0), then kSteps steps.
   Simulation sim(f.scene);
   const State engine0 = engine_state(sim);
+  const std::vector<Vec3> engine_walls0 = engine_loads(sim);
   sim.run_steps(kSteps);
   const State engine1 = engine_state(sim);
+  const std::vector<Vec3> engine_walls1 = engine_loads(sim);
 
   // LAMMPS: the same bodies, read from a data file rank 0 writes (type 1 soft, 2 grain).
   int id = static_cast<int>(::getpid());  // rank 0's, so that every rank names the same folder
@@ -179,11 +192,21 @@ TEST_P(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
       "units si", "atom_style sphere", "atom_modify map array", "boundary m m m", "newton off", "comm_modify vel yes", "read_data " + data,
       "pair_style hybrid softpack/soft " + law_path + " restitution 0.5", "pair_coeff 1 1 softpack/soft soft soft",
       "pair_coeff 1 2 softpack/soft soft grain", "pair_coeff 2 2 none", "neighbor 0.001 bin", "neigh_modify every 1 delay 0 check yes",
-      "timestep " + number(sim.dt()), "fix move all nve/sphere"};
+      "timestep " + number(sim.dt()), "fix move all nve/sphere", "fix floor all softpack/wall z lo " + number(-kWall),
+      "fix ceiling all softpack/wall z hi " + number(kWall) + " velocity 0 0 " + number(-kCeilingSpeed)};
   for (const std::string& c : commands) lmp->input->one(c);
   for (std::size_t i = 0; i < n; ++i) lmp->input->one("set atom " + std::to_string(i + 1) + " mass " + number(*f.scene.particles[i].mass));
+  const auto wall_loads = [&] {
+    std::vector<Vec3> out;
+    for (const char* name : {"floor", "ceiling"}) {
+      LAMMPS_NS::Fix* fix = lmp->modify->fix[lmp->modify->find_fix(name)];
+      out.emplace_back(fix->compute_vector(0), fix->compute_vector(1), fix->compute_vector(2));
+    }
+    return out;
+  };
   lmp->input->one("run 0");
   const State lammps0 = lammps_state(lmp, n);
+  const std::vector<Vec3> lammps_walls0 = wall_loads();
 
   // Contacts whose two bodies are on two ranks, at the start.
   const auto owned = [&](const Vec3& x) {
@@ -201,12 +224,16 @@ TEST_P(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
   // second run would not be the engine's steps), the cuts between ranks moved every 10 steps to
   // even the bodies out (fix balance): bodies change rank, with their springs.
   const std::vector<LAMMPS_NS::tagint> before = local_tags(lmp);
-  if (ranks > 1) lmp->input->one("fix even all balance 10 1.0 shift x 20 1.0");
+  if (ranks > 1) {  // weights that grow with x and with the step: the cuts move left at every balance
+    lmp->input->one("variable weight atom 1.0+step*(x+0.05)*20.0");
+    lmp->input->one("fix even all balance 5 1.0 shift x 20 1.0 weight var weight");
+  }
   lmp->input->one("run " + std::to_string(kSteps));
   const std::vector<LAMMPS_NS::tagint> after = local_tags(lmp);
   int left = 0;
   for (LAMMPS_NS::tagint t : before) left += std::find(after.begin(), after.end(), t) == after.end();
   const State lammps1 = lammps_state(lmp, n);
+  const std::vector<Vec3> lammps_walls1 = wall_loads();
   int all_straddling = 0, all_left = 0;
   MPI_Allreduce(&straddling, &all_straddling, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   MPI_Allreduce(&left, &all_left, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
@@ -220,6 +247,8 @@ TEST_P(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
 
   expect_close(lammps0.F, engine0.F, 1e-10, "F at the start");
   expect_close(lammps0.T, engine0.T, 1e-10, "T at the start");
+  expect_close(lammps_walls0, engine_walls0, 1e-10, "the walls' loads at the start");
+  EXPECT_GT(std::min(engine_walls0[0].norm(), engine_walls0[1].norm()), 0.0) << "both walls should be pressed";
   int loaded = 0;
   for (const Vec3& e : engine0.F) loaded += e.norm() > 1e-3 * largest(engine0.F);
   EXPECT_GT(loaded, static_cast<int>(n) / 2) << "most bodies should be pressed";
@@ -231,6 +260,7 @@ TEST_P(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
   expect_close(lammps1.w, engine1.w, kMotion, "w after the steps");
   expect_close(lammps1.F, engine1.F, kMotion, "F after the steps");
   expect_close(lammps1.T, engine1.T, kMotion, "T after the steps");
+  expect_close(lammps_walls1, engine_walls1, kMotion, "the walls' loads after the steps");
 }
 
 INSTANTIATE_TEST_SUITE_P(LawFiles, LammpsPair, ::testing::Values("data/radius/report/laws.json", "data/many-body/report/laws-v6.json"),

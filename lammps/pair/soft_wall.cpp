@@ -1,0 +1,56 @@
+#include "pair/soft_wall.hpp"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+namespace softpack::lammps {
+
+namespace {
+
+double number_of(LAMMPS_NS::Error* error, const char* text, const char* what) {
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(v))
+    error->all(FLERR, fmt::format("fix {}: {} '{}' is not a number", FixSoftWall::kStyle, what, text));
+  return v;
+}
+
+}  // namespace
+
+FixSoftWall::FixSoftWall(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
+  const std::string usage = fmt::format("fix ID group {} AXIS lo|hi POSITION [velocity VX VY VZ]", kStyle);
+  if (narg != 6 && narg != 10) error->all(FLERR, fmt::format("fix {}: expected {}", kStyle, usage));
+  const std::string axis = arg[3], side = arg[4];
+  if (axis != "x" && axis != "y" && axis != "z") error->all(FLERR, fmt::format("fix {}: axis '{}' is not allowed; allowed: x, y, z", kStyle, axis));
+  if (side != "lo" && side != "hi") error->all(FLERR, fmt::format("fix {}: side '{}' is not allowed; allowed: lo, hi", kStyle, side));
+  const int a = axis[0] - 'x';
+  normal = Vec3::Zero();
+  normal[a] = side == "lo" ? 1.0 : -1.0;
+  point = Vec3::Zero();
+  point[a] = number_of(error, arg[5], "POSITION");
+  if (narg == 10) {
+    if (std::strcmp(arg[6], "velocity") != 0) error->all(FLERR, fmt::format("fix {}: '{}' is not a keyword; allowed: velocity", kStyle, arg[6]));
+    for (int k = 0; k < 3; ++k) velocity[k] = number_of(error, arg[7 + k], "velocity");
+  }
+  vector_flag = 1, size_vector = 3, global_freq = 1, extvector = 1;
+  time_integrate = 0;
+}
+
+int FixSoftWall::setmask() { return LAMMPS_NS::FixConst::INITIAL_INTEGRATE; }
+
+void FixSoftWall::initial_integrate(int) {
+  point += update->dt * velocity;
+  surface_velocity = velocity;
+}
+
+double FixSoftWall::compute_vector(int k) {
+  double local = load[k], all = 0.0;
+  MPI_Allreduce(&local, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+  return all;
+}
+
+}  // namespace softpack::lammps
