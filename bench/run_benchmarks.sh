@@ -13,7 +13,9 @@
 #      efficiency expected at 16 threads from the serial fraction the two measure (Karp-Flatt);
 #   4. the cost per sphere-step and memory per sphere from 10^3 to 10^6 spheres (a lattice at rest);
 #   5. softpack-pack on 100 000 spheres;
-#   6. a summary of the targets with PASS/MISS (informational: exit 0 when everything ran).
+#   6. soft-particle media: softpack-lammps against the engine, one core and two ranks
+#      (bench/lammps/run_soft_medium.sh; BENCH_SOFT_SIZES, BENCH_SOFT_STEPS), when it is built;
+#   7. a summary of the targets with PASS/MISS (informational: exit 0 when everything ran).
 # Environment: BENCH_STEPS (default 2000) steps per whole run, BENCH_REPEATS (default 3) runs per
 # code and scene. The packings are cached in BUILD/bench/confined-{5000,1600}.txt (made once, ~40 s
 # and ~7 s); softpack runs their spheres in spatial order (engine/neighbor/spatial_order.hpp).
@@ -192,7 +194,18 @@ echo
 echo "== packing generator: bench/profiles/packing-100k.yaml, seed 1 =="
 echo "softpack-pack: $pack_n spheres inserted in $pack_s s"
 
-# 6. summary
+# 6. soft-particle media in LAMMPS (issue 34): its time per soft-particle step against the engine's
+soft_line="largest_bodies=0 ratio_pairwise=0 ratio_many_body=0 efficiency_pairwise=0 efficiency_many_body=0"
+if [ -x "$build/bin/softpack-lammps" ]; then
+  run soft "$here/lammps/run_soft_medium.sh" "$build"
+  echo
+  echo "== soft-particle media: softpack-lammps vs the engine (bench/lammps/run_soft_medium.sh), us per body-step, least of runs =="
+  head -n -1 "$tmp/soft.out"
+  soft_line="$(tail -1 "$tmp/soft.out")"
+fi
+soft_field() { echo "$soft_line" | grep -o "\b$1=[^ ]*" | cut -d= -f2; }
+
+# 7. summary
 det="$(/usr/bin/python3 - "$tmp/engine.json" <<'PY'
 import json, re, sys
 s, c, same, same_rebuilds = {}, {}, {}, {}
@@ -229,7 +242,9 @@ awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
     -v q="$det_ratio" -v q1="$det1" -v q100="$det100" -v gb="$gb_ratio" -v same="$same_ratio" \
     -v ps="$pack_s" -v pn="$pack_n" -v t1="$sp_t1" -v t2="$sp_t2" -v s1="$sp_s1" -v s2="$sp_s2" \
     -v k3="${scale[1000]}" -v k6="${scale[1000000]}" -v k5="${scale[100000]}" -v k5g="${scale[100000-given]}" \
-    -v m6="${scale_mem[1000000]}" -v pt="$sp_pt" -v m1="$sp_m1" -v m2="$sp_m2" 'BEGIN {
+    -v m6="${scale_mem[1000000]}" -v pt="$sp_pt" -v m1="$sp_m1" -v m2="$sp_m2" \
+    -v sb="$(soft_field largest_bodies)" -v srp="$(soft_field ratio_pairwise)" -v srm="$(soft_field ratio_many_body)" \
+    -v sep="$(soft_field efficiency_pairwise)" -v sem="$(soft_field efficiency_many_body)" 'BEGIN {
   # Karp-Flatt: the serial fraction e = 2 T2 / T1 - 1 the 1- and 2-thread times imply; at 16
   # threads Amdahl then gives an efficiency of 1 / (1 + 15 e)
   f = "%-58s %8s %9s  %s\n"
@@ -252,6 +267,12 @@ awk -v a="$sp_fr" -v b="$lm_fr" -v c="$sp_fl" -v d="$lm_fl" \
   printf f, "  10^5 spheres: order given / spatial order", sprintf("%.2fx", k5g / k5), "-", ""
   printf f, "  memory per sphere with its contacts, 10^6", sprintf("%.0f B", m6), "-", ""
   printf f, "softpack-pack, " pn " spheres (Pi = 10)", sprintf("%.1f s", ps), "< 60 s", (ps < 60 ? "PASS" : "MISS")
+  if (sb > 0) {
+    printf f, "LAMMPS / engine per soft-particle step, " sb " bodies, pairwise", sprintf("%.2fx", srp), "<= 2x", (srp <= 2 ? "PASS" : "MISS")
+    printf f, "  same, many-body law (sixth version)", sprintf("%.2fx", srm), "<= 2x", (srm <= 2 ? "PASS" : "MISS")
+    printf f, "LAMMPS efficiency on 2 ranks, " sb " bodies, pairwise", sprintf("%.0f %%", 100 * sep), ">= 80 %", (sep >= 0.8 ? "PASS" : "MISS")
+    printf f, "  same, many-body law (sixth version)", sprintf("%.0f %%", 100 * sem), ">= 80 %", (sem >= 0.8 ? "PASS" : "MISS")
+  }
   printf "  (softpack %.4g / %.4g s, LAMMPS %.4g / %.4g s frictional / frictionless; detection %s / %s s per sphere;\n",
     a, c, b, d, q100, q1
   printf "   softpack frictional on 1 / 2 threads %.4g / %.4g s (5000 spheres), %.4g / %.4g s (1600), %.4g / %.4g s (medium);\n", t1, t2, s1, s2, m1, m2
