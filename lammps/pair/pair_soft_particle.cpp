@@ -129,13 +129,13 @@ void PairSoftParticle::init_style() {
     fail("damping and friction read the ghosts' velocities: add comm_modify vel yes");
   if (fx_.rotation && !atom->omega_flag) fail("rotation yes needs per-atom angular velocities: atom_style sphere");
   if ((fx_.friction || laws_.many_body) && force->newton_pair)
-    fail(fmt::format("{} on both of a contact's ranks: add newton off (or newton on off) before the box is made",
-                     fx_.friction ? "friction keeps each contact's spring" : "the many-body law sums each body's contacts"));
+    fail(fmt::format("{}: add newton off before the box is made (after read_restart: newton off off)",
+                     fx_.friction ? "friction keeps each contact's spring on both of its ranks" : "the many-body law sums each body's contacts on its own rank"));
   neighbor->request(this, instance_me);
   walls_.clear();
   for (int k = 0; k < modify->nfix; ++k)
     if (auto* wall = dynamic_cast<FixSoftWall*>(modify->fix[k])) walls_.push_back(wall);
-  if (fx_.friction && !history_) {
+  if (!history_) {
     const int at = modify->find_fix(FixSoftHistory::kId);
     if (at >= 0) {
       history_ = dynamic_cast<FixSoftHistory*>(modify->fix[at]);
@@ -212,6 +212,17 @@ void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
   const int newton_pair = force->newton_pair;
   const double dt = update->setupflag ? 0.0 : update->dt;  // the springs advance in steps, not in a run's setup (the engine's F(t0))
   const auto vec = [](const double* p) { return V3<double>{p[0], p[1], p[2]}; };
+  // A force and a torque on atom c, also kept as its last step's (pair/soft_history.hpp).
+  const auto apply = [&](int c, const V3<double>& Fc, const V3<double>& Tc) {
+    double* L = history_->last(c);
+    f[c][0] += Fc.x, f[c][1] += Fc.y, f[c][2] += Fc.z;
+    L[0] += Fc.x, L[1] += Fc.y, L[2] += Fc.z;
+    if constexpr (Fx.rotation) {
+      T[c][0] += Tc.x, T[c][1] += Tc.y, T[c][2] += Tc.z;
+      L[3] += Tc.x, L[4] += Tc.y, L[5] += Tc.z;
+    }
+  };
+  if (!dry_run_) history_->clear_last(nlocal);
   each_contact([&](int i, int j, int a, int b, const V3<double>& d, double r_sum) {
     const typename Model::template Constants<double> k = Model::constants(params, partners(a, b, Fx.rotation));
     ContactGeometry<double> g{};  // the engine's (forces/pair_contacts.hpp gather)
@@ -243,10 +254,14 @@ void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
           g.vc_frame = g.vc_frame - cross((radius[a] - 0.5 * h_half) * vec(w[a]) + (radius[b] - 0.5 * h_half) * vec(w[b]), g.n_frame);
         }
       }
-      spring = history_->find_or_add(i, tag[j]);  // atom i is local
-      xi = vec(spring);
+      spring = dry_run_ ? history_->find(i, tag[j]) : history_->find_or_add(i, tag[j]);  // atom i is local
+      if (spring) xi = vec(spring);
     }
     const ContactForce<double> F = Model::template force<Fx>(params, g, k, xi, dt);
+    if (dry_run_) {  // a continuation's setup: the virial only (add_last gives the forces)
+      if (evflag) ev_tally_xyz(a, b, nlocal, newton_pair, 0.0, 0.0, F.F.x, F.F.y, F.F.z, d.x, d.y, d.z);
+      return;
+    }
     if constexpr (Fx.friction) {
       spring[0] = xi.x, spring[1] = xi.y, spring[2] = xi.z;
       history_->touch(i, spring);
@@ -256,17 +271,13 @@ void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
         history_->touch(j, other);
       }
     }
-    const bool add_a = newton_pair || a < nlocal, add_b = newton_pair || b < nlocal;
-    if (add_a) f[a][0] += F.F.x, f[a][1] += F.F.y, f[a][2] += F.F.z;
-    if (add_b) f[b][0] -= F.F.x, f[b][1] -= F.F.y, f[b][2] -= F.F.z;
-    if constexpr (Fx.rotation) {
-      const V3<double> nxFt = cross(g.n, F.Ft);
-      if (add_a) T[a][0] -= arm_a * nxFt.x, T[a][1] -= arm_a * nxFt.y, T[a][2] -= arm_a * nxFt.z;
-      if (add_b) T[b][0] -= arm_b * nxFt.x, T[b][1] -= arm_b * nxFt.y, T[b][2] -= arm_b * nxFt.z;
-    }
+    const V3<double> nxFt = Fx.rotation ? cross(g.n, F.Ft) : V3<double>{0.0, 0.0, 0.0};
+    if (newton_pair || a < nlocal) apply(a, F.F, -arm_a * nxFt);
+    if (newton_pair || b < nlocal) apply(b, -F.F, -arm_b * nxFt);
     if (evflag) ev_tally_xyz(a, b, nlocal, newton_pair, 0.0, 0.0, F.F.x, F.F.y, F.F.z, d.x, d.y, d.z);
   });
-  for (FixSoftWall* wall : walls_) wall->load = Vec3::Zero();
+  if (!dry_run_)
+    for (FixSoftWall* wall : walls_) wall->load = Vec3::Zero();
   each_wall_contact([&](int i, std::size_t wi, double h) {  // the engine's (forces/wall_contacts.hpp gather, add)
     FixSoftWall& wall = *walls_[wi];
     const typename Model::template Constants<double> k = Model::constants(params, wall_partners(i, Fx.rotation));
@@ -290,26 +301,27 @@ void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
         g.vc_frame = vu;
         if constexpr (Fx.rotation) g.vc_frame = g.vc_frame - cross((radius[i] - 0.5 * h_half) * vec(w[i]), g.n);
       }
-      spring = history_->find_or_add(i, -static_cast<LAMMPS_NS::tagint>(wi) - 1);  // a wall's key: -(its index + 1)
-      xi = vec(spring);
+      const LAMMPS_NS::tagint key = -static_cast<LAMMPS_NS::tagint>(wi) - 1;  // a wall's key: -(its index + 1)
+      spring = dry_run_ ? history_->find(i, key) : history_->find_or_add(i, key);
+      if (spring) xi = vec(spring);
     }
     const ContactForce<double> F = Model::template force<Fx>(params, g, k, xi, dt);
+    if (dry_run_) return;
     if constexpr (Fx.friction) {
       spring[0] = xi.x, spring[1] = xi.y, spring[2] = xi.z;
       history_->touch(i, spring);
     }
-    f[i][0] += F.F.x, f[i][1] += F.F.y, f[i][2] += F.F.z;
-    if constexpr (Fx.rotation) {
-      const V3<double> nxFt = cross(g.n, F.Ft);
-      T[i][0] -= arm * nxFt.x, T[i][1] -= arm * nxFt.y, T[i][2] -= arm * nxFt.z;
-    }
+    apply(i, F.F, -arm * (Fx.rotation ? cross(g.n, F.Ft) : V3<double>{0.0, 0.0, 0.0}));
     wall.load -= Vec3(F.F.x, F.F.y, F.F.z);
   });
-  if constexpr (Fx.friction) history_->prune(nlocal);
+  if (Fx.friction && !dry_run_) history_->prune(nlocal);
 }
 
 void PairSoftParticle::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
+  // A run's setup that continues the last step (pair/soft_history.hpp): its forces, and the virial.
+  dry_run_ = update->setupflag && history_->continues();
+  if (dry_run_) history_->add_last(atom->f, fx_.rotation ? atom->torque : nullptr);
   if (laws_.many_body) {
     body_passes();
     with_effects(fx_, [&]<Effects Fx>() { compute_pairs<SoftManyBodyModel, Fx>(many_params_); });

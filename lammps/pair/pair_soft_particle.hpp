@@ -86,6 +86,7 @@ class PairSoftParticle : public LAMMPS_NS::Pair {
   std::vector<Vec3> cap_u_;             ///< one body's, for body_state
   std::vector<double> cap_depth_;
   enum class Forward { state, stress } forwarding_ = Forward::state;
+  bool dry_run_ = false;  ///< a continuation's setup: the virial only (pair/soft_history.hpp)
   std::vector<int> soft_;          ///< per atom type (1-based): 1 soft, 0 grain, -1 not set
   std::vector<double> max_radius_;  ///< per atom type, over all ranks (init_style)
 };

@@ -1,6 +1,7 @@
 #include "pair/soft_history.hpp"
 
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -24,7 +25,10 @@ FixSoftHistory::FixSoftHistory(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) : F
   grow_arrays(atom->nmax);
   atom->add_callback(LAMMPS_NS::Atom::GROW);
   atom->add_callback(LAMMPS_NS::Atom::RESTART);
-  for (int i = 0; i < atom->nlocal; ++i) count_[i] = 0;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    count_[i] = 0;
+    for (int k = 0; k < kLast; ++k) last_[i][k] = 0.0;
+  }
 }
 
 FixSoftHistory::~FixSoftHistory() {
@@ -34,6 +38,7 @@ FixSoftHistory::~FixSoftHistory() {
   memory->destroy(partner_);
   memory->destroy(spring_);
   memory->destroy(touched_);
+  memory->destroy(last_);
 }
 
 void FixSoftHistory::grow_arrays(int nmax) {
@@ -41,6 +46,7 @@ void FixSoftHistory::grow_arrays(int nmax) {
   memory->grow(partner_, nmax, capacity_, "softpack/history:partner");
   memory->grow(spring_, nmax, 3 * capacity_, "softpack/history:spring");
   memory->grow(touched_, nmax, capacity_, "softpack/history:touched");
+  memory->grow(last_, nmax, kLast, "softpack/history:last");
 }
 
 void FixSoftHistory::copy_arrays(int i, int j, int) {
@@ -48,10 +54,12 @@ void FixSoftHistory::copy_arrays(int i, int j, int) {
   std::memcpy(partner_[j], partner_[i], sizeof(tagint) * static_cast<std::size_t>(count_[i]));
   std::memcpy(spring_[j], spring_[i], sizeof(double) * 3 * static_cast<std::size_t>(count_[i]));
   std::memcpy(touched_[j], touched_[i], static_cast<std::size_t>(count_[i]));
+  std::memcpy(last_[j], last_[i], sizeof(double) * kLast);
 }
 
 int FixSoftHistory::pack_exchange(int i, double* buf) {
   int m = 0;
+  for (int k = 0; k < kLast; ++k) buf[m++] = last_[i][k];
   buf[m++] = ubuf(count_[i]).d;
   for (int k = 0; k < count_[i]; ++k) {
     buf[m++] = ubuf(partner_[i][k]).d;
@@ -62,6 +70,7 @@ int FixSoftHistory::pack_exchange(int i, double* buf) {
 
 int FixSoftHistory::unpack_exchange(int nlocal, double* buf) {
   int m = 0;
+  for (int k = 0; k < kLast; ++k) last_[nlocal][k] = buf[m++];
   count_[nlocal] = static_cast<int>(ubuf(buf[m++]).i);
   for (int k = 0; k < count_[nlocal]; ++k) {
     partner_[nlocal][k] = static_cast<tagint>(ubuf(buf[m++]).i);
@@ -74,6 +83,7 @@ int FixSoftHistory::unpack_exchange(int nlocal, double* buf) {
 // LAMMPS's convention for a fix's per-atom restart values: the first is their count, a plain double
 // (the fixes before this one are skipped by it).
 int FixSoftHistory::pack_restart(int i, double* buf) {
+  keep_state(i, atom->x[i], atom->v[i]);  // written at a step's end: its forces belong to this state
   const int m = pack_exchange(i, buf + 1) + 1;
   buf[0] = m;
   return m;
@@ -110,6 +120,45 @@ double* FixSoftHistory::find_or_add(int i, tagint partner) {
 }
 
 void FixSoftHistory::touch(int i, const double* spring) { touched_[i][(spring - spring_[i]) / 3] = 1; }
+
+void FixSoftHistory::set_arrays(int i) {
+  count_[i] = 0;
+  for (int k = 0; k < kLast; ++k) last_[i][k] = 0.0;
+}
+
+void FixSoftHistory::keep_state(int i, const double* x, const double* v) {
+  for (int a = 0; a < 3; ++a) last_[i][6 + a] = x[a], last_[i][9 + a] = v[a];
+  last_[i][12] = 1.0;
+}
+
+void FixSoftHistory::post_run() {
+  for (int i = 0; i < atom->nlocal; ++i) keep_state(i, atom->x[i], atom->v[i]);
+}
+
+void FixSoftHistory::clear_last(int nlocal) {
+  for (int i = 0; i < nlocal; ++i)
+    for (int k = 0; k < 6; ++k) last_[i][k] = 0.0;
+}
+
+bool FixSoftHistory::continues() {
+  int same = force->newton_pair ? 0 : 1;  // with newton on a ghost's share is not kept: computed as LAMMPS does
+  for (int i = 0; i < atom->nlocal && same; ++i) {
+    same = last_[i][12] == 1.0;
+    for (int a = 0; a < 3 && same; ++a) same = last_[i][6 + a] == atom->x[i][a] && last_[i][9 + a] == atom->v[i][a];
+  }
+  int all = 0;
+  MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_MIN, world);
+  for (int i = 0; i < atom->nlocal; ++i) last_[i][12] = 0.0;
+  return all == 1;
+}
+
+void FixSoftHistory::add_last(double** f, double** torque) {
+  for (int i = 0; i < atom->nlocal; ++i)
+    for (int a = 0; a < 3; ++a) {
+      f[i][a] += last_[i][a];
+      if (torque) torque[i][a] += last_[i][3 + a];
+    }
+}
 
 void FixSoftHistory::prune(int nlocal) {
   for (int i = 0; i < nlocal; ++i) {

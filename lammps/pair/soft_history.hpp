@@ -5,6 +5,14 @@
 // with newton_pair off: a contact across two ranks is then computed on both, each keeping its own
 // atom's copy, and both copies follow the same arithmetic (the pair oriented by tag, smaller first),
 // so they stay the same bits. A spring is the engine's ξ of the pair (body 1 the smaller tag).
+//
+// It also makes a second run, or a run from a restart file, the continuation of the first: LAMMPS's
+// run setup computes the forces again, with full-step velocities, where the step that ended the
+// run had half-step ones (the damping, the Coulomb limit and the springs read them). So each atom
+// keeps the pair style's force and torque on it from the last step, and, at the run's end or in
+// the restart file, the position and velocity they belong to; a setup whose atoms are all where
+// and as fast as that (every rank checked) takes those forces instead of computing them and leaves
+// the springs as they are. Anything moved or changed between runs: the forces are computed.
 #pragma once
 #include "pair/lammps_headers.hpp"
 
@@ -20,16 +28,17 @@ class FixSoftHistory : public LAMMPS_NS::Fix {
   static LAMMPS_NS::Fix* create(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) { return new FixSoftHistory(lmp, narg, arg); }
   static constexpr int kDefaultCapacity = 64;
 
-  int setmask() override { return 0; }
+  int setmask() override { return LAMMPS_NS::FixConst::POST_RUN; }
+  void post_run() override;
   void grow_arrays(int nmax) override;
   void copy_arrays(int i, int j, int delflag) override;
-  void set_arrays(int i) override { count_[i] = 0; }
+  void set_arrays(int i) override;
   int pack_exchange(int i, double* buf) override;
   int unpack_exchange(int nlocal, double* buf) override;
   int pack_restart(int i, double* buf) override;
   void unpack_restart(int nlocal, int nth) override;
-  int size_restart(int i) override { return 2 + 4 * count_[i]; }
-  int maxsize_restart() override { return 2 + 4 * capacity_; }
+  int size_restart(int i) override { return 2 + kLast + 4 * count_[i]; }
+  int maxsize_restart() override { return 2 + kLast + 4 * capacity_; }
   double memory_usage() override;
 
   /// Atom i's spring with the atom of tag `partner`: a pointer to its 3 doubles, or null.
@@ -41,12 +50,27 @@ class FixSoftHistory : public LAMMPS_NS::Fix {
   void touch(int i, const double* spring);
   void prune(int nlocal);
 
+  /// Atom i's force and torque from the pair style at the last step (6 values), which the pair
+  /// style clears (clear_last) and sums into at each step.
+  double* last(int i) { return last_[i]; }
+  void clear_last(int nlocal);
+  /// In a run's setup: whether every atom on every rank is where and as fast as its kept forces'
+  /// step left it (collective); then add_last() adds them to f and torque. Either way the kept
+  /// state is spent: a later setup computes unless a run's end or a restart keeps it again.
+  bool continues();
+  void add_last(double** f, double** torque);
+
  private:
   int capacity_ = kDefaultCapacity;
   int* count_ = nullptr;
   LAMMPS_NS::tagint** partner_ = nullptr;
   double** spring_ = nullptr;  ///< 3 per partner
   char** touched_ = nullptr;
+  /// Per atom: the pair style's F and T at the last step (0-5), the x and v they belong to (6-11),
+  /// and whether those are set (12).
+  static constexpr int kLast = 13;
+  double** last_ = nullptr;
+  void keep_state(int i, const double* x, const double* v);
 };
 
 }  // namespace softpack::lammps

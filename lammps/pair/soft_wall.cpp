@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -37,6 +39,7 @@ FixSoftWall::FixSoftWall(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) : Fix(lmp
     for (int k = 0; k < 3; ++k) velocity[k] = number_of(error, arg[7 + k], "velocity");
   }
   vector_flag = 1, size_vector = 3, global_freq = 1, extvector = 1;
+  restart_global = 1;
   time_integrate = 0;
 }
 
@@ -45,6 +48,22 @@ int FixSoftWall::setmask() { return LAMMPS_NS::FixConst::INITIAL_INTEGRATE; }
 void FixSoftWall::initial_integrate(int) {
   point += update->dt * velocity;
   surface_velocity = velocity;
+}
+
+void FixSoftWall::write_restart(FILE* fp) {
+  double list[9];
+  for (int a = 0; a < 3; ++a) list[a] = point[a], list[3 + a] = surface_velocity[a], list[6 + a] = load[a];
+  if (comm->me == 0) {
+    const int size = static_cast<int>(sizeof(list));
+    std::fwrite(&size, sizeof(int), 1, fp);
+    std::fwrite(list, sizeof(double), 9, fp);
+  }
+}
+
+void FixSoftWall::restart(char* buf) {
+  double list[9];
+  std::memcpy(list, buf, sizeof(list));
+  for (int a = 0; a < 3; ++a) point[a] = list[a], surface_velocity[a] = list[3 + a], load[a] = list[6 + a];
 }
 
 double FixSoftWall::compute_vector(int k) {

@@ -25,6 +25,10 @@ class FixSoftWall : public LAMMPS_NS::Fix {
   int setmask() override;
   void initial_integrate(int vflag) override;
   double compute_vector(int k) override;
+  /// Its position, the velocity its contacts see and its load, in restart files (a fix of the same
+  /// ID and style given after read_restart takes them).
+  void write_restart(FILE* fp) override;
+  void restart(char* buf) override;
 
   // What the pair style reads and sums (pair/pair_soft_particle.cpp).
   Vec3 point = Vec3::Zero(), normal = Vec3::UnitZ(), velocity = Vec3::Zero();

@@ -138,6 +138,76 @@ void expect_close(const std::vector<Vec3>& lmp, const std::vector<Vec3>& engine,
 // The bodies' owners: this rank's tags.
 std::vector<LAMMPS_NS::tagint> local_tags(LAMMPS_NS::LAMMPS* lmp) { return {lmp->atom->tag, lmp->atom->tag + lmp->atom->nlocal}; }
 
+// A folder all ranks share (rank 0's pid), removed at the end.
+struct Scratch {
+  std::string dir;
+  Scratch() {
+    int id = static_cast<int>(::getpid());
+    MPI_Bcast(&id, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    dir = (std::filesystem::temp_directory_path() / ("softpack-lammps-" + std::to_string(id))).string();
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0) std::filesystem::create_directories(dir);
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+  ~Scratch() {
+    MPI_Barrier(MPI_COMM_WORLD);
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0) std::filesystem::remove_all(dir);
+  }
+};
+
+// The bodies as a LAMMPS data file (type 1 soft, 2 grain), written by rank 0.
+std::string write_data(const Frozen& f, const std::string& dir) {
+  const std::string data = dir + "/frozen.data";
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) {
+    std::ofstream out(data);
+    out << "softpack frozen configuration\n\n" << f.scene.particles.size()
+        << " atoms\n2 atom types\n-0.05 0.20 xlo xhi\n-0.05 0.05 ylo yhi\n-0.05 0.05 zlo zhi\n\nAtoms # sphere\n\n";
+    for (std::size_t i = 0; i < f.scene.particles.size(); ++i) {
+      const ParticleDef& p = f.scene.particles[i];
+      out << i + 1 << " " << (p.soft ? 1 : 2) << " " << number(2.0 * p.r) << " 1000 " << number(p.x.x()) << " " << number(p.x.y()) << " "
+          << number(p.x.z()) << "\n";
+    }
+    out << "\nVelocities\n\n";
+    for (std::size_t i = 0; i < f.scene.particles.size(); ++i) {
+      const ParticleDef& p = f.scene.particles[i];
+      out << i + 1 << " " << number(p.v.x()) << " " << number(p.v.y()) << " " << number(p.v.z()) << " " << number(p.w.x()) << " "
+          << number(p.w.y()) << " " << number(p.w.z()) << "\n";
+    }
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  return data;
+}
+
+LAMMPS_NS::LAMMPS* start_lammps(const std::vector<std::string>& commands) {
+  const char* args[] = {"softpack-lammps", "-log", "none", "-screen", std::getenv("SOFTPACK_LAMMPS_SCREEN") ? "/dev/stdout" : "none", "-nocite"};
+  auto* lmp = new LAMMPS_NS::LAMMPS(6, const_cast<char**>(args), MPI_COMM_WORLD);
+  lammps::register_styles(lmp);
+  for (const std::string& c : commands) lmp->input->one(c);
+  return lmp;
+}
+
+// The box and bodies from the data file, with the engine's masses and step.
+std::vector<std::string> data_commands(const std::string& data, const Frozen& f, double dt) {
+  std::vector<std::string> c = {"units si", "atom_style sphere", "atom_modify map array", "boundary m m m", "newton off", "read_data " + data,
+                                "timestep " + number(dt)};
+  for (std::size_t i = 0; i < f.scene.particles.size(); ++i) c.push_back("set atom " + std::to_string(i + 1) + " mass " + number(*f.scene.particles[i].mass));
+  return c;
+}
+
+// What a restart file does not carry: the styles, the integrator, the walls (which take their state
+// from it), the neighbour and communication settings.
+std::vector<std::string> model_commands(const std::string& law_path) {
+  return {"comm_modify vel yes", "pair_style hybrid softpack/soft " + law_path + " restitution 0.5", "pair_coeff 1 1 softpack/soft soft soft",
+          "pair_coeff 1 2 softpack/soft soft grain", "pair_coeff 2 2 none", "neighbor 0.001 bin", "neigh_modify every 1 delay 0 check yes",
+          "fix move all nve/sphere", "fix floor all softpack/wall z lo " + number(-kWall),
+          "fix ceiling all softpack/wall z hi " + number(kWall) + " velocity 0 0 " + number(-kCeilingSpeed)};
+}
+
 // The pairwise laws (data/radius/report/laws.json) and the many-body law's sixth version, with its
 // union of caps and its soft-soft stress term (data/many-body/report/laws-v6.json).
 class LammpsPair : public ::testing::TestWithParam<const char*> {};
@@ -164,38 +234,10 @@ TEST_P(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
   const std::vector<Vec3> engine_walls1 = engine_loads(sim);
 
   // LAMMPS: the same bodies, read from a data file rank 0 writes (type 1 soft, 2 grain).
-  int id = static_cast<int>(::getpid());  // rank 0's, so that every rank names the same folder
-  MPI_Bcast(&id, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  const std::string dir = (std::filesystem::temp_directory_path() / ("softpack-lammps-" + std::to_string(id))).string();
-  const std::string data = dir + "/frozen.data";
-  if (rank == 0) {
-    std::filesystem::create_directories(dir);
-    std::ofstream out(data);
-    out << "softpack frozen configuration\n\n" << n << " atoms\n2 atom types\n-0.05 0.20 xlo xhi\n-0.05 0.05 ylo yhi\n-0.05 0.05 zlo zhi\n\nAtoms # sphere\n\n";
-    for (std::size_t i = 0; i < n; ++i) {
-      const ParticleDef& p = f.scene.particles[i];
-      out << i + 1 << " " << (p.soft ? 1 : 2) << " " << number(2.0 * p.r) << " 1000 " << number(p.x.x()) << " " << number(p.x.y()) << " "
-          << number(p.x.z()) << "\n";
-    }
-    out << "\nVelocities\n\n";
-    for (std::size_t i = 0; i < n; ++i) {
-      const ParticleDef& p = f.scene.particles[i];
-      out << i + 1 << " " << number(p.v.x()) << " " << number(p.v.y()) << " " << number(p.v.z()) << " " << number(p.w.x()) << " "
-          << number(p.w.y()) << " " << number(p.w.z()) << "\n";
-    }
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
-  const char* args[] = {"softpack-lammps", "-log", "none", "-screen", std::getenv("SOFTPACK_LAMMPS_SCREEN") ? "/dev/stdout" : "none", "-nocite"};
-  auto* lmp = new LAMMPS_NS::LAMMPS(6, const_cast<char**>(args), MPI_COMM_WORLD);
-  lammps::register_styles(lmp);
-  const std::vector<std::string> commands = {
-      "units si", "atom_style sphere", "atom_modify map array", "boundary m m m", "newton off", "comm_modify vel yes", "read_data " + data,
-      "pair_style hybrid softpack/soft " + law_path + " restitution 0.5", "pair_coeff 1 1 softpack/soft soft soft",
-      "pair_coeff 1 2 softpack/soft soft grain", "pair_coeff 2 2 none", "neighbor 0.001 bin", "neigh_modify every 1 delay 0 check yes",
-      "timestep " + number(sim.dt()), "fix move all nve/sphere", "fix floor all softpack/wall z lo " + number(-kWall),
-      "fix ceiling all softpack/wall z hi " + number(kWall) + " velocity 0 0 " + number(-kCeilingSpeed)};
-  for (const std::string& c : commands) lmp->input->one(c);
-  for (std::size_t i = 0; i < n; ++i) lmp->input->one("set atom " + std::to_string(i + 1) + " mass " + number(*f.scene.particles[i].mass));
+  const Scratch scratch;
+  const std::string data = write_data(f, scratch.dir);
+  auto* lmp = start_lammps(data_commands(data, f, sim.dt()));
+  for (const std::string& c : model_commands(law_path)) lmp->input->one(c);
   const auto wall_loads = [&] {
     std::vector<Vec3> out;
     for (const char* name : {"floor", "ceiling"}) {
@@ -220,9 +262,8 @@ TEST_P(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
       const ParticleDef &a = f.scene.particles[i], &b = f.scene.particles[j];
       if ((a.x - b.x).norm() < a.r + b.r && (a.soft || b.soft) && owned(a.x) && !owned(b.x)) ++straddling;
     }
-  // The steps in one run (a run's setup computes the forces again, with full-step velocities: a
-  // second run would not be the engine's steps), the cuts between ranks moved every 10 steps to
-  // even the bodies out (fix balance): bodies change rank, with their springs.
+  // The steps, the cuts between ranks moved every 5 steps (fix balance): bodies change rank, with
+  // their springs.
   const std::vector<LAMMPS_NS::tagint> before = local_tags(lmp);
   if (ranks > 1) {  // weights that grow with x and with the step: the cuts move left at every balance
     lmp->input->one("variable weight atom 1.0+step*(x+0.05)*20.0");
@@ -238,8 +279,6 @@ TEST_P(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
   MPI_Allreduce(&straddling, &all_straddling, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   MPI_Allreduce(&left, &all_left, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   delete lmp;
-  MPI_Barrier(MPI_COMM_WORLD);
-  if (rank == 0) std::filesystem::remove_all(dir);
   if (ranks > 1) {
     EXPECT_GT(all_straddling, 0) << "no contact crosses a rank boundary";
     EXPECT_GT(all_left, 0) << "no body changed rank";
@@ -265,6 +304,40 @@ TEST_P(LammpsPair, ForcesTorquesAndMotionAreTheEnginesOnAnyNumberOfRanks) {
 
 INSTANTIATE_TEST_SUITE_P(LawFiles, LammpsPair, ::testing::Values("data/radius/report/laws.json", "data/many-body/report/laws-v6.json"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return p.index == 0 ? "Pairwise" : "ManyBodyV6"; });
+
+// A second run, and a run from a restart file, continue the first (pair/soft_history.hpp): the
+// steps split 4 + 6 as one run, as two runs, and as a run, write_restart, and a new LAMMPS that
+// reads it and runs on, end in the same state to 1e-12 (without the continuation a run's setup
+// recomputes the forces with full-step velocities: a percent apart after a few steps).
+TEST(LammpsPair, ASecondRunAndARestartContinueTheFirst) {
+  const std::string law_path = std::string(SOFTPACK_SOURCE_DIR) + "/data/radius/report/laws.json";
+  const Frozen f = frozen_configuration(soft_particle_laws(read_law_file(law_path), law_path));
+  const std::size_t n = f.scene.particles.size();
+  const double dt = Simulation(f.scene).dt();
+  const Scratch scratch;
+  const std::string data = write_data(f, scratch.dir), restart = scratch.dir + "/mid.restart";
+  const auto session = [&](const std::vector<std::string>& runs) {
+    auto* lmp = start_lammps(data_commands(data, f, dt));
+    for (const std::string& c : model_commands(law_path)) lmp->input->one(c);
+    for (const std::string& c : runs) lmp->input->one(c);
+    State s = lammps_state(lmp, n);
+    delete lmp;
+    return s;
+  };
+  const State one = session({"run 10"}), two = session({"run 4", "run 6"});
+  session({"run 4", "write_restart " + restart});
+  auto* lmp = start_lammps({"units si", "atom_modify map array", "read_restart " + restart, "newton off off"});  // pair's newton is not in the file
+  for (const std::string& c : model_commands(law_path)) lmp->input->one(c);
+  lmp->input->one("run 6");
+  const State restarted = lammps_state(lmp, n);
+  delete lmp;
+  for (const auto& [name, s] : {std::pair<const char*, const State&>{"two runs", two}, {"a restart", restarted}}) {
+    expect_close(s.x, one.x, 1e-12, std::string(name) + ": x");
+    expect_close(s.v, one.v, 1e-12, std::string(name) + ": v");
+    expect_close(s.w, one.w, 1e-12, std::string(name) + ": w");
+    expect_close(s.F, one.F, 1e-12, std::string(name) + ": F");
+  }
+}
 
 }  // namespace
 }  // namespace softpack
