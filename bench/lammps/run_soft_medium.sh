@@ -24,27 +24,37 @@ mpi=(mpirun --allow-run-as-root --oversubscribe)
 declare -A last_ratio last_eff
 last_bodies=0
 least() { sort -g | head -1; }
-engine_seconds() {  # the engine's run, its report's seconds
-  "$run_exe" --scene "$1.yaml" --threads 1 --quiet --out "$tmp/report.json"
+engine_seconds() {  # the engine's run (stopped by its watchdog: the benchmark stops), its report's seconds
+  "$run_exe" --scene "$1.yaml" --threads 1 --quiet --out "$tmp/report.json" 2> "$tmp/engine.err" \
+    || { echo "run_soft_medium.sh: the engine's run of $1 failed: $(tail -1 "$tmp/engine.err")" >&2; return 1; }
   python3 -c "import json; print(json.load(open('$tmp/report.json'))['provenance']['seconds'])"
 }
 lammps_seconds() {  # RANKS: LAMMPS's loop time
-  "${mpi[@]}" -np "$2" "$lammps_exe" -in "$1.in" -log none -screen "$tmp/screen" > /dev/null
+  "${mpi[@]}" -np "$2" "$lammps_exe" -in "$1.in" -log none -screen "$tmp/screen" > /dev/null \
+    || { echo "run_soft_medium.sh: LAMMPS on $2 ranks failed on $1: $(grep -m1 ERROR "$tmp/screen")" >&2; return 1; }
   awk '/^Loop time of/ {print $4}' "$tmp/screen"
+}
+times() {  # COMMAND ARGS...: BENCH_REPEATS times, each must succeed; the least
+  local k out
+  for k in $(seq "$repeats"); do out+="$("$@")"$'\n' || exit 1; done
+  printf "%s" "$out" | least
 }
 
 printf "%-8s %-10s %14s %14s %9s %14s %10s\n" "bodies" "laws" "engine [us]" "LAMMPS 1 [us]" "L1 / eng" "LAMMPS 2 [us]" "eff. 2"
 for n in $sizes; do
   for law in pairwise many-body; do
-    laws="$root/data/radius/report/laws.json"
-    [ "$law" = many-body ] && laws="$root/data/many-body/report/laws-v6.json"
+    # The many-body law at a quarter of the pairwise step: on this medium (every body pressed by six
+    # at Δn 0.22) its gain makes the contacts stiffer than the engine's time step assumes (the
+    # step comes from the pairwise laws), and at 0.2 the engine's watchdog stops the run.
+    laws="$root/data/radius/report/laws.json" safety=0.2
+    [ "$law" = many-body ] && laws="$root/data/many-body/report/laws-v6.json" safety=0.05
     base="$tmp/medium-$n-$law"
-    python3 "$root/bench/lammps/soft_medium.py" "$n" "$laws" 1 0 "$base"
+    python3 "$root/bench/lammps/soft_medium.py" "$n" "$laws" 1 0 "$base" "$safety"
     dt=$("$run_exe" --scene "$base.yaml" --threads 1 --quiet | python3 -c "import json, sys; print(repr(json.load(sys.stdin)['dt']))")
-    python3 "$root/bench/lammps/soft_medium.py" "$n" "$laws" "$steps" "$dt" "$base"
-    e=$(for k in $(seq "$repeats"); do engine_seconds "$base"; done | least)
-    l1=$(for k in $(seq "$repeats"); do lammps_seconds "$base" 1; done | least)
-    l2=$(for k in $(seq "$repeats"); do lammps_seconds "$base" 2; done | least)
+    python3 "$root/bench/lammps/soft_medium.py" "$n" "$laws" "$steps" "$dt" "$base" "$safety"
+    e=$(times engine_seconds "$base") || exit 1
+    l1=$(times lammps_seconds "$base" 1) || exit 1
+    l2=$(times lammps_seconds "$base" 2) || exit 1
     bodies=$((n * n * n))
     awk -v b="$bodies" -v law="$law" -v s="$steps" -v e="$e" -v l1="$l1" -v l2="$l2" 'BEGIN {
       u = 1e6 / (b * s); printf "%-8d %-10s %14.3f %14.3f %9.2f %14.3f %9.0f%%\n", b, law, e * u, l1 * u, l1 / e, l2 * u, 100 * l1 / (2 * l2) }'

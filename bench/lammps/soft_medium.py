@@ -1,25 +1,27 @@
 #!/usr/bin/env python3
 """A soft-particle medium for the softpack-lammps benchmark (issue 34): n^3 soft-particles of the law
-file's reference radius on a jittered cubic lattice, each pressing its six neighbours at Δn 0.25
+file's reference radius on a jittered cubic lattice, each pressing its six neighbours at Δn 0.22
 (above the soft-soft onset), in a box of six walls pressing the outer ones, random velocities;
 friction, rotation and damping (e = 0.5) on. Writes the same bodies twice:
 
   OUT.yaml             a softpack scene (docs/scene-format.md), run: STEPS steps of the engine's dt
   OUT.data, OUT.in     a LAMMPS data file and input (docs/lammps.md), the same dt and steps
 
-usage: soft_medium.py N LAWFILE STEPS DT OUT     (DT: the engine's step, `softpack-run` reports it;
-                                                 0 writes the scene only, to ask for it)
+usage: soft_medium.py N LAWFILE STEPS DT OUT [SAFETY]
+  DT: the engine's step, which `softpack-run` reports (0 writes the scene only, to ask for it);
+  SAFETY: the scene's integration.safety, the step over the stable limit (default 0.2)
 """
 import math
 import random
 import sys
 
-if len(sys.argv) != 6:
+if len(sys.argv) not in (6, 7):
     sys.exit(__doc__)
 n, laws, steps, dt, out = int(sys.argv[1]), sys.argv[2], int(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
+safety = float(sys.argv[6]) if len(sys.argv) == 7 else 0.2
 if n < 1 or steps < 1 or dt < 0:
     sys.exit("soft_medium.py: N >= 1, STEPS >= 1 and DT >= 0 are required")
-R, MASS, DN = 0.016, 0.02, 0.25
+R, MASS, DN = 0.016, 0.02, 0.22
 a = R * (2.0 - DN)  # lattice spacing: neighbours overlap by DN R
 rng = random.Random(3401)
 bodies = []
@@ -30,7 +32,7 @@ for i in range(n):
             v = [rng.uniform(-1, 1) * 1e-3 for _ in range(3)]
             bodies.append((x, v))
 L = n * a
-inset = 0.5 * DN * R  # the walls press the outer bodies at about Δn 0.25
+inset = 0.5 * DN * R  # the walls press the outer bodies at about Δn 0.22
 walls = [(axis, side, inset if side == "lo" else L - inset) for axis in "xyz" for side in ("lo", "hi")]
 
 with open(out + ".yaml", "w") as f:
@@ -47,7 +49,7 @@ with open(out + ".yaml", "w") as f:
         normal = [0, 0, 0]
         normal["xyz".index(axis)] = 1 if side == "lo" else -1
         f.write(f"  - {{name: {axis}{side}, point: [{point[0]!r}, {point[1]!r}, {point[2]!r}], normal: {normal}, material: grain}}\n")
-    f.write("integration: {safety: 0.2, tangential_history: synchronized}\nneighbor: {skin: 0.2, level_ratio: 2.0}\n")
+    f.write(f"integration: {{safety: {safety!r}, tangential_history: synchronized}}\nneighbor: {{skin: 0.2, level_ratio: 2.0}}\n")
     f.write(f"run: {{duration: {(steps * dt if dt > 0 else 1e-9)!r}}}\n")
 if dt == 0:
     sys.exit(0)
