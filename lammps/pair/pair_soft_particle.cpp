@@ -12,6 +12,7 @@
 #include <cstring>
 #include <exception>
 
+#include "core/fnv1a.hpp"
 #include "formats/law_file.hpp"
 #include "scene/validate.hpp"
 
@@ -69,6 +70,8 @@ void PairSoftParticle::settings(int narg, char** arg) {
     return value == yes;
   };
   setting_ = ContactSetting{};
+  grain_rule_ = GrainContactRule::wall, history_capacity_ = 0;
+  settings_text_ = fmt::format("{}", fmt::join(arg, arg + narg, " "));
   fx_ = Effects{true, false, true, true};  // the engine's defaults: friction, rotation, synchronized history
   for (int k = 1; k < narg; k += 2) {
     const std::string key = arg[k], value = arg[k + 1];
@@ -78,7 +81,10 @@ void PairSoftParticle::settings(int narg, char** arg) {
     else if (key == "friction") fx_.friction = choice(key, value, "yes", "no");
     else if (key == "rotation") fx_.rotation = choice(key, value, "yes", "no");
     else if (key == "history_update") fx_.synchronized = choice(key, value, "synchronized", "standard");
-    else if (key == "history") history_capacity_ = static_cast<int>(number(key, value, 0.0, 100000.0));
+    else if (key == "history") {
+      history_capacity_ = static_cast<int>(number(key, value, 0.0, 100000.0));
+      if (value != std::to_string(history_capacity_)) fail(fmt::format("history '{}' is not allowed; allowed: an integer from 1 to 100000", value));
+    }
     else fail(fmt::format("'{}' is not a keyword; allowed: grain_contact, restitution, tangential_ratio, friction, rotation, history_update, history", key));
   }
   if (fx_.rotation && !fx_.friction) fail("rotation yes needs friction yes (without friction no contact turns a sphere)");
@@ -135,16 +141,29 @@ void PairSoftParticle::init_style() {
   walls_.clear();
   for (int k = 0; k < modify->nfix; ++k)
     if (auto* wall = dynamic_cast<FixSoftWall*>(modify->fix[k])) walls_.push_back(wall);
-  if (!history_) {
+  // The roles against the laws as they are now (pair_style may have been given again).
+  for (int i = 1; i <= atom->ntypes; ++i)
+    for (int j = i; j <= atom->ntypes; ++j) {
+      if (!setflag[i][j]) continue;
+      const int soft = (soft_[static_cast<std::size_t>(i)] == 1) + (soft_[static_cast<std::size_t>(j)] == 1);
+      if (soft == 2 && !laws_.soft_soft) fail(fmt::format("types {} {}: soft soft, but {} has no soft-soft law", i, j, laws_.source));
+      if (soft == 1 && !laws_.soft_solid) fail(fmt::format("types {} {}: soft grain, but {} has no soft-solid law", i, j, laws_.source));
+    }
+  {  // looked up at every init: the fix may have been removed or given again
+    history_ = nullptr;
     const int at = modify->find_fix(FixSoftHistory::kId);
     if (at >= 0) {
       history_ = dynamic_cast<FixSoftHistory*>(modify->fix[at]);
+      if (history_ && history_capacity_ > 0 && history_->capacity() != history_capacity_)
+        fail(fmt::format("history {}: the fix {} keeps {} springs per atom; unfix {} first to change it", history_capacity_, FixSoftHistory::kId,
+                         history_->capacity(), FixSoftHistory::kId));
     } else {
       std::string cmd = fmt::format("{} all {}", FixSoftHistory::kId, FixSoftHistory::kStyle);
       if (history_capacity_ > 0) cmd += fmt::format(" {}", history_capacity_);
       history_ = dynamic_cast<FixSoftHistory*>(modify->add_fix(cmd));
     }
     if (!history_) fail(fmt::format("fix {} is not a {}", FixSoftHistory::kId, FixSoftHistory::kStyle));
+    history_->signature = [this] { return signature(); };
   }
   // The largest radius of each type, over all ranks: the types' cutoffs (init_one).
   std::vector<double> local(max_radius_.size(), 0.0);
@@ -187,6 +206,33 @@ ContactPartners PairSoftParticle::partners(int a, int b, bool rotation) const {
   if (rotation) p.inv_mt += inv_I_r2(a) + inv_I_r2(b);
   p.soft1 = soft_[static_cast<std::size_t>(atom->type[a])] == 1, p.soft2 = soft_[static_cast<std::size_t>(atom->type[b])] == 1;
   return p;
+}
+
+// What a run's kept forces depend on besides the atoms (pair/soft_history.hpp): the style's
+// arguments and roles, the law file's content, the walls (ID, group, position, normal, velocity),
+// the number of atoms and the step.
+std::uint64_t PairSoftParticle::signature() const {
+  Fnv1a h;
+  h.add(settings_text_);
+  h.add(laws_.source);
+  h.add(soft_.data(), soft_.size() * sizeof(int));
+  for (const FixSoftWall* w : walls_) {
+    h.add(w->id);
+    const int bit = w->group_bit();
+    h.add(&bit, sizeof bit);
+    for (const Vec3* v : {&w->point, &w->normal, &w->surface_velocity}) h.add(v->data(), 3 * sizeof(double));
+  }
+  h.add(&atom->natoms, sizeof atom->natoms);
+  h.add(&update->dt, sizeof update->dt);
+  return h.value;
+}
+
+// A wall's key among an atom's springs and caps: negative (tags are positive), from its fix ID,
+// so that it names the same wall whatever the order of the fixes.
+LAMMPS_NS::tagint PairSoftParticle::wall_key(std::size_t w) const {
+  Fnv1a h;
+  h.add(walls_[w]->id);
+  return -1 - static_cast<LAMMPS_NS::tagint>(h.value % 1000000007ull);
 }
 
 // The engine's sphere on a wall (forces/force_field.cpp wall_partners): a plane's R12 is the sphere's radius.
@@ -301,7 +347,7 @@ void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
         g.vc_frame = vu;
         if constexpr (Fx.rotation) g.vc_frame = g.vc_frame - cross((radius[i] - 0.5 * h_half) * vec(w[i]), g.n);
       }
-      const LAMMPS_NS::tagint key = -static_cast<LAMMPS_NS::tagint>(wi) - 1;  // a wall's key: -(its index + 1)
+      const LAMMPS_NS::tagint key = wall_key(wi);
       spring = dry_run_ ? history_->find(i, key) : history_->find_or_add(i, key);
       if (spring) xi = vec(spring);
     }
@@ -314,6 +360,8 @@ void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
     apply(i, F.F, -arm * (Fx.rotation ? cross(g.n, F.Ft) : V3<double>{0.0, 0.0, 0.0}));
     wall.load -= Vec3(F.F.x, F.F.y, F.F.z);
   });
+  if (!dry_run_)
+    for (FixSoftWall* wall : walls_) wall->sum_load();
   if (Fx.friction && !dry_run_) history_->prune(nlocal);
 }
 

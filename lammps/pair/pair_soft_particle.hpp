@@ -26,6 +26,7 @@
 // Its planes are fixes softpack/wall (pair/soft_wall.hpp), whose contacts it evaluates with the same
 // model, in the same passes. docs/lammps.md lists what is not here yet.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -62,10 +63,13 @@ class PairSoftParticle : public LAMMPS_NS::Pair {
   template <class F>
   void each_wall_contact(F&& fn);
   ContactPartners wall_partners(int i, bool rotation) const;
+  LAMMPS_NS::tagint wall_key(std::size_t w) const;
+  std::uint64_t signature() const;
   void allocate();
   [[noreturn]] void fail(const std::string& what) const;
 
   SoftParticleLaws laws_;
+  std::string settings_text_;  ///< the pair_style arguments, for the signature
   GrainContactRule grain_rule_ = GrainContactRule::wall;
   ContactSetting setting_{};
   Effects fx_{true, false, true, true};  ///< friction, damping, rotation, synchronized (the engine's defaults)

@@ -39,7 +39,7 @@ void PairSoftParticle::body_passes() {
   each_wall_contact([&](int i, std::size_t w, double h) {  // a wall's cap: from the centre against the wall's normal
     const auto k = SoftManyBodyModel::constants(many_params_, wall_partners(i, false)).normal;
     state_[static_cast<std::size_t>(i)] += SoftManyBodyNormal::body_term(h, k);
-    if (caps) caps_[static_cast<std::size_t>(i)].push_back({-static_cast<LAMMPS_NS::tagint>(w) - 1, -walls_[w]->normal, SoftManyBodyNormal::cap_depth_of(h, k)});
+    if (caps) caps_[static_cast<std::size_t>(i)].push_back({wall_key(w), -walls_[w]->normal, SoftManyBodyNormal::cap_depth_of(h, k)});
   });
   if (caps)  // each body's caps in its partners' order: the same sums on any number of ranks
     for (int i = 0; i < nlocal; ++i) {

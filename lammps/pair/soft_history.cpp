@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -21,7 +22,9 @@ FixSoftHistory::FixSoftHistory(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) : F
     capacity_ = static_cast<int>(k);
   }
   restart_peratom = 1;
+  restart_global = 1;
   create_attribute = 1;
+  maxexchange = kLast + 1 + 4 * capacity_;
   grow_arrays(atom->nmax);
   atom->add_callback(LAMMPS_NS::Atom::GROW);
   atom->add_callback(LAMMPS_NS::Atom::RESTART);
@@ -72,6 +75,10 @@ int FixSoftHistory::unpack_exchange(int nlocal, double* buf) {
   int m = 0;
   for (int k = 0; k < kLast; ++k) last_[nlocal][k] = buf[m++];
   count_[nlocal] = static_cast<int>(ubuf(buf[m++]).i);
+  if (count_[nlocal] < 0 || count_[nlocal] > capacity_)
+    error->one(FLERR, fmt::format("fix SOFTPACK/HISTORY: an atom brings {} springs, more than the {} kept per atom; allowed: pair_style "
+                                  "softpack/soft ... history K with K >= {} (after unfix {})",
+                                  count_[nlocal], capacity_, count_[nlocal], kId));
   for (int k = 0; k < count_[nlocal]; ++k) {
     partner_[nlocal][k] = static_cast<tagint>(ubuf(buf[m++]).i);
     for (int a = 0; a < 3; ++a) spring_[nlocal][3 * k + a] = buf[m++];
@@ -83,7 +90,7 @@ int FixSoftHistory::unpack_exchange(int nlocal, double* buf) {
 // LAMMPS's convention for a fix's per-atom restart values: the first is their count, a plain double
 // (the fixes before this one are skipped by it).
 int FixSoftHistory::pack_restart(int i, double* buf) {
-  keep_state(i, atom->x[i], atom->v[i]);  // written at a step's end: its forces belong to this state
+  if (update->whichflag != 0) keep_state(i);  // written during a run, at a step's end: its forces belong to this state
   const int m = pack_exchange(i, buf + 1) + 1;
   buf[0] = m;
   return m;
@@ -126,14 +133,29 @@ void FixSoftHistory::set_arrays(int i) {
   for (int k = 0; k < kLast; ++k) last_[i][k] = 0.0;
 }
 
-void FixSoftHistory::keep_state(int i, const double* x, const double* v) {
-  for (int a = 0; a < 3; ++a) last_[i][6 + a] = x[a], last_[i][9 + a] = v[a];
-  last_[i][12] = 1.0;
+void FixSoftHistory::keep_state(int i) {
+  for (int a = 0; a < 3; ++a) last_[i][6 + a] = atom->x[i][a], last_[i][9 + a] = atom->v[i][a], last_[i][12 + a] = atom->omega ? atom->omega[i][a] : 0.0;
+  last_[i][15] = atom->radius[i], last_[i][16] = atom->rmass[i], last_[i][17] = atom->type[i];
+  last_[i][18] = 1.0;
 }
 
 void FixSoftHistory::post_run() {
-  for (int i = 0; i < atom->nlocal; ++i) keep_state(i, atom->x[i], atom->v[i]);
+  for (int i = 0; i < atom->nlocal; ++i) keep_state(i);
+  if (signature) kept_signature_ = signature();
 }
+
+void FixSoftHistory::write_restart(FILE* fp) {
+  if (update->whichflag != 0 && signature) kept_signature_ = signature();
+  if (comm->me != 0) return;
+  double value = 0.0;
+  static_assert(sizeof(value) == sizeof(kept_signature_));
+  std::memcpy(&value, &kept_signature_, sizeof(value));
+  const int size = static_cast<int>(sizeof(double));
+  std::fwrite(&size, sizeof(int), 1, fp);
+  std::fwrite(&value, sizeof(double), 1, fp);
+}
+
+void FixSoftHistory::restart(char* buf) { std::memcpy(&kept_signature_, buf, sizeof(kept_signature_)); }
 
 void FixSoftHistory::clear_last(int nlocal) {
   for (int i = 0; i < nlocal; ++i)
@@ -141,14 +163,16 @@ void FixSoftHistory::clear_last(int nlocal) {
 }
 
 bool FixSoftHistory::continues() {
-  int same = force->newton_pair ? 0 : 1;  // with newton on a ghost's share is not kept: computed as LAMMPS does
+  // With newton on a ghost's share is not kept: computed as LAMMPS does.
+  int same = !force->newton_pair && signature && signature() == kept_signature_ ? 1 : 0;
   for (int i = 0; i < atom->nlocal && same; ++i) {
-    same = last_[i][12] == 1.0;
-    for (int a = 0; a < 3 && same; ++a) same = last_[i][6 + a] == atom->x[i][a] && last_[i][9 + a] == atom->v[i][a];
+    same = last_[i][18] == 1.0 && last_[i][15] == atom->radius[i] && last_[i][16] == atom->rmass[i] && last_[i][17] == atom->type[i];
+    for (int a = 0; a < 3 && same; ++a)
+      same = last_[i][6 + a] == atom->x[i][a] && last_[i][9 + a] == atom->v[i][a] && last_[i][12 + a] == (atom->omega ? atom->omega[i][a] : 0.0);
   }
   int all = 0;
   MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_MIN, world);
-  for (int i = 0; i < atom->nlocal; ++i) last_[i][12] = 0.0;
+  for (int i = 0; i < atom->nlocal; ++i) last_[i][18] = 0.0;
   return all == 1;
 }
 

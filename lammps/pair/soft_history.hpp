@@ -9,11 +9,17 @@
 // It also makes a second run, or a run from a restart file, the continuation of the first: LAMMPS's
 // run setup computes the forces again, with full-step velocities, where the step that ended the
 // run had half-step ones (the damping, the Coulomb limit and the springs read them). So each atom
-// keeps the pair style's force and torque on it from the last step, and, at the run's end or in
-// the restart file, the position and velocity they belong to; a setup whose atoms are all where
-// and as fast as that (every rank checked) takes those forces instead of computing them and leaves
-// the springs as they are. Anything moved or changed between runs: the forces are computed.
+// keeps the pair style's force and torque on it from the last step and, at a run's end or in a
+// restart written during a run, the state they belong to: its position, velocity, spin, radius,
+// mass and type, and the pair style's signature (its settings, roles and walls, the number of
+// atoms, the step). A setup that finds every atom and the signature the same (every rank checked)
+// takes those forces instead of computing them and leaves the springs as they are. Anything
+// changed between runs: the forces are computed, as LAMMPS does.
 #pragma once
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+
 #include "pair/lammps_headers.hpp"
 
 namespace softpack::lammps {
@@ -30,6 +36,13 @@ class FixSoftHistory : public LAMMPS_NS::Fix {
 
   int setmask() override { return LAMMPS_NS::FixConst::POST_RUN; }
   void post_run() override;
+  /// The signature its kept forces belong to, in restart files.
+  void write_restart(FILE* fp) override;
+  void restart(char* buf) override;
+  int capacity() const { return capacity_; }
+  /// The pair style's signature now (set by the pair style): its settings, roles, walls, the
+  /// number of atoms, the step.
+  std::function<std::uint64_t()> signature;
   void grow_arrays(int nmax) override;
   void copy_arrays(int i, int j, int delflag) override;
   void set_arrays(int i) override;
@@ -57,7 +70,7 @@ class FixSoftHistory : public LAMMPS_NS::Fix {
   /// In a run's setup: whether every atom on every rank is where and as fast as its kept forces'
   /// step left it (collective); then add_last() adds them to f and torque. Either way the kept
   /// state is spent: a later setup computes unless a run's end or a restart keeps it again.
-  bool continues();
+  bool continues();  // and the signature now equals the kept one
   void add_last(double** f, double** torque);
 
  private:
@@ -66,11 +79,12 @@ class FixSoftHistory : public LAMMPS_NS::Fix {
   LAMMPS_NS::tagint** partner_ = nullptr;
   double** spring_ = nullptr;  ///< 3 per partner
   char** touched_ = nullptr;
-  /// Per atom: the pair style's F and T at the last step (0-5), the x and v they belong to (6-11),
-  /// and whether those are set (12).
-  static constexpr int kLast = 13;
+  /// Per atom: the pair style's F and T at the last step (0-5), the state they belong to (x 6-8,
+  /// v 9-11, omega 12-14, radius 15, mass 16, type 17), and whether it is set (18).
+  static constexpr int kLast = 19;
   double** last_ = nullptr;
-  void keep_state(int i, const double* x, const double* v);
+  std::uint64_t kept_signature_ = 0;
+  void keep_state(int i);
 };
 
 }  // namespace softpack::lammps

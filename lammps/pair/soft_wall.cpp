@@ -52,7 +52,7 @@ void FixSoftWall::initial_integrate(int) {
 
 void FixSoftWall::write_restart(FILE* fp) {
   double list[9];
-  for (int a = 0; a < 3; ++a) list[a] = point[a], list[3 + a] = surface_velocity[a], list[6 + a] = load[a];
+  for (int a = 0; a < 3; ++a) list[a] = point[a], list[3 + a] = surface_velocity[a], list[6 + a] = load_total[a];
   if (comm->me == 0) {
     const int size = static_cast<int>(sizeof(list));
     std::fwrite(&size, sizeof(int), 1, fp);
@@ -63,13 +63,11 @@ void FixSoftWall::write_restart(FILE* fp) {
 void FixSoftWall::restart(char* buf) {
   double list[9];
   std::memcpy(list, buf, sizeof(list));
-  for (int a = 0; a < 3; ++a) point[a] = list[a], surface_velocity[a] = list[3 + a], load[a] = list[6 + a];
+  for (int a = 0; a < 3; ++a) point[a] = list[a], surface_velocity[a] = list[3 + a], load_total[a] = list[6 + a];
 }
 
-double FixSoftWall::compute_vector(int k) {
-  double local = load[k], all = 0.0;
-  MPI_Allreduce(&local, &all, 1, MPI_DOUBLE, MPI_SUM, world);
-  return all;
-}
+void FixSoftWall::sum_load() { MPI_Allreduce(load.data(), load_total.data(), 3, MPI_DOUBLE, MPI_SUM, world); }
+
+double FixSoftWall::compute_vector(int k) { return load_total[k]; }
 
 }  // namespace softpack::lammps

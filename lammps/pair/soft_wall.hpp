@@ -35,7 +35,9 @@ class FixSoftWall : public LAMMPS_NS::Fix {
   /// The velocity its contacts see: that of its last step's displacement (0 before its first step,
   /// as the engine's driven walls: a run's first forces are those of walls at rest).
   Vec3 surface_velocity = Vec3::Zero();
-  Vec3 load = Vec3::Zero();  ///< the force on the wall from this rank's atoms, this step [N]
+  Vec3 load = Vec3::Zero();        ///< the force on the wall from this rank's atoms, this step [N]
+  Vec3 load_total = Vec3::Zero();  ///< the same from all ranks (sum_load, collective), its output
+  void sum_load();
   /// h = r - (x - point)·normal (> 0 in contact).
   double overlap(const double* x, double r) const { return r - ((x[0] - point.x()) * normal.x() + (x[1] - point.y()) * normal.y() + (x[2] - point.z()) * normal.z()); }
   int group_bit() const { return groupbit; }

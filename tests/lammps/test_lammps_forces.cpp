@@ -316,26 +316,33 @@ TEST(LammpsPair, ASecondRunAndARestartContinueTheFirst) {
   const double dt = Simulation(f.scene).dt();
   const Scratch scratch;
   const std::string data = write_data(f, scratch.dir), restart = scratch.dir + "/mid.restart";
+  const auto finish = [&](LAMMPS_NS::LAMMPS* lmp) {  // the state, the walls' loads as T's last rows
+    State s = lammps_state(lmp, n);
+    for (const char* name : {"floor", "ceiling"}) {
+      LAMMPS_NS::Fix* fix = lmp->modify->fix[lmp->modify->find_fix(name)];
+      s.T.emplace_back(fix->compute_vector(0), fix->compute_vector(1), fix->compute_vector(2));
+    }
+    delete lmp;
+    return s;
+  };
   const auto session = [&](const std::vector<std::string>& runs) {
     auto* lmp = start_lammps(data_commands(data, f, dt));
     for (const std::string& c : model_commands(law_path)) lmp->input->one(c);
     for (const std::string& c : runs) lmp->input->one(c);
-    State s = lammps_state(lmp, n);
-    delete lmp;
-    return s;
+    return finish(lmp);
   };
   const State one = session({"run 10"}), two = session({"run 4", "run 6"});
   session({"run 4", "write_restart " + restart});
   auto* lmp = start_lammps({"units si", "atom_modify map array", "read_restart " + restart, "newton off off"});  // pair's newton is not in the file
   for (const std::string& c : model_commands(law_path)) lmp->input->one(c);
   lmp->input->one("run 6");
-  const State restarted = lammps_state(lmp, n);
-  delete lmp;
+  const State restarted = finish(lmp);
   for (const auto& [name, s] : {std::pair<const char*, const State&>{"two runs", two}, {"a restart", restarted}}) {
     expect_close(s.x, one.x, 1e-12, std::string(name) + ": x");
     expect_close(s.v, one.v, 1e-12, std::string(name) + ": v");
     expect_close(s.w, one.w, 1e-12, std::string(name) + ": w");
     expect_close(s.F, one.F, 1e-12, std::string(name) + ": F");
+    expect_close(s.T, one.T, 1e-12, std::string(name) + ": T and the walls' loads");
   }
 }
 
