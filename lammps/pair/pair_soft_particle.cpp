@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <fstream>
+#include <iterator>
 
 #include "core/fnv1a.hpp"
 #include "formats/law_file.hpp"
@@ -72,6 +74,11 @@ void PairSoftParticle::settings(int narg, char** arg) {
   setting_ = ContactSetting{};
   grain_rule_ = GrainContactRule::wall, history_capacity_ = 0;
   settings_text_ = fmt::format("{}", fmt::join(arg, arg + narg, " "));
+  {  // the law file's bytes, for the signature: the same path rewritten is another law
+    std::ifstream in(arg[0], std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    settings_text_ += "\n" + bytes;
+  }
   fx_ = Effects{true, false, true, true};  // the engine's defaults: friction, rotation, synchronized history
   for (int k = 1; k < narg; k += 2) {
     const std::string key = arg[k], value = arg[k + 1];
@@ -214,7 +221,6 @@ ContactPartners PairSoftParticle::partners(int a, int b, bool rotation) const {
 std::uint64_t PairSoftParticle::signature() const {
   Fnv1a h;
   h.add(settings_text_);
-  h.add(laws_.source);
   h.add(soft_.data(), soft_.size() * sizeof(int));
   for (const FixSoftWall* w : walls_) {
     h.add(w->id);

@@ -69,7 +69,7 @@ class PairSoftParticle : public LAMMPS_NS::Pair {
   [[noreturn]] void fail(const std::string& what) const;
 
   SoftParticleLaws laws_;
-  std::string settings_text_;  ///< the pair_style arguments, for the signature
+  std::string settings_text_;  ///< the pair_style arguments and the law file's bytes, for the signature
   GrainContactRule grain_rule_ = GrainContactRule::wall;
   ContactSetting setting_{};
   Effects fx_{true, false, true, true};  ///< friction, damping, rotation, synchronized (the engine's defaults)
