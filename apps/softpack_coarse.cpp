@@ -4,13 +4,15 @@
 //       builds the medium of seed S: grains, sites and their packings (coarse/medium_file.hpp);
 //   softpack-coarse run --config ... --model resolved|soft --medium medium-S.h5 --out F.h5
 //       runs its oedometric compression with that model, writes the curve (coarse/result_file.hpp);
-//   softpack-coarse stamp --config ... --release V: the stages' stamps, for make (coarse/settings.hpp).
+//   softpack-coarse stamp --config ... --release V: the stages' stamps, for make (coarse/settings.hpp);
+//   softpack-coarse export --lammps, lammps-curve: the soft model in LAMMPS (apps/coarse_lammps_cli.hpp).
 // The comparison of the two models is a study's report (`make coarse-grain`, softpack-study
 // report: report kind `coarse`).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "apps/coarse_lammps_cli.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "coarse/compression.hpp"
@@ -237,8 +239,11 @@ int main(int argc, char** argv) {
   CLI::App* stamp_cmd = app.add_subcommand("stamp", "print the stages' configuration stamps, medium=, resolved=, soft= (for make)");
   stamp_cmd->add_option("--config", stamp_config, "settings, e.g. experiments/coarse-grain.yaml")->required();
   stamp_cmd->add_option("--release", release, "the release the stamps are of (make passes CMakeLists.txt's)")->required();
+  LammpsCommands lammps;
+  lammps.add(app);
   if (const auto code = parse_command_line(app, argc, argv, program)) return *code;
   try {
+    if (lammps.run(program)) return 0;
     if (*seeds_cmd) {
       if (seeds_probe.empty() == seeds_config.empty()) throw InputError("seeds: give --config or --probe");
       if (!seeds_probe.empty()) {

@@ -38,9 +38,19 @@ FixSoftWall::FixSoftWall(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) : Fix(lmp
     if (std::strcmp(arg[6], "velocity") != 0) error->all(FLERR, fmt::format("fix {}: '{}' is not a keyword; allowed: velocity", kStyle, arg[6]));
     for (int k = 0; k < 3; ++k) velocity[k] = number_of(error, arg[7 + k], "velocity");
   }
-  vector_flag = 1, size_vector = 3, global_freq = 1, extvector = 1;
+  // f_ID[1..3] the load (extensive), f_ID[4..6] the position (intensive)
+  vector_flag = 1, size_vector = 6, global_freq = 1, extvector = -1;
+  extlist = new int[6]{1, 1, 1, 0, 0, 0};
   restart_global = 1;
   time_integrate = 0;
+}
+
+// fix_modify ID velocity VX VY VZ: the wall moves at this velocity from the next step on.
+int FixSoftWall::modify_param(int narg, char** arg) {
+  if (std::strcmp(arg[0], "velocity") != 0) return 0;  // LAMMPS's "Illegal fix_modify command"
+  if (narg < 4) error->all(FLERR, fmt::format("fix_modify {}: expected velocity VX VY VZ", id));
+  for (int k = 0; k < 3; ++k) velocity[k] = number_of(error, arg[1 + k], "velocity");
+  return 4;
 }
 
 int FixSoftWall::setmask() { return LAMMPS_NS::FixConst::INITIAL_INTEGRATE; }
@@ -68,6 +78,6 @@ void FixSoftWall::restart(char* buf) {
 
 void FixSoftWall::sum_load() { MPI_Allreduce(load.data(), load_total.data(), 3, MPI_DOUBLE, MPI_SUM, world); }
 
-double FixSoftWall::compute_vector(int k) { return load_total[k]; }
+double FixSoftWall::compute_vector(int k) { return k < 3 ? load_total[k] : point[k - 3]; }
 
 }  // namespace softpack::lammps

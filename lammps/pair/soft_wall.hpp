@@ -2,9 +2,11 @@
 // (walls/plane_wall.hpp, forces/wall_contacts.hpp) in LAMMPS. The pair style evaluates its
 // contacts with the same model as its pairs (a soft-particle on a plane: the soft-solid law at the
 // particle's radius), counts them in the many-body law's states and tensors, and sums the wall's
-// load, which the fix outputs (f_ID[1..3], the force on the wall [N], summed over ranks):
+// load, which the fix outputs (f_ID[1..3], the force on the wall [N], summed over ranks; f_ID[4..6]
+// its position [m], which a region of LAMMPS's own walls can follow: docs/lammps.md):
 //
 //   fix ID group softpack/wall AXIS SIDE POSITION [velocity VX VY VZ]
+//   fix_modify ID velocity VX VY VZ      (between runs: its velocity from the next step on)
 //
 // AXIS x, y or z; SIDE lo (the atoms above POSITION, the normal +AXIS) or hi (below, -AXIS); the
 // plane moves at the constant velocity given (default at rest), its position advanced at each
@@ -20,11 +22,13 @@ class FixSoftWall : public LAMMPS_NS::Fix {
  public:
   static constexpr const char* kStyle = "softpack/wall";
   FixSoftWall(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
+  ~FixSoftWall() override { delete[] extlist; }  // LAMMPS's Fix leaves it to the fix that made it
   static LAMMPS_NS::Fix* create(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) { return new FixSoftWall(lmp, narg, arg); }
 
   int setmask() override;
   void initial_integrate(int vflag) override;
   double compute_vector(int k) override;
+  int modify_param(int narg, char** arg) override;
   /// Its position, the velocity its contacts see and its load, in restart files (a fix of the same
   /// ID and style given after read_restart takes them).
   void write_restart(FILE* fp) override;

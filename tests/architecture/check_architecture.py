@@ -29,7 +29,7 @@ ENGINE_FACE = {
     "config/yaml_node.hpp", "core/fnv1a.hpp", "core/parallel.hpp",
     "scene/scene_def.hpp", "scene/scene_yaml.hpp", "scene/validate.hpp",
     "scene/limits.hpp",
-    "contact/soft_particle_law.hpp", "walls/spherical_shell.hpp",
+    "contact/soft_particle_law.hpp", "contact/viscous_damping.hpp", "walls/spherical_shell.hpp",
     "state/simulation_state.hpp",
     "forces/contact_models.hpp", "forces/contact_walk.hpp",
     "integrate/time_step.hpp",
