@@ -1,5 +1,9 @@
 #include "coarse/result_file.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/types.hpp"
@@ -59,12 +63,19 @@ void counts(F&& f) {
 void write_coarse_result(const std::string& path, const CoarseResult& r) {
   h5::AtomicH5 out(path);
   h5::File& f = out.file();
+  // A run that did not record a column (LAMMPS's: Z, the bodies in contact and the elastic energy,
+  // coarse/lammps_export.hpp) leaves it out; the reader gives NaN (or 0 counts) for it.
+  const auto unrecorded = [&](auto member) {
+    return !r.rows.empty() && std::all_of(r.rows.begin(), r.rows.end(), [&](const CurveRow& row) { return std::isnan(row.*member); });
+  };
   columns([&](const char* name, auto member) {
+    if ((member == &CurveRow::Z || member == &CurveRow::elastic) && unrecorded(member)) return;
     std::vector<double> v;
     for (const CurveRow& row : r.rows) v.push_back(row.*member);
     put(f, std::string("curve/") + name, v);
   });
   counts([&](const char* name, auto member) {
+    if (std::string_view(name) != "phase" && unrecorded(&CurveRow::Z)) return;
     std::vector<std::int64_t> v;
     for (const CurveRow& row : r.rows) v.push_back(static_cast<std::int64_t>(row.*member));
     put(f, std::string("curve/") + name, v);
@@ -73,7 +84,7 @@ void write_coarse_result(const std::string& path, const CoarseResult& r) {
   put(f, "medium/grains", r.grains), put(f, "medium/sites", r.sites), put(f, "medium/spheres", r.spheres), put(f, "medium/bodies", r.bodies);
   put(f, "medium/grains_volume", r.grains_volume), put(f, "medium/packings_volume", r.packings_volume);
   put(f, "medium/target_volume", r.target_volume), put(f, "medium/packing_seeds", r.packing_seeds);
-  put(f, "soft/beyond_range", r.beyond_range), put(f, "soft/max_dn", r.max_dn);
+  if (r.beyond_range >= 0) put(f, "soft/beyond_range", r.beyond_range), put(f, "soft/max_dn", r.max_dn);  // < 0: not counted (LAMMPS)
   put(f, "provenance/model", r.model), put(f, "provenance/seed", static_cast<std::int64_t>(r.seed));
   put(f, "provenance/settings", r.settings), put(f, "provenance/laws", r.laws), put(f, "provenance/code_version", r.code_version);
   put(f, "provenance/steps", r.steps), put(f, "provenance/dt", r.dt);
@@ -93,7 +104,8 @@ CoarseResult read_coarse_result(const std::string& path) {
     // A run from before the platen shear was added (the committed reduced-radius runs) has neither the
     // wall's displacement nor its shear stress: no shear (0), tau not recorded (NaN).
     const std::string key = std::string("curve/") + name;
-    if ((key == "curve/shear" || key == "curve/tau") && !f.exists(key)) {
+    // A LAMMPS run (coarse/lammps_export.hpp) records neither Z nor the elastic energy: NaN.
+    if ((key == "curve/shear" || key == "curve/tau" || key == "curve/Z" || key == "curve/elastic") && !f.exists(key)) {
       for (CurveRow& row : r.rows) row.*member = key == "curve/shear" ? 0.0 : kNaN;
       return;
     }
@@ -104,6 +116,7 @@ CoarseResult read_coarse_result(const std::string& path) {
     for (std::size_t k = 0; k < v.size(); ++k) r.rows[k].*member = v[k];
   });
   counts([&](const char* name, auto member) {
+    if (std::string_view(name) != "phase" && !f.exists(std::string("curve/") + name)) return;  // not recorded (Z NaN): 0
     std::vector<std::int64_t> v;
     get(f, std::string("curve/") + name, v);
     formats::same_length(f, std::string("curve/") + name, v.size(), "curve/strain", strain.size());
@@ -113,7 +126,8 @@ CoarseResult read_coarse_result(const std::string& path) {
   get(f, "medium/grains", r.grains), get(f, "medium/sites", r.sites), get(f, "medium/spheres", r.spheres), get(f, "medium/bodies", r.bodies);
   get(f, "medium/grains_volume", r.grains_volume), get(f, "medium/packings_volume", r.packings_volume);
   get(f, "medium/target_volume", r.target_volume), get(f, "medium/packing_seeds", r.packing_seeds);
-  get(f, "soft/beyond_range", r.beyond_range), get(f, "soft/max_dn", r.max_dn);
+  if (f.exists("soft/beyond_range")) get(f, "soft/beyond_range", r.beyond_range), get(f, "soft/max_dn", r.max_dn);
+  else r.beyond_range = -1, r.max_dn = kNaN;  // not counted (a LAMMPS run)
   std::int64_t seed = 0;
   get(f, "provenance/model", r.model), get(f, "provenance/seed", seed);
   r.seed = static_cast<std::uint64_t>(seed);

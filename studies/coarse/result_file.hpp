@@ -8,7 +8,10 @@
 //   /soft/{beyond_range, max_dn}                                  (soft model)
 //   /provenance/{model, seed, settings, laws, code_version, steps, dt, seconds, cpu_seconds, threads}
 //
-// `settings` is the coarse_grain section as read, `laws` the law file's path.
+// `settings` is the coarse_grain section as read, `laws` the law file's path. A run of LAMMPS
+// (coarse/lammps_export.hpp) has no Z, grain_grain, grain_soft, soft_soft nor elastic: read as NaN
+// (Z, elastic) and 0; nor /soft (the contacts beyond the laws' range are not counted there):
+// beyond_range -1, max_dn NaN.
 #pragma once
 #include <cstdint>
 #include <string>
