@@ -2,7 +2,8 @@
 # softpack-lammps (issue 34, docs/lammps.md) answers --help, runs the example of docs/lammps.md with
 # the forces of the law file's Eq. 7 (soft-soft at Δn 0.3, soft-solid at 0.15, a wall's load at 0.2,
 # to 1e-12), on one
-# rank and on two, and stops with LAMMPS's ERROR line naming the bad value for a bad role.
+# rank and on two, and stops with LAMMPS's ERROR line naming the bad value for a bad role or quench
+# switch; softpack-coarse export --lammps refuses settings LAMMPS cannot carry.
 source "$(dirname "$0")/common.sh"
 exe=$1
 root=$2
@@ -36,3 +37,17 @@ code=$?
 set -e
 [ "$code" -ne 0 ] || fail "a bad role ran (exit 0)"
 grep -qF "ERROR: softpack/soft: role 'graim' is not allowed; allowed: soft, grain" "$tmp/out" || fail "bad role: $(grep ERROR "$tmp/out")"
+
+# fix softpack/quench takes yes or no
+printf 'units si\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\nfix q all softpack/quench maybe\n' > "$tmp/quench.in"
+set +e
+"$exe" -in "$tmp/quench.in" -log none > "$tmp/out" 2>&1
+code=$?
+set -e
+[ "$code" -ne 0 ] || fail "a bad quench switch ran (exit 0)"
+grep -qF "ERROR: fix softpack/quench: 'maybe' is not allowed; allowed: yes, no" "$tmp/out" || fail "bad quench: $(grep ERROR "$tmp/out")"
+
+# softpack-coarse export --lammps refuses what LAMMPS's input cannot carry, naming the key
+coarse=$(dirname "$exe")/softpack-coarse
+expect_error "coarse_grain.soft_particle.rotation: locked is not exported" "$tmp/locked" \
+  "$coarse" export --lammps --config data/many-body-v6/profiles/spin-locked.yaml --medium data/many-body-v6/reference/media/seed-327.h5 --out "$tmp/locked"
