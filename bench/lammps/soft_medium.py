@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""A soft-particle medium for the softpack-lammps benchmark (issue 34): n^3 soft-particles of the law
-file's reference radius on a jittered cubic lattice, each pressing its six neighbours at Δn 0.22
+"""A soft-particle medium for the softpack-lammps benchmark (issue 34): n^3 (or nx ny nz)
+soft-particles of the law file's reference radius on a jittered cubic lattice, each pressing its six neighbours at Δn 0.22
 (above the soft-soft onset), in a box of six walls pressing the outer ones, random velocities;
 friction, rotation and damping (e = 0.5) on. Writes the same bodies twice:
 
@@ -8,6 +8,7 @@ friction, rotation and damping (e = 0.5) on. Writes the same bodies twice:
   OUT.data, OUT.in     a LAMMPS data file and input (docs/lammps.md), the same dt and steps
 
 usage: soft_medium.py N LAWFILE STEPS DT OUT [SAFETY]
+  N: n (an n x n x n lattice) or nx,ny,nz;
   DT: the engine's step, which `softpack-run` reports (0 writes the scene only, to ask for it);
   SAFETY: the scene's integration.safety, the step over the stable limit (default 0.2)
 """
@@ -17,23 +18,25 @@ import sys
 
 if len(sys.argv) not in (6, 7):
     sys.exit(__doc__)
-n, laws, steps, dt, out = int(sys.argv[1]), sys.argv[2], int(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
+shape = [int(v) for v in sys.argv[1].split(",")]
+shape = shape * 3 if len(shape) == 1 else shape
+laws, steps, dt, out = sys.argv[2], int(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
 safety = float(sys.argv[6]) if len(sys.argv) == 7 else 0.2
-if n < 1 or steps < 1 or dt < 0:
-    sys.exit("soft_medium.py: N >= 1, STEPS >= 1 and DT >= 0 are required")
+if len(shape) != 3 or min(shape) < 1 or steps < 1 or dt < 0:
+    sys.exit("soft_medium.py: N (n or nx,ny,nz) >= 1, STEPS >= 1 and DT >= 0 are required")
 R, MASS, DN = 0.016, 0.02, 0.22
 a = R * (2.0 - DN)  # lattice spacing: neighbours overlap by DN R
 rng = random.Random(3401)
 bodies = []
-for i in range(n):
-    for j in range(n):
-        for k in range(n):
+for i in range(shape[0]):
+    for j in range(shape[1]):
+        for k in range(shape[2]):
             x = [(c + 0.5) * a + rng.uniform(-1, 1) * 0.002 for c in (i, j, k)]
             v = [rng.uniform(-1, 1) * 1e-3 for _ in range(3)]
             bodies.append((x, v))
-L = n * a
+L = [m * a for m in shape]
 inset = 0.5 * DN * R  # the walls press the outer bodies at about Δn 0.22
-walls = [(axis, side, inset if side == "lo" else L - inset) for axis in "xyz" for side in ("lo", "hi")]
+walls = [(axis, side, inset if side == "lo" else L["xyz".index(axis)] - inset) for axis in "xyz" for side in ("lo", "hi")]
 
 with open(out + ".yaml", "w") as f:
     f.write("materials:\n  grain: {E: 5.0e5, nu: 0.3, mu: 0.3, density: 2500.0}\n")
@@ -54,11 +57,10 @@ with open(out + ".yaml", "w") as f:
 if dt == 0:
     sys.exit(0)
 
-lo, hi = -0.05, L + 0.05
 with open(out + ".data", "w") as f:
     f.write(f"softpack soft medium, {len(bodies)} soft-particles\n\n{len(bodies)} atoms\n1 atom types\n")
-    for axis in "xyz":
-        f.write(f"{lo!r} {hi!r} {axis}lo {axis}hi\n")
+    for axis, length in zip("xyz", L):
+        f.write(f"{-0.05!r} {length + 0.05!r} {axis}lo {axis}hi\n")
     f.write("\nAtoms # sphere\n\n")
     density = MASS / (4.0 / 3.0 * math.pi * R ** 3)
     for i, (x, _) in enumerate(bodies):
