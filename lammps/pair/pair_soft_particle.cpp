@@ -275,8 +275,20 @@ void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
     }
   };
   if (!dry_run_) history_->clear_last(nlocal);
+  // A contact's constants (radius scaling: two pow) are those of the last contact whose partners
+  // were the same (the engine keeps them per contact; a medium of few radii and masses reuses them).
+  ContactPartners last_partners{};
+  typename Model::template Constants<double> last_k{};
+  bool have_last = false;
+  const auto constants = [&](const ContactPartners& p) {
+    const bool same = have_last && p.kind == last_partners.kind && p.R1 == last_partners.R1 && p.R2 == last_partners.R2 && p.R12 == last_partners.R12 &&
+                      p.m12 == last_partners.m12 && p.inv_mt == last_partners.inv_mt && p.materials == last_partners.materials &&
+                      p.soft1 == last_partners.soft1 && p.soft2 == last_partners.soft2;
+    if (!same) last_k = Model::constants(params, p), last_partners = p, have_last = true;
+    return last_k;
+  };
   each_contact([&](int i, int j, int a, int b, const V3<double>& d, double r_sum) {
-    const typename Model::template Constants<double> k = Model::constants(params, partners(a, b, Fx.rotation));
+    const typename Model::template Constants<double> k = constants(partners(a, b, Fx.rotation));
     ContactGeometry<double> g{};  // the engine's (forces/pair_contacts.hpp gather)
     const V3<double> vab = vec(v[a]) - vec(v[b]);
     const double dist = std::sqrt(dot(d, d));
@@ -332,7 +344,7 @@ void PairSoftParticle::compute_pairs(const typename Model::Params& params) {
     for (FixSoftWall* wall : walls_) wall->load = Vec3::Zero();
   each_wall_contact([&](int i, std::size_t wi, double h) {  // the engine's (forces/wall_contacts.hpp gather, add)
     FixSoftWall& wall = *walls_[wi];
-    const typename Model::template Constants<double> k = Model::constants(params, wall_partners(i, Fx.rotation));
+    const typename Model::template Constants<double> k = constants(wall_partners(i, Fx.rotation));
     const V3<double> n{wall.normal.x(), wall.normal.y(), wall.normal.z()}, u{wall.surface_velocity.x(), wall.surface_velocity.y(), wall.surface_velocity.z()};
     ContactGeometry<double> g{};
     g.n = n, g.h = h;

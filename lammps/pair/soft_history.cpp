@@ -186,6 +186,11 @@ void FixSoftHistory::add_last(double** f, double** torque) {
 
 void FixSoftHistory::prune(int nlocal) {
   for (int i = 0; i < nlocal; ++i) {
+    const int n = count_[i];
+    if (std::memchr(touched_[i], 0, static_cast<std::size_t>(n)) == nullptr) {  // every spring touched: none goes
+      std::memset(touched_[i], 0, static_cast<std::size_t>(n));
+      continue;
+    }
     int kept = 0;
     for (int k = 0; k < count_[i]; ++k) {
       if (!touched_[i][k]) continue;
