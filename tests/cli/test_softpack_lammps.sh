@@ -30,22 +30,20 @@ PY
 check "$("$exe" -in examples/lammps/two-soft-particles.in -log none | grep '^soft-soft Fx')"
 check "$(mpirun --allow-run-as-root --oversubscribe -np 2 "$exe" -in examples/lammps/two-soft-particles.in -log none | grep '^soft-soft Fx')"
 
+# expect_lammps_error INPUT MESSAGE: LAMMPS stops (exit code not 0) with the ERROR line MESSAGE
+expect_lammps_error() {
+  set +e
+  "$exe" -in "$1" -log none > "$tmp/out" 2>&1
+  local code=$?
+  set -e
+  [ "$code" -ne 0 ] || fail "$1 ran (exit 0)"
+  grep -qF "$2" "$tmp/out" || fail "$1: expected '$2', got: $(grep ERROR "$tmp/out")"
+}
 sed 's/softpack\/soft soft grain/softpack\/soft soft graim/' examples/lammps/two-soft-particles.in > "$tmp/bad.in"
-set +e
-"$exe" -in "$tmp/bad.in" -log none > "$tmp/out" 2>&1
-code=$?
-set -e
-[ "$code" -ne 0 ] || fail "a bad role ran (exit 0)"
-grep -qF "ERROR: softpack/soft: role 'graim' is not allowed; allowed: soft, grain" "$tmp/out" || fail "bad role: $(grep ERROR "$tmp/out")"
-
+expect_lammps_error "$tmp/bad.in" "ERROR: softpack/soft: role 'graim' is not allowed; allowed: soft, grain"
 # fix softpack/quench takes yes or no
 printf 'units si\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\nfix q all softpack/quench maybe\n' > "$tmp/quench.in"
-set +e
-"$exe" -in "$tmp/quench.in" -log none > "$tmp/out" 2>&1
-code=$?
-set -e
-[ "$code" -ne 0 ] || fail "a bad quench switch ran (exit 0)"
-grep -qF "ERROR: fix softpack/quench: 'maybe' is not allowed; allowed: yes, no" "$tmp/out" || fail "bad quench: $(grep ERROR "$tmp/out")"
+expect_lammps_error "$tmp/quench.in" "ERROR: fix softpack/quench: 'maybe' is not allowed; allowed: yes, no"
 
 # softpack-coarse export --lammps refuses what LAMMPS's input cannot carry, naming the key
 coarse=$(dirname "$exe")/softpack-coarse
