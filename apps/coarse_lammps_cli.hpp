@@ -64,7 +64,7 @@ struct LammpsCommands {
         throw InputError(fmt::format("{}: made with other settings than {} (rerun softpack-coarse medium)", medium, config));
       const LammpsRun r = read_lammps_run(dir, s, mf);
       CoarseResult result = coarse_result(r.run, mf.medium, CoarseModel::soft, mf.seed, s);
-      result.threads = r.ranks;
+      result.threads = r.ranks, result.engine = "lammps";
       result.code_version += fmt::format(" (softpack-lammps, {} MPI ranks)", r.ranks);
       result.beyond_range = -1, result.max_dn = std::nan("");  // not counted by LAMMPS's run
       write_coarse_result(out, result);

@@ -13,6 +13,12 @@ LAMMPS_RUNS := $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) lammps-check --p
 LAMMPS_STUDY_MEDIA := $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) lammps-check --plan $(LAMMPS_PLAN) --dir $(DATA)/lammps --study)
 LAMMPS_STUDY := $(word 1,$(LAMMPS_STUDY_MEDIA))
 LAMMPS_MEDIA := $(word 2,$(LAMMPS_STUDY_MEDIA))
+LAMMPS_SETTINGS := $(sort $(foreach r,$(LAMMPS_RUNS),$(word 1,$(subst /, ,$(r)))))
+# A setting's runs rerun when its soft model's stamp changes (softpack-coarse stamp: its settings, the
+# law file's content, the release), not because a program was relinked.
+$(foreach st,$(LAMMPS_SETTINGS),$(eval LAMMPS_STAMP_$(st) := $(patsubst soft=%,%,$(filter soft=%,$(shell \
+  $(COARSE_TOOL) stamp --config $(LAMMPS_STUDY)/profiles/$(st).yaml --release $(VERSION))))))
+$(foreach st,$(LAMMPS_SETTINGS),$(eval $(call stamp_rule,$(DATA)/lammps/$(st)/stamps/soft.hash,$(LAMMPS_STAMP_$(st)))))
 endif
 
 .PHONY: lammps-check
@@ -22,7 +28,7 @@ lammps-check: $(LAMMPS_RUNS:%=$(DATA)/lammps/%.h5) | $(TOOLS)  ## the coarse-gra
 
 # run SETTING/npR/seed-S: $(1) setting, $(2) ranks, $(3) seed
 define lammps_run
-$(DATA)/lammps/$(1)/np$(2)/seed-$(3).h5: $(LAMMPS_MEDIA)/seed-$(3).h5 $(LAMMPS_STUDY)/profiles/$(1).yaml | $(TOOLS)
+$(DATA)/lammps/$(1)/np$(2)/seed-$(3).h5: $(LAMMPS_MEDIA)/seed-$(3).h5 $(DATA)/lammps/$(1)/stamps/soft.hash | $(TOOLS)
 	@test -x $(LAMMPS_TOOL) || { echo "lammps-check: $(LAMMPS_TOOL) is not built (make setup installs liblammps-dev; then make build)"; exit 1; }
 	@rm -rf $$(basename $$@) && mkdir -p $$(basename $$@)
 	@$(COARSE_TOOL) export --lammps --config $(LAMMPS_STUDY)/profiles/$(1).yaml --medium $$< --out $$(basename $$@) 2> $$(basename $$@).log

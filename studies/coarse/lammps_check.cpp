@@ -31,12 +31,16 @@ double excess(const MeanError& a, const MeanError& b, double bound) {
   return limit > 0.0 ? diff / limit : (diff > 0.0 ? INFINITY : 0.0);
 }
 
-std::vector<CoarseResult> runs_of(const std::string& dir, const std::vector<std::uint64_t>& seeds, const std::string& how) {
+// The runs of `engine` (softpack or lammps) in `dir`, one per seed; `how`: the make goal that runs them.
+std::vector<CoarseResult> runs_of(const std::string& dir, const std::vector<std::uint64_t>& seeds, const std::string& engine, const std::string& how) {
   std::vector<CoarseResult> out;
   for (const std::uint64_t seed : seeds) {
     const std::string path = fmt::format("{}/seed-{}.h5", dir, seed);
     if (!std::filesystem::exists(path)) throw InputError(fmt::format("{}: no such run ({})", path, how));
     out.push_back(read_coarse_result(path));
+    if (out.back().engine != engine || out.back().model != "soft")
+      throw InputError(fmt::format("{}: a run of the {} model by {}, where the check reads the soft model's by {}", path, out.back().model,
+                                   out.back().engine, engine));
   }
   return out;
 }
@@ -75,7 +79,7 @@ LammpsCheckPlan read_lammps_check_plan(const std::string& path) {
   return p;
 }
 
-LammpsVerdict judge_lammps(const CoarseComparison& c, const LammpsCheckPlan& plan, const std::string& setting, int ranks) {
+LammpsVerdict judge_lammps(const CoarseComparison& c, const LammpsCheckPlan& plan, const std::string& setting, int ranks, double end_strain) {
   LammpsVerdict v;
   v.setting = setting, v.ranks = ranks;
   for (const CoarsePoint& p : c.points) {
@@ -83,7 +87,7 @@ LammpsVerdict judge_lammps(const CoarseComparison& c, const LammpsCheckPlan& pla
       v.tau[0] = p.tau[0], v.tau[1] = p.tau[1];  // the last point of the shear
       continue;
     }
-    if (p.phase == 1 && std::abs(p.strain - plan.strain_hi) < 1e-9)
+    if (p.phase == 1 && std::abs(p.strain - end_strain) < 1e-9)
       v.end_sigma[0] = p.sigma[0], v.end_sigma[1] = p.sigma[1], v.end_K0[0] = p.K0[0], v.end_K0[1] = p.K0[1], v.end_ratio = p.sigma[1].mean / p.sigma[0].mean,
       v.end_difference = p.sigma_difference;
     if (in_range(p.strain, plan.strain_lo, plan.strain_hi)) {
@@ -120,11 +124,11 @@ std::vector<LammpsVerdict> write_lammps_check(const LammpsCheckPlan& plan, const
     const auto compare = [&](const std::vector<CoarseResult>& a, const std::vector<CoarseResult>& b) {
       return compare_coarse(a, b, s.strain, s.unload_strain, s.record_strain, s.shear, s.record_shear);
     };
-    const std::vector<CoarseResult> engine = runs_of(fmt::format("{}/{}/soft", plan.study, setting), plan.seeds, "make many-body-v6");
+    const std::vector<CoarseResult> engine = runs_of(fmt::format("{}/{}/soft", plan.study, setting), plan.seeds, "softpack", "the study's make goal");
     std::vector<std::vector<CoarseResult>> lammps;
     for (const int ranks : plan.ranks) {
-      lammps.push_back(runs_of(fmt::format("{}/{}/np{}", out_dir, setting, ranks), plan.seeds, "make lammps-check"));
-      LammpsVerdict v = judge_lammps(compare(engine, lammps.back()), plan, setting, ranks);
+      lammps.push_back(runs_of(fmt::format("{}/{}/np{}", out_dir, setting, ranks), plan.seeds, "lammps", "make lammps-check"));
+      LammpsVerdict v = judge_lammps(compare(engine, lammps.back()), plan, setting, ranks, s.strain);
       v.seconds[0] = seconds_of(engine), v.seconds[1] = seconds_of(lammps.back());
       out.push_back(v);
       md += fmt::format("| {} | {} | {} of {} | {:.3f}, {:.2f}, {:.3f} | {} of {} | {:.3f}, {:.2f} | {} | {} | {} | {} | {} | {} | {} | **{}** |\n", setting, ranks,
@@ -138,7 +142,7 @@ std::vector<LammpsVerdict> write_lammps_check(const LammpsCheckPlan& plan, const
           {"accepted", v.accepted()},       {"engine_seconds", v.seconds[0]},      {"lammps_seconds", v.seconds[1]}};
     }
     for (std::size_t k = 1; k < lammps.size(); ++k) {  // more ranks against the first count, by the same rule
-      const LammpsVerdict v = judge_lammps(compare(lammps[0], lammps[k]), plan, setting, plan.ranks[k]);
+      const LammpsVerdict v = judge_lammps(compare(lammps[0], lammps[k]), plan, setting, plan.ranks[k], s.strain);
       ranks_md += fmt::format("| {} | {} against {} | {} of {} | {:.3f}, {:.2f} | {} of {} |\n", setting, plan.ranks[k], plan.ranks[0], v.sigma_agreeing,
                               v.sigma_points, v.worst_strain, v.worst_excess, v.k0_agreeing, v.k0_points);
     }

@@ -41,11 +41,12 @@ struct LammpsVerdict {
   MeanError end_difference;                 ///< there, LAMMPS − engine paired by seed
   MeanError tau[2];                         ///< at the end of the shear
   double seconds[2] = {0.0, 0.0};           ///< the runs' wall time summed over seeds
-  bool accepted() const { return sigma_points > 0 && sigma_agreeing == sigma_points && k0_agreeing == k0_points; }
+  bool accepted() const { return sigma_points > 0 && sigma_agreeing == sigma_points && k0_points > 0 && k0_agreeing == k0_points; }
 };
 
 /// The verdict of one comparison (slot 0 the engine, 1 LAMMPS) by the plan's rule.
-LammpsVerdict judge_lammps(const CoarseComparison& c, const LammpsCheckPlan& plan, const std::string& setting, int ranks);
+/// `end_strain`: the settings' end of loading (its σzz, K0 and ratio are reported).
+LammpsVerdict judge_lammps(const CoarseComparison& c, const LammpsCheckPlan& plan, const std::string& setting, int ranks, double end_strain);
 
 /// Every setting and rank count of the plan: OUT/report/check.md and check.json; the verdicts.
 std::vector<LammpsVerdict> write_lammps_check(const LammpsCheckPlan& plan, const std::string& plan_path, const std::string& out_dir);

@@ -141,8 +141,8 @@ print           "$(v_strain_now:%.17g) ${phase} $(v_shear_now:%.17g) $(v_tau:%.1
 )LMP";
 
 const char* kPhase = R"LMP(# One phase of the compression, included by in.compression: the increments of `every` of H0 up to
-# `total` of H0 (their count rounded, as the engine's; none when total is 0).
-variable        rows equal round(${total}/${every})
+# `total` of H0 (their count rounded, at least one, as the engine's; none when total is 0).
+variable        rows equal (${total}>0)*(round(${total}/${every})+(round(${total}/${every})<1)*(1-round(${total}/${every})))
 variable        k equal 0
 label           next_increment
 if "${k} >= ${rows}" then "jump SELF phase_done"
@@ -170,33 +170,33 @@ std::string input_script(const CoarseGrainSettings& s, const std::string& config
 # again between runs, write_restart or write_data, makes fix wall/gran convert its damping again:
 # bench/lammps/README.md C5).
 
-# -- The protocol (docs/coarse-grain.md): the top wall moves down by `strain` of H0 at `speed`, an
+# -- The protocol (docs/coarse-grain.md; string variables: ${{X}} puts in their text, every digit): the top wall moves down by `strain` of H0 at `speed`, an
 # increment every `record_strain`, each followed by `relax` s at rest under the per-grain quench;
 # then up by `unload_strain`; then along x by `shear`, an increment every `record_shear`.
-variable        speed equal {speed:.17g}
-variable        strain equal {strain:.17g}
-variable        unload_strain equal {unload:.17g}
-variable        record_strain equal {record:.17g}
-variable        shear equal {shear:.17g}
-variable        record_shear equal {record_shear:.17g}
-variable        relax equal {relax:.17g}
+variable        speed string {speed:.17g}
+variable        strain string {strain:.17g}
+variable        unload_strain string {unload:.17g}
+variable        record_strain string {record:.17g}
+variable        shear string {shear:.17g}
+variable        record_shear string {record_shear:.17g}
+variable        relax string {relax:.17g}
 # The medium (medium.data) and the engine's time step for it (integrate/time_step.hpp)
-variable        L equal {L:.17g}
-variable        H0 equal {H:.17g}
-variable        solid_volume equal {solid:.17g}
-variable        time_step equal {dt:.17g}
+variable        L string {L:.17g}
+variable        H0 string {H:.17g}
+variable        solid_volume string {solid:.17g}
+variable        time_step string {dt:.17g}
 variable        relax_steps equal (${{relax}}>0)*(1+(round(${{relax}}/${{time_step}})-1)*(round(${{relax}}/${{time_step}})>1))
 # The grains' contact in LAMMPS's terms (bench/lammps/README.md): E, nu, mu of the grains; the wall's E
 # is E/(1+nu) (C1); kt = Dt (C2); the tangential damping xgammat (C3); e' such that LAMMPS's tsuji
 # polynomial gives the engine's damping coefficient for the restitution {restitution} (C4)
-variable        E equal {E:.17g}
-variable        nu equal {nu:.17g}
-variable        mu equal {mu:.17g}
-variable        E_wall equal {E_wall:.17g}
-variable        mu_wall equal {mu_wall:.17g}
-variable        Dt equal {Dt:.17g}
-variable        xgammat equal {xgammat:.17g}
-variable        damping_code equal {code:.17g}
+variable        E string {E:.17g}
+variable        nu string {nu:.17g}
+variable        mu string {mu:.17g}
+variable        E_wall string {E_wall:.17g}
+variable        mu_wall string {mu_wall:.17g}
+variable        Dt string {Dt:.17g}
+variable        xgammat string {xgammat:.17g}
+variable        damping_code string {code:.17g}
 
 units           si
 atom_style      sphere
@@ -237,18 +237,18 @@ print           "$(v_strain_now:%.17g) 1 $(v_shear_now:%.17g) $(v_tau:%.17g) $(v
 variable        phase equal 1
 variable        dir_x equal 0
 variable        dir_z equal -1
-variable        total equal ${strain}
-variable        every equal ${record_strain}
+variable        total string ${strain}
+variable        every string ${record_strain}
 include         phase.in
 variable        phase equal -1
 variable        dir_z equal 1
-variable        total equal ${unload_strain}
+variable        total string ${unload_strain}
 include         phase.in
 variable        phase equal 2
 variable        dir_x equal 1
 variable        dir_z equal 0
-variable        total equal ${shear}
-variable        every equal ${record_shear}
+variable        total string ${shear}
+variable        every string ${record_shear}
 include         phase.in
 print           "softpack-coarse export: the compression ended at step $(step)"
 )LMP";
@@ -265,6 +265,9 @@ void write_lammps_export(const CoarseGrainSettings& s, const std::string& config
     throw InputError(fmt::format("{}: simulation.effects: the export writes Hertz, Tsuji friction, rotation and damping (the coarse-grain "
                                  "profiles'); these settings have normal '{}', friction {}, rotation {}, damping {}",
                                  s.profile, fx.normal, fx.friction, fx.rotation, fx.damping()));
+  if (fx.gravity) throw InputError(fmt::format("{}: simulation.effects.gravity is not exported (the input has none)", s.profile));
+  if (s.beyond_range == SoftParticlesDef::BeyondRange::stop)
+    throw InputError("coarse_grain.soft_particle.beyond_range: stop is not exported (softpack/soft does not count the contacts beyond the laws' range); allowed: report");
   const LammpsGranular g = lammps_granular(s.simulation.material, s.simulation.wall_material, *fx.restitution, fx.tangential_damping_ratio);
   const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
   const SceneDef scene = medium_scene(s, mf.medium, CoarseModel::soft, laws);
@@ -306,21 +309,35 @@ LammpsRun read_lammps_run(const std::string& dir, const CoarseGrainSettings& s, 
     run.rows.push_back(r);
     run.steps = static_cast<long>(step);
   }
-  const auto loading_rows = static_cast<std::size_t>(std::max(1L, std::lround(s.strain / s.record_strain)));
-  if (run.rows.size() < 1 + loading_rows)
-    throw InputError(fmt::format("{}: {} rows, the loading alone has {}: the run did not end (see {})", curve, run.rows.size(), 1 + loading_rows, log));
+  // The engine's rows (coarse/compression.cpp): a phase of `total` has max(1, lround(total / every))
+  // increments, none when total is 0; and the input's settings must be these.
+  const auto increments = [](double total, double every) { return total > 0.0 ? std::max(1L, std::lround(total / every)) : 0L; };
+  const long expected = 1 + increments(s.strain, s.record_strain) + increments(s.unload_strain, s.record_strain) +
+                        increments(s.shear, s.record_shear > 0.0 ? s.record_shear : s.record_strain);
+  if (static_cast<long>(run.rows.size()) != expected)
+    throw InputError(fmt::format("{}: {} rows where the settings give {}: the run did not end, or ran other settings (see {})", curve,
+                                 run.rows.size(), expected, log));
+  std::ifstream settings_in(dir + "/settings.yaml");
+  std::stringstream settings_text;
+  settings_text << settings_in.rdbuf();
+  if (settings_text.str() != s.section_text)
+    throw InputError(fmt::format("{}/settings.yaml: not the coarse_grain section of the settings given: the run was exported from other settings", dir));
   std::ifstream log_in(log);
   if (!log_in) throw InputError(fmt::format("{}: no such file (the run's log)", log));
   const std::regex loop(R"(^Loop time of ([0-9.eE+-]+) on ([0-9]+) procs for ([0-9]+) steps)");
   double seconds = 0.0;
   long steps = 0;
+  bool ended = false;
   std::smatch match;
-  while (std::getline(log_in, line))
+  while (std::getline(log_in, line)) {
+    ended = ended || line.rfind("softpack-coarse export: the compression ended", 0) == 0;
     if (std::regex_search(line, match, loop)) {
       seconds += std::stod(match[1]);
       out.ranks = std::stoi(match[2]);
       steps += std::stol(match[3]);
     }
+  }
+  if (!ended) throw InputError(fmt::format("{}: no line 'softpack-coarse export: the compression ended': the run did not end", log));
   if (out.ranks == 0) throw InputError(fmt::format("{}: no 'Loop time' line: not the log of a LAMMPS run", log));
   if (steps != run.steps) throw InputError(fmt::format("{}: {} steps, but {} ends at step {}: not the log of this run", log, steps, curve, run.steps));
   const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);

@@ -7,7 +7,8 @@
 //   laws.json         a copy of the settings' law file
 //   in.compression    the compression of coarse/compression.hpp as a LAMMPS input a user can read
 //                     and change: its settings as variables at the top, then the styles, the walls,
-//                     and the increments as loops over increment.in
+//                     and the phases (phase.in: the loop over a phase's increments)
+//   phase.in          a phase's increments, each by increment.in
 //   increment.in      one increment: the top wall moves, stands under the quench, a row of curve.dat
 //   settings.yaml     the coarse_grain section it was made from (provenance)
 //
@@ -55,8 +56,9 @@ void write_lammps_export(const CoarseGrainSettings& s, const std::string& config
 
 /// A LAMMPS run of that input read back: curve.dat's rows, and from log.lammps the loop time
 /// summed over its runs, the steps and the ranks (CompressionRun::time is that time; its cpu, the
-/// time × ranks). InputError naming the file when one is missing, a row is malformed or the run
-/// did not end (no row at the loading's end).
+/// time × ranks). InputError naming the file when one is missing, a row is malformed, the rows are
+/// not the settings' count, the run did not end (log.lammps lacks the input's last line) or its
+/// settings.yaml is not `s`'s coarse_grain section.
 struct LammpsRun {
   CompressionRun run;
   int ranks = 0;

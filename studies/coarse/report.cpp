@@ -109,7 +109,7 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
   for (std::size_t k = 0; k < resolved.size(); ++k) {
     c.cpu[0].push_back(resolved[k].cpu_seconds), c.cpu[1].push_back(soft[k].cpu_seconds);
     c.speedup.push_back(resolved[k].cpu_seconds / soft[k].cpu_seconds);
-    c.beyond_range += soft[k].beyond_range, c.max_dn = std::max(c.max_dn, soft[k].max_dn);
+    if (soft[k].beyond_range >= 0) c.beyond_range += soft[k].beyond_range, c.max_dn = std::max(c.max_dn, soft[k].max_dn);  // < 0: not counted (LAMMPS)
   }
   c.mean_speedup = seeds_mean_error(c.speedup);
   if (!resolved.empty()) c.spheres[0] = resolved[0].spheres, c.spheres[1] = soft[0].spheres, c.bodies = resolved[0].bodies;

@@ -90,6 +90,7 @@ void write_coarse_result(const std::string& path, const CoarseResult& r) {
   put(f, "provenance/steps", r.steps), put(f, "provenance/dt", r.dt);
   put(f, "provenance/seconds", r.seconds), put(f, "provenance/cpu_seconds", r.cpu_seconds);
   put(f, "provenance/threads", r.threads);
+  put(f, "provenance/engine", r.engine);
   out.commit();
 }
 
@@ -97,6 +98,10 @@ CoarseResult read_coarse_result(const std::string& path) {
   const h5::File f = h5::File::open(path);
   CoarseResult r;
   r.path = path;
+  if (f.exists("provenance/engine")) get(f, "provenance/engine", r.engine);
+  if (r.engine != "softpack" && r.engine != "lammps")
+    throw InputError(path + ": provenance/engine: '" + r.engine + "' is not allowed; allowed: softpack, lammps");
+  const bool lammps = r.engine == "lammps";  // only its runs may lack what they do not record
   std::vector<double> strain;
   get(f, "curve/strain", strain);
   r.rows.resize(strain.size());
@@ -105,7 +110,7 @@ CoarseResult read_coarse_result(const std::string& path) {
     // wall's displacement nor its shear stress: no shear (0), tau not recorded (NaN).
     const std::string key = std::string("curve/") + name;
     // A LAMMPS run (coarse/lammps_export.hpp) records neither Z nor the elastic energy: NaN.
-    if ((key == "curve/shear" || key == "curve/tau" || key == "curve/Z" || key == "curve/elastic") && !f.exists(key)) {
+    if ((key == "curve/shear" || key == "curve/tau" || (lammps && (key == "curve/Z" || key == "curve/elastic"))) && !f.exists(key)) {
       for (CurveRow& row : r.rows) row.*member = key == "curve/shear" ? 0.0 : kNaN;
       return;
     }
@@ -116,7 +121,7 @@ CoarseResult read_coarse_result(const std::string& path) {
     for (std::size_t k = 0; k < v.size(); ++k) r.rows[k].*member = v[k];
   });
   counts([&](const char* name, auto member) {
-    if (std::string_view(name) != "phase" && !f.exists(std::string("curve/") + name)) return;  // not recorded (Z NaN): 0
+    if (lammps && std::string_view(name) != "phase" && !f.exists(std::string("curve/") + name)) return;  // not recorded (Z NaN): 0
     std::vector<std::int64_t> v;
     get(f, std::string("curve/") + name, v);
     formats::same_length(f, std::string("curve/") + name, v.size(), "curve/strain", strain.size());
@@ -126,8 +131,8 @@ CoarseResult read_coarse_result(const std::string& path) {
   get(f, "medium/grains", r.grains), get(f, "medium/sites", r.sites), get(f, "medium/spheres", r.spheres), get(f, "medium/bodies", r.bodies);
   get(f, "medium/grains_volume", r.grains_volume), get(f, "medium/packings_volume", r.packings_volume);
   get(f, "medium/target_volume", r.target_volume), get(f, "medium/packing_seeds", r.packing_seeds);
-  if (f.exists("soft/beyond_range")) get(f, "soft/beyond_range", r.beyond_range), get(f, "soft/max_dn", r.max_dn);
-  else r.beyond_range = -1, r.max_dn = kNaN;  // not counted (a LAMMPS run)
+  if (!lammps || f.exists("soft/beyond_range")) get(f, "soft/beyond_range", r.beyond_range), get(f, "soft/max_dn", r.max_dn);
+  else r.beyond_range = -1, r.max_dn = kNaN;  // not counted by LAMMPS's run
   std::int64_t seed = 0;
   get(f, "provenance/model", r.model), get(f, "provenance/seed", seed);
   r.seed = static_cast<std::uint64_t>(seed);

@@ -9,7 +9,7 @@
 //   /provenance/{model, seed, settings, laws, code_version, steps, dt, seconds, cpu_seconds, threads}
 //
 // `settings` is the coarse_grain section as read, `laws` the law file's path. A run of LAMMPS
-// (coarse/lammps_export.hpp) has no Z, grain_grain, grain_soft, soft_soft nor elastic: read as NaN
+// (/provenance/engine "lammps", coarse/lammps_export.hpp) has no Z, grain_grain, grain_soft, soft_soft nor elastic: read as NaN
 // (Z, elastic) and 0; nor /soft (the contacts beyond the laws' range are not counted there):
 // beyond_range -1, max_dn NaN.
 #pragma once
@@ -23,6 +23,9 @@ namespace softpack {
 
 struct CoarseResult {
   std::string path, model, settings, laws, code_version;
+  /// What ran it: "softpack" (the engine) or "lammps" (softpack-coarse lammps-curve); only a LAMMPS
+  /// run may lack the columns it does not record (/provenance/engine; absent: softpack).
+  std::string engine = "softpack";
   std::uint64_t seed = 0;
   double L = 0.0, H = 0.0, Rs = 0.0;
   std::int64_t grains = 0, sites = 0, spheres = 0, bodies = 0, steps = 0;

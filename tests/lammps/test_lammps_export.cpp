@@ -33,13 +33,21 @@ TEST(LammpsExport, TheCompressionInLammpsFollowsTheEngines) {
   const MediumFile mf = read_medium_file("data/many-body-v6/reference/media/seed-327.h5");
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  char dir[256] = {};
+  char dir[256] = {};  // "" when rank 0's export failed: every rank stops (none waits for the others)
   if (rank == 0) {
     const std::string d = (std::filesystem::temp_directory_path() / ("softpack-lammps-export-" + std::to_string(::getpid()))).string();
-    d.copy(dir, sizeof(dir) - 1);
-    write_lammps_export(s, config, mf, dir);
+    try {
+      write_lammps_export(s, config, mf, d);
+      d.copy(dir, sizeof(dir) - 1);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "the export: " << e.what();
+    }
   }
   MPI_Bcast(dir, sizeof(dir), MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (dir[0] == '\0') {
+    std::filesystem::current_path(home);
+    GTEST_FAIL() << "no export";
+  }
   {
     std::filesystem::current_path(dir);
     const char* args[] = {"softpack-lammps", "-log", "log.lammps", "-screen", "none", "-nocite"};
