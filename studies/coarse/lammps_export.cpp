@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-#include <regex>
 #include <sstream>
 
 #include "contact/viscous_damping.hpp"
@@ -324,18 +323,21 @@ LammpsRun read_lammps_run(const std::string& dir, const CoarseGrainSettings& s, 
     throw InputError(fmt::format("{}/settings.yaml: not the coarse_grain section of the settings given: the run was exported from other settings", dir));
   std::ifstream log_in(log);
   if (!log_in) throw InputError(fmt::format("{}: no such file (the run's log)", log));
-  const std::regex loop(R"(^Loop time of ([0-9.eE+-]+) on ([0-9]+) procs for ([0-9]+) steps)");
+  // "Loop time of T on N procs for S steps with A atoms", one per run
   double seconds = 0.0;
   long steps = 0;
   bool ended = false;
-  std::smatch match;
   while (std::getline(log_in, line)) {
     ended = ended || line.rfind("softpack-coarse export: the compression ended", 0) == 0;
-    if (std::regex_search(line, match, loop)) {
-      seconds += std::stod(match[1]);
-      out.ranks = std::stoi(match[2]);
-      steps += std::stol(match[3]);
-    }
+    if (line.rfind("Loop time of ", 0) != 0) continue;
+    std::istringstream words(line.substr(13));
+    double t = 0.0;
+    int ranks = 0;
+    long n = 0;
+    std::string on, procs, for_, steps_word;
+    if (!(words >> t >> on >> ranks >> procs >> for_ >> n >> steps_word) || on != "on" || for_ != "for" || steps_word != "steps")
+      throw InputError(fmt::format("{}: '{}' is not LAMMPS's 'Loop time of T on N procs for S steps'", log, line));
+    seconds += t, out.ranks = ranks, steps += n;
   }
   if (!ended) throw InputError(fmt::format("{}: no line 'softpack-coarse export: the compression ended': the run did not end", log));
   if (out.ranks == 0) throw InputError(fmt::format("{}: no 'Loop time' line: not the log of a LAMMPS run", log));
