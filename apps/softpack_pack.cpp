@@ -16,6 +16,7 @@
 #include "core/version.hpp"
 #include "formats/packing_file.hpp"
 #include "io/particle_export.hpp"
+#include "packing/nested.hpp"
 #include "packing/statistics.hpp"
 
 namespace softpack::apps::pack_app {
@@ -67,7 +68,16 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "{}softpack-pack seed {}: {} {}/{} ({:.0f}%), {:.1f} s{}", tty ? "\r\033[K" : "", seed, phase, done,
                  total, 100.0 * static_cast<double>(done) / static_cast<double>(total), elapsed, tty ? "" : "\n");
     };
-    const Packing packing = generate_packing(profile.parameters, static_cast<std::uint64_t>(seed), progress);
+    // A packing of nested soft-particles (packing.levels > 1): its grains and the sites of the
+    // level below (packing/nested.hpp); levels 1 gives generate_packing's bits.
+    const LevelPacking level = generate_level(profile.parameters, profile.levels - 1, static_cast<std::uint64_t>(seed), progress);
+    const Packing& packing = level.grains;
+    PackingSites sites;
+    sites.levels = profile.levels;
+    sites.radius = level.site_radius;
+    sites.centres = level.sites;
+    sites.drawn = level.sites_drawn;
+    sites.discarded = level.sites_discarded;
     if (!quiet && tty) fmt::print(stderr, "\n");
     const PackingParameters& p = profile.parameters;
     const PackingStatistics stats = packing_statistics(packing.centres, packing.radii, p.Rs, p.r_max, profile.profile_bins);
@@ -85,13 +95,17 @@ int main(int argc, char** argv) {
     // write that fails (a full disk) leaves no packing file beside missing pictures.
     const std::string line = fmt::format("softpack-pack {} seed {} from {}", prov.code_version, seed, config_path);
     write_packing_pictures(vtp_path, xyz_path, packing.centres, packing.radii, p.Rs, line);
-    write_packing_file(out_path, p, packing, stats, prov);
+    write_packing_file(out_path, p, packing, stats, prov, sites);
     if (!quiet)
       fmt::print(stderr,
                  "softpack-pack seed {}: {} spheres inserted of {} sampled ({} discarded, {} grown), solid fraction "
                  "{:.4f}, fitted exponent {:.3f} +- {:.3f}, {:.1f} s -> {}\n",
                  seed, packing.radii.size(), packing.sampled, packing.discarded, packing.grown, stats.solid_fraction,
                  stats.exponent.b, stats.exponent.b_error, prov.seconds, out_path);
+    if (!quiet && sites.levels > 1)
+      fmt::print(stderr, "softpack-pack seed {}: {} soft-particles of the level below (radius {:.4g} m) placed of {} drawn ({} "
+                 "discarded); {} levels\n",
+                 seed, sites.centres.size(), sites.radius, sites.drawn, sites.discarded, sites.levels);
     return 0;
   } catch (...) {
     return exit_on_error("softpack-pack");

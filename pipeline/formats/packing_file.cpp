@@ -10,6 +10,7 @@
 #include "io/sha256.hpp"
 #include "formats/file_kind.hpp"
 #include "formats/h5_fields.hpp"
+#include "packing/nested.hpp"
 
 namespace softpack {
 namespace {
@@ -22,6 +23,7 @@ constexpr std::array kPackingLayout{kCentres, kRadii, kProgram};  // what makes 
 constexpr const char* kPack = "softpack-pack";              // the program that writes them
 constexpr const char* kImport = "softpack-import";          // ... or imports them
 constexpr const char* kNearest = "parameters/nearest_neighbour";  // since 0.5.0; absent: surface
+constexpr const char *kLevels = "parameters/levels", *kSites = "sites/centres", *kSiteRadius = "sites/radius";
 
 // /parameters: f(dataset, member) for each of the generator's parameters, in the file's order.
 template <class P, class F>
@@ -84,6 +86,31 @@ void put_spheres(h5::File& f, const std::vector<Vec3>& centres, const std::vecto
   put(f, "shell/centre", std::vector<double>{0.0, 0.0, 0.0});
 }
 
+// /parameters/levels and /sites: the model's levels, and each site inside the shell at Rs / Pi.
+void read_sites(const h5::File& f, const std::string& path, PackingFile& out) {
+  PackingSites& s = out.sites;
+  long levels = 0;
+  get(f, kLevels, levels);
+  try {
+    validate_levels(out.parameters, static_cast<int>(levels));
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: /{}: {}", path, kLevels, e.what()));
+  }
+  s.levels = static_cast<int>(levels);
+  if (s.levels == 1) return;
+  get(f, kSites, s.centres);
+  get(f, kSiteRadius, s.radius);
+  get(f, "stats/sites_drawn", s.drawn);
+  get(f, "stats/sites_discarded", s.discarded);
+  const double expected = out.Rs / out.parameters.polydispersity;
+  if (!(std::abs(s.radius - expected) <= 1e-12 * expected))
+    throw InputError(fmt::format("{}: /{} = {} m; allowed: Rs / Pi = {} m (packing/nested.hpp)", path, kSiteRadius, s.radius, expected));
+  for (std::size_t i = 0; i < s.centres.size(); ++i)
+    if (!(s.centres[i].norm() + s.radius <= out.Rs * (1.0 + 1e-9)))
+      throw InputError(fmt::format("{}: site {} (/{}[{}]) reaches {} m from the centre, beyond the shell (/{} = {} m)", path, i,
+                                   kSites, i, s.centres[i].norm() + s.radius, kShellRadius, out.Rs));
+}
+
 }  // namespace
 
 void write_imported_packing_file(const std::string& path, const ImportRecord& record, const std::vector<Vec3>& centres,
@@ -105,7 +132,7 @@ void write_imported_packing_file(const std::string& path, const ImportRecord& re
 }
 
 void write_packing_file(const std::string& path, const PackingParameters& p, const Packing& packing,
-                        const PackingStatistics& stats, const PackingProvenance& provenance) {
+                        const PackingStatistics& stats, const PackingProvenance& provenance, const PackingSites& sites) {
   h5::AtomicH5 out(path);
   h5::File& f = out.file();
   const std::size_t n = packing.radii.size();
@@ -118,6 +145,14 @@ void write_packing_file(const std::string& path, const PackingParameters& p, con
   put(f, "stats/discarded", packing.discarded);
   put(f, "stats/grown", packing.grown);
   put_statistics(f, stats);
+  if (sites.levels > 1) {
+    put(f, kLevels, static_cast<long>(sites.levels));
+    put(f, kSites, sites.centres);
+    f.set_attribute(kSites, "unit", std::string("m"));
+    put(f, kSiteRadius, sites.radius);
+    put(f, "stats/sites_drawn", sites.drawn);
+    put(f, "stats/sites_discarded", sites.discarded);
+  }
 
   each_packing_provenance(provenance, writer(f));
   put(f, kProvenanceStamp, provenance.stamp);
@@ -173,6 +208,7 @@ PackingFile read_packing_file(const std::string& path) {
                                    "(/{} = {} m)",
                                    path, i, kCentres, i, kRadii, i, x.norm() + r, kShellRadius, out.Rs));
   }
+  if (f.exists(kLevels)) read_sites(f, path, out);
   each_packing_provenance(v, reader(f));
   if (f.exists(kProvenanceStamp)) get(f, kProvenanceStamp, v.stamp);
   return out;
@@ -189,6 +225,15 @@ std::string packing_sha256(const PackingFile& p) {
   add(p.Rs);
   for (const auto& sphere : spheres)
     for (const double v : sphere) add(v);
+  if (p.sites.levels > 1) {  // a packing without levels keeps the identity it had before them
+    std::vector<std::array<double, 3>> sites;
+    for (const Vec3& x : p.sites.centres) sites.push_back({x.x(), x.y(), x.z()});
+    std::sort(sites.begin(), sites.end());
+    add(static_cast<double>(p.sites.levels));
+    add(p.sites.radius);
+    for (const auto& site : sites)
+      for (const double v : site) add(v);
+  }
   return sha256_of_bytes(bytes);
 }
 

@@ -10,6 +10,11 @@
 //   /stats/...          sampled, inserted, discarded, grown, solid_fraction, bulk_fraction,
 //                       depletion_length, min_shell_gap, exponent, exponent_error,
 //                       exponent_r_min, exponent_r_max, radial_profile/{r_inner,r_outer,solid_fraction}
+//   /parameters/levels  (a packing of nested soft-particles, packing/nested.hpp; absent: 1) and
+//   /sites/centres (M, 3), /sites/radius   the placed soft-particles of the level below, of
+//                       radius Rs / Pi (absent when levels is 1); /stats/sites_drawn,
+//                       /stats/sites_discarded; their contents are the level below's packings of
+//                       seed nested_site_seed(seed, site), not stored here
 //   /provenance/...     program, code_version, config_file, config (the YAML slice read),
 //                       seed, seconds, cpu_seconds (wall-clock and CPU time of the generation),
 //                       stamp (the packing stage's configuration stamp, profile/profile.hpp;
@@ -48,9 +53,17 @@ struct PackingProvenance {
   std::string stamp;         ///< the packing stage's configuration stamp ("": a file from before stamps)
 };
 
-/// Writes the file atomically (no file is left behind on failure).
+/// The soft-particles of the level below a packing of nested soft-particles holds (docs/nested.md).
+struct PackingSites {
+  int levels = 1;            ///< levels of the model from this packing's down; 1: grains only
+  double radius = 0.0;       ///< their radius, Rs / Pi [m]
+  std::vector<Vec3> centres; ///< about the shell's centre
+  std::size_t drawn = 0, discarded = 0;
+};
+
+/// Writes the file atomically (no file is left behind on failure); `sites` when levels > 1.
 void write_packing_file(const std::string& path, const PackingParameters& p, const Packing& packing,
-                        const PackingStatistics& stats, const PackingProvenance& provenance);
+                        const PackingStatistics& stats, const PackingProvenance& provenance, const PackingSites& sites = {});
 
 /// What an imported packing records of its source (/imported).
 struct ImportRecord {
@@ -80,13 +93,14 @@ struct PackingFile {
   PackingParameters parameters;  ///< imported: Rs, and r_max the largest radius
   PackingProvenance provenance;
   std::optional<ImportRecord> imported;  ///< an imported packing's source
+  PackingSites sites;                    ///< levels 1 and no site unless the file has /parameters/levels
 };
 
 /// Reads a packing file; InputError names the file and what is missing or wrong.
 PackingFile read_packing_file(const std::string& path);
 
 /// The packing's identity by content: the SHA-256 of its shell radius and of its spheres (x, y, z,
-/// r as IEEE doubles) sorted, so that the order they are listed in does not count. Two seeds whose packings have one identity are one packing
+/// r as IEEE doubles) sorted, then (levels > 1) of its levels and its sites sorted, so that the order they are listed in does not count. Two seeds whose packings have one identity are one packing
 /// counted twice, whatever their names and seed numbers (analysis/average.hpp).
 std::string packing_sha256(const PackingFile& p);
 

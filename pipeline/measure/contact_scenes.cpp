@@ -21,6 +21,12 @@ SceneDef base_scene(const SimulationSettings& s) {
 // The packing's grains and shell about `centre`, every length times `scale` (1: as generated).
 void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Vec3& centre, const std::string& shell,
                        ShellContactRadius radius, double scale = 1.0) {
+  // A packing of nested soft-particles would be measured without its sites: refused, not run.
+  if (p.sites.levels > 1)
+    throw InputError(fmt::format("the packing of seed {} ({}) holds {} soft-particles of the level below (packing.levels = {}): "
+                                 "the measurement scenes do not hold nested soft-particles yet (docs/nested.md, \"What is not "
+                                 "done\"); allowed: packings of packing.levels 1",
+                                 p.provenance.seed, p.provenance.config_file, p.sites.centres.size(), p.sites.levels));
   for (std::size_t i = 0; i < p.radii.size(); ++i) {
     ParticleDef d;
     d.x = centre + scale * p.centres[i];

@@ -74,8 +74,6 @@ void validate(const PackingParameters& p) {
                                  limits::number_text(p.exponent), expected, kMaxSpheres));
 }
 
-namespace {
-
 // Step 1: radii until V_L > beta V_S (Eq. 2); the volume compared is sum r^3 > beta Rs^3.
 std::vector<double> sample_list(const PackingParameters& p, Random& rng) {
   const power_law::Law law{p.r_max / p.polydispersity, p.r_max, p.exponent};
@@ -96,37 +94,50 @@ std::vector<double> sample_list(const PackingParameters& p, Random& rng) {
   return radii;
 }
 
-}  // namespace
-
 Packing generate_packing(const PackingParameters& p, std::uint64_t seed, const PackingProgress& progress) {
   validate(p);
   Random rng(seed);
-  const std::vector<double> list = sample_list(p, rng);
+  const std::vector<double> radii = sample_list(p, rng);
+  std::vector<ListBody> list;
+  list.reserve(radii.size());
+  for (double r : radii) list.push_back({r, true});
+  std::vector<int> placed;
+  return place_bodies(p, list, rng, placed, progress);
+}
+
+Packing place_bodies(const PackingParameters& p, const std::vector<ListBody>& list, Random& rng, std::vector<int>& placed,
+                     const PackingProgress& progress) {
   Packing out;
   out.sampled = list.size();
-  InsertionGrid grid(p.r_max / p.polydispersity, p.r_max, p.level_ratio);
+  placed.assign(list.size(), -1);
+  double r_top = p.r_max;
+  for (const ListBody& b : list) r_top = std::max(r_top, b.r);
+  InsertionGrid grid(p.r_max / p.polydispersity, r_top, p.level_ratio);
+  std::vector<bool> grows;
   const std::size_t report = std::max<std::size_t>(1, list.size() / 100);
 
   // Step 3: random sequential insertion, largest first.
   for (std::size_t k = 0; k < list.size(); ++k) {
-    const double r = list[k];
-    bool placed = false;
-    for (long t = 0; t < p.trials && !placed; ++t) {
+    const double r = list[k].r;
+    bool done = false;
+    for (long t = 0; t < p.trials && !done; ++t) {
       const Vec3 x = rng.in_ball(p.Rs - r);  // inside the shell without touching it
       if (!grid.overlaps(x, r)) {
-        grid.insert(x, r);
+        placed[k] = grid.insert(x, r);
         out.radii_inserted.push_back(r);
-        placed = true;
+        grows.push_back(list[k].grows);
+        done = true;
       }
     }
-    if (!placed) ++out.discarded;
+    if (!done) ++out.discarded;
     if (progress && (k + 1) % report == 0) progress("insert", k + 1, list.size());
   }
 
   // Step 4: growth, largest first, each until it touches its nearest neighbour (by surface gap
-  // or by centre distance, p.nearest_neighbour).
+  // or by centre distance, p.nearest_neighbour); a body that does not grow is still a neighbour.
   const int n = static_cast<int>(grid.size());
   for (int id = 0; id < n; ++id) {
+    if (!grows[static_cast<std::size_t>(id)]) continue;
     const Vec3& x = grid.centre(id);
     const double r = grid.radius(id);
     const double shell_gap = p.Rs - x.norm() - r;

@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "core/random.hpp"
 #include "core/types.hpp"
 
 namespace softpack {
@@ -70,5 +71,24 @@ using PackingProgress = std::function<void(const std::string& phase, std::size_t
 
 /// Generates the packing of `seed`: the same parameters and seed give the same bits.
 Packing generate_packing(const PackingParameters& p, std::uint64_t seed, const PackingProgress& progress = {});
+
+/// Steps 1 and 2: radii drawn from Eq. 1 until the list volume exceeds beta V_S, sorted by
+/// decreasing radius.
+std::vector<double> sample_list(const PackingParameters& p, Random& rng);
+
+/// One body of a list that steps 3 and 4 place: its radius, and whether step 4 grows it. A
+/// grain grows; a soft-particle of the level below (packing/nested.hpp) keeps the radius its
+/// laws are measured at, and is a neighbour the grains grow to touch.
+struct ListBody {
+  double r = 0.0;
+  bool grows = true;
+};
+
+/// Steps 3 and 4 on a list sorted by decreasing radius, drawing from `rng`: the placed bodies
+/// in list order (`Packing::centres`, `radii`, `radii_inserted`; `discarded`, `grown`; `sampled`
+/// is the list's length) and, for each entry of the list, its index among them (-1: discarded).
+/// The insertion grid spans the list's radii and `p`'s.
+Packing place_bodies(const PackingParameters& p, const std::vector<ListBody>& list, Random& rng, std::vector<int>& placed,
+                     const PackingProgress& progress = {});
 
 }  // namespace softpack

@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "profile/profile.hpp"
 #include "core/error.hpp"
+#include "packing/nested.hpp"
 
 namespace softpack {
 
@@ -24,7 +27,7 @@ PackingProfile parse_packing(const ConfigNode& root) {
     return out;
   }
   n.allow_only({"import", "Rs", "r_max_over_Rs", "polydispersity", "exponent", "beta", "trials", "shell_is_neighbour",
-                "nearest_neighbour", "level_ratio", "profile_bins"});
+                "nearest_neighbour", "level_ratio", "profile_bins", "levels"});
   PackingParameters& p = out.parameters;
   p.Rs = n.at("Rs").number();
   p.r_max = n.at("r_max_over_Rs").number() * p.Rs;
@@ -48,6 +51,14 @@ PackingProfile parse_packing(const ConfigNode& root) {
     validate(p);
   } catch (const InputError& e) {
     throw root.locate(e);
+  }
+  if (const auto levels = n.find("levels")) {  // optional: 1 (grains only) when absent
+    out.levels = static_cast<int>(std::clamp<long>(levels->integer(), -1, 1000));
+    try {
+      validate_levels(p, out.levels);
+    } catch (const InputError& e) {
+      throw root.locate(e);
+    }
   }
   return out;
 }

@@ -14,6 +14,7 @@ namespace softpack {
 struct PackingProfile {
   PackingParameters parameters;      ///< generated packings (Rs: the given shell's, imported ones)
   int profile_bins = 0;              ///< bins of the radial solid-fraction profile
+  int levels = 1;                    ///< levels of nested soft-particles from these packings down (packing/nested.hpp)
   std::optional<ImportSpec> import;  ///< packings imported by softpack-import, not generated
 };
 

@@ -1,0 +1,110 @@
+#include "packing/nested.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+
+namespace softpack {
+
+// The most levels a model may have: at Π = 10 five levels span five decades below Rs, beyond
+// any medium of the paper (high-performance concrete spans four).
+constexpr int kMaxLevels = 6;
+
+PackingParameters level_parameters(const PackingParameters& top, int level) {
+  PackingParameters p = top;
+  const double scale = std::pow(top.polydispersity, -static_cast<double>(level));
+  p.Rs = top.Rs * scale;
+  p.r_max = top.r_max * scale;
+  return p;
+}
+
+std::size_t site_count(const PackingParameters& p, double list_volume) {
+  const double n = list_volume / (p.beta * p.Rs * p.Rs * p.Rs) * std::pow(p.polydispersity, p.exponent - 1.0);
+  return static_cast<std::size_t>(std::llround(n));
+}
+
+void validate_levels(const PackingParameters& top, int levels) {
+  if (levels < 1 || levels > kMaxLevels)
+    throw InputError(fmt::format("packing.levels: {} is not allowed; allowed: 1 (grains only, the paper's soft-particle) to {} "
+                                 "(each level below holds the next decade, docs/nested.md)",
+                                 levels, kMaxLevels));
+  if (levels == 1) return;
+  // The last level's grains are the smallest: its parameters pass the generator's rules.
+  try {
+    validate(level_parameters(top, levels - 1));
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("packing.levels: {} levels are not allowed with these packing parameters: the last level "
+                                 "(every length divided by Pi^{}) fails: {}",
+                                 levels, levels - 1, e.what()));
+  }
+  // About Π^(b-1) sites per level with sites (site_count with the list volume β V_S).
+  const double sites = std::pow(top.polydispersity, top.exponent - 1.0);
+  if (!(sites * 1.05 < static_cast<double>(kMaxSites)))
+    throw InputError(fmt::format("packing.levels: {} is not allowed with polydispersity {} and exponent {}: a level would hold "
+                                 "about Pi^(b-1) = {:.0f} sites; allowed: fewer than {} (1.05 Pi^(b-1)), or levels: 1",
+                                 levels, top.polydispersity, top.exponent, sites, kMaxSites));
+}
+
+std::uint64_t nested_site_seed(std::uint64_t seed, std::size_t site) {
+  if (site >= kMaxSites) throw InputError(fmt::format("site {}: a level holds at most {} sites", site, kMaxSites));
+  if (seed > (kMaxSeed - site) / kMaxSites)
+    throw InputError(fmt::format("seed {}: the content of its site {} would need the seed {} * {} + {}, above 2^63 - 1; allowed: "
+                                 "seed <= {}",
+                                 seed, site, seed, kMaxSites, site, (kMaxSeed - kMaxSites) / kMaxSites));
+  return seed * kMaxSites + site;
+}
+
+LevelPacking generate_level(const PackingParameters& p, int levels_below, std::uint64_t seed, const PackingProgress& progress) {
+  validate(p);
+  if (levels_below < 0) throw InputError(fmt::format("packing.levels: {} levels below is not allowed", levels_below));
+  if (levels_below > 0) validate_levels(p, levels_below + 1);
+  Random rng(seed);
+  const std::vector<double> radii = sample_list(p, rng);
+  LevelPacking out;
+  std::vector<ListBody> list;
+  list.reserve(radii.size() + kMaxSites);
+  if (levels_below > 0) {
+    double volume = 0.0;
+    for (double r : radii) volume += r * r * r;
+    out.site_radius = p.Rs / p.polydispersity;
+    out.sites_drawn = site_count(p, volume);
+    if (out.sites_drawn > kMaxSites)
+      throw InputError(fmt::format("packing.levels: the list of seed {} holds {} sites; allowed: at most {}", seed,
+                                   out.sites_drawn, kMaxSites));
+  }
+  // Largest first (step 2); a site before the grains of its radius.
+  std::size_t grain = 0;
+  for (std::size_t s = 0; s < out.sites_drawn; ++s) {
+    while (grain < radii.size() && radii[grain] > out.site_radius) list.push_back({radii[grain++], true});
+    list.push_back({out.site_radius, false});
+  }
+  while (grain < radii.size()) list.push_back({radii[grain++], true});
+
+  std::vector<int> placed;
+  Packing all = place_bodies(p, list, rng, placed, progress);
+  out.grains.sampled = radii.size();
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const int id = placed[k];
+    if (!list[k].grows) {
+      if (id < 0) ++out.sites_discarded;
+      else out.sites.push_back(all.centres[static_cast<std::size_t>(id)]);
+      continue;
+    }
+    if (id < 0) {
+      ++out.grains.discarded;
+      continue;
+    }
+    const auto i = static_cast<std::size_t>(id);
+    out.grains.centres.push_back(all.centres[i]);
+    out.grains.radii.push_back(all.radii[i]);
+    out.grains.radii_inserted.push_back(all.radii_inserted[i]);
+    if (all.radii[i] != all.radii_inserted[i]) ++out.grains.grown;
+  }
+  return out;
+}
+
+}  // namespace softpack

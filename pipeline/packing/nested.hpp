@@ -1,0 +1,65 @@
+// Nested soft-particles, the paper's whole model (issue 35, docs/nested.md): "A soft-particle
+// contains particles of the next decade and again a set of soft-particles containing the
+// remaining decades. For the last decade we only have normal particles."
+//
+//   level 0       a soft-particle of radius Rs: grains of its decade [r_max / Π, r_max] and
+//                 sites, soft-particles of level 1 of radius Rs_1 = Rs / Π, so that the decade
+//                 below begins where this one ends (r_max_1 = (r_max / Rs) Rs_1 = r_min_0)
+//   level k       the same, every length divided by Π^k (`level_parameters`)
+//   last level    (k = levels - 1) grains only: the paper's soft-particle
+//
+// The list of a level with sites (paper §3's steps 1-2 for its grains, `sample_list`) holds,
+// beside its grains, the sites that carry the decade below at the same power law: the list
+// volume of a decade one Π down is Π^-(4-b) times this decade's, and each site's own list holds
+// β V_site of it (Eq. 2 at radius Rs / Π), so
+//
+//     sites = round(V_L Π^-(4-b) / (β V_site)) = round(V_L / (β V_S) Π^(b-1))
+//
+// (about 316 at Π = 10, b = 3.5; 18 at Π = √10). Sites and grains are placed together, largest
+// first, by step 3's rule (a site that finds no place in `trials` attempts is discarded like a
+// grain); in step 4 the grains grow and a site is a neighbour they grow to touch, but keeps its
+// radius: its laws are measured at radius Rs / Π (docs/nested.md says why). A site's content is
+// the level below's packing of its own seed (`nested_site_seed`), made when it is needed — by
+// the resolved reference, or for its mass — not stored in this level's file.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "packing/generator.hpp"
+
+namespace softpack {
+
+/// The most sites one level's list may hold (their contents' seeds are seed * 1000 + site).
+constexpr std::size_t kMaxSites = 1000;
+
+/// A level's packing: its grains (`Packing`, as a packing without levels has them) and the
+/// centres of the sites it placed, all about the shell's centre.
+struct LevelPacking {
+  Packing grains;
+  double site_radius = 0.0;  ///< Rs / Π; 0 at the last level
+  std::vector<Vec3> sites;   ///< placed sites, in list order
+  std::size_t sites_drawn = 0, sites_discarded = 0;
+};
+
+/// The packing parameters of level `level` of a model whose level 0 has `top`: every length
+/// (Rs, r_max) divided by Π^level, the rest the same.
+PackingParameters level_parameters(const PackingParameters& top, int level);
+
+/// Sites in the list of a level whose grains' list has volume `list_volume` (the sum of r^3 of
+/// `sample_list`, without 4/3 π): round(list_volume / (β Rs^3) Π^(b-1)).
+std::size_t site_count(const PackingParameters& p, double list_volume);
+
+/// Refuses a model of `levels` levels whose last level's grains are below the scenes' smallest
+/// length, or whose sites would be more than kMaxSites: InputError naming packing.levels.
+void validate_levels(const PackingParameters& top, int levels);
+
+/// The packing of one level with `levels_below` levels under it (0: grains only, the same bits
+/// as generate_packing), for `seed`; the same parameters and seed give the same bits.
+LevelPacking generate_level(const PackingParameters& p, int levels_below, std::uint64_t seed,
+                            const PackingProgress& progress = {});
+
+/// The seed of the content of site `site` of a level packing made with `seed`: seed * 1000 +
+/// site. InputError when it would not be a seed (above 2^63 - 1).
+std::uint64_t nested_site_seed(std::uint64_t seed, std::size_t site);
+
+}  // namespace softpack
