@@ -4,15 +4,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/bodies.hpp"
 #include "scene/validate.hpp"
 
 namespace softpack {
 namespace {
 
-std::vector<int> members_of(const Particles& p, const GroupDef& g) {
+// A body's group: its spheres and those of the bodies inside it (scene/bodies.hpp).
+std::vector<int> members_of(const Particles& p, const GroupDef& g, const BodyTree& tree) {
   std::vector<int> out;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (g.kind == GroupDef::Kind::all || p.body[i] == g.body) out.push_back(static_cast<int>(i));
+    if (g.kind == GroupDef::Kind::all || p.body[i] == g.body || tree.within(p.body[i], g.body)) out.push_back(static_cast<int>(i));
   return out;
 }
 
@@ -53,7 +55,7 @@ Drivers::Active Drivers::start(const DriverDef& def, World& world) const {
             if (dd.with_shell)
               for (std::size_t k = 0; k < scene_->shells.size(); ++k)
                 if (scene_->shells[k].body == dd.group.body) d.shell = static_cast<int>(k);
-          d.members = members_of(p, dd.group);
+          d.members = members_of(p, dd.group, BodyTree(scene_->shells));
           for (int i : d.members) {
             p.driven[i] = 1;
             p.v[i].setZero();

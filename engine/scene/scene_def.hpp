@@ -44,6 +44,9 @@ struct ShellDef {
   /// A free shell's mass [kg] (walls/spherical_shell.hpp): it moves under its grains' load.
   /// Unset: kinematic, it stands still unless a driver moves it.
   std::optional<double> mass;
+  /// The body whose shell encloses this one (scene/bodies.hpp: nested soft-particles, resolved);
+  /// kNoBody: none.
+  int parent = kNoBody;
 };
 
 struct PlaneDef {

@@ -238,7 +238,7 @@ SceneFile parse_scene(const ConfigNode& root) {
 
   if (auto shells = root.find("shells"))
     for (const ConfigNode& n : shells->items()) {
-      n.allow_only({"name", "body", "centre", "radius", "material", "contact_radius", "mass"});
+      n.allow_only({"name", "body", "centre", "radius", "material", "contact_radius", "mass", "parent"});
       ShellDef d;
       d.name = n.at("name").string();
       d.body = body_id(n.at("body"));
@@ -247,6 +247,7 @@ SceneFile parse_scene(const ConfigNode& root) {
       d.material = material_ref(s, n.at("material"));
       d.contact_radius = parse_contact_radius(n.at("contact_radius"));
       if (auto m = n.find("mass")) d.mass = m->number();
+      if (auto up = n.find("parent")) d.parent = body_id(*up);
       s.shells.push_back(d);
     }
 

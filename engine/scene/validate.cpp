@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <set>
 #include <vector>
 
 #include "core/error.hpp"
+#include "scene/bodies.hpp"
 #include "scene/limits.hpp"
 #include "scene/validate_detail.hpp"
 
@@ -125,6 +127,36 @@ void check_group(const SceneDef& s, const GroupDef& g, const std::string& key) {
   const auto bodies = bodies_of(s);
   if (!bodies.contains(g.body))
     fail(key + ".body", fmt::format("body {} does not exist ({})", g.body, list_bodies(bodies)));
+}
+
+// Bodies inside bodies (scene/bodies.hpp): a parent is another shell's body, no body encloses
+// itself, and a shell and every sphere of the bodies inside it lie within each enclosing shell.
+void check_shell_parents(const SceneDef& s) {
+  if (std::none_of(s.shells.begin(), s.shells.end(), [](const ShellDef& sh) { return sh.parent != kNoBody; })) return;
+  std::map<int, std::size_t> shell_of;
+  for (std::size_t k = 0; k < s.shells.size(); ++k) shell_of.emplace(s.shells[k].body, k);
+  for (std::size_t k = 0; k < s.shells.size(); ++k) {
+    const ShellDef& sh = s.shells[k];
+    if (sh.parent == kNoBody) continue;
+    const std::string key = fmt::format("shells[{}].parent", k);
+    const auto up = shell_of.find(sh.parent);
+    if (sh.parent == sh.body || up == shell_of.end())
+      fail(key, fmt::format("{} is not allowed; allowed: the body of another shell, whose shell encloses this one", sh.parent));
+    std::set<int> seen{sh.body};
+    for (int b = sh.parent; b != kNoBody; b = s.shells[shell_of.at(b)].parent)
+      if (!seen.insert(b).second || !shell_of.contains(b)) fail(key, fmt::format("body {} encloses itself through its parents", sh.body));
+    const ShellDef& outer = s.shells[up->second];
+    if ((sh.centre - outer.centre).norm() >= outer.radius)
+      fail(fmt::format("shells[{}].centre", k), fmt::format("lies outside shell '{}' of its parent body {}", outer.name, sh.parent));
+  }
+  std::vector<int> bodies;
+  for (const ParticleDef& p : s.particles) bodies.push_back(p.body);
+  const auto members = shell_members(s.shells, bodies);
+  for (std::size_t k = 0; k < s.shells.size(); ++k)
+    for (int i : members[k])
+      if ((s.particles[static_cast<std::size_t>(i)].x - s.shells[k].centre).norm() >= s.shells[k].radius)
+        fail(fmt::format("particles[{}]", i), fmt::format("its centre lies outside shell '{}', which encloses its body {}", s.shells[k].name,
+                                                        s.particles[static_cast<std::size_t>(i)].body));
 }
 
 bool wall_exists(const SceneDef& s, const std::string& name) {
@@ -254,6 +286,7 @@ void validate(const SceneDef& s, SoftLaws laws) {
       if (p.r >= sh.radius) fail(fmt::format("particles[{}].r", i), fmt::format("not smaller than the radius of shell '{}'", sh.name));
     }
   }
+  check_shell_parents(s);
 
   validate_integration(s.integration);
   validate_neighbor(s.neighbor);

@@ -3,6 +3,7 @@
 // and the radii those laws were measured at.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/validate.hpp"
@@ -47,7 +48,7 @@ std::string soft_radius_refusal(const SoftParticleLaws& laws, const SoftSceneLaw
 }
 
 void validate_soft_particles(const SceneDef& s, SoftLaws laws) {
-  std::size_t soft = 0, solid = 0;
+  std::size_t soft = 0, solid = 0, enclosed = 0;
   for (std::size_t i = 0; i < s.particles.size(); ++i) {
     const ParticleDef& p = s.particles[i];
     const std::string key = fmt::format("particles[{}]", i);
@@ -60,8 +61,13 @@ void validate_soft_particles(const SceneDef& s, SoftLaws laws) {
     if (!s.effects.soft_particles)
       fail(key + ".soft", "a soft-particle needs effects.soft_particles (the law file its contacts follow); allowed: "
                           "soft: true with effects.soft_particles declared, or soft: false");
-    if (p.body != kNoBody)
-      fail(key + ".body", "a soft-particle is one sphere, not a grain of a shell's body: give it no body");
+    // A soft-particle of a body lies in that body's shell (nested soft-particles, docs/nested.md),
+    // which confines it by the soft-solid law.
+    if (p.body != kNoBody && std::none_of(s.shells.begin(), s.shells.end(), [&](const ShellDef& sh) { return sh.body == p.body; }))
+      fail(key + ".body", fmt::format("body {} has no shell; allowed: no body, or the body of a shell that encloses the "
+                                      "soft-particle (nested soft-particles)",
+                                      p.body));
+    if (p.body != kNoBody) ++enclosed;
   }
   if (!s.effects.soft_particles) return;
   const SoftParticlesDef& def = *s.effects.soft_particles;
@@ -83,10 +89,10 @@ void validate_soft_particles(const SceneDef& s, SoftLaws laws) {
   }
   if (!(std::isfinite(def.laws.R0) && def.laws.R0 > 0.0)) fail(key + ".laws", "the law file's reference radius must be > 0");
   const bool friction = s.effects.friction;
-  const bool need_solid = !s.planes.empty() || solid > 0, need_soft = soft > 1;
+  const bool need_solid = !s.planes.empty() || solid > 0 || enclosed > 0, need_soft = soft > 1;
   if (need_solid && !def.laws.soft_solid)
     fail(key + ".laws", fmt::format("the scene has {} the soft-particles can touch, but {} has no soft-solid law",
-                                    s.planes.empty() ? "solid spheres" : "planes", def.laws.source));
+                                    !s.planes.empty() ? "planes" : solid > 0 ? "solid spheres" : "shells", def.laws.source));
   if (need_soft && !def.laws.soft_soft)
     fail(key + ".laws", fmt::format("the scene has {} soft-particles, but {} has no soft-soft law", soft, def.laws.source));
   if (def.laws.soft_solid) check_law(*def.laws.soft_solid, key + ".laws.soft-solid", friction);

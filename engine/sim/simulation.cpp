@@ -11,6 +11,7 @@
 #include "core/parallel.hpp"
 #include "forces/contact_walk.hpp"
 #include "integrate/velocity_verlet.hpp"
+#include "scene/bodies.hpp"
 #include "scene/validate.hpp"
 
 namespace softpack {
@@ -50,7 +51,7 @@ Simulation::Simulation(const SceneDef& scene)
       stable_(softpack::stable_limit(scene_)),
       world_(make_world(scene_)),
       forces_(scene_),
-      neighbours_(scene_.neighbor, world_, forces_.constants(), scene_.effects.friction, shell_members(world_)),
+      neighbours_(scene_.neighbor, world_, forces_.constants(), scene_.effects.friction, shell_members(scene_.shells, world_.p.body)),
       drivers_(scene_, world_),
       watchdog_(scene_.watchdog, watchdog_context(scene_, dt_, stable_)) {
   for (std::size_t k = 0; k < scene_.drivers.size(); ++k) validate_steps(scene_.drivers[k], dt_, fmt::format("drivers[{}]", k));
@@ -195,15 +196,17 @@ Vec3 Simulation::force_between(int from, int on) const {
   Vec3 total = Vec3::Zero();
   if (!forces_.active()) return total;
   const Particles& p = world_.p;
+  const BodyTree tree(scene_.shells);  // a body counts the bodies inside it (scene/bodies.hpp)
   for_each_closed_contact(world_, neighbours_.lists(), forces_, [&](const ClosedContact& c) {
     if (c.kind != ClosedContact::Kind::pair) return;
     const int bi = p.body[c.i], bj = p.body[c.j];
-    if (!((bi == from && bj == on) || (bi == on && bj == from))) return;
+    const auto in = [&](int b, int body) { return b == body || tree.within(b, body); };
+    if (!((in(bi, from) && in(bj, on)) || (in(bi, on) && in(bj, from)))) return;
     const Vec3 d = p.x[c.i] - p.x[c.j];
     const Vec3 n = d / d.norm();
     Vec3 F = c.Fn() * n;  // on sphere i
     if (c.spring) F -= c.kt() * *c.spring;
-    total += bi == on ? F : Vec3(-F);
+    total += in(bi, on) ? F : Vec3(-F);
   });
   return total;
 }

@@ -90,7 +90,7 @@ class Simulation {
   /// every sphere.
   void restore(const SimulationState& s);
   /// Elastic contact force (normal law and tangential springs, no damping) that the spheres of
-  /// body `from` exert on the spheres of body `on`.
+  /// body `from` exert on the spheres of body `on` (each with the bodies inside it, scene/bodies.hpp).
   Vec3 force_between(int from, int on) const;
 
   double dt() const { return dt_; }

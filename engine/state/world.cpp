@@ -48,15 +48,5 @@ World make_world(const SceneDef& scene) {
   return w;
 }
 
-std::vector<std::vector<int>> shell_members(const World& w) {
-  std::vector<std::vector<int>> out;
-  for (const SphericalShell& s : w.shells) {
-    std::vector<int> members;
-    for (std::size_t i = 0; i < w.p.size(); ++i)
-      if (w.p.body[i] == s.body) members.push_back(static_cast<int>(i));
-    out.push_back(std::move(members));
-  }
-  return out;
-}
 
 }  // namespace softpack

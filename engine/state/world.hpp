@@ -32,7 +32,5 @@ struct World {
 /// The world a scene starts from: masses m = 4/3 pi r^3 rho, moments of inertia I = 2/5 m r^2
 /// (rotation only), walls at rest.
 World make_world(const SceneDef& scene);
-/// The spheres each shell confines (those of its body), in index order.
-std::vector<std::vector<int>> shell_members(const World& w);
 
 }  // namespace softpack
