@@ -62,7 +62,7 @@ STUDY_NAMES := $(basename $(notdir $(STUDY_FILES)))
 # The goals that need the tools and a profile (the pipeline's and the studies').
 PIPELINE_GOALS := all tables figures paper archive packings normal tangential sliding sweeps averages fits figure1 figure2 \
   study study-report $(STUDY_NAMES) $(STUDY_NAMES:%=%-report) fast-check timing \
-  coarse-grain-runs coarse-grain-multi-contact many-body-probe many-body-report many-body-verdict many-body-census lammps-check
+  coarse-grain-runs coarse-grain-multi-contact many-body-probe many-body-report many-body-verdict many-body-census lammps-check nested nested-report
 # The goals that write nothing under DATA; every other goal (a file named on the command line too)
 # writes there and takes its lock.
 NO_DATA_GOALS := help setup build build-tools test test-sanitize test-all bench verify fuzz-build fuzz fuzz-corpus
@@ -184,6 +184,7 @@ include workflow/paper.mk
 include workflow/studies.mk
 include workflow/coarse.mk
 include workflow/lammps.mk
+include workflow/nested.mk
 else ifneq ($(SOFTPACK_TOOLS_BUILT),)
 $(error $(CONFIG_TOOL) is missing: $(if $(findstring n,$(firstword -$(MAKEFLAGS))),make -n needs the tools: run make build first,\
   the build did not make it (see $(BUILD)/build.log)))

@@ -71,7 +71,12 @@ int main(int argc, char** argv) {
       for (const ContactScene s : settings.normal.scenes) names.push_back(scene_name(s));
       fmt::print("{}\n", fmt::join(names, " "));
     }
-    if (*sections) fmt::print("{}\n", fmt::join(stage_sections(stage), " "));
+    if (*sections) {  // an optional section the profile leaves out is not read
+      std::vector<std::string> read;
+      for (const std::string& s : stage_sections(stage))
+        if (!optional_section(s) || root.has(s)) read.push_back(s);
+      fmt::print("{}\n", fmt::join(read, " "));
+    }
     // Imported packings: every stage also depends on the bytes of the source files (their SHA-256).
     if (*text) fmt::print("{}{}", stage_text(root, stage), packing.import ? import_sources_text(*packing.import) : "");
     if (*stamp) fmt::print("{}\n", profile_stamp(root, stage, release));

@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <numbers>
+
 #include "core/error.hpp"
+#include "formats/law_file.hpp"
+#include "packing/nested.hpp"
 
 namespace softpack {
 namespace {
@@ -18,15 +22,45 @@ SceneDef base_scene(const SimulationSettings& s) {
   return scene;
 }
 
-// The packing's grains and shell about `centre`, every length times `scale` (1: as generated).
+double ball(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
+
+// The masses of a site's content resolved (docs/nested.md): its grains at every level, and the
+// free shells of it and of every site inside it, each shell_mass_fraction times its grains'.
+double shells_mass(const SiteContent& c, double density, double fraction) {
+  double m = fraction * density * c.solid_volume();
+  for (const SiteContent& sub : c.sites) m += shells_mass(sub, density, fraction);
+  return m;
+}
+
+// Site contents resolved, about `centre`, every length times `scale`: each in a free shell whose
+// parent is `body`, its grains a body of their own (numbered from `next_body` on), and so on down.
+void add_contents(SceneDef& scene, const std::vector<SiteContent>& contents, const std::vector<Vec3>& sites, double site_radius,
+                  int body, const Vec3& centre, double scale, const SimulationSettings& s, int& next_body) {
+  for (std::size_t k = 0; k < contents.size(); ++k) {
+    const SiteContent& c = contents[k];
+    const int inner = next_body++;
+    const Vec3 at = centre + scale * sites[k];
+    for (std::size_t i = 0; i < c.level.grains.radii.size(); ++i) {
+      ParticleDef d;
+      d.x = at + scale * c.level.grains.centres[i];
+      d.r = scale * c.level.grains.radii[i];
+      d.body = inner;
+      d.material = kGrain;
+      scene.particles.push_back(d);
+    }
+    const double grains = s.material.density * c.solid_volume();
+    ShellDef shell{fmt::format("site-{}", inner), inner, at, scale * site_radius, kWall, s.shell_contact_radius,
+                   s.content->shell_mass_fraction * grains};
+    shell.parent = body;
+    scene.shells.push_back(shell);
+    add_contents(scene, c.sites, c.level.sites, c.level.site_radius, inner, at, scale, s, next_body);
+  }
+}
+
+// The packing's grains and shell about `centre`, every length times `scale` (1: as generated),
+// and the sites of a packing of nested soft-particles in the form of the profile's `content`.
 void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Vec3& centre, const std::string& shell,
-                       ShellContactRadius radius, double scale = 1.0) {
-  // A packing of nested soft-particles would be measured without its sites: refused, not run.
-  if (p.sites.levels > 1)
-    throw InputError(fmt::format("the packing of seed {} ({}) holds {} soft-particles of the level below (packing.levels = {}): "
-                                 "the measurement scenes do not hold nested soft-particles yet (docs/nested.md, \"What is not "
-                                 "done\"); allowed: packings of packing.levels 1",
-                                 p.provenance.seed, p.provenance.config_file, p.sites.centres.size(), p.sites.levels));
+                       const SimulationSettings& s, int& next_body, double scale = 1.0) {
   for (std::size_t i = 0; i < p.radii.size(); ++i) {
     ParticleDef d;
     d.x = centre + scale * p.centres[i];
@@ -35,7 +69,42 @@ void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Ve
     d.material = kGrain;
     scene.particles.push_back(d);
   }
-  scene.shells.push_back(ShellDef{shell, body, centre, scale * p.Rs, kWall, radius, std::nullopt});
+  scene.shells.push_back(ShellDef{shell, body, centre, scale * p.Rs, kWall, s.shell_contact_radius, std::nullopt});
+  if (p.sites.levels == 1) return;
+  // parse_measurement refuses a profile of levels without `content`; a packing file of levels
+  // measured with a profile without them is refused here, rather than measured without its sites.
+  if (!s.content)
+    throw InputError(fmt::format("the packing of seed {} ({}) holds {} soft-particles of the level below (packing.levels = {}), "
+                                 "but the profile has no `content` section saying how to hold them; allowed: a profile with "
+                                 "packing.levels {} and `content` (docs/nested.md)",
+                                 p.provenance.seed, p.provenance.config_file, p.sites.centres.size(), p.sites.levels, p.sites.levels));
+  const std::vector<SiteContent> contents =
+      generate_contents(p.parameters, p.sites.levels - 1, p.provenance.seed, p.sites.centres.size());
+  if (s.content->form == ContentForm::resolved) {
+    add_contents(scene, contents, p.sites.centres, p.sites.radius, body, centre, scale, s, next_body);
+    return;
+  }
+  for (std::size_t k = 0; k < contents.size(); ++k) {
+    const double grains = s.material.density * contents[k].solid_volume();
+    ParticleDef d = {};
+    d.x = centre + scale * p.sites.centres[k];
+    d.r = scale * p.sites.radius;
+    d.body = body;
+    d.material = kGrain;
+    d.soft = true;
+    // Its content's mass resolved: the grains and their free shells (scaled as every length^3).
+    d.mass = scale * scale * scale * (grains + shells_mass(contents[k], s.material.density, s.content->shell_mass_fraction));
+    scene.particles.push_back(d);
+  }
+  if (!scene.effects.soft_particles) {
+    SoftParticleLaws laws;
+    try {
+      laws = soft_particle_laws(read_law_file(s.content->laws), s.content->laws);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("content.laws: {} (the law file of the level below: docs/nested.md)", e.what()));
+    }
+    scene.effects.soft_particles = SoftParticlesDef{laws, s.content->grain_contact, SoftParticlesDef::BeyondRange::report};
+  }
 }
 
 }  // namespace
@@ -45,7 +114,8 @@ ContactSetup soft_solid_setup(const PackingFile& first, const SimulationSettings
   c.kind = ContactScene::soft_solid;
   c.scene = base_scene(s);
   c.Rs = first.Rs;
-  add_soft_particle(c.scene, first, 0, Vec3::Zero(), "shell-1", s.shell_contact_radius);
+  int next_body = 1;
+  add_soft_particle(c.scene, first, 0, Vec3::Zero(), "shell-1", s, next_body);
   c.scene.planes.push_back(PlaneDef{"wall", Vec3(first.Rs, 0, 0), Vec3(-1, 0, 0), kWall});
   c.second_wall = "wall";
   c.first_shell = "shell-1";
@@ -62,9 +132,10 @@ ContactSetup soft_soft_setup(const PackingFile& first, const PackingFile& second
   c.kind = ContactScene::soft_soft;
   c.scene = base_scene(s);
   c.Rs = first.Rs;
-  add_soft_particle(c.scene, first, 0, Vec3::Zero(), "shell-1", s.shell_contact_radius);
+  int next_body = 2;  // the bodies inside the two soft-particles, when their content is resolved
+  add_soft_particle(c.scene, first, 0, Vec3::Zero(), "shell-1", s, next_body);
   const double Rs2 = second_radius_ratio * second.Rs;  // touching: centres Rs + Rs2 apart
-  add_soft_particle(c.scene, second, 1, Vec3(first.Rs + Rs2, 0, 0), "shell-2", s.shell_contact_radius, second_radius_ratio);
+  add_soft_particle(c.scene, second, 1, Vec3(first.Rs + Rs2, 0, 0), "shell-2", s, next_body, second_radius_ratio);
   c.second_wall = "shell-2";
   c.first_shell = "shell-1";
   c.second_body = 1;

@@ -9,6 +9,7 @@
 #include "profile/profile.hpp"
 #include "core/error.hpp"
 #include "forces/contact_models.hpp"
+#include "packing/packing_profile.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene_yaml.hpp"
 #include "scene/validate.hpp"
@@ -44,6 +45,40 @@ std::vector<double> increasing_list(const ConfigNode& n, double lo, double hi, b
   }
   if (out.empty()) n.fail("at least one value is required");
   return out;
+}
+
+// The `content` section: required by a packing of nested soft-particles, refused otherwise.
+std::optional<ContentSettings> parse_content(const ConfigNode& root) {
+  const int levels = parse_packing(root).levels;
+  const auto node = root.find("content");
+  if (!node) {
+    if (levels > 1)
+      root.at("packing").at("levels").fail(fmt::format("{} levels need a `content` section: how the soft-particles of the level "
+                                                       "below are held (form: soft or resolved, docs/nested.md)",
+                                                       levels));
+    return std::nullopt;
+  }
+  if (levels == 1)
+    node->fail("a packing without levels holds no soft-particles; allowed: `content` with packing.levels > 1, or no `content`");
+  ContentSettings c;
+  c.form = node->at("form").choice({"soft", "resolved"}) == "soft" ? ContentForm::soft : ContentForm::resolved;
+  const ConfigNode fraction = node->at("shell_mass_fraction");
+  c.shell_mass_fraction = fraction.number();
+  if (!(c.shell_mass_fraction >= 0.0 && c.shell_mass_fraction <= 100.0))
+    fraction.fail(fmt::format("{} is not allowed; allowed: 0 <= shell_mass_fraction <= 100 (a shell's mass / its grains')",
+                              c.shell_mass_fraction));
+  if (c.form == ContentForm::resolved) {
+    node->allow_only({"form", "shell_mass_fraction"});
+    return c;
+  }
+  node->allow_only({"form", "shell_mass_fraction", "laws", "grain_contact"});
+  c.grain_contact = node->at("grain_contact").choice({"wall", "reduced-radius"}) == "wall" ? GrainContactRule::wall
+                                                                                         : GrainContactRule::reduced_radius;
+  // Read when a scene is built (measure/contact_scenes.cpp): the law file of the level below is
+  // made by that level's study, which may not have run when this profile is read (docs/nested.md).
+  c.laws = node->at("laws").string();
+  if (c.laws.empty()) node->at("laws").fail("allowed: the path of the law file of the level below");
+  return c;
 }
 
 }  // namespace
@@ -96,6 +131,8 @@ MeasurementSettings parse_measurement(const ConfigNode& root) {
     if (const auto n = effects.find("normal")) n->fail(std::string(e.what()).substr(std::string("effects.normal: ").size()));
     effects.fail(e.what());
   }
+
+  s.content = parse_content(root);
 
   const ConfigNode nn = root.at("normal");
   nn.allow_only({"scenes", "delta_n", "speed", "path", "second_radius_ratio"});

@@ -7,6 +7,7 @@
 // (sim/watchdog.hpp); it changes no result and is not part of the configuration recorded with
 // the points.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,23 @@ enum class ContactScene { soft_solid, soft_soft };
 ContactScene parse_contact_scene(const std::string& name);  ///< "soft-solid" | "soft-soft"
 std::string scene_name(ContactScene s);
 
+/// How the sites of a packing of nested soft-particles (packing.levels > 1, packing/nested.hpp)
+/// are held in the measurement scenes: the profile's `content` section (docs/nested.md).
+///   soft:     each site one soft-particle of the soft-particle's body, following the law file
+///             of the level below (`laws`), of its content's mass and (1 + shell_mass_fraction);
+///   resolved: each site's content, down to the last level, in a free shell (its grains' mass
+///             times shell_mass_fraction) whose parent is the enclosing body.
+enum class ContentForm { soft, resolved };
+struct ContentSettings {
+  ContentForm form = ContentForm::soft;
+  std::string laws;  ///< soft: the law file's path (read when a scene is built: it may be made after the profile is read)
+  GrainContactRule grain_contact = GrainContactRule::wall;  ///< soft: a grain against a site
+  double shell_mass_fraction = 0.0;
+};
+
 /// Engine settings of the measurement scenes: the profile's `material` and `simulation`
-/// sections, in the scene format's own terms (docs/scene-format.md), read by its own readers.
+/// sections, in the scene format's own terms (docs/scene-format.md), read by its own readers,
+/// and the `content` section (absent: a packing without levels).
 struct SimulationSettings {
   Material material;       ///< of the grains (and of the shells and the wall unless `material.wall`)
   Material wall_material;  ///< of the shells and the plane wall: `material.wall`, each key left out the grains'
@@ -33,6 +49,7 @@ struct SimulationSettings {
   IntegrationDef integration;
   NeighborDef neighbor;
   ShellContactRadius shell_contact_radius = ShellContactRadius::concave;  ///< `shells: {contact_radius}`
+  std::optional<ContentSettings> content;
 };
 
 /// How the first soft-particle is turned for the tangential measurement.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.hpp"
 #include "core/random.hpp"
@@ -103,6 +104,39 @@ LevelPacking generate_level(const PackingParameters& p, int levels_below, std::u
     out.grains.radii.push_back(all.radii[i]);
     out.grains.radii_inserted.push_back(all.radii_inserted[i]);
     if (all.radii[i] != all.radii_inserted[i]) ++out.grains.grown;
+  }
+  return out;
+}
+
+double SiteContent::solid_volume() const {
+  double v = 0.0;
+  for (double r : level.grains.radii) v += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  for (const SiteContent& c : sites) v += c.solid_volume();
+  return v;
+}
+
+std::size_t SiteContent::grains() const {
+  std::size_t n = level.grains.radii.size();
+  for (const SiteContent& c : sites) n += c.grains();
+  return n;
+}
+
+std::size_t SiteContent::shells() const {
+  std::size_t n = sites.size();
+  for (const SiteContent& c : sites) n += c.shells();
+  return n;
+}
+
+std::vector<SiteContent> generate_contents(const PackingParameters& p, int levels_below, std::uint64_t seed, std::size_t sites) {
+  std::vector<SiteContent> out;
+  if (levels_below < 1) return out;
+  const PackingParameters below = level_parameters(p, 1);
+  for (std::size_t k = 0; k < sites; ++k) {
+    SiteContent c;
+    const std::uint64_t s = nested_site_seed(seed, k);
+    c.level = generate_level(below, levels_below - 1, s);
+    c.sites = generate_contents(below, levels_below - 1, s, c.level.sites.size());
+    out.push_back(std::move(c));
   }
   return out;
 }

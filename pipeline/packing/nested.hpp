@@ -58,6 +58,26 @@ void validate_levels(const PackingParameters& top, int levels);
 LevelPacking generate_level(const PackingParameters& p, int levels_below, std::uint64_t seed,
                             const PackingProgress& progress = {});
 
+/// A site's content down to the last level: its level packing (about its own centre) and, for
+/// each of its sites, that site's content in turn.
+struct SiteContent {
+  LevelPacking level;
+  std::vector<SiteContent> sites;
+
+  /// Solid volume of every grain inside, at every level below [m^3].
+  double solid_volume() const;
+  /// Grains inside, at every level below.
+  std::size_t grains() const;
+  /// Sites inside that have a shell when resolved (this content's and those below).
+  std::size_t shells() const;
+};
+
+/// The contents of the sites of a level packing made with `p` (its level's parameters) and
+/// `seed`, with `levels_below` levels under it (>= 1): site k's is generate_level one level down
+/// with nested_site_seed(seed, k), and so on to the last level.
+std::vector<SiteContent> generate_contents(const PackingParameters& p, int levels_below, std::uint64_t seed,
+                                           std::size_t sites);
+
 /// The seed of the content of site `site` of a level packing made with `seed`: seed * 1000 +
 /// site. InputError when it would not be a seed (above 2^63 - 1).
 std::uint64_t nested_site_seed(std::uint64_t seed, std::size_t site);

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "profile/profile.hpp"
 #include "core/error.hpp"
+#include "io/sha256.hpp"
 #include "packing/nested.hpp"
 
 namespace softpack {
@@ -70,7 +72,17 @@ double shell_radius(const PackingProfile& profile, const std::vector<std::uint64
 
 std::string profile_stamp(const ConfigNode& root, const std::string& stage, const std::string& release) {
   const PackingProfile packing = parse_packing(root);
-  return stage_stamp(root, stage, release, packing.import ? import_sources_text(*packing.import) : "");
+  std::string extra = packing.import ? import_sources_text(*packing.import) : "";
+  // The soft content's law file by its content (docs/nested.md), not its name or time.
+  if (stage != "packing")
+    if (const auto content = root.find("content"))
+      if (const auto laws = content->find("laws")) {
+        if (!std::filesystem::is_regular_file(laws->string()))
+          laws->fail(fmt::format("{}: no such file: the law file of the level below, made by its study first (docs/nested.md)",
+                                 laws->string()));
+        extra += "content.laws sha256 " + sha256_of_file(laws->string()) + "\n";
+      }
+  return stage_stamp(root, stage, release, extra);
 }
 
 }  // namespace softpack

@@ -14,7 +14,7 @@ namespace softpack {
 const std::vector<std::string>& profile_sections() {
   static const std::vector<std::string> sections{"profile",    "description", "seeds",  "material",   "packing",
                                                  "simulation", "relaxation",  "normal", "tangential", "watchdog",
-                                                 "fit",        "sliding"};
+                                                 "fit",        "sliding",     "content"};
   return sections;
 }
 
@@ -26,13 +26,13 @@ const std::vector<std::string>& profile_stages() {
 const std::vector<std::string>& stage_sections(const std::string& stage) {
   static const std::map<std::string, std::vector<std::string>> sections{
       {"packing", {"packing"}},
-      {"normal", {"packing", "material", "simulation", "relaxation", "normal"}},
-      {"tangential", {"packing", "material", "simulation", "relaxation", "normal", "tangential"}},
+      {"normal", {"packing", "material", "simulation", "content", "relaxation", "normal"}},
+      {"tangential", {"packing", "material", "simulation", "content", "relaxation", "normal", "tangential"}},
       // The sliding measurement (issue 16) starts from the normal states, as the tangential one.
-      {"sliding", {"packing", "material", "simulation", "relaxation", "normal", "sliding"}},
+      {"sliding", {"packing", "material", "simulation", "content", "relaxation", "normal", "sliding"}},
       // The average stage's results are the averages and the fits (their `fit` section is read by
       // softpack-fit only, but averaging costs seconds: one stamp for both).
-      {"average", {"seeds", "packing", "material", "simulation", "relaxation", "normal", "tangential", "fit"}},
+      {"average", {"seeds", "packing", "material", "simulation", "content", "relaxation", "normal", "tangential", "fit"}},
   };
   const auto it = sections.find(stage);
   if (it == sections.end())
@@ -41,7 +41,7 @@ const std::vector<std::string>& stage_sections(const std::string& stage) {
 }
 
 bool optional_section(const std::string& section) {
-  return section == "fit" || section == "tangential" || section == "sliding";
+  return section == "fit" || section == "tangential" || section == "sliding" || section == "content";
 }
 
 std::string section_text(const ConfigNode& root, const std::string& section) {

@@ -318,6 +318,16 @@ RadiusValue common_exponent(const std::vector<std::vector<double>>& x, const std
   return {n, std::sqrt(1.0 / sxx) * (s2 > 1.0 ? std::sqrt(s2) : 1.0)};
 }
 
+std::vector<RadiusRow> setting_law_rows(const Study& st, const std::string& dir, const std::string& setting, double* Rs) {
+  StudyRuns runs(dir);
+  const SettingInfo info = setting_info(st, setting);
+  if (Rs) *Rs = info.Rs;
+  std::vector<RadiusRow> rows;
+  if (!has_stage(dir, setting, info, "normal")) return rows;
+  for (const std::string& scene : scenes_of(info)) rows.push_back(measure_row(st, runs, setting, info, scene));
+  return rows;
+}
+
 RadiusReport radius_report(const Study& st, const std::string& dir) {
   RadiusReport r;
   r.Fn_delta_n = st.Fn_delta_n, r.kt_delta_n = st.kt_delta_n;

@@ -82,6 +82,14 @@ RadiusReport radius_report(const Study& study, const std::string& dir);
 RadiusValue common_exponent(const std::vector<std::vector<double>>& x, const std::vector<std::vector<double>>& y,
                             const std::vector<std::vector<double>>& y_error, double* chi2_per_dof = nullptr);
 
+/// One setting's laws, scene by scene, measured as the rows of the radius report are (the fits
+/// with their jackknife errors, Fn and kt at the study's compare Δn, μ_soft from the sliding
+/// stage); none when the setting has no normal results yet. Its shell radius in `Rs`.
+std::vector<RadiusRow> setting_law_rows(const Study& study, const std::string& dir, const std::string& setting, double* Rs = nullptr);
+
+/// A scene's laws in the law file's terms: Eq. 7, Eq. 8 (c = −a δ^b) and μ_soft of a row.
+SceneLaws row_scene_laws(const RadiusRow& row);
+
 /// The law file of the study's reference (its laws at R0, the scaling of the fixed variant, or
 /// the self-similar one without it, and the mixing rule's check).
 LawFile radius_law_file(const RadiusReport& r, const Study& study, const std::string& code_version);

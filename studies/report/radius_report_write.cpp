@@ -40,24 +40,29 @@ LawValue law(const RadiusValue& v) { return LawValue{v.value, v.error}; }
 
 }  // namespace
 
+SceneLaws row_scene_laws(const RadiusRow& row) {
+  SceneLaws s;
+  s.normal = LawFit{law(row.a), law(row.b), law(row.c), law(row.delta), row.dn_min, row.dn_max};
+  if (std::isfinite(row.kt_a.value)) {
+    const double c = -row.kt_a.value * std::pow(row.delta.value, row.kt_b.value);  // Eq. 8: c = −a δ^b
+    s.tangential = LawFit{law(row.kt_a), law(row.kt_b), LawValue{c, kNaN}, law(row.delta), row.kt_dn_min, row.kt_dn_max};
+  }
+  if (!row.mu.empty()) {
+    FrictionLaw fr;
+    for (std::size_t k = 0; k < row.mu.size(); ++k)
+      if (std::isfinite(row.mu[k].value)) fr.delta_n.push_back(row.mu_delta_n[k]), fr.mu.push_back(law(row.mu[k]));
+    if (!fr.delta_n.empty()) s.friction = fr;
+  }
+  return s;
+}
+
 LawFile radius_law_file(const RadiusReport& r, const Study& study, const std::string& code_version) {
   LawFile f;
   f.reference_radius = r.R0;
   for (const char* scene : {"soft-solid", "soft-soft"}) {
     const RadiusRow* row = row_of(r, "reference", scene);
     if (!row || !std::isfinite(row->a.value)) continue;
-    SceneLaws s;
-    s.normal = LawFit{law(row->a), law(row->b), law(row->c), law(row->delta), row->dn_min, row->dn_max};
-    if (std::isfinite(row->kt_a.value)) {
-      const double c = -row->kt_a.value * std::pow(row->delta.value, row->kt_b.value);  // Eq. 8: c = −a δ^b
-      s.tangential = LawFit{law(row->kt_a), law(row->kt_b), LawValue{c, kNaN}, law(row->delta), row->kt_dn_min, row->kt_dn_max};
-    }
-    if (!row->mu.empty()) {
-      FrictionLaw fr;
-      for (std::size_t k = 0; k < row->mu.size(); ++k)
-        if (std::isfinite(row->mu[k].value)) fr.delta_n.push_back(row->mu_delta_n[k]), fr.mu.push_back(law(row->mu[k]));
-      if (!fr.delta_n.empty()) s.friction = fr;
-    }
+    SceneLaws s = row_scene_laws(*row);
     // The fixed variant is what a soft-particle of another size made of the same grains is;
     // the self-similar one stands in where the fixed one has not run.
     for (const char* variant : {"fixed", "self_similar"}) {

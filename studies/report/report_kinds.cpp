@@ -10,6 +10,7 @@
 #include "report/calibration_report.hpp"
 #include "report/coarse_report.hpp"
 #include "report/fits_report.hpp"
+#include "report/nested_report.hpp"
 #include "report/packing_report.hpp"
 #include "report/radius_report.hpp"
 #include "report/response_report.hpp"
@@ -40,6 +41,11 @@ const std::vector<ReportKind>& report_kinds() {
       {"density-rule", "The density rule", "table.md, density-rule.json (report/packing_report.hpp)", {"grid", "criteria"},
        write_density_rule_report},
       {"fits", "Fit options", "table.md, fits.json (report/fits_report.hpp)", {}, write_fits_report},
+      {"nested", "Nested soft-particles",
+       "table.md, nested.json and per setting <setting>/laws.json (report/nested_report.hpp)", {"nested", "criteria"},
+       [](const Study& study, const std::string& data, const std::string& out, const std::string& title) {
+         return write_nested_report(nested_report(study, data), study, out, title);
+       }},
       {"packings", "Packing density", "table.md, packing-density.dat (report/packing_report.hpp)", {"vary"},
        write_packings_report},
       {"response", "Response of the normal law", "table.md, response.dat (report/response_report.hpp)", {"compare"},

@@ -259,7 +259,7 @@ void read_plan(const ConfigNode& root, Study& st) {
 Study read_study(const std::string& path) {
   const ConfigNode root = ConfigNode::load_file(path);
   root.allow_only({"study", "report", "archive", "stages", "out", "figures", "base", "seeds", "common", "compare", "criteria", "calibrate",
-                   "radius", "reference", "settings", "vary", "grid"});
+                   "radius", "nested", "reference", "settings", "vary", "grid"});
   Study st;
   st.path = path;
   st.base = root.at("base").string();
@@ -309,6 +309,15 @@ Study read_study(const std::string& path) {
     if (!(st.mu_from_ht_over_Rs > 0.0 && st.mu_from_ht_over_Rs < 1.0))
       radius->at("mu_from_ht_over_Rs").fail("allowed: 0 < value < 1 (ht / Rs from which the contact slides)");
   }
+  if (auto nested = root.find("nested")) {  // the nested report (report/nested_report.hpp)
+    nested->allow_only({"against", "mu_from_ht_over_Rs"});
+    st.nested_against = nested->at("against").string();
+    if (st.nested_against != "reference" && !settings_named(root, st.nested_against))
+      nested->at("against").fail("allowed: reference or a setting of this study");
+    st.mu_from_ht_over_Rs = nested->at("mu_from_ht_over_Rs").number();
+    if (!(st.mu_from_ht_over_Rs > 0.0 && st.mu_from_ht_over_Rs < 1.0))
+      nested->at("mu_from_ht_over_Rs").fail("allowed: 0 < value < 1 (ht / Rs from which the contact slides)");
+  }
   if (auto common = root.find("common"))
     for (const std::string& key : common->keys()) st.common.emplace_back(key, YAML::Clone(std::as_const(common->yaml())[key]));
   if (auto ref = root.find("reference")) st.reference = read_setting("reference", *ref, st.seeds);
@@ -318,7 +327,9 @@ Study read_study(const std::string& path) {
     if (std::find(st.reference.seeds.begin(), st.reference.seeds.end(), s) == st.reference.seeds.end())
       root.at("reference").at("seeds").fail(fmt::format("the reference must hold every seed of the study; {} is missing", s));
   if (root.has("vary") && root.has("grid")) root.at("grid").fail("a study varies one key at a time (`vary`) or every combination (`grid`), not both");
-  if (!root.has("settings") && !root.has("vary") && !root.has("grid")) root.fail("no settings: give `settings`, `vary` or `grid`");
+  // A nested study's last level measures its reference alone: the laws the level above reads.
+  if (!root.has("settings") && !root.has("vary") && !root.has("grid") && st.report != "nested")
+    root.fail("no settings: give `settings`, `vary` or `grid`");
   std::set<std::string> names{"reference"};
   if (auto settings = root.find("settings")) check_settings(*settings, st, names);
   if ((root.has("vary") || root.has("grid")) && !st.reference.set.empty())

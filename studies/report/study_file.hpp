@@ -65,6 +65,9 @@ struct Study {
   /// soft-soft of two radii), and from which ht / Rs a sliding contact's Ft / Fn is averaged.
   std::map<std::string, std::vector<std::string>> radius_variants;
   double mu_from_ht_over_Rs = 0.0;
+  /// nested (report/nested_report.hpp): the setting every other one is compared with (the
+  /// content resolved); the radius section's mu_from_ht_over_Rs is nested's too.
+  std::string nested_against;
   std::string criteria;          ///< `criteria`: the criteria file a judging kind applies ("": none)
   std::vector<StudyAxis> vary;   ///< `vary`: each key with its settings, in the file's order
   std::vector<StudyAxis> grid;   ///< `grid`: its keys, the last varying fastest

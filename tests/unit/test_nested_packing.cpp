@@ -133,7 +133,8 @@ TEST(NestedPacking, RefusesLevelsItCannotHold) {
 }
 
 // The packing file keeps the level's sites; a packing without levels keeps its identity; the
-// measurement scenes refuse a packing whose sites they would leave out.
+// measurement scenes refuse a packing whose sites they would leave out (a profile without
+// `content`).
 TEST(NestedPacking, TheFileKeepsTheSitesAndTheScenesRefuseThem) {
   testing::TempDir dir("nested-file");
   const PackingParameters p = level_packing();

@@ -1,0 +1,71 @@
+// The nested soft-particles' report (issue 35, docs/nested.md; a study per level,
+// experiments/studies/nested-level-*.yaml, report kind `nested`).
+//
+// Per setting of the level: its laws as the radius report measures them (Eq. 7, Eq. 8, μ_soft,
+// jackknife errors over the seeds; report/radius_report.hpp), written as the law file
+// `<setting>/laws.json` at the setting's radius, which the level above reads; its grains and
+// sites; and what it cost (the CPU time of its packings and stages).
+//
+// Every other setting against `nested.against` (the content resolved), by the criterion of the
+// criteria file (`nested.criterion` of experiments/nested.yaml, committed before the runs): Fn at
+// each normal Δn and kt at each tangential Δn of the grid within the criterion's ranges; a point
+// agrees when |mean − mean_against| <= bound √(se² + se_against²); a point is left out when Fn
+// (for kt: Fn at its Δn) is below onset_force (Rs / Rs0)² in both settings. The recursion holds
+// for a setting when every compared point agrees.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "report/radius_report.hpp"
+#include "report/study_file.hpp"
+
+namespace softpack {
+
+struct NestedCriterion {
+  std::array<double, 2> Fn_delta_n{}, kt_delta_n{};  ///< [low, high] of the compared Δn
+  double bound = 0.0;
+  double onset_force = 0.0;  ///< [N] at the radius Rs0
+  double Rs0 = 0.0;          ///< nested.packing.Rs: level 0's radius [m]
+};
+
+/// Reads `nested.criterion` and `nested.packing.Rs` of the criteria file; InputError names the key.
+NestedCriterion read_nested_criterion(const std::string& path);
+
+struct NestedPoint {
+  std::string scene, quantity;  ///< quantity: "Fn" [N] or "kt" [N/m]
+  double delta_n = 0.0;
+  RadiusValue value, against, ratio;  ///< ratio: value / against, its error propagated
+  bool compared = false, agrees = false;
+};
+
+struct NestedComparison {
+  std::string setting, against;
+  std::vector<NestedPoint> points;
+  std::size_t compared = 0, agreeing = 0;
+  bool holds() const { return compared > 0 && agreeing == compared; }
+};
+
+struct NestedSetting {
+  std::string name, changes;
+  double Rs = 0.0;
+  bool ran = false;                 ///< has normal results
+  std::vector<RadiusRow> rows;      ///< per scene
+  double grains = 0.0, sites = 0.0;  ///< of its own level, mean over seeds
+  double cpu_packings = 0.0, cpu_stages = 0.0;  ///< [s], summed over seeds and scenes
+};
+
+struct NestedReport {
+  NestedCriterion criterion;
+  std::vector<NestedSetting> settings;
+  std::vector<NestedComparison> comparisons;
+};
+
+/// Reads the runs under `dir` (<dir>/<setting>/...); a setting without normal results is listed as
+/// not run. InputError when the criteria file or `nested.against` is missing.
+NestedReport nested_report(const Study& study, const std::string& dir);
+
+/// table.md, nested.json and each run setting's laws.json in `out_dir`; returns table.md's text.
+std::string write_nested_report(const NestedReport& r, const Study& study, const std::string& out_dir, const std::string& title);
+
+}  // namespace softpack
