@@ -60,7 +60,10 @@ NestedPoint nested_point(const std::string& scene, const std::string& quantity, 
   return p;
 }
 
-NestedComparison compare_settings(const NestedSetting& s, const NestedSetting& against, const NestedCriterion& c, const Study& st) {
+}  // namespace
+
+NestedComparison nested_comparison(const NestedSetting& s, const NestedSetting& against, const NestedCriterion& c,
+                                   const std::vector<double>& Fn_delta_n, const std::vector<double>& kt_delta_n) {
   NestedComparison out;
   out.setting = s.name, out.against = against.name;
   const double onset = c.onset_force * (s.Rs / c.Rs0) * (s.Rs / c.Rs0);
@@ -75,22 +78,24 @@ NestedComparison compare_settings(const NestedSetting& s, const NestedSetting& a
     const auto a = std::find_if(against.rows.begin(), against.rows.end(), [&](const RadiusRow& r) { return r.scene == row.scene; });
     if (a == against.rows.end()) continue;
     const auto Fn_at = [&](const RadiusRow& r, double dn) {
-      for (std::size_t k = 0; k < st.Fn_delta_n.size(); ++k)
-        if (std::abs(st.Fn_delta_n[k] - dn) < 1e-12) return r.Fn[k].value;
+      for (std::size_t k = 0; k < Fn_delta_n.size(); ++k)
+        if (std::abs(Fn_delta_n[k] - dn) < 1e-12) return r.Fn[k].value;
       return kNaN;  // no normal point there: the kt point is compared
     };
-    for (std::size_t k = 0; k < st.Fn_delta_n.size(); ++k) {
-      NestedPoint p = nested_point(row.scene, "Fn", st.Fn_delta_n[k], row.Fn[k], a->Fn[k]);
+    for (std::size_t k = 0; k < Fn_delta_n.size(); ++k) {
+      NestedPoint p = nested_point(row.scene, "Fn", Fn_delta_n[k], row.Fn[k], a->Fn[k]);
       judge(p, row.Fn[k].value, a->Fn[k].value);
     }
-    for (std::size_t k = 0; k < st.kt_delta_n.size() && k < row.kt.size() && k < a->kt.size(); ++k) {
-      const double dn = st.kt_delta_n[k];
+    for (std::size_t k = 0; k < kt_delta_n.size() && k < row.kt.size() && k < a->kt.size(); ++k) {
+      const double dn = kt_delta_n[k];
       NestedPoint p = nested_point(row.scene, "kt", dn, row.kt[k], a->kt[k]);
       judge(p, Fn_at(row, dn), Fn_at(*a, dn));
     }
   }
   return out;
 }
+
+namespace {
 
 nlohmann::json nested_json(const RadiusValue& v) { return {{"value", json_number(v.value)}, {"error", json_number(v.error)}}; }
 
@@ -136,7 +141,7 @@ NestedReport nested_report(const Study& study, const std::string& dir) {
   for (const std::string& n : names) r.settings.push_back(measure_setting(st, dir, n));
   const auto against = std::find_if(r.settings.begin(), r.settings.end(), [&](const NestedSetting& s) { return s.name == study.nested_against; });
   for (const NestedSetting& s : r.settings)
-    if (s.name != study.nested_against && s.ran && against->ran) r.comparisons.push_back(compare_settings(s, *against, r.criterion, st));
+    if (s.name != study.nested_against && s.ran && against->ran) r.comparisons.push_back(nested_comparison(s, *against, r.criterion, st.Fn_delta_n, st.kt_delta_n));
   return r;
 }
 

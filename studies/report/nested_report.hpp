@@ -61,6 +61,11 @@ struct NestedReport {
   std::vector<NestedComparison> comparisons;
 };
 
+/// `s` against `against` by the criterion, Fn at `Fn_delta_n` and kt at `kt_delta_n` (the rows'
+/// Fn and kt are at these Δn, in this order).
+NestedComparison nested_comparison(const NestedSetting& s, const NestedSetting& against, const NestedCriterion& c,
+                                   const std::vector<double>& Fn_delta_n, const std::vector<double>& kt_delta_n);
+
 /// Reads the runs under `dir` (<dir>/<setting>/...); a setting without normal results is listed as
 /// not run. InputError when the criteria file or `nested.against` is missing.
 NestedReport nested_report(const Study& study, const std::string& dir);

@@ -19,6 +19,8 @@ using namespace softpack::fit_test;
 
 namespace {
 using softpack::fit::FitOptions;
+using softpack::fit::PowerLawFit;
+using softpack::InputError;
 
 /// Eq. 7 with δ = 0.15 on Δn = 0, 0.025, …, 0.5, and grazing forces before the onset: a few
 /// grains the relaxation leaves touching (1e-8 N at 0.1, 3e-7 N at 0.125, 2e-6 N at 0.15, where

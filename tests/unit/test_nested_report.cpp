@@ -1,0 +1,63 @@
+// The nested report's judgement (report/nested_report.hpp): the criterion read from
+// experiments/nested.yaml, and a setting against the resolved one point by point — within
+// bound √(se² + se²) agrees, beyond does not, below the onset force (scaled with (Rs / Rs0)²) in
+// both is left out, for kt by the Fn at its Δn; the ratio's error propagated.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "report/nested_report.hpp"
+
+namespace softpack {
+namespace {
+
+NestedSetting setting(const std::string& name, double Rs, std::vector<RadiusValue> Fn, std::vector<RadiusValue> kt) {
+  NestedSetting s;
+  s.name = name, s.Rs = Rs, s.ran = true;
+  RadiusRow row;
+  row.setting = name, row.scene = "soft-solid", row.Fn = std::move(Fn), row.kt = std::move(kt);
+  s.rows = {row};
+  return s;
+}
+
+TEST(NestedReport, TheCriterionIsTheCommittedOne) {
+  const NestedCriterion c = read_nested_criterion(SOFTPACK_SOURCE_DIR "/experiments/nested.yaml");
+  EXPECT_EQ(c.Fn_delta_n[0], 0.2);
+  EXPECT_EQ(c.Fn_delta_n[1], 0.5);
+  EXPECT_EQ(c.kt_delta_n[0], 0.2);
+  EXPECT_EQ(c.kt_delta_n[1], 0.5);
+  EXPECT_EQ(c.bound, 2.0);
+  EXPECT_EQ(c.onset_force, 1e-3);
+  EXPECT_EQ(c.Rs0, 0.016);
+  EXPECT_THROW(read_nested_criterion(""), InputError);
+}
+
+TEST(NestedReport, PointsAgreeWithinTheBoundAndBelowTheOnsetAreLeftOut) {
+  NestedCriterion c;
+  c.Fn_delta_n = {0.2, 0.5}, c.kt_delta_n = {0.2, 0.5};
+  c.bound = 2.0, c.onset_force = 1e-3, c.Rs0 = 0.016;
+  // At Rs = Rs0 / 10 the onset is 1e-5 N.
+  const double Rs = 0.0016;
+  const std::vector<double> Fn_dn{0.2, 0.3, 0.4}, kt_dn{0.2, 0.4};
+  const NestedSetting nested = setting("nested", Rs, {{5e-6, 1e-6}, {1.0, 0.1}, {2.0, 0.1}}, {{3.0, 1.0}, {10.0, 1.0}});
+  const NestedSetting resolved = setting("resolved", Rs, {{4e-6, 1e-6}, {1.2, 0.1}, {3.0, 0.1}}, {{1.0, 1.0}, {10.5, 0.5}});
+  const NestedComparison cmp = nested_comparison(nested, resolved, c, Fn_dn, kt_dn);
+  ASSERT_EQ(cmp.points.size(), 5u);
+  EXPECT_FALSE(cmp.points[0].compared);  // Fn 5e-6 and 4e-6 N: both below 1e-5 N
+  EXPECT_TRUE(cmp.points[1].compared);
+  EXPECT_TRUE(cmp.points[1].agrees);     // |1.0 - 1.2| = 0.2 <= 2 √0.02 = 0.283
+  EXPECT_FALSE(cmp.points[2].agrees);    // |2 - 3| = 1 > 0.283
+  EXPECT_FALSE(cmp.points[3].compared);  // kt at 0.2, where Fn is below the onset in both
+  EXPECT_TRUE(cmp.points[4].agrees);     // |10 - 10.5| <= 2 √1.25
+  EXPECT_EQ(cmp.compared, 3u);
+  EXPECT_EQ(cmp.agreeing, 2u);
+  EXPECT_FALSE(cmp.holds());
+  EXPECT_NEAR(cmp.points[1].ratio.value, 1.0 / 1.2, 1e-15);
+  EXPECT_NEAR(cmp.points[1].ratio.error, (1.0 / 1.2) * std::hypot(0.1, 0.1 / 1.2), 1e-15);
+  // At Rs0 the onset is 1e-3 N: the first point is left out all the more; the rest as above.
+  EXPECT_EQ(nested_comparison(setting("a", 0.016, {{1.0, 0.1}}, {}), setting("b", 0.016, {{1.1, 0.1}}, {}), c, {0.3}, {}).agreeing, 1u);
+}
+
+}  // namespace
+}  // namespace softpack
