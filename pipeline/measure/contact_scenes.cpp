@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <numbers>
-
 #include "core/error.hpp"
 #include "formats/law_file.hpp"
 #include "packing/nested.hpp"
@@ -21,8 +19,6 @@ SceneDef base_scene(const SimulationSettings& s) {
   scene.neighbor = s.neighbor;
   return scene;
 }
-
-double ball(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
 // The masses of a site's content resolved (docs/nested.md): its grains at every level, and the
 // free shells of it and of every site inside it, each shell_mass_fraction times its grains'.
