@@ -44,7 +44,8 @@ void add_contents(SceneDef& scene, const std::vector<SiteContent>& contents, con
       d.material = kGrain;
       scene.particles.push_back(d);
     }
-    const double grains = s.material.density * c.solid_volume();
+    // The grains' mass scaled as every length^3, as the scaled spheres' own masses are.
+    const double grains = scale * scale * scale * s.material.density * c.solid_volume();
     ShellDef shell{fmt::format("site-{}", inner), inner, at, scale * site_radius, kWall, s.shell_contact_radius,
                    s.content->shell_mass_fraction * grains};
     shell.parent = body;

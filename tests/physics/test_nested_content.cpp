@@ -103,6 +103,11 @@ TEST(NestedContent, ResolvedSitesAreTheirPackingsInFreeShellsInsideTheSoftPartic
   for (double r : a.at(0).level.grains.radii) m += s.material.density * ball(r);
   EXPECT_NEAR(*c.scene.shells[1].mass, 0.05 * m, 1e-12 * m);
   EXPECT_NO_THROW(Simulation sim(c.scene));
+  // The second soft-particle scaled by k: its sites' shells weigh k^3 as much, as its grains do.
+  const ContactSetup half = soft_soft_setup(first, second, s, 0.5);
+  double mb = 0.0;
+  for (double r : b.at(0).level.grains.radii) mb += s.material.density * ball(r);
+  EXPECT_NEAR(*half.scene.shells[2 + a.size()].mass, 0.125 * 0.05 * mb, 1e-12 * mb);
 }
 
 TEST(NestedContent, BothFormsHoldTheSameGrainsOfTheSoftParticlesOwnLevel) {
