@@ -71,13 +71,17 @@ std::optional<ContentSettings> parse_content(const ConfigNode& root) {
     node->allow_only({"form", "shell_mass_fraction"});
     return c;
   }
-  node->allow_only({"form", "shell_mass_fraction", "laws", "grain_contact"});
+  node->allow_only({"form", "shell_mass_fraction", "laws", "grain_contact", "many_body"});
   c.grain_contact = node->at("grain_contact").choice({"wall", "reduced-radius"}) == "wall" ? GrainContactRule::wall
                                                                                          : GrainContactRule::reduced_radius;
   // Read when a scene is built (measure/contact_scenes.cpp): the law file of the level below is
   // made by that level's study, which may not have run when this profile is read (docs/nested.md).
   c.laws = node->at("laws").string();
   if (c.laws.empty()) node->at("laws").fail("allowed: the path of the law file of the level below");
+  if (const auto mb = node->find("many_body")) {
+    c.many_body = mb->string();
+    if (c.many_body.empty()) mb->fail("allowed: the path of a law file with a many-body law (`many_body`), or no key");
+  }
   return c;
 }
 

@@ -35,6 +35,9 @@ enum class ContentForm { soft, resolved };
 struct ContentSettings {
   ContentForm form = ContentForm::soft;
   std::string laws;  ///< soft: the law file's path (read when a scene is built: it may be made after the profile is read)
+  /// soft, optional: a law file whose many-body law (`many_body`, dimensionless) the sites follow
+  /// on top of `laws`' pairwise laws; empty: the pairwise laws alone.
+  std::string many_body;
   GrainContactRule grain_contact = GrainContactRule::wall;  ///< soft: a grain against a site
   double shell_mass_fraction = 0.0;
 };

@@ -73,15 +73,17 @@ double shell_radius(const PackingProfile& profile, const std::vector<std::uint64
 std::string profile_stamp(const ConfigNode& root, const std::string& stage, const std::string& release) {
   const PackingProfile packing = parse_packing(root);
   std::string extra = packing.import ? import_sources_text(*packing.import) : "";
-  // The soft content's law file by its content (docs/nested.md), not its name or time.
+  // The soft content's law files by their content (docs/nested.md), not their names or times.
   if (stage != "packing")
     if (const auto content = root.find("content"))
-      if (const auto laws = content->find("laws")) {
-        if (!std::filesystem::is_regular_file(laws->string()))
-          laws->fail(fmt::format("{}: no such file: the law file of the level below, made by its study first (docs/nested.md)",
-                                 laws->string()));
-        extra += "content.laws sha256 " + sha256_of_file(laws->string()) + "\n";
-      }
+      for (const char* key : {"laws", "many_body"})
+        if (const auto laws = content->find(key)) {
+          if (!std::filesystem::is_regular_file(laws->string()))
+            laws->fail(fmt::format("{}: no such file: {} (docs/nested.md)", laws->string(),
+                                   std::string(key) == "laws" ? "the law file of the level below, made by its study first"
+                                                              : "the law file of the many-body law"));
+          extra += fmt::format("content.{} sha256 {}\n", key, sha256_of_file(laws->string()));
+        }
   return stage_stamp(root, stage, release, extra);
 }
 

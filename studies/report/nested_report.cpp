@@ -95,6 +95,18 @@ NestedComparison nested_comparison(const NestedSetting& s, const NestedSetting& 
   return out;
 }
 
+void nested_closer(NestedComparison& c, const NestedComparison& reference) {
+  c.closer = c.closer_of = 0;
+  for (const NestedPoint& p : c.points) {
+    if (!p.compared) continue;
+    for (const NestedPoint& q : reference.points)
+      if (q.compared && q.scene == p.scene && q.quantity == p.quantity && std::abs(q.delta_n - p.delta_n) < 1e-12) {
+        ++c.closer_of;
+        if (std::abs(p.value.value - p.against.value) < std::abs(q.value.value - q.against.value)) ++c.closer;
+      }
+  }
+}
+
 namespace {
 
 nlohmann::json nested_json(const RadiusValue& v) { return {{"value", json_number(v.value)}, {"error", json_number(v.error)}}; }
@@ -142,6 +154,10 @@ NestedReport nested_report(const Study& study, const std::string& dir) {
   const auto against = std::find_if(r.settings.begin(), r.settings.end(), [&](const NestedSetting& s) { return s.name == study.nested_against; });
   for (const NestedSetting& s : r.settings)
     if (s.name != study.nested_against && s.ran && against->ran) r.comparisons.push_back(nested_comparison(s, *against, r.criterion, st.Fn_delta_n, st.kt_delta_n));
+  const auto reference = std::find_if(r.comparisons.begin(), r.comparisons.end(), [](const NestedComparison& c) { return c.setting == "reference"; });
+  if (reference != r.comparisons.end())
+    for (NestedComparison& c : r.comparisons)
+      if (c.setting != "reference") nested_closer(c, *reference);
   return r;
 }
 
@@ -193,9 +209,14 @@ std::string write_nested_report(const NestedReport& r, const Study& study, const
     write_law_file(out_dir + "/" + s.name + "/laws.json", laws);
   }
   for (const NestedComparison& cmp : r.comparisons) {
-    t += fmt::format("\n## `{}` against `{}`: {} of {} points agree — the recursion {}\n\n| scene | quantity | Δn | {} | {} | ratio | "
-                     "compared | agrees |\n|---|---|---|---|---|---|---|---|\n",
-                     cmp.setting, cmp.against, cmp.agreeing, cmp.compared, cmp.holds() ? "holds" : "does not hold", cmp.setting,
+    t += fmt::format("\n## `{}` against `{}`: {} of {} points agree — the recursion {}\n\n", cmp.setting, cmp.against, cmp.agreeing,
+                     cmp.compared, cmp.holds() ? "holds" : "does not hold");
+    if (cmp.closer_of > 0)
+      t += fmt::format("Nearer `{}` than `reference` at {} of the {} points compared in both: {} (experiments/nested.yaml's "
+                       "diagnosis).\n\n",
+                       cmp.against, cmp.closer, cmp.closer_of,
+                       cmp.cause() ? (cmp.holds() ? "the whole cause of the gap" : "a cause of the gap") : "not a cause of the gap");
+    t += fmt::format("| scene | quantity | Δn | {} | {} | ratio | compared | agrees |\n|---|---|---|---|---|---|---|---|\n", cmp.setting,
                      cmp.against);
     nlohmann::json points = nlohmann::json::array();
     for (const NestedPoint& p : cmp.points) {
@@ -206,7 +227,8 @@ std::string write_nested_report(const NestedReport& r, const Study& study, const
                         {"against", nested_json(p.against)}, {"ratio", nested_json(p.ratio)}, {"compared", p.compared}, {"agrees", p.agrees}});
     }
     j["comparisons"].push_back({{"setting", cmp.setting}, {"against", cmp.against}, {"compared", cmp.compared},
-                                {"agreeing", cmp.agreeing}, {"holds", cmp.holds()}, {"points", points}});
+                                {"agreeing", cmp.agreeing}, {"holds", cmp.holds()}, {"closer", cmp.closer},
+                                {"closer_of", cmp.closer_of}, {"points", points}});
   }
   write_file_atomically(out_dir + "/nested.json", j.dump(1) + "\n");
   write_file_atomically(out_dir + "/table.md", t);

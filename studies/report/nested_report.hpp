@@ -44,6 +44,11 @@ struct NestedComparison {
   std::vector<NestedPoint> points;
   std::size_t compared = 0, agreeing = 0;
   bool holds() const { return compared > 0 && agreeing == compared; }
+  /// Against the reference's comparison (a setting that changes one rule of the nested form:
+  /// experiments/nested.yaml's diagnosis): of the points compared in both (`closer_of`), those
+  /// where this setting's mean is nearer the mean compared against than the reference's is.
+  std::size_t closer = 0, closer_of = 0;
+  bool cause() const { return closer_of > 0 && closer == closer_of; }  ///< closer at every point
 };
 
 struct NestedSetting {
@@ -65,6 +70,9 @@ struct NestedReport {
 /// Fn and kt are at these Δn, in this order).
 NestedComparison nested_comparison(const NestedSetting& s, const NestedSetting& against, const NestedCriterion& c,
                                    const std::vector<double>& Fn_delta_n, const std::vector<double>& kt_delta_n);
+
+/// Fills `c.closer` and `c.closer_of` against `reference` (both compared with the same setting).
+void nested_closer(NestedComparison& c, const NestedComparison& reference);
 
 /// Reads the runs under `dir` (<dir>/<setting>/...); a setting without normal results is listed as
 /// not run. InputError when the criteria file or `nested.against` is missing.

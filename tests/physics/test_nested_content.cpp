@@ -120,6 +120,36 @@ TEST(NestedContent, BothFormsHoldTheSameGrainsOfTheSoftParticlesOwnLevel) {
   }
 }
 
+// content.many_body: the sites follow the level below's pairwise laws and another file's
+// many-body law (a diagnosis of level 1's gap, experiments/nested.yaml); a file without one is
+// refused naming the key, and without the key the sites are pairwise.
+TEST(NestedContent, TheSitesTakeTheManyBodyLawOfTheFileContentManyBodyNames) {
+  const PackingFile f = level_packing(75);
+  SimulationSettings s = settings(ContentForm::soft);
+  EXPECT_FALSE(soft_solid_setup(f, s).scene.effects.soft_particles->laws.many_body);
+  const testing::TempDir dir("nested-content-many-body");
+  LawFile with = read_law_file(testing::kPairwiseLaws);
+  with.version = kLawFileVersion;  // a many-body law needs version 2 or later
+  with.many_body = ManyBodyFit{"volumetric", {0.75, 0.01}, "a test"};
+  write_law_file(dir / "many-body.json", with);
+  s.content->many_body = dir / "many-body.json";
+  const ContactSetup c = soft_solid_setup(f, s);
+  const SoftParticleLaws& laws = c.scene.effects.soft_particles->laws;
+  ASSERT_TRUE(laws.many_body);
+  EXPECT_EQ(laws.many_body->beta, 0.75);
+  // The pairwise laws stay the level below's.
+  const SoftParticleLaws pairwise = soft_particle_laws(read_law_file(testing::kPairwiseLaws), testing::kPairwiseLaws);
+  EXPECT_EQ(laws.soft_solid->normal.a, pairwise.soft_solid->normal.a);
+  EXPECT_EQ(laws.R0, pairwise.R0);
+  s.content->many_body = testing::kPairwiseLaws;  // version 1: no many-body law
+  try {
+    soft_solid_setup(f, s);
+    FAIL() << "a many-body law file without a many-body law was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("content.many_body"), std::string::npos) << e.what();
+  }
+}
+
 TEST(NestedContent, APackingOfLevelsNeedsTheContentSectionAndItsLawFile) {
   const PackingFile f = level_packing(74);
   SimulationSettings s = settings(ContentForm::soft);

@@ -59,5 +59,29 @@ TEST(NestedReport, PointsAgreeWithinTheBoundAndBelowTheOnsetAreLeftOut) {
   EXPECT_EQ(nested_comparison(setting("a", 0.016, {{1.0, 0.1}}, {}), setting("b", 0.016, {{1.1, 0.1}}, {}), c, {0.3}, {}).agreeing, 1u);
 }
 
+// A diagnosis setting against the reference (experiments/nested.yaml): nearer the resolved mean
+// at every point compared in both is a cause of the gap; at one point farther, not.
+TEST(NestedReport, ASettingNearerTheResolvedAtEveryPointIsACauseOfTheGap) {
+  NestedCriterion c;
+  c.Fn_delta_n = {0.2, 0.5}, c.kt_delta_n = {0.2, 0.5};
+  c.bound = 2.0, c.onset_force = 1e-3, c.Rs0 = 0.016;
+  const std::vector<double> Fn_dn{0.3, 0.4}, kt_dn{0.4};
+  const NestedSetting resolved = setting("resolved", 0.016, {{1.0, 0.01}, {2.0, 0.01}}, {{10.0, 0.1}});
+  const NestedSetting reference = setting("reference", 0.016, {{0.3, 0.01}, {0.6, 0.01}}, {{4.0, 0.1}});
+  const NestedSetting nearer = setting("nearer", 0.016, {{0.8, 0.01}, {1.5, 0.01}}, {{11.0, 0.1}});
+  const NestedSetting mixed = setting("mixed", 0.016, {{0.8, 0.01}, {0.5, 0.01}}, {{9.0, 0.1}});
+  const NestedComparison ref = nested_comparison(reference, resolved, c, Fn_dn, kt_dn);
+  NestedComparison a = nested_comparison(nearer, resolved, c, Fn_dn, kt_dn);
+  NestedComparison b = nested_comparison(mixed, resolved, c, Fn_dn, kt_dn);
+  nested_closer(a, ref);
+  nested_closer(b, ref);
+  EXPECT_EQ(a.closer_of, 3u);
+  EXPECT_EQ(a.closer, 3u);  // |0.8 - 1| < |0.3 - 1|, |1.5 - 2| < |0.6 - 2|, |11 - 10| < |4 - 10|
+  EXPECT_TRUE(a.cause());
+  EXPECT_FALSE(a.holds());  // nearer is not within the bound: a cause, not the whole
+  EXPECT_EQ(b.closer, 2u);  // |0.5 - 2| > |0.6 - 2|
+  EXPECT_FALSE(b.cause());
+}
+
 }  // namespace
 }  // namespace softpack
