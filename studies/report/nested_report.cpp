@@ -132,6 +132,8 @@ NestedCriterion read_nested_criterion(const std::string& path) {
   if (!(out.bound > 0.0)) c.at("bound").fail("allowed: a bound > 0");
   if (!(out.onset_force >= 0.0)) c.at("onset_force").fail("allowed: onset_force >= 0 N");
   if (!(out.Rs0 > 0.0)) n.at("packing").at("Rs").fail("allowed: Rs > 0 m");
+  if (const auto d = n.find("diagnosis"))
+    for (const ConfigNode& item : d->at("settings").items()) out.diagnosis.push_back(item.string());
   return out;
 }
 
@@ -157,7 +159,8 @@ NestedReport nested_report(const Study& study, const std::string& dir) {
   const auto reference = std::find_if(r.comparisons.begin(), r.comparisons.end(), [](const NestedComparison& c) { return c.setting == "reference"; });
   if (reference != r.comparisons.end())
     for (NestedComparison& c : r.comparisons)
-      if (c.setting != "reference") nested_closer(c, *reference);
+      if (std::find(r.criterion.diagnosis.begin(), r.criterion.diagnosis.end(), c.setting) != r.criterion.diagnosis.end())
+        nested_closer(c, *reference);
   return r;
 }
 

@@ -27,6 +27,9 @@ struct NestedCriterion {
   double bound = 0.0;
   double onset_force = 0.0;  ///< [N] at the radius Rs0
   double Rs0 = 0.0;          ///< nested.packing.Rs: level 0's radius [m]
+  /// nested.diagnosis.settings: the settings that each change one rule of the nested form, judged
+  /// against the reference as causes of its gap (nested_closer); none where the file has none.
+  std::vector<std::string> diagnosis;
 };
 
 /// Reads `nested.criterion` and `nested.packing.Rs` of the criteria file; InputError names the key.
@@ -71,7 +74,8 @@ struct NestedReport {
 NestedComparison nested_comparison(const NestedSetting& s, const NestedSetting& against, const NestedCriterion& c,
                                    const std::vector<double>& Fn_delta_n, const std::vector<double>& kt_delta_n);
 
-/// Fills `c.closer` and `c.closer_of` against `reference` (both compared with the same setting).
+/// Fills `c.closer` and `c.closer_of` against `reference` (both compared with the same setting);
+/// nested_report() does so for the criterion's diagnosis settings only.
 void nested_closer(NestedComparison& c, const NestedComparison& reference);
 
 /// Reads the runs under `dir` (<dir>/<setting>/...); a setting without normal results is listed as

@@ -30,6 +30,7 @@ TEST(NestedReport, TheCriterionIsTheCommittedOne) {
   EXPECT_EQ(c.bound, 2.0);
   EXPECT_EQ(c.onset_force, 1e-3);
   EXPECT_EQ(c.Rs0, 0.016);
+  EXPECT_EQ(c.diagnosis, (std::vector<std::string>{"grains-reduced", "many-body"}));
   EXPECT_THROW(read_nested_criterion(""), InputError);
 }
 
