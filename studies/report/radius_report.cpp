@@ -114,8 +114,12 @@ RadiusValue at(const std::vector<double>& x, const std::vector<MeanError>& y, do
 
 // μ_soft per sliding Δn: per seed the mean of −Ft'/Fn' over the plateau (ht / Rs >= from) and
 // its largest value, in the contact's frame (turned by alpha_deg about +z); then over seeds.
-void friction(const std::vector<SweepResults>& sliding, const MeasurementSettings& m, double Rs, double from, RadiusRow& row) {
-  for (double dn : m.sliding.delta_n) {
+}  // namespace
+
+void sliding_friction(const std::vector<SweepResults>& sliding, const std::vector<double>& sliding_delta_n, double Rs, double from,
+                      std::size_t least, RadiusRow& row) {
+  const std::size_t needed = least == 0 ? sliding.size() : least;
+  for (double dn : sliding_delta_n) {
     std::vector<double> plateau, peak;
     for (const SweepResults& s : sliding) {
       double sum = 0.0, top = -1e300;
@@ -137,10 +141,13 @@ void friction(const std::vector<SweepResults>& sliding, const MeasurementSetting
       if (loaded && n > 0) plateau.push_back(sum / static_cast<double>(n)), peak.push_back(top);
     }
     row.mu_delta_n.push_back(dn);
-    if (plateau.size() == sliding.size()) {
+    if (plateau.size() >= needed && !plateau.empty()) {
       const MeanError p = mean_error(plateau), q = mean_error(peak);
       row.mu.push_back({p.mean, p.error});
       row.mu_peak.push_back({q.mean, q.error});
+      if (plateau.size() < sliding.size())
+        row.note += fmt::format("{}mu at delta_n {}: from the {} of {} seeds with a normal force while sliding", row.note.empty() ? "" : "; ",
+                                dn, plateau.size(), sliding.size());
     } else {
       row.mu.push_back({kNaN, kNaN});
       row.mu_peak.push_back({kNaN, kNaN});
@@ -148,6 +155,8 @@ void friction(const std::vector<SweepResults>& sliding, const MeasurementSetting
     }
   }
 }
+
+namespace {
 
 RadiusRow measure_row(const Study& st, StudyRuns& runs, const std::string& name, const SettingInfo& info,
                       const std::string& scene) {
@@ -193,7 +202,7 @@ RadiusRow measure_row(const Study& st, StudyRuns& runs, const std::string& name,
   } else {
     row.kt.assign(st.kt_delta_n.size(), RadiusValue{kNaN, kNaN});
   }
-  if (with_sliding) friction(sliding, info.measure, info.Rs, st.mu_from_ht_over_Rs, row);
+  if (with_sliding) sliding_friction(sliding, info.measure.sliding.delta_n, info.Rs, st.mu_from_ht_over_Rs, st.mu_seeds_loaded, row);
   return row;
 }
 

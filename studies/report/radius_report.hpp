@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "formats/law_file.hpp"
+#include "formats/sweep_file.hpp"
 #include "report/study_file.hpp"
 
 namespace softpack {
@@ -81,6 +82,13 @@ RadiusReport radius_report(const Study& study, const std::string& dir);
 /// 1/σ_log²: the exponent of a power law measured at several Δn. Exposed for the tests.
 RadiusValue common_exponent(const std::vector<std::vector<double>>& x, const std::vector<std::vector<double>>& y,
                             const std::vector<std::vector<double>>& y_error, double* chi2_per_dof = nullptr);
+
+/// μ_soft per sliding Δn into `row` (mu_delta_n, mu, mu_peak, note): Ft / Fn in the contact's
+/// frame averaged over the points with ht / Rs >= `from`, then over the seeds whose contact carries
+/// a normal force at every sliding point of that Δn — when at least `least` seeds do (0: every
+/// seed must; the study's nested.mu_seeds_loaded), else NaN with a note. Exposed for the tests.
+void sliding_friction(const std::vector<SweepResults>& sliding, const std::vector<double>& sliding_delta_n, double Rs, double from,
+                      std::size_t least, RadiusRow& row);
 
 /// One setting's laws, scene by scene, measured as the rows of the radius report are (the fits
 /// with their jackknife errors, Fn and kt at the study's compare Δn, μ_soft from the sliding

@@ -310,13 +310,20 @@ Study read_study(const std::string& path) {
       radius->at("mu_from_ht_over_Rs").fail("allowed: 0 < value < 1 (ht / Rs from which the contact slides)");
   }
   if (auto nested = root.find("nested")) {  // the nested report (report/nested_report.hpp)
-    nested->allow_only({"against", "mu_from_ht_over_Rs"});
+    nested->allow_only({"against", "mu_from_ht_over_Rs", "mu_seeds_loaded"});
     st.nested_against = nested->at("against").string();
     if (st.nested_against != "reference" && !settings_named(root, st.nested_against))
       nested->at("against").fail("allowed: reference or a setting of this study");
     st.mu_from_ht_over_Rs = nested->at("mu_from_ht_over_Rs").number();
     if (!(st.mu_from_ht_over_Rs > 0.0 && st.mu_from_ht_over_Rs < 1.0))
       nested->at("mu_from_ht_over_Rs").fail("allowed: 0 < value < 1 (ht / Rs from which the contact slides)");
+    if (auto least = nested->find("mu_seeds_loaded")) {
+      const long n = least->integer();
+      if (n < 1 || static_cast<std::size_t>(n) > st.seeds.size())
+        least->fail(fmt::format("{} is not allowed; allowed: 1 to {} (the study's seeds): how many seeds must carry a normal force at every "
+                                "sliding point of a delta_n for its mu_soft", n, st.seeds.size()));
+      st.mu_seeds_loaded = static_cast<std::size_t>(n);
+    }
   }
   if (auto common = root.find("common"))
     for (const std::string& key : common->keys()) st.common.emplace_back(key, YAML::Clone(std::as_const(common->yaml())[key]));

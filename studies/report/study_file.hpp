@@ -65,6 +65,10 @@ struct Study {
   /// soft-soft of two radii), and from which ht / Rs a sliding contact's Ft / Fn is averaged.
   std::map<std::string, std::vector<std::string>> radius_variants;
   double mu_from_ht_over_Rs = 0.0;
+  /// nested, optional (`nested.mu_seeds_loaded`): mu_soft at a sliding Δn is averaged over the
+  /// seeds whose contact carries a normal force at every sliding point of it, when at least this
+  /// many do; 0 (the radius study's rule): every seed must.
+  std::size_t mu_seeds_loaded = 0;
   /// nested (report/nested_report.hpp): the setting every other one is compared with (the
   /// content resolved); the radius section's mu_from_ht_over_Rs is nested's too.
   std::string nested_against;

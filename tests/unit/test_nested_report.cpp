@@ -84,5 +84,36 @@ TEST(NestedReport, ASettingNearerTheResolvedAtEveryPointIsACauseOfTheGap) {
   EXPECT_FALSE(b.cause());
 }
 
+// One seed's sliding sweep at one Δn: Ft / Fn = mu at every ht (alpha 0: Fn = Fx, Ft = -Fy), or
+// no normal force at all.
+SweepResults sliding(double dn, double mu, bool loaded) {
+  SweepResults s;
+  for (double ht : {0.001, 0.002, 0.004}) {
+    s.delta_n.push_back(dn), s.ht.push_back(ht), s.alpha_deg.push_back(0.0);
+    s.force.push_back(loaded ? Vec3(2.0, -2.0 * mu, 0.0) : Vec3::Zero());
+  }
+  return s;
+}
+
+// mu_soft at a sliding Δn (radius_report.hpp's sliding_friction): over every seed by default; a
+// seed whose contact carries no normal force leaves it unmeasured, unless the study's
+// nested.mu_seeds_loaded allows fewer — then the mean over the loaded seeds, with a note.
+TEST(NestedReport, MuSoftFromTheLoadedSeedsWhenTheStudyAllowsFewerThanEvery) {
+  const std::vector<SweepResults> seeds{sliding(0.9, 0.2, true), sliding(0.9, 0.4, true), sliding(0.9, 0.0, false)};
+  const double Rs = 0.01, from = 0.15;  // the points at ht / Rs 0.2 and 0.4
+  RadiusRow every, two, three;
+  sliding_friction(seeds, {0.9}, Rs, from, 0, every);
+  ASSERT_EQ(every.mu.size(), 1u);
+  EXPECT_TRUE(std::isnan(every.mu[0].value));
+  EXPECT_NE(every.note.find("a seed has no normal force while sliding"), std::string::npos);
+  sliding_friction(seeds, {0.9}, Rs, from, 2, two);
+  ASSERT_EQ(two.mu.size(), 1u);
+  EXPECT_NEAR(two.mu[0].value, 0.3, 1e-12);
+  EXPECT_NEAR(two.mu[0].error, 0.1, 1e-12);  // standard error of the mean of 0.2 and 0.4
+  EXPECT_NE(two.note.find("from the 2 of 3 seeds"), std::string::npos);
+  sliding_friction(seeds, {0.9}, Rs, from, 3, three);
+  EXPECT_TRUE(std::isnan(three.mu[0].value));
+}
+
 }  // namespace
 }  // namespace softpack

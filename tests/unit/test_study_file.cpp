@@ -102,6 +102,13 @@ TEST_F(StudyFile, AFailedSettingIsReadFromItsFailedFile) {
 
 TEST_F(StudyFile, AMistakeInThePlanIsRefusedNamingTheKey) {
   EXPECT_NE(refusal("one", "study: other\nreport: accuracy\n").find("the study's name is its file's (one.yaml"), std::string::npos);
+  // nested.mu_seeds_loaded: 1 to the study's seeds.
+  EXPECT_NE(refusal("one", "study: one\nreport: nested\ncriteria: experiments/nested.yaml\nnested: {against: reference, mu_from_ht_over_Rs: 0.2, mu_seeds_loaded: 2}\n")
+                .find("allowed: 1 to 1"),
+            std::string::npos);
+  EXPECT_NE(refusal("one", "study: one\nreport: nested\ncriteria: experiments/nested.yaml\nnested: {against: reference, mu_from_ht_over_Rs: 0.2, mu_seeds_loaded: 0}\n")
+                .find("mu_seeds_loaded"),
+            std::string::npos);
   EXPECT_NE(refusal("one", "study: one\nreport: sizes\n").find("report"), std::string::npos);
   EXPECT_NE(refusal("one", "study: one\nreport: accuracy\nstages: [tables]\n").find("stages"), std::string::npos);
   EXPECT_NE(refusal("one", "study: one\nreport: accuracy\nout: ../elsewhere\n").find("a folder under DATA"), std::string::npos);
