@@ -20,8 +20,6 @@ namespace {
 // report; every calibration and comparison runs on held-out seeds.
 constexpr std::uint64_t kFirstHeldOutSeed = 101;
 
-// The map holding the list at `key` of `parent`, and its key there: the study file's own, or for
-// `{file: F, key: a.b}` the list that file holds at a.b (read where it was fixed, not copied).
 // The map holding the list at the dotted `key` under `node`, and the key's last part.
 std::pair<ConfigNode, std::string> descend(const ConfigNode& node, const std::string& key) {
   const std::size_t dot = key.find('.');
@@ -79,8 +77,6 @@ StudySetting read_setting(const std::string& name, const ConfigNode& n, const st
   return s;
 }
 
-// Replaces the value at the dotted `key` of `root`; the parent map must exist in the base (a
-// misspelt section is refused, a new key of an existing section is allowed).
 // The map that holds the last part of the dotted `key` in `root`, and that part; InputError
 // naming `where` when a section on the way is not there.
 std::pair<YAML::Node, std::string> parent_of(YAML::Node root, const std::string& key, const std::string& where) {
@@ -100,6 +96,8 @@ std::pair<YAML::Node, std::string> parent_of(YAML::Node root, const std::string&
 }
 
 // Sets the value at the dotted `key`; a null value (~) removes the key, which the base must have.
+// The parent map must exist in the base (a misspelt section is refused, a new key of an existing
+// section is allowed).
 void replace(YAML::Node root, const std::string& key, const YAML::Node& value, const std::string& where) {
   auto [parent, last] = parent_of(root, key, where);
   if (!value.IsNull()) {
