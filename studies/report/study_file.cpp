@@ -315,13 +315,10 @@ Study read_study(const std::string& path) {
     st.mu_from_ht_over_Rs = nested->at("mu_from_ht_over_Rs").number();
     if (!(st.mu_from_ht_over_Rs > 0.0 && st.mu_from_ht_over_Rs < 1.0))
       nested->at("mu_from_ht_over_Rs").fail("allowed: 0 < value < 1 (ht / Rs from which the contact slides)");
-    if (auto least = nested->find("mu_seeds_loaded")) {
-      const long n = least->integer();
-      if (n < 1 || static_cast<std::size_t>(n) > st.seeds.size())
-        least->fail(fmt::format("{} is not allowed; allowed: 1 to {} (the study's seeds): how many seeds must carry a normal force at every "
-                                "sliding point of a delta_n for its mu_soft", n, st.seeds.size()));
-      st.mu_seeds_loaded = static_cast<std::size_t>(n);
-    }
+    if (auto least = nested->find("mu_seeds_loaded"); least && (least->integer() < 1 || std::size_t(least->integer()) > st.seeds.size()))
+      least->fail(fmt::format("allowed: 1 to {} (the study's seeds): how many carry a normal force at every sliding point of a delta_n "
+                              "for its mu_soft", st.seeds.size()));
+    else if (least) st.mu_seeds_loaded = static_cast<std::size_t>(least->integer());
   }
   if (auto common = root.find("common"))
     for (const std::string& key : common->keys()) st.common.emplace_back(key, YAML::Clone(std::as_const(common->yaml())[key]));
