@@ -32,8 +32,10 @@ $(foreach stage,medium resolved soft,$(eval $(call stamp_rule,$(call coarse_stam
 
 # The seeds (asked of the tool: make reads no YAML), once the tools are built.
 COARSE_SEEDS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --config $(COARSE_CONFIG))
+# The models run (the three-decade medium runs soft only: its resolved model is estimated).
+COARSE_MODELS ?= resolved soft
 .PHONY: coarse-grain-runs
-coarse-grain-runs: $(foreach s,$(COARSE_SEEDS),$(COARSE_DIR)/resolved/seed-$(s).h5 $(COARSE_DIR)/soft/seed-$(s).h5)
+coarse-grain-runs: $(foreach s,$(COARSE_SEEDS),$(foreach m,$(COARSE_MODELS),$(COARSE_DIR)/$(m)/seed-$(s).h5))
 
 $(COARSE_DIR)/media/seed-%.h5: $(call coarse_stamp,medium) | $(TOOLS)
 	@mkdir -p $(@D)

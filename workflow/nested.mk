@@ -11,3 +11,26 @@ nested: | $(TOOLS)  ## the nested soft-particles' self-consistency test: the thr
 	@$(MAKE) --no-print-directory nested-level-0
 nested-report: | $(TOOLS)  ## the three levels' reports from what has run
 	@$(MAKE) --no-print-directory nested-level-2-report nested-level-1-report nested-level-0-report
+
+# The three-decade medium (docs/nested.md, experiments/three-decades.yaml): the chain of four levels
+# at Π = √10 (experiments/studies/three-decades-level-{3,2,1,0}.yaml, each nested on the level below's
+# laws), then the medium of experiments/three-decades.yaml compressed with level 0's soft-particles
+# (the coarse-grain stages of workflow/coarse.mk, soft model only) and, per seed, the resolved
+# model's cost estimated (softpack-coarse estimate: DATA/three-decades/medium/estimate/seed-S.json).
+THREE_DECADES_CONFIG := experiments/three-decades.yaml
+THREE_DECADES_DIR := $(DATA)/three-decades/medium
+# The resolved runs whose CPU time per sphere-step the estimate takes (the coarse-grain study's).
+THREE_DECADES_MEASURED := $(wildcard $(DATA)/coarse-grain/reference/resolved/seed-*.h5)
+.PHONY: three-decades three-decades-medium
+three-decades: | $(TOOLS)  ## the three-decade medium: its four levels' laws in order, then its soft run and the resolved estimate
+	@$(MAKE) --no-print-directory three-decades-level-3
+	@$(MAKE) --no-print-directory three-decades-level-2
+	@$(MAKE) --no-print-directory three-decades-level-1
+	@$(MAKE) --no-print-directory three-decades-level-0
+	@$(MAKE) --no-print-directory three-decades-medium
+three-decades-medium: | $(TOOLS)  ## the three-decade medium's soft runs and resolved estimates (level 0's laws must exist)
+	@$(MAKE) --no-print-directory coarse-grain-runs COARSE_CONFIG=$(THREE_DECADES_CONFIG) COARSE_DIR=$(THREE_DECADES_DIR) COARSE_MODELS=soft
+	@set -e; for s in $$($(COARSE_TOOL) seeds --config $(THREE_DECADES_CONFIG)); do \
+	  out=$(THREE_DECADES_DIR)/estimate/seed-$$s.json; mkdir -p $(THREE_DECADES_DIR)/estimate; \
+	  $(RUN) $(COARSE_TOOL) estimate --config $(THREE_DECADES_CONFIG) --medium $(THREE_DECADES_DIR)/media/seed-$$s.h5 \
+	    --soft $(THREE_DECADES_DIR)/soft/seed-$$s.h5 $(foreach f,$(THREE_DECADES_MEASURED),--measured $(f)) --out $$out; done

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "formats/law_file.hpp"
+#include "measure/content_scene.hpp"
 #include "packing/nested.hpp"
 
 namespace softpack {
@@ -20,38 +21,9 @@ SceneDef base_scene(const SimulationSettings& s) {
   return scene;
 }
 
-// The masses of a site's content resolved (docs/nested.md): its grains at every level, and the
-// free shells of it and of every site inside it, each shell_mass_fraction times its grains'.
-double shells_mass(const SiteContent& c, double density, double fraction) {
-  double m = fraction * density * c.solid_volume();
-  for (const SiteContent& sub : c.sites) m += shells_mass(sub, density, fraction);
-  return m;
-}
-
-// Site contents resolved, about `centre`, every length times `scale`: each in a free shell whose
-// parent is `body`, its grains a body of their own (numbered from `next_body` on), and so on down.
-void add_contents(SceneDef& scene, const std::vector<SiteContent>& contents, const std::vector<Vec3>& sites, double site_radius,
-                  int body, const Vec3& centre, double scale, const SimulationSettings& s, int& next_body) {
-  for (std::size_t k = 0; k < contents.size(); ++k) {
-    const SiteContent& c = contents[k];
-    const int inner = next_body++;
-    const Vec3 at = centre + scale * sites[k];
-    for (std::size_t i = 0; i < c.level.grains.radii.size(); ++i) {
-      ParticleDef d;
-      d.x = at + scale * c.level.grains.centres[i];
-      d.r = scale * c.level.grains.radii[i];
-      d.body = inner;
-      d.material = kGrain;
-      scene.particles.push_back(d);
-    }
-    // The grains' mass scaled as every length^3, as the scaled spheres' own masses are.
-    const double grains = scale * scale * scale * s.material.density * c.solid_volume();
-    ShellDef shell{fmt::format("site-{}", inner), inner, at, scale * site_radius, kWall, s.shell_contact_radius,
-                   s.content->shell_mass_fraction * grains};
-    shell.parent = body;
-    scene.shells.push_back(shell);
-    add_contents(scene, c.sites, c.level.sites, c.level.site_radius, inner, at, scale, s, next_body);
-  }
+// How the profile's resolved content enters the measurement scenes.
+ContentPlacement placement(const SimulationSettings& s) {
+  return ContentPlacement{kGrain, kWall, s.material.density, s.shell_contact_radius, s.content->shell_mass_fraction};
 }
 
 // The packing's grains and shell about `centre`, every length times `scale` (1: as generated),
@@ -78,7 +50,7 @@ void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Ve
   const std::vector<SiteContent> contents =
       generate_contents(p.parameters, p.sites.levels - 1, p.provenance.seed, p.sites.centres.size());
   if (s.content->form == ContentForm::resolved) {
-    add_contents(scene, contents, p.sites.centres, p.sites.radius, body, centre, scale, s, next_body);
+    add_contents(scene, contents, p.sites.centres, p.sites.radius, body, centre, scale, placement(s), next_body);
     return;
   }
   for (std::size_t k = 0; k < contents.size(); ++k) {
@@ -90,7 +62,7 @@ void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Ve
     d.material = kGrain;
     d.soft = true;
     // Its content's mass resolved: the grains and their free shells (scaled as every length^3).
-    d.mass = scale * scale * scale * (grains + shells_mass(contents[k], s.material.density, s.content->shell_mass_fraction));
+    d.mass = scale * scale * scale * (grains + content_shells_mass(contents[k], s.material.density, s.content->shell_mass_fraction));
     scene.particles.push_back(d);
   }
   if (!scene.effects.soft_particles) {

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "measure/content_scene.hpp"
 #include "packing/power_law.hpp"
 
 namespace softpack {
@@ -41,17 +42,26 @@ Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std:
     m.grain_r.push_back(power_law::sample(first, rng));
     m.grains_volume += ball(m.grain_r.back());
   }
-  // The second decade: the packing's own range, the same P(r) continued below the first decade.
-  const double r2_max = s.packing.r_max, r2_min = s.packing.r_max / s.packing.polydispersity;
+  // The second decade (and with nested soft-particles the `levels` - 1 below it): the packing's
+  // own range, the same P(r) continued below the first decade down to the last level's grains.
+  const double r2_max = s.packing.r_max, r2_min = s.packing.r_max / std::pow(s.packing.polydispersity, s.levels);
   m.target_volume = m.grains_volume * volume_moment(r2_min, r2_max, s.exponent) / volume_moment(first.r_min, first.r_max, s.exponent);
+  m.levels = s.levels;
   // As many packings as bring the solid volume nearest to the target (one at least).
   while (true) {
     const std::size_t k = m.packings.size();
-    Packing p = generate_packing(s.packing, site_seed(seed, k));
-    const double v = std::accumulate(p.radii.begin(), p.radii.end(), 0.0, [](double a, double r) { return a + ball(r); });
+    LevelPacking p = generate_level(s.packing, s.levels - 1, site_seed(seed, k));
+    std::vector<SiteContent> inside = generate_contents(s.packing, s.levels - 1, site_seed(seed, k), p.sites.size());
+    double v = std::accumulate(p.grains.radii.begin(), p.grains.radii.end(), 0.0, [](double a, double r) { return a + ball(r); });
+    for (const SiteContent& c : inside) v += c.solid_volume();
     if (k > 0 && std::abs(m.packings_volume + v - m.target_volume) >= std::abs(m.packings_volume - m.target_volume)) break;
-    m.packings.push_back(std::move(p));
+    m.packings.push_back(std::move(p.grains));
     m.packing_seeds.push_back(site_seed(seed, k));
+    if (s.levels > 1) {
+      m.inner_radius = p.site_radius;
+      m.inner_sites.push_back(std::move(p.sites));
+      m.contents.push_back(std::move(inside));
+    }
     m.packings_volume += v;
     if (progress) progress(k + 1, static_cast<std::size_t>(std::ceil(m.target_volume / (m.packings_volume / static_cast<double>(k + 1)))));
   }
@@ -95,6 +105,17 @@ Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std:
   return m;
 }
 
+void medium_contents(const CoarseGrainSettings& s, Medium& m) {
+  if (m.levels != s.levels)
+    throw InputError(fmt::format("the medium's sites have {} levels and the settings' packing {} (soft_particle.packing.levels or "
+                                 "its profile's packing.levels): make the medium again",
+                                 m.levels, s.levels));
+  m.contents.clear();
+  if (m.levels == 1) return;
+  for (std::size_t k = 0; k < m.sites.size(); ++k)
+    m.contents.push_back(generate_contents(s.packing, s.levels - 1, m.packing_seeds[k], m.inner_sites[k].size()));
+}
+
 SceneDef engine_scene(const CoarseGrainSettings& s) {
   const SimulationSettings& sim = s.simulation;
   SceneDef scene;
@@ -115,9 +136,19 @@ SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel
     p.x = m.grain_x[k], p.r = m.grain_r[k], p.material = kGrain;
     scene.particles.push_back(p);
   }
+  if (m.levels > 1 && m.contents.size() != m.sites.size())
+    throw InputError(fmt::format("a medium of nested soft-particles ({} levels): its sites' contents are not made here; allowed: "
+                                 "softpack-coarse run, or a medium of one level",
+                                 m.levels));
   for (std::size_t k = 0; k < m.sites.size(); ++k) {
     const Packing& pk = m.packings[k];
-    const double grains_mass = packing_mass(pk, sim.material.density);
+    // Every grain inside the site, at every level, and (nested) the free shells of its sites.
+    double grains_mass = packing_mass(pk, sim.material.density), inner_shells = 0.0;
+    if (m.levels > 1)
+      for (const SiteContent& c : m.contents[k]) {
+        grains_mass += sim.material.density * c.solid_volume();
+        inner_shells += content_shells_mass(c, sim.material.density, s.shell_mass_fraction);
+      }
     if (model == CoarseModel::resolved) {
       for (std::size_t i = 0; i < pk.centres.size(); ++i) {
         ParticleDef p;
@@ -130,8 +161,17 @@ SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel
       ParticleDef p;
       p.x = m.sites[k], p.r = m.Rs, p.material = kGrain, p.soft = true, p.spin_locked = s.spin_locked;
       p.mass = (1.0 + s.shell_mass_fraction) * grains_mass;
+      if (m.levels > 1) *p.mass += inner_shells;
       scene.particles.push_back(p);
     }
+  }
+  // Nested: each site's sites resolved inside its shell, after every site's own grains and
+  // shell (so that shell k is site k's, and a site's spheres are its grains then its contents').
+  if (model == CoarseModel::resolved && m.levels > 1) {
+    int next_body = static_cast<int>(m.sites.size());
+    const ContentPlacement place{kGrain, kWall, sim.material.density, sim.shell_contact_radius, s.shell_mass_fraction};
+    for (std::size_t k = 0; k < m.sites.size(); ++k)
+      add_contents(scene, m.contents[k], m.inner_sites[k], m.inner_radius, static_cast<int>(k), m.sites[k], 1.0, place, next_body);
   }
   if (model == CoarseModel::soft) scene.effects.soft_particles = SoftParticlesDef{laws, s.grain_contact, s.beyond_range};
   const auto plane = [&](const char* name, const Vec3& point, const Vec3& normal) {
@@ -154,6 +194,9 @@ std::vector<int> sphere_bodies(const Medium& m, CoarseModel model) {
     const std::size_t n = model == CoarseModel::resolved ? m.packings[k].centres.size() : 1;
     out.insert(out.end(), n, grains + static_cast<int>(k));
   }
+  if (model == CoarseModel::resolved && m.levels > 1)  // the sites' contents, site by site (medium_scene)
+    for (std::size_t k = 0; k < m.sites.size(); ++k)
+      for (const SiteContent& c : m.contents[k]) out.insert(out.end(), c.grains(), grains + static_cast<int>(k));
   return out;
 }
 

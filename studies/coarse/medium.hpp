@@ -16,12 +16,20 @@
 // mass shell_mass_fraction times its grains'; the soft scene puts there one soft-particle of
 // radius Rs and the mass of those grains and that shell. Both have the same first-decade grains,
 // the same six walls and the profile's engine settings.
+//
+// Nested soft-particles (packing.levels > 1 in the soft-particle's packing, docs/nested.md): a
+// site's packing is a level packing — its grains and its own sites of radius Rs / Π, whose
+// contents go down to the last level (packing/nested.hpp). The medium then spans the first
+// decade and `levels` more; the resolved scene places each content in free shells inside the
+// site's shell (measure/content_scene.hpp), the soft one gives the soft-particle the mass of
+// everything inside it resolved.
 #pragma once
 #include <cstdint>
 #include <vector>
 
 #include "coarse/settings.hpp"
 #include "packing/generator.hpp"
+#include "packing/nested.hpp"
 #include "scene/scene_def.hpp"
 
 namespace softpack {
@@ -32,10 +40,16 @@ struct Medium {
   std::vector<Vec3> grain_x;          ///< first-decade grains
   std::vector<double> grain_r;
   std::vector<Vec3> sites;            ///< soft-particle centres
-  std::vector<Packing> packings;      ///< one per site, about the origin
+  std::vector<Packing> packings;      ///< one per site, about the origin: the site's own grains
   std::vector<std::uint64_t> packing_seeds;
+  int levels = 1;                     ///< the sites' packing.levels (1: grains only)
+  double inner_radius = 0.0;          ///< levels > 1: the radius of a site's own sites, Rs / Π
+  std::vector<std::vector<Vec3>> inner_sites;  ///< levels > 1: each site's own sites, about its centre
+  /// levels > 1: the contents of each site's own sites, down to the last level; made from the
+  /// seeds by medium_contents(), not stored in the medium file.
+  std::vector<std::vector<SiteContent>> contents;
   double grains_volume = 0.0;         ///< solid volume of the first decade [m^3]
-  double packings_volume = 0.0;       ///< solid volume of the packings [m^3]
+  double packings_volume = 0.0;       ///< solid volume of the packings, every level [m^3]
   double target_volume = 0.0;         ///< V2 the packings stand for [m^3]
 
   double solid_volume() const { return grains_volume + packings_volume; }
@@ -45,6 +59,11 @@ struct Medium {
 /// The medium of `seed` (the same settings and seed give the same bits); `progress(k, n)` after
 /// each packing generated. InputError naming medium.initial_fraction when a body finds no place.
 Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+/// Makes `m.contents` from the sites' seeds and `m.inner_sites` (levels > 1; nothing otherwise):
+/// a medium read from its file has the sites' sites, not their contents. InputError when the
+/// settings' packing.levels is not the medium's.
+void medium_contents(const CoarseGrainSettings& s, Medium& m);
 
 /// The packing seed of site k of medium `seed`.
 std::uint64_t site_seed(std::uint64_t seed, std::size_t k);

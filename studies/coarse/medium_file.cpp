@@ -26,6 +26,16 @@ void write_medium_file(const std::string& path, const MediumFile& mf) {
     seeds.push_back(static_cast<std::int64_t>(m.packing_seeds[k]));
   }
   put(f, "packings/offsets", offsets), put(f, "packings/centres", centres), put(f, "packings/radii", radii), put(f, "packings/seeds", seeds);
+  if (m.levels > 1) {  // nested: each site's own sites (their contents are made from the seeds)
+    std::vector<std::int64_t> inner_offsets{0};
+    std::vector<Vec3> inner;
+    for (const std::vector<Vec3>& v : m.inner_sites) {
+      inner.insert(inner.end(), v.begin(), v.end());
+      inner_offsets.push_back(static_cast<std::int64_t>(inner.size()));
+    }
+    put(f, "packings/levels", static_cast<std::int64_t>(m.levels)), put(f, "packings/site_radius", m.inner_radius);
+    put(f, "packings/site_offsets", inner_offsets), put(f, "packings/site_centres", inner);
+  }
   put(f, "box/L", m.L), put(f, "box/H", m.H), put(f, "box/Rs", m.Rs);
   put(f, "volumes/grains", m.grains_volume), put(f, "volumes/packings", m.packings_volume), put(f, "volumes/target", m.target_volume);
   put(f, "provenance/seed", static_cast<std::int64_t>(mf.seed)), put(f, "provenance/settings", mf.settings);
@@ -56,6 +66,22 @@ MediumFile read_medium_file(const std::string& path) {
     p.radii.assign(radii.begin() + a, radii.begin() + b);
     m.packings.push_back(std::move(p));
     m.packing_seeds.push_back(static_cast<std::uint64_t>(seeds[k]));
+  }
+  if (f.exists("packings/levels")) {  // nested soft-particles (absent: grains only)
+    const std::int64_t levels = formats::get_count(f, "packings/levels");
+    if (levels < 2 || levels > 1000) throw InputError(fmt::format("{}: packings/levels: {} is not allowed; allowed: 2 to 1000", path, levels));
+    m.levels = static_cast<int>(levels);
+    std::vector<std::int64_t> inner_offsets;
+    std::vector<Vec3> inner;
+    get(f, "packings/site_radius", m.inner_radius), get(f, "packings/site_offsets", inner_offsets), get(f, "packings/site_centres", inner);
+    formats::same_length(f, "packings/site_offsets", inner_offsets.size(), "sites/x + 1", m.sites.size() + 1);
+    for (std::size_t k = 0; k < m.sites.size(); ++k) {
+      const auto a = inner_offsets[k], b = inner_offsets[k + 1];
+      if (a < 0 || b < a || b > static_cast<std::int64_t>(inner.size()))
+        throw InputError(fmt::format("{}: packings/site_offsets: rows {} to {} of site {} are not in the {} sites", path, a, b, k, inner.size()));
+      m.inner_sites.emplace_back(inner.begin() + a, inner.begin() + b);
+    }
+    if (!(m.inner_radius > 0.0)) throw InputError(path + ": packings/site_radius must be > 0");
   }
   get(f, "box/L", m.L), get(f, "box/H", m.H), get(f, "box/Rs", m.Rs);
   get(f, "volumes/grains", m.grains_volume), get(f, "volumes/packings", m.packings_volume), get(f, "volumes/target", m.target_volume);

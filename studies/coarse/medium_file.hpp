@@ -6,6 +6,10 @@
 //   /packings/{offsets (M + 1), centres (P, 3), radii, seeds}
 //                                       site k's grains: rows offsets[k] to offsets[k+1], about
 //                                       the site's centre; its packing seed
+//   /packings/{levels, site_radius, site_offsets (M + 1), site_centres (Q, 3)}
+//                                       nested soft-particles only (levels > 1): site k's own
+//                                       sites, rows site_offsets[k] to [k+1], about its centre;
+//                                       their contents are made from the seeds (medium_contents)
 //   /box/{L, H, Rs}                     [m]
 //   /volumes/{grains, packings, target} [m^3] (coarse/medium.hpp)
 //   /provenance/{seed, settings, code_version, seconds, cpu_seconds}

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -9,6 +10,7 @@
 #include "config/yaml_node.hpp"
 #include "core/error.hpp"
 #include "io/sha256.hpp"
+#include "packing/nested.hpp"
 #include "packing/packing_profile.hpp"
 
 namespace softpack {
@@ -73,13 +75,18 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
     s.relaxation = measurement.relaxation;
     s.normal_speed = measurement.normal.speed;
   }
-  s.packing = parse_packing(profile).parameters;
+  {
+    const PackingProfile pp = parse_packing(profile);
+    s.packing = pp.parameters, s.levels = pp.levels;
+  }
   if (auto p = sp.find("packing")) {
-    p->allow_only({"beta", "trials"});
+    p->allow_only({"beta", "trials", "levels"});
     if (auto b = p->find("beta")) s.packing.beta = b->number();
     if (auto t = p->find("trials")) s.packing.trials = t->integer();
+    if (auto l = p->find("levels")) s.levels = static_cast<int>(std::clamp<long>(l->integer(), -1, 1000));
     try {
       validate(s.packing);
+      validate_levels(s.packing, s.levels);
     } catch (const InputError& e) {
       p->fail(e.what());
     }

@@ -1,0 +1,99 @@
+#include "coarse/resolved_estimate.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "core/version.hpp"
+#include "integrate/time_step.hpp"
+
+namespace softpack {
+namespace {
+
+void count_content(const SiteContent& c, std::size_t& n, double& smallest) {
+  n += c.level.grains.radii.size();
+  for (double r : c.level.grains.radii) smallest = std::min(smallest, r);
+  for (const SiteContent& sub : c.sites) count_content(sub, n, smallest);
+}
+
+}  // namespace
+
+std::pair<std::size_t, double> resolved_size(const Medium& m) {
+  if (m.levels > 1 && m.contents.size() != m.sites.size())
+    throw InputError("resolved_size: the medium's nested contents are not made (coarse/medium.hpp: medium_contents)");
+  std::size_t n = m.grain_r.size();
+  double smallest = std::numeric_limits<double>::infinity();
+  for (double r : m.grain_r) smallest = std::min(smallest, r);
+  for (const Packing& p : m.packings) {
+    n += p.radii.size();
+    for (double r : p.radii) smallest = std::min(smallest, r);
+  }
+  for (const std::vector<SiteContent>& cs : m.contents)
+    for (const SiteContent& c : cs) count_content(c, n, smallest);
+  return {n, smallest};
+}
+
+ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m, const CoarseResult& soft,
+                                   const std::vector<CoarseResult>& measured) {
+  if (soft.model != "soft") throw InputError(fmt::format("{}: a {} run; allowed: the medium's soft run", soft.path, soft.model));
+  if (soft.sites != static_cast<std::int64_t>(m.sites.size()) || soft.grains != static_cast<std::int64_t>(m.grain_r.size()))
+    throw InputError(fmt::format("{}: {} grains and {} sites, the medium {} and {}: not this medium's run", soft.path, soft.grains,
+                                 soft.sites, m.grain_r.size(), m.sites.size()));
+  if (measured.empty()) throw InputError("estimate_resolved: no measured resolved run to take the cost per sphere-step from");
+  ResolvedEstimate e;
+  std::tie(e.spheres, e.smallest_radius) = resolved_size(m);
+  // The engine's step for the resolved scene: its smallest grain's (the shells and walls set none).
+  SceneDef one = engine_scene(s);
+  ParticleDef p;
+  p.r = e.smallest_radius, p.material = 0;
+  one.particles.push_back(p);
+  e.dt = choose_time_step(one);
+  e.simulated_time = static_cast<double>(soft.steps) * soft.dt;
+  e.steps = e.simulated_time / e.dt;
+  std::vector<double> c;
+  for (const CoarseResult& r : measured) {
+    if (r.model != "resolved") throw InputError(fmt::format("{}: a {} run; allowed: resolved runs (their cost per sphere-step)", r.path, r.model));
+    if (!(r.cpu_seconds > 0.0 && r.spheres > 0 && r.steps > 0)) throw InputError(fmt::format("{}: no CPU time, spheres or steps", r.path));
+    c.push_back(r.cpu_seconds / (static_cast<double>(r.spheres) * static_cast<double>(r.steps)));
+  }
+  double mean = 0.0, var = 0.0;
+  for (double x : c) mean += x / static_cast<double>(c.size());
+  for (double x : c) var += (x - mean) * (x - mean);
+  e.measured_runs = c.size();
+  e.cpu_per_sphere_step = mean;
+  e.cpu_per_sphere_step_error = c.size() > 1 ? std::sqrt(var / static_cast<double>(c.size() - 1) / static_cast<double>(c.size())) : 0.0;
+  e.cpu = static_cast<double>(e.spheres) * e.steps * mean;
+  e.soft_cpu = soft.cpu_seconds;
+  return e;
+}
+
+std::string resolved_estimate_json(const ResolvedEstimate& e, const CoarseResult& soft, const std::vector<CoarseResult>& measured) {
+  using nlohmann::json;
+  const auto q = [](double v, const char* unit) { return json{{"value", v}, {"unit", unit}}; };
+  json runs = json::array();
+  for (const CoarseResult& r : measured) runs.push_back(r.path);
+  json j = {{"code_version", code_version()},
+            {"soft_run", soft.path},
+            {"seed", soft.seed},
+            {"soft_cpu", q(e.soft_cpu, "s")},
+            {"soft_spheres", soft.spheres},
+            {"soft_steps", soft.steps},
+            {"soft_dt", q(soft.dt, "s")},
+            {"resolved_spheres", e.spheres},
+            {"smallest_radius", q(e.smallest_radius, "m")},
+            {"resolved_dt", q(e.dt, "s")},
+            {"simulated_time", q(e.simulated_time, "s")},
+            {"resolved_steps", e.steps},
+            {"cpu_per_sphere_step", {{"value", e.cpu_per_sphere_step}, {"error", e.cpu_per_sphere_step_error}, {"unit", "s"}}},
+            {"measured_runs", runs},
+            {"resolved_cpu_estimate", q(e.cpu, "s")},
+            {"speed_up_estimate", e.speed_up()},
+            {"rule", "resolved CPU = spheres x (soft run's simulated time / resolved dt) x CPU per sphere-step of the measured "
+                     "resolved runs (coarse/resolved_estimate.hpp)"}};
+  return j.dump(1) + "\n";
+}
+
+}  // namespace softpack

@@ -1,0 +1,49 @@
+// What the resolved model of a medium would cost, from what it holds and a measured cost per
+// sphere-step (issue 35, docs/nested.md "The three-decade medium"): a medium of nested
+// soft-particles over three decades is too large to run resolved here, so its soft run's cost is
+// set against an estimate, stated before the runs it judges (experiments/three-decades.yaml):
+//
+//   spheres   N = the first decade's grains + every grain of every site at every level
+//   step      dt = the engine's step for the resolved scene (integrate/time_step.hpp: the smallest
+//             grain's Rayleigh time times the profile's safety)
+//   steps     n = the soft run's simulated time (its steps times its step) / dt: the same
+//             compression of the same medium, each row the same wall travel and rest
+//   cost      N n c, c the CPU seconds per sphere-step of resolved runs that did run (their CPU
+//             time / (spheres steps)), the mean over them
+//
+// c is measured on media of one level, whose grains and contacts per grain are like the nested
+// medium's; an estimate, not a run.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "coarse/medium.hpp"
+#include "coarse/result_file.hpp"
+
+namespace softpack {
+
+struct ResolvedEstimate {
+  std::size_t spheres = 0;         ///< N
+  double smallest_radius = 0.0;    ///< [m]
+  double dt = 0.0;                 ///< [s]
+  double simulated_time = 0.0;     ///< of the soft run [s]
+  double steps = 0.0;              ///< n
+  double cpu_per_sphere_step = 0.0, cpu_per_sphere_step_error = 0.0;  ///< c [s], its standard error over the runs
+  std::size_t measured_runs = 0;
+  double cpu = 0.0;                ///< N n c [s]
+  double soft_cpu = 0.0;           ///< the soft run's, measured [s]
+  double speed_up() const { return cpu / soft_cpu; }
+};
+
+/// Spheres and smallest grain of the medium's resolved model (m.contents made for levels > 1).
+std::pair<std::size_t, double> resolved_size(const Medium& m);
+
+/// The estimate of the medium's resolved run from its soft run and resolved runs of other media;
+/// InputError when `soft` is not a soft run of this medium or a measured run is not resolved.
+ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m, const CoarseResult& soft,
+                                   const std::vector<CoarseResult>& measured);
+
+/// The estimate as JSON text (every quantity with its unit; the measured runs' paths).
+std::string resolved_estimate_json(const ResolvedEstimate& e, const CoarseResult& soft, const std::vector<CoarseResult>& measured);
+
+}  // namespace softpack
