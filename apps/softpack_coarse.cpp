@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "apps/coarse_estimate_cli.hpp"
 #include "apps/coarse_lammps_cli.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
@@ -25,11 +26,9 @@
 #include "coarse/in_place.hpp"
 #include "coarse/speed.hpp"
 #include "coarse/kinematics.hpp"
-#include "coarse/resolved_estimate.hpp"
 #include "coarse/result_file.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
-#include "io/atomic_file.hpp"
 #include "formats/law_file.hpp"
 
 namespace softpack::apps::coarse_app {
@@ -70,27 +69,6 @@ int medium(const RunOptions& o, const std::string& program) {
                l.cr(), program, o.seed, m.grain_x.size(), m.sites.size(), packed,
                m.levels > 1 ? fmt::format(", at {} levels, {} soft-particles of level 1 among them", m.levels, inner) : "", m.L, m.L, m.H,
                mf.time.wall, o.out);
-  return 0;
-}
-
-// The resolved model's cost estimated from the medium, its soft run and resolved runs of other
-// media (coarse/resolved_estimate.hpp): JSON to --out.
-int estimate(const RunOptions& o, const std::string& soft_path, const std::vector<std::string>& measured_paths) {
-  const CoarseGrainSettings s = read_coarse_grain_settings(o.config);
-  const MediumFile mf = read_medium_file(o.medium);
-  if (mf.settings != s.medium_text)
-    throw InputError(fmt::format("{}: made with other settings than {} (rerun softpack-coarse medium)", o.medium, o.config));
-  Medium m = mf.medium;
-  medium_contents(s, m);
-  const CoarseResult soft = read_coarse_result(soft_path);
-  std::vector<CoarseResult> measured;
-  for (const std::string& p : measured_paths) measured.push_back(read_coarse_result(p));
-  const ResolvedEstimate e = estimate_resolved(s, m, soft, measured);
-  write_file_atomically(o.out, resolved_estimate_json(e, soft, measured));
-  if (!o.quiet)
-    fmt::print(stderr, "softpack-coarse estimate seed {}: resolved {} spheres, {:.3g} steps of {:.3g} s, {:.3g} CPU s at {:.3g} s per "
-                       "sphere-step; soft {:.3g} CPU s: {:.3g} times -> {}\n",
-               mf.seed, e.spheres, e.steps, e.dt, e.cpu, e.cpu_per_sphere_step, e.soft_cpu, e.speed_up(), o.out);
   return 0;
 }
 
@@ -167,16 +145,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", o.out, "results file (HDF5)")->required();
   run_cmd->add_flag("--quiet", o.quiet, "no progress lines");
   add_threads_option(*run_cmd);
-  std::string estimate_soft;
-  std::vector<std::string> estimate_measured;
-  CLI::App* estimate_cmd = app.add_subcommand(
-      "estimate", "the resolved model's cost from the medium, its soft run and resolved runs of other media (coarse/resolved_estimate.hpp)");
-  estimate_cmd->add_option("--config", o.config, "settings of the medium, e.g. experiments/three-decades.yaml")->required();
-  estimate_cmd->add_option("--medium", o.medium, "medium file (softpack-coarse medium)")->required();
-  estimate_cmd->add_option("--soft", estimate_soft, "the medium's soft run (softpack-coarse run --model soft)")->required();
-  estimate_cmd->add_option("--measured", estimate_measured, "resolved runs whose CPU time per sphere-step is taken")->required();
-  estimate_cmd->add_option("--out", o.out, "the estimate (JSON)")->required();
-  estimate_cmd->add_flag("--quiet", o.quiet, "no summary line");
+  coarse_app::EstimateCommand estimate;
+  estimate.add(app);
   std::string probe_config, probe_out;
   std::uint64_t probe_seed = 0;
   std::vector<std::string> probe_arrangements{"one", "opposite", "cube"};
@@ -414,7 +384,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*medium_cmd) return medium(o, program);
-    if (*estimate_cmd) return estimate(o, estimate_soft, estimate_measured);
+    if (estimate.run()) return 0;
     return run(o, program);
   } catch (...) {
     return exit_on_error(program);

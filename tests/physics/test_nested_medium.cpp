@@ -15,7 +15,7 @@
 #include "support/coarse_tiny.hpp"
 
 namespace softpack {
-namespace {
+namespace nested_medium_test {
 
 // The tiny medium's settings (quick profile, Π = 3) with its sites at two levels.
 const CoarseGrainSettings& nested() {
@@ -158,5 +158,5 @@ TEST(NestedMedium, BothModelsCompress) {
   }
 }
 
-}  // namespace
+}  // namespace nested_medium_test
 }  // namespace softpack
