@@ -10,8 +10,10 @@
 
 #include "coarse/compression.hpp"
 #include "coarse/medium_file.hpp"
+#include "coarse/resolved_estimate.hpp"
 #include "core/error.hpp"
 #include "formats/law_file.hpp"
+#include "sim/simulation.hpp"
 #include "support/coarse_tiny.hpp"
 
 namespace softpack {
@@ -156,6 +158,33 @@ TEST(NestedMedium, BothModelsCompress) {
     EXPECT_GT(run.rows[6].sigma_top, 0.0) << name(model);
     EXPECT_NEAR(run.rows[6].strain, 0.06, 1e-3) << name(model);
   }
+}
+
+// The resolved model's cost estimate (coarse/resolved_estimate.hpp): N spheres, the engine's own
+// step for the resolved scene, the soft run's simulated time over it, the measured runs' mean CPU
+// time per sphere-step; a run of another medium or of the wrong model refused.
+TEST(NestedMedium, TheResolvedEstimateIsSpheresTimesStepsTimesTheMeasuredCost) {
+  const Medium& m = medium();
+  const SceneDef resolved = medium_scene(nested(), m, CoarseModel::resolved, laws());
+  CoarseResult soft;
+  soft.path = "soft.h5", soft.model = "soft", soft.steps = 1000, soft.dt = 1e-6, soft.cpu_seconds = 2.0;
+  soft.grains = static_cast<std::int64_t>(m.grain_x.size()), soft.sites = static_cast<std::int64_t>(m.sites.size());
+  CoarseResult a, b;
+  a.path = "a.h5", b.path = "b.h5", a.model = b.model = "resolved";
+  a.spheres = b.spheres = 100, a.steps = b.steps = 1000, a.cpu_seconds = 10.0, b.cpu_seconds = 30.0;  // 1e-4 and 3e-4 s
+  const ResolvedEstimate e = estimate_resolved(nested(), m, soft, {a, b});
+  EXPECT_EQ(e.spheres, resolved.particles.size());
+  EXPECT_NEAR(e.dt, Simulation(resolved).dt(), 1e-12 * e.dt) << "the engine's step for the whole resolved scene";
+  EXPECT_NEAR(e.steps, 1000 * 1e-6 / e.dt, 1e-9 * e.steps);
+  EXPECT_NEAR(e.cpu_per_sphere_step, 2e-4, 1e-15);
+  EXPECT_NEAR(e.cpu_per_sphere_step_error, 1e-4, 1e-15);
+  EXPECT_NEAR(e.cpu, static_cast<double>(e.spheres) * e.steps * 2e-4, 1e-9 * e.cpu);
+  EXPECT_NEAR(e.speed_up(), e.cpu / 2.0, 1e-9 * e.speed_up());
+  CoarseResult other = soft;
+  other.sites += 1;
+  EXPECT_THROW(estimate_resolved(nested(), m, other, {a}), InputError);
+  EXPECT_THROW(estimate_resolved(nested(), m, soft, {soft}), InputError);
+  EXPECT_THROW(estimate_resolved(nested(), m, soft, {}), InputError);
 }
 
 }  // namespace nested_medium_test
