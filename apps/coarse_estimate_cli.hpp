@@ -48,7 +48,7 @@ struct EstimateCommand {
     std::vector<CoarseResult> runs;
     for (const std::string& p : measured) runs.push_back(read_coarse_result(p));
     const ResolvedEstimate e = estimate_resolved(s, m, soft_run, runs);
-    write_file_atomically(out, resolved_estimate_json(e, soft_run, runs));
+    write_file_atomically(out, resolved_estimate_json(e, config, medium, soft_run, runs));
     if (!quiet)
       fmt::print(stderr,
                  "softpack-coarse estimate seed {}: resolved {} spheres, {:.3g} steps of {:.3g} s, {:.3g} CPU s at {:.3g} s per "

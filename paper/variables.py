@@ -5,15 +5,13 @@ in the text cannot go stale. tests/paper/check_numbers.py fails when a result-li
 in paper.tex outside a macro.
 
     paper/variables.py --out FILE.tex --profile DIR [--select DIR] [--density JSON] [--radius JSON]
-                       [--coarse JSON] [--nested DIR --decades DIR]
+                       [--coarse JSON]
 
   --profile DIR   DATA/paper: tables/verdict.json, fits/*.json, averages/normal-*.dat
   --select DIR    DATA/select: the same on the held-out seeds where the rules chose
   --density JSON  the density rule's outcome (make density-rule)
   --radius JSON   the radius study's report (make radius)
   --coarse JSON   the coarse-grain study's summary (make coarse-grain)
-  --nested DIR    DATA/nested: the self-consistency test's level reports (make nested)
-  --decades DIR   DATA/three-decades: the three-decade medium's chain and estimates (make three-decades)
 
 Macros are \\newcommand{\\vName}{text}; a file that is not given leaves its macros out, and
 LaTeX then stops at the first one the text uses (a missing result is an error, never a stale one).
@@ -197,70 +195,6 @@ def coarse_macros(m, path):
     m.add("vCoarseSeeds", ", ".join(str(s) for s in j["seeds"]), path)
 
 
-LEVEL = {"1": "One", "0": "Zero"}
-SETTING = {"reference": "Reference", "many-body": "ManyBody", "grains-reduced": "GrainsReduced", "on-resolved": "OnResolved",
-           "resolved": "Resolved"}
-
-
-def nested_macros(m, levels_dir, decades_dir):
-    """The nested soft-particles (docs/nested.md): each level's comparison with its resolved content
-    (DATA/nested/level-K/report/nested.json) and the three-decade medium's soft runs against the
-    resolved estimate (DATA/three-decades/medium/estimate/seed-S.json), with its laws' CPU time."""
-    for level, word in LEVEL.items():
-        path = os.path.join(levels_dir, f"level-{level}", "report", "nested.json")
-        if not os.path.exists(path):
-            continue
-        j = load(path)
-        for name, s in j["settings"].items():
-            if name in SETTING and s.get("cpu_stages") is not None:
-                m.math(f"vNested{word}{SETTING[name]}Cpu", f"{s['cpu_stages']:,.0f}".replace(",", r"\,"), path)
-        for c in j["comparisons"]:
-            if c["setting"] not in SETTING:
-                continue
-            name = f"vNested{word}{SETTING[c['setting']]}"
-            m.add(name + "Agree", str(c["agreeing"]), path)
-            m.add(name + "Compared", str(c["compared"]), path)
-            if c.get("closer_of"):
-                m.add(name + "Nearer", str(c["closer"]), path)
-                m.add(name + "NearerOf", str(c["closer_of"]), path)
-            # The ratio nested / resolved over the compared points where the resolved mean is at
-            # least twice its standard error (a ratio to a force indistinguishable from 0 says nothing).
-            ratios = [p["ratio"]["value"] for p in c["points"]
-                      if p["compared"] and p["ratio"]["value"] and p["against"]["value"] >= 2 * p["against"]["error"]]
-            if ratios:
-                m.math(name + "RatioMin", sig(min(ratios), 2), path)
-                m.math(name + "RatioMax", sig(max(ratios), 2), path)
-    est_dir = os.path.join(decades_dir, "medium", "estimate")
-    if not os.path.isdir(est_dir):
-        return
-    runs = [load(os.path.join(est_dir, f)) for f in sorted(os.listdir(est_dir)) if f.endswith(".json")]
-    if not runs:
-        return
-    src = est_dir + "/seed-*.json"
-
-    def mean_se(xs):
-        mu = sum(xs) / len(xs)
-        se = math.sqrt(sum((x - mu) ** 2 for x in xs) / (len(xs) - 1) / len(xs)) if len(xs) > 1 else None
-        return mu, se
-
-    m.add("vDecadesSeeds", ", ".join(str(r["seed"]) for r in runs), src)
-    m.math("vDecadesSpheres", sig(mean_se([r["resolved_spheres"] for r in runs])[0], 2), src)
-    m.math("vDecadesSoftSpheres", str(runs[0]["soft_spheres"]), src)
-    m.math("vDecadesSoftCpu", pm(*mean_se([r["soft_cpu"]["value"] for r in runs])), src)
-    m.math("vDecadesResolvedCpu", sig(mean_se([r["resolved_cpu_estimate"]["value"] for r in runs])[0], 2), src)
-    m.math("vDecadesResolvedDays", sig(mean_se([r["resolved_cpu_estimate"]["value"] for r in runs])[0] / 86400, 2), src)
-    m.math("vDecadesSpeedup", sig(mean_se([r["speed_up_estimate"] for r in runs])[0], 2), src)
-    # The laws' measurement, stated apart: the chain's CPU time (packings and stages, every level).
-    laws = 0.0
-    for level in range(4):
-        path = os.path.join(decades_dir, f"level-{level}", "report", "nested.json")
-        if not os.path.exists(path):
-            return
-        ref = load(path)["settings"]["reference"]
-        laws += ref["cpu_packings"] + ref["cpu_stages"]
-    m.math("vDecadesLawsCpu", f"{laws:,.0f}".replace(",", r"\,"), os.path.join(decades_dir, "level-*/report/nested.json"))
-
-
 def radius_macros(m, path):
     j = load(path)
     m.math("vRadiusReference", sig(j["R0"], 2), path)
@@ -294,8 +228,6 @@ def main():
     p.add_argument("--density")
     p.add_argument("--radius")
     p.add_argument("--coarse")
-    p.add_argument("--nested", help="DATA/nested (the levels' reports)")
-    p.add_argument("--decades", help="DATA/three-decades (its chain's reports and the medium's estimates)")
     a = p.parse_args()
     m = Macros()
     profile_macros(m, a.profile, "")
@@ -307,8 +239,6 @@ def main():
         radius_macros(m, a.radius)
     if a.coarse:
         coarse_macros(m, a.coarse)
-    if a.nested:
-        nested_macros(m, a.nested, a.decades or "")
     text = "% Generated by paper/variables.py from the result files named on each line; do not edit.\n" + "\n".join(m.lines) + "\n"
     # Written only when it changes: make runs this on every report build (the studies' committed
     # reports are read, not made, workflow/paper.mk), and the PDF is rebuilt only for new numbers.

@@ -30,7 +30,11 @@ three-decades: | $(TOOLS)  ## the three-decade medium: its four levels' laws in 
 	@$(MAKE) --no-print-directory three-decades-medium
 three-decades-medium: | $(TOOLS)  ## the three-decade medium's soft runs and resolved estimates (level 0's laws must exist)
 	@$(MAKE) --no-print-directory coarse-grain-runs COARSE_CONFIG=$(THREE_DECADES_CONFIG) COARSE_DIR=$(THREE_DECADES_DIR) COARSE_MODELS=soft
-	@set -e; for s in $$($(COARSE_TOOL) seeds --config $(THREE_DECADES_CONFIG)); do \
-	  out=$(THREE_DECADES_DIR)/estimate/seed-$$s.json; mkdir -p $(THREE_DECADES_DIR)/estimate; \
-	  $(RUN) $(COARSE_TOOL) estimate --config $(THREE_DECADES_CONFIG) --medium $(THREE_DECADES_DIR)/media/seed-$$s.h5 \
-	    --soft $(THREE_DECADES_DIR)/soft/seed-$$s.h5 $(foreach f,$(THREE_DECADES_MEASURED),--measured $(f)) --out $$out; done
+	@$(MAKE) --no-print-directory $(foreach s,$(THREE_DECADES_SEEDS),$(THREE_DECADES_DIR)/estimate/seed-$(s).json)
+# (Asked of the tool only when the recipe above runs: other goals never read the settings.)
+THREE_DECADES_SEEDS = $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --config $(THREE_DECADES_CONFIG))
+# An estimate is redone when its medium, its soft run or a measured run changes.
+$(THREE_DECADES_DIR)/estimate/seed-%.json: $(THREE_DECADES_DIR)/media/seed-%.h5 $(THREE_DECADES_DIR)/soft/seed-%.h5 $(THREE_DECADES_MEASURED) | $(TOOLS)
+	@mkdir -p $(@D)
+	@$(RUN) $(COARSE_TOOL) estimate --config $(THREE_DECADES_CONFIG) --medium $< --soft $(word 2,$^) \
+	  $(foreach f,$(THREE_DECADES_MEASURED),--measured $(f)) --out $@

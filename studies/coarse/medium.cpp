@@ -107,8 +107,8 @@ Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std:
 
 void medium_contents(const CoarseGrainSettings& s, Medium& m) {
   if (m.levels != s.levels)
-    throw InputError(fmt::format("the medium's sites have {} levels and the settings' packing {} (soft_particle.packing.levels or "
-                                 "its profile's packing.levels): make the medium again",
+    throw InputError(fmt::format("the medium's sites have {} levels and the settings' packing {} (soft_particle.profile's "
+                                 "packing.levels): make the medium again",
                                  m.levels, s.levels));
   m.contents.clear();
   if (m.levels == 1) return;

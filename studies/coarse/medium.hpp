@@ -17,7 +17,7 @@
 // radius Rs and the mass of those grains and that shell. Both have the same first-decade grains,
 // the same six walls and the profile's engine settings.
 //
-// Nested soft-particles (packing.levels > 1 in the soft-particle's packing, docs/nested.md): a
+// Nested soft-particles (packing.levels > 1 in the soft-particle's profile, docs/nested.md): a
 // site's packing is a level packing — its grains and its own sites of radius Rs / Π, whose
 // contents go down to the last level (packing/nested.hpp). The medium then spans the first
 // decade and `levels` more; the resolved scene places each content in free shells inside the

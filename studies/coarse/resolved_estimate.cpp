@@ -19,8 +19,7 @@ void count_content(const SiteContent& c, std::size_t& n, double& smallest) {
   for (const SiteContent& sub : c.sites) count_content(sub, n, smallest);
 }
 
-}  // namespace
-
+// Spheres and smallest grain of the medium's resolved model.
 std::pair<std::size_t, double> resolved_size(const Medium& m) {
   if (m.levels > 1 && m.contents.size() != m.sites.size())
     throw InputError("resolved_size: the medium's nested contents are not made (coarse/medium.hpp: medium_contents)");
@@ -35,6 +34,8 @@ std::pair<std::size_t, double> resolved_size(const Medium& m) {
     for (const SiteContent& c : cs) count_content(c, n, smallest);
   return {n, smallest};
 }
+
+}  // namespace
 
 ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m, const CoarseResult& soft,
                                    const std::vector<CoarseResult>& measured) {
@@ -70,12 +71,15 @@ ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m
   return e;
 }
 
-std::string resolved_estimate_json(const ResolvedEstimate& e, const CoarseResult& soft, const std::vector<CoarseResult>& measured) {
+std::string resolved_estimate_json(const ResolvedEstimate& e, const std::string& config, const std::string& medium, const CoarseResult& soft,
+                                   const std::vector<CoarseResult>& measured) {
   using nlohmann::json;
   const auto q = [](double v, const char* unit) { return json{{"value", v}, {"unit", unit}}; };
   json runs = json::array();
   for (const CoarseResult& r : measured) runs.push_back(r.path);
   json j = {{"code_version", code_version()},
+            {"config", config},
+            {"medium", medium},
             {"soft_run", soft.path},
             {"seed", soft.seed},
             {"soft_cpu", q(e.soft_cpu, "s")},

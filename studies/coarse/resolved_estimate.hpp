@@ -35,15 +35,14 @@ struct ResolvedEstimate {
   double speed_up() const { return cpu / soft_cpu; }
 };
 
-/// Spheres and smallest grain of the medium's resolved model (m.contents made for levels > 1).
-std::pair<std::size_t, double> resolved_size(const Medium& m);
-
 /// The estimate of the medium's resolved run from its soft run and resolved runs of other media;
 /// InputError when `soft` is not a soft run of this medium or a measured run is not resolved.
 ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m, const CoarseResult& soft,
                                    const std::vector<CoarseResult>& measured);
 
 /// The estimate as JSON text (every quantity with its unit; the measured runs' paths).
-std::string resolved_estimate_json(const ResolvedEstimate& e, const CoarseResult& soft, const std::vector<CoarseResult>& measured);
+/// With its provenance: the settings file and medium file it was made from, the code version.
+std::string resolved_estimate_json(const ResolvedEstimate& e, const std::string& config, const std::string& medium, const CoarseResult& soft,
+                                   const std::vector<CoarseResult>& measured);
 
 }  // namespace softpack

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -80,13 +79,12 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
     s.packing = pp.parameters, s.levels = pp.levels;
   }
   if (auto p = sp.find("packing")) {
-    p->allow_only({"beta", "trials", "levels"});
+    p->allow_only({"beta", "trials"});
     if (auto b = p->find("beta")) s.packing.beta = b->number();
     if (auto t = p->find("trials")) s.packing.trials = t->integer();
-    if (auto l = p->find("levels")) s.levels = static_cast<int>(std::clamp<long>(l->integer(), -1, 1000));
     try {
       validate(s.packing);
-      validate_levels(s.packing, s.levels);
+      validate_levels(s.packing, s.levels);  // the profile's levels with the overridden beta and trials
     } catch (const InputError& e) {
       p->fail(e.what());
     }

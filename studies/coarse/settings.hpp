@@ -27,8 +27,8 @@ struct CoarseGrainSettings {
   RelaxationDef relaxation;       ///< that profile's `relaxation` (the multi-contact probe's)
   double normal_speed = 0.0;      ///< that profile's `normal.speed` [m/s] (the probe's walls)
   PackingParameters packing;      ///< that profile's packing, with `packing` overrides
-  /// that profile's packing.levels, or the override's: > 1, nested soft-particles (the sites'
-  /// packings hold soft-particles of the level below; coarse/medium.hpp, docs/nested.md)
+  /// that profile's packing.levels: > 1, nested soft-particles (the sites' packings hold
+  /// soft-particles of the level below; coarse/medium.hpp, docs/nested.md)
   int levels = 1;
   std::string laws;               ///< law file (formats/law_file.hpp)
   GrainContactRule grain_contact = GrainContactRule::wall;

@@ -112,10 +112,10 @@ RadiusValue at(const std::vector<double>& x, const std::vector<MeanError>& y, do
   return {kNaN, kNaN};
 }
 
-// μ_soft per sliding Δn: per seed the mean of −Ft'/Fn' over the plateau (ht / Rs >= from) and
-// its largest value, in the contact's frame (turned by alpha_deg about +z); then over seeds.
 }  // namespace
 
+// μ_soft per sliding Δn: per seed the mean of −Ft'/Fn' over the plateau (ht / Rs >= from) and
+// its largest value, in the contact's frame (turned by alpha_deg about +z); then over seeds.
 void sliding_friction(const std::vector<SweepResults>& sliding, const std::vector<double>& sliding_delta_n, double Rs, double from,
                       std::size_t least, RadiusRow& row) {
   const std::size_t needed = least == 0 ? sliding.size() : least;
