@@ -81,7 +81,7 @@ int run(const RunOptions& o, const std::string& program) {
     throw InputError(fmt::format("{}: made with other settings than {} (rerun softpack-coarse medium)", o.medium, o.config));
   Medium m = mf.medium;
   medium_contents(s, m);  // nested soft-particles: the sites' contents, from their seeds
-  const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
+  const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
   const SceneDef scene = medium_scene(s, m, model, laws);
   if (!o.quiet)
     fmt::print(stderr, "{} seed {} {}: {} grains, {} sites, {} spheres in a box {:.4g} x {:.4g} x {:.4g} m\n", program, mf.seed, o.model,
@@ -317,7 +317,7 @@ int main(int argc, char** argv) {
     }
     if (*kin_cmd) {
       const CoarseGrainSettings s = read_coarse_grain_settings(kin_dir + "/profiles/many-body.yaml");
-      write_kinematics_report(read_many_body_probe(kin_plan), kin_plan, soft_particle_laws(read_law_file(s.laws), s.laws), s.laws, kin_dir + "/report/contact-rows.dat",
+      write_kinematics_report(read_many_body_probe(kin_plan), kin_plan, read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body), s.laws, kin_dir + "/report/contact-rows.dat",
                               kin_dir + "/in-place", kin_dir + "/report", law_version);
       fmt::print(stderr, "{} kinematics: {}/report/kinematics.md\n", program, kin_dir);
       return 0;

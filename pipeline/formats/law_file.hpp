@@ -156,4 +156,11 @@ LawFile read_law_file(const std::string& path);
 /// formats/scene_laws.cpp.
 SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source);
 
+/// The laws a soft-particle follows as `key` (a settings section: `content` of a nested
+/// measurement, `soft_particle` of a coarse-grain medium) names them: `key.laws`' file, and when
+/// `many_body` is not empty the many-body law of that file instead of `laws`' own (the parameters
+/// are dimensionless: paper/many-body.md). InputError naming `key.laws` or `key.many_body`; a
+/// `many_body` file without a many-body law is refused.
+SoftParticleLaws read_soft_particle_laws(const std::string& key, const std::string& laws, const std::string& many_body);
+
 }  // namespace softpack

@@ -94,4 +94,23 @@ SoftParticleLaws soft_particle_laws(const LawFile& f, const std::string& source)
   return out;
 }
 
+SoftParticleLaws read_soft_particle_laws(const std::string& key, const std::string& laws, const std::string& many_body) {
+  SoftParticleLaws l;
+  try {
+    l = soft_particle_laws(read_law_file(laws), laws);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}.laws: {}", key, e.what()));
+  }
+  if (many_body.empty()) return l;
+  try {
+    l.many_body = soft_particle_laws(read_law_file(many_body), many_body).many_body;
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}.many_body: {}", key, e.what()));
+  }
+  if (!l.many_body)
+    throw InputError(fmt::format("{}.many_body: {} has no many-body law (`many_body`); allowed: a law file of version 2 or later "
+                                 "with one", key, many_body));
+  return l;
+}
+
 }  // namespace softpack

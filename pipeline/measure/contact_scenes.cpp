@@ -66,22 +66,9 @@ void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Ve
     scene.particles.push_back(d);
   }
   if (!scene.effects.soft_particles) {
-    SoftParticleLaws laws;
-    try {
-      laws = soft_particle_laws(read_law_file(s.content->laws), s.content->laws);
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("content.laws: {} (the law file of the level below: docs/nested.md)", e.what()));
-    }
-    if (!s.content->many_body.empty()) {  // the sites' many-body law, from another law file (dimensionless)
-      try {
-        laws.many_body = soft_particle_laws(read_law_file(s.content->many_body), s.content->many_body).many_body;
-      } catch (const InputError& e) {
-        throw InputError(fmt::format("content.many_body: {} (docs/nested.md)", e.what()));
-      }
-      if (!laws.many_body)
-        throw InputError(fmt::format("content.many_body: {} has no many-body law (`many_body`); allowed: a law file of version 2 "
-                                     "or later with one (docs/nested.md)", s.content->many_body));
-    }
+    // The level below's law file is made by its study (docs/nested.md); the sites' many-body law
+    // may come from another file (dimensionless).
+    const SoftParticleLaws laws = read_soft_particle_laws("content", s.content->laws, s.content->many_body);
     scene.effects.soft_particles = SoftParticlesDef{laws, s.content->grain_contact, SoftParticlesDef::BeyondRange::report};
   }
 }

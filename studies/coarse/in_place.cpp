@@ -131,7 +131,7 @@ std::vector<InPlaceContact> in_place_contacts(const Simulation& sim, const Mediu
 void write_in_place_seed(const ManyBodyProbe& plan, const std::string& config, const std::string& media_dir, std::uint64_t seed,
                          const std::string& out_dir, const std::function<void(double, double, const CurveRow&)>& progress) {
   const CoarseGrainSettings s = read_coarse_grain_settings(config);
-  const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
+  const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
   if (!laws.many_body || !laws.soft_solid || !laws.soft_soft)
     throw InputError(fmt::format("{}: the law file {} has no many_body or lacks a scene; the law in place needs both scenes and many_body", config, s.laws));
   const std::string path = fmt::format("{}/seed-{}.h5", media_dir, seed);

@@ -268,7 +268,9 @@ void write_lammps_export(const CoarseGrainSettings& s, const std::string& config
   if (s.beyond_range == SoftParticlesDef::BeyondRange::stop)
     throw InputError("coarse_grain.soft_particle.beyond_range: stop is not exported (softpack/soft does not count the contacts beyond the laws' range); allowed: report");
   const LammpsGranular g = lammps_granular(s.simulation.material, s.simulation.wall_material, *fx.restitution, fx.tangential_damping_ratio);
-  const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
+  if (!s.many_body.empty())  // the pair style reads one law file, copied below
+    throw InputError("coarse_grain.soft_particle.many_body is not exported (softpack/soft reads the one law file `laws`); allowed: no many_body");
+  const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
   const SceneDef scene = medium_scene(s, mf.medium, CoarseModel::soft, laws);
   const Simulation sim(scene);  // the engine's time step for this medium
   double r_min = scene.particles.front().r;
@@ -342,7 +344,7 @@ LammpsRun read_lammps_run(const std::string& dir, const CoarseGrainSettings& s, 
   if (!ended) throw InputError(fmt::format("{}: no line 'softpack-coarse export: the compression ended': the run did not end", log));
   if (out.ranks == 0) throw InputError(fmt::format("{}: no 'Loop time' line: not the log of a LAMMPS run", log));
   if (steps != run.steps) throw InputError(fmt::format("{}: {} steps, but {} ends at step {}: not the log of this run", log, steps, curve, run.steps));
-  const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
+  const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
   const SceneDef scene = medium_scene(s, mf.medium, CoarseModel::soft, laws);
   run.dt = Simulation(scene).dt();
   run.spheres = scene.particles.size(), run.bodies = mf.medium.bodies();

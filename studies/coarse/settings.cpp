@@ -65,7 +65,7 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
   }
 
   const ConfigNode sp = c.at("soft_particle");
-  sp.allow_only({"profile", "packing", "laws", "grain_contact", "beyond_range", "shell_mass_fraction", "rotation"});
+  sp.allow_only({"profile", "packing", "laws", "many_body", "grain_contact", "beyond_range", "shell_mass_fraction", "rotation"});
   s.profile = sp.at("profile").string();
   const ConfigNode profile = ConfigNode::load_file(resolve(root_dir, s.profile));
   {
@@ -90,6 +90,10 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
     }
   }
   s.laws = resolve(root_dir, sp.at("laws").string());
+  if (auto mb = sp.find("many_body")) {
+    if (mb->string().empty()) mb->fail("allowed: the path of a law file with a many-body law (`many_body`), or no key");
+    s.many_body = resolve(root_dir, mb->string());
+  }
   s.grain_contact = sp.at("grain_contact").choice({"wall", "reduced-radius"}) == "wall" ? GrainContactRule::wall
                                                                                        : GrainContactRule::reduced_radius;
   s.beyond_range = sp.at("beyond_range").choice({"report", "stop"}) == "report" ? SoftParticlesDef::BeyondRange::report
@@ -148,7 +152,8 @@ CoarseStamps coarse_stamps(const ConfigNode& root, const std::string& version, c
                        "medium:\n" + text(c.at("medium"));
   std::string resolved = medium + section_text(profile, "material") + section_text(profile, "simulation") +
                          "shell_mass_fraction: " + text(sp.at("shell_mass_fraction")) + "compression:\n" + text(c.at("compression"));
-  std::string soft = resolved + "laws: " + sha256_of_file(s.laws) + "\ngrain_contact: " + text(sp.at("grain_contact")) +
+  std::string soft = resolved + "laws: " + sha256_of_file(s.laws) +
+                     (s.many_body.empty() ? "" : "\nmany_body: " + sha256_of_file(s.many_body)) + "\ngrain_contact: " + text(sp.at("grain_contact")) +
                      "beyond_range: " + text(sp.at("beyond_range")) + (s.spin_locked ? "rotation: locked\n" : "");
   return {stamp("medium", medium), stamp("resolved", resolved), stamp("soft", soft)};
 }

@@ -31,6 +31,9 @@ struct CoarseGrainSettings {
   /// soft-particles of the level below; coarse/medium.hpp, docs/nested.md)
   int levels = 1;
   std::string laws;               ///< law file (formats/law_file.hpp)
+  /// a law file whose many-body law the soft-particles follow instead of `laws`' own (empty:
+  /// `laws`' own, if it has one): the nested chain's levels measure pairwise laws only
+  std::string many_body;
   GrainContactRule grain_contact = GrainContactRule::wall;
   SoftParticlesDef::BeyondRange beyond_range = SoftParticlesDef::BeyondRange::report;
   double shell_mass_fraction = 0.0;  ///< resolved: free shell mass / its grains' mass

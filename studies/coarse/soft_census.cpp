@@ -71,7 +71,7 @@ SoftCensus soft_census(const std::vector<SoftSide>& sides, const Medium& m, cons
 void write_soft_census(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& config, const std::string& media_dir,
                        const std::string& out_dir, int version) {
   const CoarseGrainSettings s = read_coarse_grain_settings(config);
-  const SoftParticleLaws laws = soft_particle_laws(read_law_file(s.laws), s.laws);
+  const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
   const double dn_max = plan.delta_n.back(), E_max = 6.0 * cap_volume(dn_max);
   std::string dat = fmt::format(
       "# soft-particle contacts in the media (softpack-coarse soft-contacts, {}): {} with the laws {}; probe range: dn <= {}, "

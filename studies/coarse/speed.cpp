@@ -31,7 +31,7 @@ struct Model {
 
 Model model_of(const std::string& config, const Medium& m, CoarseModel model) {
   Model r{read_coarse_grain_settings(config), {}, {}};
-  r.laws = soft_particle_laws(read_law_file(r.settings.laws), r.settings.laws);
+  r.laws = read_soft_particle_laws("coarse_grain.soft_particle", r.settings.laws, r.settings.many_body);
   r.scene = medium_scene(r.settings, m, model, r.laws);
   return r;
 }

@@ -66,6 +66,20 @@ same_but "$tmp/laws.yaml" "an older law file of the same content" ""
 sed -i 's/"version": 1/"version": 1 /' "$tmp/laws.json"
 same_but "$tmp/laws.yaml" "a law file of other bytes" "soft"
 [[ $(field "$(stamps "$config")" medium) == $(field "$(stamps "$tmp/contact.yaml")" medium) ]] || fail "stamps are not stable"
+# many_body: the soft-particles follow another file's many-body law (the nested chain's medium):
+# its file is in the soft stamp only, the run names it, and a file without one is refused (the
+# law it takes: LawFile.ASectionTakesTheManyBodyLawOfTheFileItNames).
+sed 's|    grain_contact: wall|    grain_contact: wall\n    many_body: data/many-body/report/laws-v6.json|' "$config" > "$tmp/many-body.yaml"
+same_but "$tmp/many-body.yaml" "many_body" "soft"
+"$exe" run --config "$tmp/many-body.yaml" --model soft --medium "$tmp/medium.h5" --out "$tmp/runs/many-body-901.h5" --quiet
+h5dump -d /provenance/settings "$tmp/runs/many-body-901.h5" | grep -q "many_body: data/many-body/report/laws-v6.json" \
+  || fail "the run's provenance does not name its many-body law file"
+sed 's|    grain_contact: wall|    grain_contact: wall\n    many_body: data/radius/report/laws.json|' "$config" > "$tmp/pairwise.yaml"
+expect_error "coarse_grain.soft_particle.many_body: ./data/radius/report/laws.json has no many-body law" "$tmp/x.h5" \
+  "$exe" run --config "$tmp/pairwise.yaml" --model soft --medium "$tmp/medium.h5" --out "$tmp/x.h5"
+sed 's|    grain_contact: wall|    grain_contact: wall\n    many_body: ""|' "$config" > "$tmp/empty.yaml"
+expect_error "coarse_grain.soft_particle.many_body: allowed: the path of a law file" "$tmp/x.h5" \
+  "$exe" run --config "$tmp/empty.yaml" --model soft --medium "$tmp/medium.h5" --out "$tmp/x.h5"
 
 # A probe run's file begins with its group's stamp (workflow/coarse.mk compares that line, not
 # times): here a confined kind of the plan, on a grid of one Δn, one seed, the small radius.
