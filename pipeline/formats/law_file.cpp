@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <system_error>
 #include <nlohmann/json.hpp>
 #include <tuple>
 #include <utility>
@@ -334,5 +336,25 @@ void write_law_file(const std::string& path, const LawFile& f) {
 }
 
 LawFile read_law_file(const std::string& path) { return Reader(path).file(read_json_input(path, "a law file (JSON)")); }
+
+bool write_law_file_if_changed(const std::string& path, const LawFile& f) {
+  const json fresh = law_json::file(f);
+  Reader(path).file(fresh);
+  // What names the code that wrote the laws, not the laws: when the time of writing, the code
+  // version and the many-body law's source (which names the version) are all that differ, the
+  // file stays as it is.
+  const auto laws_only = [](json j) {
+    if (j.contains("provenance")) j["provenance"].erase("code_version"), j["provenance"].erase("created");
+    if (j.contains("many_body")) j["many_body"].erase("source");
+    return j;
+  };
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec)) {
+    const json old = json::parse(read_text_file(path), nullptr, /*allow_exceptions=*/false);
+    if (!old.is_discarded() && laws_only(old) == laws_only(fresh)) return false;
+  }
+  write_file_atomically(path, fresh.dump(2) + "\n");
+  return true;
+}
 
 }  // namespace softpack

@@ -144,6 +144,12 @@ struct LawFile {
 /// `path`) and writes nothing when `f` would not be read back: the file is always readable.
 void write_law_file(const std::string& path, const LawFile& f);
 
+/// write_law_file, unless `path` holds the same laws: only the provenance's code_version and
+/// created, and many_body.source, differ. A report made again by other code then leaves its law
+/// file, and so the stamps of every stage that reads it (a nested level above, a medium), as
+/// they were. Returns whether it wrote.
+bool write_law_file_if_changed(const std::string& path, const LawFile& f);
+
 /// Reads a law file; InputError naming the file and the field on every rule above.
 LawFile read_law_file(const std::string& path);
 

@@ -19,29 +19,6 @@
 #include "io/atomic_file.hpp"
 
 namespace softpack {
-namespace {
-
-// The law file rewritten only when its laws change, not when only the code that wrote them does
-// (many_body.source names the code version): what the media ran on stays the file they name, and
-// make does not redo them because the report was made again.
-void write_law_file_if_changed(const std::string& path, const LawFile& laws) {
-  const std::string fresh = path + ".new";
-  write_law_file(fresh, laws);
-  if (std::filesystem::exists(path)) {
-    const auto without_source = [](const std::string& file) {
-      nlohmann::json j = nlohmann::json::parse(read_text_file(file));
-      if (j.contains("many_body")) j["many_body"].erase("source");
-      return j;
-    };
-    if (without_source(path) == without_source(fresh)) {
-      std::filesystem::remove(fresh);
-      return;
-    }
-  }
-  std::filesystem::rename(fresh, path);
-}
-
-}  // namespace
 
 ProbeAnalysis write_probe_report(const ManyBodyProbe& plan, const std::string& plan_path, const std::string& probe_dir,
                                  const std::string& out_dir) {

@@ -209,7 +209,7 @@ std::string write_nested_report(const NestedReport& r, const Study& study, const
         fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", std::chrono::floor<std::chrono::seconds>(std::chrono::system_clock::now()));
     laws.provenance.notes = fmt::format("Laws of setting '{}' of the nested study at its radius, no radius scaling (docs/nested.md).", s.name);
     std::filesystem::create_directories(out_dir + "/" + s.name);
-    write_law_file(out_dir + "/" + s.name + "/laws.json", laws);
+    write_law_file_if_changed(out_dir + "/" + s.name + "/laws.json", laws);
   }
   for (const NestedComparison& cmp : r.comparisons) {
     t += fmt::format("\n## `{}` against `{}`: {} of {} points agree — the recursion {}\n\n", cmp.setting, cmp.against, cmp.agreeing,

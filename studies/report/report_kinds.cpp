@@ -32,7 +32,7 @@ const std::vector<ReportKind>& report_kinds() {
        [](const Study& study, const std::string& data, const std::string& out, const std::string& title) {
          const RadiusReport r = radius_report(study, data);
          const std::string table = write_radius_report(r, study, out, title);
-         write_law_file(out + "/laws.json", radius_law_file(r, study, code_version()));
+         write_law_file_if_changed(out + "/laws.json", radius_law_file(r, study, code_version()));
          return table;
        }},
       {"coarse", "Coarse-grain validation",
