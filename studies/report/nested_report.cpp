@@ -95,6 +95,16 @@ NestedComparison nested_comparison(const NestedSetting& s, const NestedSetting& 
   return out;
 }
 
+double nested_unloaded_to(const RadiusRow& row, const std::vector<double>& Fn_delta_n, const NestedCriterion& c, double Rs) {
+  const double onset = c.onset_force * (Rs / c.Rs0) * (Rs / c.Rs0);
+  double to = kNaN;
+  for (std::size_t k = 0; k < Fn_delta_n.size() && k < row.Fn.size(); ++k) {
+    if (!(row.Fn[k].value < onset)) break;
+    to = Fn_delta_n[k];
+  }
+  return to;
+}
+
 void nested_closer(NestedComparison& c, const NestedComparison& reference) {
   c.closer = c.closer_of = 0;
   for (const NestedPoint& p : c.points) {
@@ -150,6 +160,7 @@ NestedReport nested_report(const Study& study, const std::string& dir) {
     st.Fn_delta_n = grid_within(m.normal.delta_n, r.criterion.Fn_delta_n);
     st.kt_delta_n = m.has_tangential ? grid_within(m.tangential.delta_n, r.criterion.kt_delta_n) : std::vector<double>{};
   }
+  r.Fn_delta_n = st.Fn_delta_n;
   std::vector<std::string> names{"reference"};
   for (const StudySetting& s : study.settings) names.push_back(s.name);
   for (const std::string& n : names) r.settings.push_back(measure_setting(st, dir, n));
@@ -174,13 +185,15 @@ std::string write_nested_report(const NestedReport& r, const Study& study, const
       "point where Fn is below {} N × (Rs / {} m)² in both is left out.\n\n",
       title, study.criteria, c.Fn_delta_n[0], c.Fn_delta_n[1], c.kt_delta_n[0], c.kt_delta_n[1], study.nested_against, c.bound,
       c.onset_force, c.Rs0);
-  t += "## Laws and cost\n\n| setting | changes | scene | Rs [m] | grains | sites | δ | a [N] | b | c [N] | kt a [N/m] | kt b | μ_soft | CPU packings [s] | CPU stages [s] |\n"
-       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  t += "## Laws and cost\n\nUnloaded to: the largest Δn of the criterion's Fn range up to which the mean Fn is below the onset force "
+       "(– : loaded at its first).\n\n"
+       "| setting | changes | scene | Rs [m] | grains | sites | δ | a [N] | b | c [N] | kt a [N/m] | kt b | μ_soft | unloaded to | CPU packings [s] | CPU stages [s] |\n"
+       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   nlohmann::json j = nlohmann::json::object();
   j["criteria"] = study.criteria;
   for (const NestedSetting& s : r.settings) {
     if (!s.ran) {
-      t += fmt::format("| {} | {} | not run yet | | | | | | | | | | | | |\n", s.name, s.changes);
+      t += fmt::format("| {} | {} | not run yet | | | | | | | | | | | | | |\n", s.name, s.changes);
       continue;
     }
     nlohmann::json js_setting = {{"Rs", s.Rs}, {"grains", s.grains}, {"sites", s.sites}, {"cpu_packings", s.cpu_packings},
@@ -191,13 +204,15 @@ std::string write_nested_report(const NestedReport& r, const Study& study, const
       std::string mu;
       for (std::size_t k = 0; k < row.mu.size(); ++k)
         mu += fmt::format("{}{}: {}", k ? "; " : "", row.mu_delta_n[k], value_cell(row.mu[k].value, row.mu[k].error));
-      t += fmt::format("| {} | {} | {} | {:.6g} | {:.0f} | {:.1f} | {} | {} | {} | {} | {} | {} | {} | {:.0f} | {:.0f} |\n", s.name,
+      const double unloaded = nested_unloaded_to(row, r.Fn_delta_n, c, s.Rs);
+      t += fmt::format("| {} | {} | {} | {:.6g} | {:.0f} | {:.1f} | {} | {} | {} | {} | {} | {} | {} | {} | {:.0f} | {:.0f} |\n", s.name,
                        s.changes, row.scene, s.Rs, s.grains, s.sites, value_cell(row.delta.value, row.delta.error),
                        value_cell(row.a.value, row.a.error), value_cell(row.b.value, row.b.error), value_cell(row.c.value, row.c.error),
-                       value_cell(row.kt_a.value, row.kt_a.error), value_cell(row.kt_b.value, row.kt_b.error), mu, s.cpu_packings,
-                       s.cpu_stages);
+                       value_cell(row.kt_a.value, row.kt_a.error), value_cell(row.kt_b.value, row.kt_b.error), mu,
+                       std::isfinite(unloaded) ? fmt::format("{}", unloaded) : "–", s.cpu_packings, s.cpu_stages);
       js_setting["scenes"][row.scene] = {{"delta", nested_json(row.delta)}, {"a", nested_json(row.a)}, {"b", nested_json(row.b)}, {"c", nested_json(row.c)},
-                                         {"kt_a", nested_json(row.kt_a)}, {"kt_b", nested_json(row.kt_b)}, {"note", row.note}};
+                                         {"kt_a", nested_json(row.kt_a)}, {"kt_b", nested_json(row.kt_b)}, {"note", row.note},
+                                         {"Fn_unloaded_to", json_number(unloaded)}};
       if (std::isfinite(row.a.value)) laws.scenes[row.scene] = row_scene_laws(row);
     }
     j["settings"][s.name] = js_setting;

@@ -65,6 +65,7 @@ struct NestedSetting {
 
 struct NestedReport {
   NestedCriterion criterion;
+  std::vector<double> Fn_delta_n;  ///< the normal grid within the criterion's Fn range (the rows' Fn are at these)
   std::vector<NestedSetting> settings;
   std::vector<NestedComparison> comparisons;
 };
@@ -73,6 +74,11 @@ struct NestedReport {
 /// Fn and kt are at these Δn, in this order).
 NestedComparison nested_comparison(const NestedSetting& s, const NestedSetting& against, const NestedCriterion& c,
                                    const std::vector<double>& Fn_delta_n, const std::vector<double>& kt_delta_n);
+
+/// The largest Δn of `Fn_delta_n` up to which the row's mean Fn is below the criterion's onset
+/// force onset_force (Rs / Rs0)² at every point: the soft-particle carries no force there (a nested
+/// content that retreats before it pushes). NaN when it is loaded at the first point.
+double nested_unloaded_to(const RadiusRow& row, const std::vector<double>& Fn_delta_n, const NestedCriterion& c, double Rs);
 
 /// Fills `c.closer` and `c.closer_of` against `reference` (both compared with the same setting);
 /// nested_report() does so for the criterion's diagnosis settings only.

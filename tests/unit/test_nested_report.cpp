@@ -60,6 +60,19 @@ TEST(NestedReport, PointsAgreeWithinTheBoundAndBelowTheOnsetAreLeftOut) {
   EXPECT_EQ(nested_comparison(setting("a", 0.016, {{1.0, 0.1}}, {}), setting("b", 0.016, {{1.1, 0.1}}, {}), c, {0.3}, {}).agreeing, 1u);
 }
 
+// Where a soft-particle carries no force yet: up to the last Δn of the range where the mean is
+// below the onset at every point before it, NaN when loaded at the first.
+TEST(NestedReport, UnloadedToTheLastPointBelowTheOnsetFromTheFirst) {
+  NestedCriterion c;
+  c.onset_force = 1e-3, c.Rs0 = 0.016;  // 1e-5 N at Rs0 / 10
+  const std::vector<double> dn{0.2, 0.3, 0.4, 0.5};
+  const auto to = [&](std::vector<RadiusValue> Fn) { return nested_unloaded_to(setting("s", 0.0016, Fn, {}).rows[0], dn, c, 0.0016); };
+  EXPECT_EQ(to({{0.0, 0.0}, {9e-6, 1e-6}, {2e-5, 1e-6}, {0.0, 0.0}}), 0.3);  // loaded at 0.4: a later zero does not count
+  EXPECT_EQ(to({{0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}}), 0.5);
+  EXPECT_TRUE(std::isnan(to({{1e-5, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}})));  // at the onset: loaded
+  EXPECT_EQ(nested_unloaded_to(setting("s", 0.016, {{9e-4, 0.0}, {2e-3, 0.0}}, {}).rows[0], dn, c, 0.016), 0.2);  // 1e-3 N at Rs0
+}
+
 // A diagnosis setting against the reference (experiments/nested.yaml): nearer the resolved mean
 // at every point compared in both is a cause of the gap; at one point farther, not.
 TEST(NestedReport, ASettingNearerTheResolvedAtEveryPointIsACauseOfTheGap) {
