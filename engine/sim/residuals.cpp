@@ -35,7 +35,11 @@ Measurement residuals(const World& world, const ContactLists& lists, const Force
     double sum_Fn = 0.0;
     for_each_closed_contact(world, lists, forces, [&](const ClosedContact& c) {
       m.elastic_energy += c.normal_energy();
-      if (c.spring) m.elastic_energy += c.spring_energy();
+      if (c.spring) {
+        const double spring = c.spring_energy();
+        m.elastic_energy += spring;
+        m.spring_energy += spring;
+      }
       sum_Fn += c.Fn();
       ++m.contacts;
       const double radius = contact_radius(p, c);

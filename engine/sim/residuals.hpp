@@ -13,6 +13,7 @@ namespace softpack {
 struct Measurement {
   double kinetic_energy = 0.0;        ///< free spheres (and free shells), translation + rotation [J]
   double elastic_energy = 0.0;        ///< normal law + tangential springs [J]
+  double spring_energy = 0.0;         ///< of which the tangential springs' ½ kt ξ² [J]
   double max_unbalanced_force = 0.0;  ///< largest |net force| on a free sphere [N]
   double mean_contact_force = 0.0;    ///< mean normal force over closed contacts [N]
   std::size_t contacts = 0;           ///< closed contacts (sphere-sphere and sphere-wall)

@@ -115,7 +115,9 @@ void Watchdog::check(const World& world, const Measurement& m) {
     x_start_.clear();
     if (context_.gravity) x_start_ = world.p.x;
   }
-  const double E = m.kinetic_energy + m.elastic_energy;
+  // The tangential springs are left out: their ½ kt ξ² changes without work when kt follows the
+  // overlap (Tsuji's kt ∝ √h, Eq. 8's kt(Δn)), and capped by Coulomb's μ Fn it cannot blow up alone.
+  const double E = m.kinetic_energy + (m.elastic_energy - m.spring_energy);
   const double W_gravity = gravity_work(world, context_.gravity, x_start_);
   if (!started_) {
     start_energy_ = E;
@@ -148,10 +150,11 @@ void Watchdog::check(const World& world, const Measurement& m) {
                         p.r[m.hottest], p.v[m.hottest].norm(), m.hottest_energy);
     throw NumericalError(
         where(world) +
-        fmt::format("energy blow-up: kinetic + elastic energy {:.4g} J (kinetic {:.4g} J, elastic {:.4g} J) exceeds "
-                    "watchdog.energy_growth = {} times its budget {:.4g} J (the largest so far of: energy at the start "
-                    "{:.4g} J + work of the drivers {:.4g} J{}); {}; largest overlap: {}",
-                    E, m.kinetic_energy, m.elastic_energy, def_.energy_growth, budget_, start_energy_, driver_work_,
+        fmt::format("energy blow-up: kinetic + normal elastic energy {:.4g} J (kinetic {:.4g} J, normal elastic {:.4g} J; "
+                    "the tangential springs, not judged, {:.4g} J) exceeds watchdog.energy_growth = {} times its budget {:.4g} J "
+                    "(the largest so far of: energy at the start {:.4g} J + work of the drivers {:.4g} J{}); {}; largest overlap: {}",
+                    E, m.kinetic_energy, m.elastic_energy - m.spring_energy, m.spring_energy, def_.energy_growth, budget_,
+                    start_energy_, driver_work_,
                     x_start_.empty() ? "" : fmt::format(" + work of gravity, now {:.4g} J", W_gravity), hot,
                     overlap_text(world, m.deepest)) +
         time_step());

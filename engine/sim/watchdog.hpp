@@ -4,8 +4,10 @@
 // docs/physics.md §13):
 //
 //   non-finite  a position, velocity, force (angular velocity, torque) is NaN or infinite;
-//   energy      E > energy_growth * B, with E the kinetic (free spheres) + elastic (contacts)
+//   energy      E > energy_growth * B, with E the kinetic (free spheres) + normal elastic (contacts)
 //               energy and B its budget: the largest value so far of E_0 + W_drivers + W_gravity.
+//               The tangential springs' ½ kt ξ² is not in E: it changes without work when kt
+//               follows the overlap, and Coulomb's limit μ Fn bounds it by the normal state.
 //               E_0 is E when the budget started (construction, restore), W_drivers the positive
 //               work of each driver since then, summed step by step, and W_gravity =
 //               sum m_i g . (x_i - x_i(start)). Damping only removes energy, so a sound run keeps

@@ -51,7 +51,7 @@ run: {duration: 0.1}
 EOF
 run blowup 3 "$bin/softpack-run" --scene "$tmp/blowup.yaml" --out "$tmp/blowup.json" --quiet
 has blowup "softpack-run: numerical error: step "
-has blowup "energy blow-up: kinetic + elastic energy"
+has blowup "energy blow-up: kinetic + normal elastic energy"
 has blowup "most energetic sphere 0"
 has blowup "; dt = 0.000387 s, stable limit 0.000387 s (Rayleigh time of sphere 0)"
 [[ ! -e $tmp/blowup.json ]] || fail "blowup: an output file was written"
