@@ -158,15 +158,25 @@ TEST(Watchdog, SoundDrivenRunsStayFarFromTheThresholds) {
 // whose rounding noise grows tenfold and more between checks (a soft-particle's first relaxed
 // state, release 0.5.0's calibration). The same growth with a real overlap, or carried by motion,
 // still stops the run.
-TEST(Watchdog, RoundOffEnergiesAreNotABlowUp) {
-  World world = make_world(two_spheres(1e-13));
+// A watchdog of the default thresholds at dt = 1e-5 s, and the measurement of two spheres 0 and
+// 1 touching by `fraction` of a radius with elastic energy E.
+Watchdog default_dog() {
   Watchdog::Context context;
   context.dt = 1e-5;
-  Watchdog dog(WatchdogDef{}, context);
+  return Watchdog(WatchdogDef{}, context);
+}
+Measurement touching(double fraction, double E) {
   Measurement m;
-  m.elastic_energy = 3e-39;
-  m.deepest.fraction = 1e-13;
+  m.elastic_energy = E;
+  m.deepest.fraction = fraction;
   m.deepest.i = 0, m.deepest.j = 1;
+  return m;
+}
+
+TEST(Watchdog, RoundOffEnergiesAreNotABlowUp) {
+  World world = make_world(two_spheres(1e-13));
+  Watchdog dog = default_dog();
+  Measurement m = touching(1e-13, 3e-39);
   dog.start(world, m);
   m.elastic_energy = 1.4e-34;  // 5e4 times the budget
   EXPECT_NO_THROW(dog.check(world, m));
@@ -184,13 +194,8 @@ TEST(Watchdog, RoundOffEnergiesAreNotABlowUp) {
 // not judged; the same growth in the normal elastic energy, or in the motion, is.
 TEST(Watchdog, TheTangentialSpringsEnergyIsNotJudged) {
   World world = make_world(two_spheres(1e-4));
-  Watchdog::Context context;
-  context.dt = 1e-5;
-  Watchdog dog(WatchdogDef{}, context);
-  Measurement m;
-  m.elastic_energy = 1e-12;  // all normal
-  m.deepest.fraction = 1e-4;
-  m.deepest.i = 0, m.deepest.j = 1;
+  Watchdog dog = default_dog();
+  Measurement m = touching(1e-4, 1e-12);  // all normal
   dog.start(world, m);
   m.spring_energy = 1e-9;  // 1000 times the budget, in the springs
   m.elastic_energy = 1e-12 + m.spring_energy;
