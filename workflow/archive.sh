@@ -35,7 +35,7 @@ copy() {  # copy SUBDIR PATTERN...: the matching files of SOURCE/SUBDIR into the
   done
   return 0
 }
-copy packings '*.h5' '*.vtp' '*.xyz'
+copy packings 'seed-*[0-9].h5' '*.vtp' '*.xyz'  # not the kept contents, *.h5.contents.h5 (formats/contents_file.hpp)
 copy normal '*.h5'
 copy tangential '*-seed-*[0-9].h5'
 copy averages '*.h5' '*.dat'

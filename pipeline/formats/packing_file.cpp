@@ -163,6 +163,7 @@ PackingFile read_packing_file(const std::string& path) {
   const h5::File f = h5::File::open(path);
   expect_layout(f, "packing", kPackingLayout);
   PackingFile out;
+  out.path = path;
   PackingProvenance& v = out.provenance;
   get(f, kProgram, v.program);
   if (v.program != kPack && v.program != kImport)

@@ -94,6 +94,7 @@ struct PackingFile {
   PackingProvenance provenance;
   std::optional<ImportRecord> imported;  ///< an imported packing's source
   PackingSites sites;                    ///< levels 1 and no site unless the file has /parameters/levels
+  std::string path;                      ///< the file it was read from (empty: made in memory)
 };
 
 /// Reads a packing file; InputError names the file and what is missing or wrong.

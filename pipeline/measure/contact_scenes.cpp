@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "formats/contents_file.hpp"
 #include "formats/law_file.hpp"
 #include "measure/content_scene.hpp"
 #include "packing/nested.hpp"
@@ -47,8 +48,7 @@ void add_soft_particle(SceneDef& scene, const PackingFile& p, int body, const Ve
                                  "but the profile has no `content` section saying how to hold them; allowed: a profile with "
                                  "packing.levels {} and `content` (docs/nested.md)",
                                  p.provenance.seed, p.provenance.config_file, p.sites.centres.size(), p.sites.levels, p.sites.levels));
-  const std::vector<SiteContent> contents =
-      generate_contents(p.parameters, p.sites.levels - 1, p.provenance.seed, p.sites.centres.size());
+  const std::vector<SiteContent> contents = packing_contents(p);  // made once per packing, then read
   if (s.content->form == ContentForm::resolved) {
     add_contents(scene, contents, p.sites.centres, p.sites.radius, body, centre, scale, placement(s), next_body);
     return;

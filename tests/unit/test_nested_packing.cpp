@@ -16,24 +16,13 @@
 #include "packing/generator.hpp"
 #include "packing/nested.hpp"
 #include "packing/statistics.hpp"
+#include "support/level_packing.hpp"
 #include "support/temp_dir.hpp"
 
 namespace softpack {
 namespace {
 
-// A level with Π = √10: two levels span the decade of the project's soft-particle.
-PackingParameters level_packing() {
-  PackingParameters p;
-  p.Rs = 0.016;
-  p.r_max = 0.3 * p.Rs;
-  p.polydispersity = std::sqrt(10.0);
-  p.exponent = 3.5;
-  p.beta = 1.0;
-  p.trials = 1000;
-  p.shell_is_neighbour = true;
-  p.level_ratio = 2.0;
-  return p;
-}
+using testing::level_packing;  // a level with Π = √10
 
 TEST(NestedPacking, WithoutLevelsBelowItIsThePlainPacking) {
   PackingParameters p = level_packing();
