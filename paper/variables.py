@@ -173,6 +173,11 @@ def density_macros(m, path):
     m.add("vDensitySeeds", f"{j['seeds'][0]}--{j['seeds'][-1]}", path)
 
 
+def thin(x):
+    """An integer with thin spaces between thousands (LaTeX)."""
+    return f"{x:,.0f}".replace(",", r"\,")
+
+
 def coarse_macros(m, path):
     j = load(path)
     # The axial stress the soft-particle medium carries, as a fraction of the resolved one, over the
@@ -191,7 +196,7 @@ def coarse_macros(m, path):
         m.math("vCoarseStressMax", sig(max(ratios), 2), curves)
         m.add("vCoarseStressPoints", str(len(ratios)), curves)
     m.math("vCoarseSpeedup", pm(j["speedup"]["mean"], j["speedup"]["error"]), path)
-    m.math("vCoarseResolvedSpheres", f"{j['spheres']['resolved']:,}".replace(",", r"\,"), path)
+    m.math("vCoarseResolvedSpheres", thin(j["spheres"]["resolved"]), path)
     m.math("vCoarseBodies", str(j["bodies"]), path)
     m.add("vCoarseSeeds", ", ".join(str(s) for s in j["seeds"]), path)
 
@@ -199,11 +204,6 @@ def coarse_macros(m, path):
 LEVEL = {"1": "One", "0": "Zero"}
 SETTING = {"reference": "Reference", "many-body": "ManyBody", "grains-reduced": "GrainsReduced", "on-resolved": "OnResolved",
            "resolved": "Resolved"}
-
-
-def thin(x):
-    """An integer with thin spaces between thousands (LaTeX)."""
-    return f"{x:,.0f}".replace(",", r"\,")
 
 
 def nested_macros(m, nested_dir):

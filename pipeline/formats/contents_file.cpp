@@ -55,6 +55,7 @@ struct Cursor {
   SiteContent next() {
     if (node >= f.children.size()) throw InputError("fewer nodes than the tree needs");
     const std::size_t k = node++;
+    if (f.grains[k] < 0 || f.sites[k] < 0 || f.children[k] < 0) throw InputError("a negative count");
     SiteContent c;
     const auto n = static_cast<std::size_t>(f.grains[k]), m = static_cast<std::size_t>(f.sites[k]);
     if (grain + n > f.radii.size() || grain + n > f.centres.size() || grain + n > f.radii_inserted.size() ||

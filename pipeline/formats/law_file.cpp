@@ -338,8 +338,6 @@ void write_law_file(const std::string& path, const LawFile& f) {
 LawFile read_law_file(const std::string& path) { return Reader(path).file(read_json_input(path, "a law file (JSON)")); }
 
 bool write_law_file_if_changed(const std::string& path, const LawFile& f) {
-  const json fresh = law_json::file(f);
-  Reader(path).file(fresh);
   // What names the code that wrote the laws, not the laws: when the time of writing, the code
   // version and the many-body law's source (which names the version) are all that differ, the
   // file stays as it is.
@@ -351,9 +349,9 @@ bool write_law_file_if_changed(const std::string& path, const LawFile& f) {
   std::error_code ec;
   if (std::filesystem::is_regular_file(path, ec)) {
     const json old = json::parse(read_text_file(path), nullptr, /*allow_exceptions=*/false);
-    if (!old.is_discarded() && laws_only(old) == laws_only(fresh)) return false;
+    if (!old.is_discarded() && laws_only(old) == laws_only(law_json::file(f))) return false;
   }
-  write_file_atomically(path, fresh.dump(2) + "\n");
+  write_law_file(path, f);
   return true;
 }
 

@@ -60,13 +60,16 @@ NestedPoint nested_point(const std::string& scene, const std::string& quantity, 
   return p;
 }
 
+// The criterion's onset force at radius Rs: onset_force (Rs / Rs0)^2.
+double onset_at(const NestedCriterion& c, double Rs) { return c.onset_force * (Rs / c.Rs0) * (Rs / c.Rs0); }
+
 }  // namespace
 
 NestedComparison nested_comparison(const NestedSetting& s, const NestedSetting& against, const NestedCriterion& c,
                                    const std::vector<double>& Fn_delta_n, const std::vector<double>& kt_delta_n) {
   NestedComparison out;
   out.setting = s.name, out.against = against.name;
-  const double onset = c.onset_force * (s.Rs / c.Rs0) * (s.Rs / c.Rs0);
+  const double onset = onset_at(c, s.Rs);
   const auto judge = [&](NestedPoint& p, double Fn, double Fn_against) {
     p.compared = std::isfinite(p.value.value) && std::isfinite(p.against.value) && !(Fn < onset && Fn_against < onset);
     p.agrees = p.compared && std::abs(p.value.value - p.against.value) <= c.bound * std::hypot(p.value.error, p.against.error);
@@ -96,7 +99,7 @@ NestedComparison nested_comparison(const NestedSetting& s, const NestedSetting& 
 }
 
 double nested_unloaded_to(const RadiusRow& row, const std::vector<double>& Fn_delta_n, const NestedCriterion& c, double Rs) {
-  const double onset = c.onset_force * (Rs / c.Rs0) * (Rs / c.Rs0);
+  const double onset = onset_at(c, Rs);
   double to = kNaN;
   for (std::size_t k = 0; k < Fn_delta_n.size() && k < row.Fn.size(); ++k) {
     if (!(row.Fn[k].value < onset)) break;
