@@ -51,7 +51,7 @@ struct EstimateCommand {
     write_file_atomically(out, resolved_estimate_json(e, config, medium, soft_run, runs));
     if (!quiet)
       fmt::print(stderr,
-                 "softpack-coarse estimate seed {}: resolved {} spheres, {:.3g} steps of {:.3g} s, {:.3g} CPU s at {:.3g} s per "
+                 "softpack-coarse estimate seed {}: resolved {:.4g} spheres, {:.3g} steps of {:.3g} s, {:.3g} CPU s at {:.3g} s per "
                  "sphere-step; soft {:.3g} CPU s: {:.3g} times -> {}\n",
                  mf.seed, e.spheres, e.steps, e.dt, e.cpu, e.cpu_per_sphere_step, e.soft_cpu, e.speed_up(), out);
     return true;

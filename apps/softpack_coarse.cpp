@@ -49,26 +49,32 @@ struct Lines {
 int medium(const RunOptions& o, const std::string& program) {
   const CoarseGrainSettings s = read_coarse_grain_settings(o.config);
   const Lines l;
-  Stopwatch clock;
+  Stopwatch clock, phase_clock;  // the ETA of each phase (sampled contents, sites) from its own pace
   MediumFile mf;
-  mf.medium = build_medium(s, o.seed, [&](std::size_t k, std::size_t n) {
-    const double t = clock.elapsed().wall;
+  std::string phase;
+  mf.medium = build_medium(s, o.seed, [&](const char* what, std::size_t k, std::size_t n) {
+    if (phase != what) phase = what, phase_clock = Stopwatch();
+    const double t = phase_clock.elapsed().wall;
     if (!o.quiet)
-      fmt::print(stderr, "{}{} medium seed {}: packing {} of about {} ({:.0f} s, ETA {:.0f} s){}", l.cr(), program, o.seed, k, n, t,
+      fmt::print(stderr, "{}{} medium seed {}: {} packing {} of {} ({:.0f} s, ETA {:.0f} s){}", l.cr(), program, o.seed,
+                 phase == "sample" ? "sampled content" : "site", k, n, clock.elapsed().wall,
                  n > k ? t / static_cast<double>(k) * static_cast<double>(n - k) : 0.0, l.nl());
   });
   mf.seed = o.seed, mf.settings = s.medium_text, mf.code_version = code_version(), mf.time = clock.elapsed();
   write_medium_file(o.out, mf);
   const Medium& m = mf.medium;
-  std::size_t packed = 0, inner = 0;
-  for (const Packing& p : m.packings) packed += p.radii.size();
-  for (const std::vector<SiteContent>& cs : m.contents)
-    for (const SiteContent& c : cs) packed += c.grains(), ++inner;
+  double packed = 0.0, error = 0.0;  // expected, with its error, when the contents are sampled
+  std::size_t inner = 0;
+  for (std::size_t k = 0; k < m.sites.size(); ++k) {
+    const SiteInside in = site_inside(m, k);
+    packed += static_cast<double>(m.packings[k].radii.size()) + in.grains, error += in.grains_error;
+    inner += m.levels > 1 ? m.inner_sites[k].size() : 0;
+  }
+  const std::string nested = fmt::format("{}, at {} levels, {} soft-particles of level 1 among them{}", error > 0.0 ? fmt::format(" ± {:.0f}", error) : "",
+                                         m.levels, inner, m.content_mean.sample > 0 ? fmt::format(", their contents sampled ({} per level)", m.content_mean.sample) : "");
   if (!o.quiet)
-    fmt::print(stderr, "{}{} medium seed {}: {} grains, {} sites ({} grains in their packings{}), box {:.4g} x {:.4g} x {:.4g} m, {:.1f} s -> {}\n",
-               l.cr(), program, o.seed, m.grain_x.size(), m.sites.size(), packed,
-               m.levels > 1 ? fmt::format(", at {} levels, {} soft-particles of level 1 among them", m.levels, inner) : "", m.L, m.L, m.H,
-               mf.time.wall, o.out);
+    fmt::print(stderr, "{}{} medium seed {}: {} grains, {} sites ({:.0f} grains in their packings{}), box {:.4g} x {:.4g} x {:.4g} m, {:.1f} s -> {}\n",
+               l.cr(), program, o.seed, m.grain_x.size(), m.sites.size(), packed, m.levels > 1 ? nested : "", m.L, m.L, m.H, mf.time.wall, o.out);
   return 0;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -48,6 +49,89 @@ void validate_levels(const PackingParameters& top, int levels) {
     throw InputError(fmt::format("packing.levels: {} is not allowed with polydispersity {} and exponent {}: a level would hold "
                                  "about Pi^(b-1) = {:.0f} sites; allowed: fewer than {} (1.05 Pi^(b-1)), or levels: 1",
                                  levels, top.polydispersity, top.exponent, sites, kMaxSites));
+}
+
+ContentMean sample_contents(const PackingParameters& p, int levels_below, std::uint64_t seed, std::size_t sample,
+                            const std::function<void(std::size_t, std::size_t)>& progress) {
+  if (levels_below < 1) throw InputError(fmt::format("sample_contents: {} levels below; a content needs one at least", levels_below));
+  if (sample < 2) throw InputError(fmt::format("content_sample: {}; allowed: 2 or more (a mean and its error)", sample));
+  // One sampled packing: its own grains' part and its sites.
+  struct Drawn {
+    std::uint64_t seed;
+    double volume;
+    std::size_t grains, sites;
+  };
+  ContentMean out;
+  out.sample = sample;
+  out.smallest_radius = std::numeric_limits<double>::infinity();
+  std::size_t drawn = 0;
+  const auto draw = [&](int level, std::uint64_t s) {
+    const LevelPacking l = generate_level(level_parameters(p, level), levels_below - level, s);
+    if (level > 0 && progress) progress(++drawn, sample * static_cast<std::size_t>(levels_below));
+    Drawn d{s, 0.0, l.grains.radii.size(), l.sites.size()};
+    for (double r : l.grains.radii) {
+      d.volume += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+      if (level > 0) out.smallest_radius = std::min(out.smallest_radius, r);
+    }
+    return d;
+  };
+  // Breadth first, level by level: level 0 the top packings of seeds nested_site_seed(seed, k),
+  // level j the sites of level j - 1's packings in order, drawing more of those when short.
+  std::vector<std::vector<Drawn>> levels(static_cast<std::size_t>(levels_below) + 1);
+  std::uint64_t next_top = 0;
+  const auto more = [&](auto& self, std::size_t j) -> void {
+    if (j == 0) {
+      levels[0].push_back(draw(0, nested_site_seed(seed, next_top++)));
+      return;
+    }
+    // The next child of level j - 1's packings, in order; a parent with no site is passed over.
+    std::size_t taken = levels[j].size(), parent = 0;
+    while (true) {
+      while (parent >= levels[j - 1].size()) {
+        if (levels[j - 1].size() > 100 * sample + 100)
+          throw InputError(fmt::format("sample_contents: level {}'s packings hold no sites (seed {}): no content to sample", j - 1, seed));
+        self(self, j - 1);
+      }
+      const Drawn& up = levels[j - 1][parent];
+      if (taken < up.sites) {
+        levels[j].push_back(draw(static_cast<int>(j), nested_site_seed(up.seed, taken)));
+        return;
+      }
+      taken -= up.sites, ++parent;
+    }
+  };
+  for (std::size_t j = 1; j <= static_cast<std::size_t>(levels_below); ++j)
+    while (levels[j].size() < sample) more(more, j);
+  // Bottom up: E[X_j] over the sample's x_i + n_i E[X_(j+1)], with its error.
+  double V = 0.0, V2 = 0.0, W = 0.0, W2 = 0.0, G = 0.0, G2 = 0.0;  // E and se² one level down
+  for (std::size_t j = static_cast<std::size_t>(levels_below); j >= 1; --j) {
+    const auto M = static_cast<double>(sample);
+    std::vector<double> v, w, g;
+    double n_mean = 0.0;
+    for (std::size_t i = 0; i < sample; ++i) {
+      const Drawn& d = levels[j][i];
+      const auto n = static_cast<double>(d.sites);
+      v.push_back(d.volume + n * V);
+      w.push_back(v.back() + n * W);
+      g.push_back(static_cast<double>(d.grains) + n * G);
+      n_mean += n / M;
+    }
+    const auto mean_se2 = [&](const std::vector<double>& x, double below_se2) {
+      double m = 0.0, s2 = 0.0;
+      for (double xi : x) m += xi / M;
+      for (double xi : x) s2 += (xi - m) * (xi - m) / (M - 1.0);
+      return std::pair{m, s2 / M + n_mean * n_mean * below_se2};
+    };
+    // w_i = x_i + n_i (E[V'] + E[W']): its error from below bounded by se(V') + se(W').
+    const double W2_below = std::pow(std::sqrt(V2) + std::sqrt(W2), 2);
+    std::tie(V, V2) = mean_se2(v, V2);
+    std::tie(W, W2) = mean_se2(w, W2_below);
+    std::tie(G, G2) = mean_se2(g, G2);
+  }
+  out.volume = V, out.volume_error = std::sqrt(V2);
+  out.shells_volume = W, out.shells_volume_error = std::sqrt(W2);
+  out.grains = G, out.grains_error = std::sqrt(G2);
+  return out;
 }
 
 std::uint64_t nested_site_seed(std::uint64_t seed, std::size_t site) {

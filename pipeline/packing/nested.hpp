@@ -23,6 +23,7 @@
 // the resolved reference, or for its mass — not stored in this level's file.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "packing/generator.hpp"
@@ -77,6 +78,35 @@ struct SiteContent {
 /// with nested_site_seed(seed, k), and so on to the last level.
 std::vector<SiteContent> generate_contents(const PackingParameters& p, int levels_below, std::uint64_t seed,
                                            std::size_t sites);
+
+/// What one site of a level packing holds, expected from a sample instead of made (docs/nested.md
+/// "What making the contents costs"): a content four levels deep is about 700 level packings, a
+/// medium of such sites some 20 000. Each quantity X of a content is its own level's part plus,
+/// for each of its n sites, a content one level down: X = x + n X', so over a sample of M level
+/// packings of each level below
+///
+///     E[X_j] = mean_i (x_i + n_i E[X_(j+1)])      (E[X] = 0 below the last level)
+///     se²(E[X_j]) = s²_i(x_i + n_i E[X_(j+1)]) / M + mean_i(n_i)² se²(E[X_(j+1)])
+///
+/// (the levels' samples independent; the shells' volume's error from below is bounded by se(V') +
+/// se(W'), W = V + n W' holding V' too). The sample of level j is the first M packings of that level
+/// breadth first from the packings of seeds nested_site_seed(seed, 0), nested_site_seed(seed, 1),
+/// ... made with the top level's parameters: the seeds a medium's sites of `seed` have.
+struct ContentMean {
+  std::size_t sample = 0;                    ///< M, level packings drawn per level below
+  double volume = 0.0, volume_error = 0.0;   ///< solid volume inside, every level [m^3]
+  /// its volume and, for each site inside at every level, that site's: a resolved content's
+  /// shells weigh shell_mass_fraction × density × this (measure/content_scene.hpp) [m^3]
+  double shells_volume = 0.0, shells_volume_error = 0.0;
+  double grains = 0.0, grains_error = 0.0;   ///< grains inside, every level
+  double smallest_radius = 0.0;              ///< of the grains drawn [m]
+};
+
+/// The expected content of one site of a level packing made with `p` and `levels_below` (>= 1)
+/// levels under it, from `sample` (>= 2) packings per level below (ContentMean); `progress(k, n)`
+/// after each of its n packings below the top (the top packings it draws are not counted).
+ContentMean sample_contents(const PackingParameters& p, int levels_below, std::uint64_t seed, std::size_t sample,
+                            const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 /// The seed of the content of site `site` of a level packing made with `seed`: seed * 1000 +
 /// site. InputError when it would not be a seed (above 2^63 - 1).

@@ -33,7 +33,7 @@ double packing_mass(const Packing& p, double density) {
   return m;
 }
 
-Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std::function<void(std::size_t, std::size_t)>& progress) {
+Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const MediumProgress& progress) {
   Medium m;
   m.Rs = s.packing.Rs;
   Random rng(seed);
@@ -47,23 +47,31 @@ Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std:
   const double r2_max = s.packing.r_max, r2_min = s.packing.r_max / std::pow(s.packing.polydispersity, s.levels);
   m.target_volume = m.grains_volume * volume_moment(r2_min, r2_max, s.exponent) / volume_moment(first.r_min, first.r_max, s.exponent);
   m.levels = s.levels;
+  // Nested, sampled: a site's site weighs the sample's mean (the same seeds as the sites' own).
+  const bool sampled = s.levels > 1 && s.content_sample > 0;
+  if (sampled)
+    m.content_mean = sample_contents(s.packing, s.levels - 1, seed, static_cast<std::size_t>(s.content_sample), [&](std::size_t k, std::size_t n) {
+      if (progress) progress("sample", k, n);
+    });
   // As many packings as bring the solid volume nearest to the target (one at least).
   while (true) {
     const std::size_t k = m.packings.size();
     LevelPacking p = generate_level(s.packing, s.levels - 1, site_seed(seed, k));
-    std::vector<SiteContent> inside = generate_contents(s.packing, s.levels - 1, site_seed(seed, k), p.sites.size());
+    std::vector<SiteContent> inside;
+    if (!sampled) inside = generate_contents(s.packing, s.levels - 1, site_seed(seed, k), p.sites.size());
     double v = std::accumulate(p.grains.radii.begin(), p.grains.radii.end(), 0.0, [](double a, double r) { return a + ball(r); });
     for (const SiteContent& c : inside) v += c.solid_volume();
+    if (sampled) v += static_cast<double>(p.sites.size()) * m.content_mean.volume;
     if (k > 0 && std::abs(m.packings_volume + v - m.target_volume) >= std::abs(m.packings_volume - m.target_volume)) break;
     m.packings.push_back(std::move(p.grains));
     m.packing_seeds.push_back(site_seed(seed, k));
     if (s.levels > 1) {
       m.inner_radius = p.site_radius;
       m.inner_sites.push_back(std::move(p.sites));
-      m.contents.push_back(std::move(inside));
+      if (!sampled) m.contents.push_back(std::move(inside));
     }
     m.packings_volume += v;
-    if (progress) progress(k + 1, static_cast<std::size_t>(std::ceil(m.target_volume / (m.packings_volume / static_cast<double>(k + 1)))));
+    if (progress) progress("site", k + 1, static_cast<std::size_t>(std::ceil(m.target_volume / (m.packings_volume / static_cast<double>(k + 1)))));
   }
   m.sites.resize(m.packings.size());
 
@@ -110,10 +118,34 @@ void medium_contents(const CoarseGrainSettings& s, Medium& m) {
     throw InputError(fmt::format("the medium's sites have {} levels and the settings' packing {} (soft_particle.profile's "
                                  "packing.levels): make the medium again",
                                  m.levels, s.levels));
+  if (m.content_mean.sample != static_cast<std::size_t>(s.content_sample))
+    throw InputError(fmt::format("the medium's contents were {} and the settings' medium.content_sample is {}: make the medium again",
+                                 m.content_mean.sample > 0 ? fmt::format("sampled {} per level", m.content_mean.sample) : "made",
+                                 s.content_sample));
   m.contents.clear();
-  if (m.levels == 1) return;
+  if (m.levels == 1 || m.content_mean.sample > 0) return;
   for (std::size_t k = 0; k < m.sites.size(); ++k)
     m.contents.push_back(generate_contents(s.packing, s.levels - 1, m.packing_seeds[k], m.inner_sites[k].size()));
+}
+
+SiteInside site_inside(const Medium& m, std::size_t k) {
+  SiteInside in;
+  if (m.levels == 1) return in;
+  if (m.content_mean.sample > 0) {
+    const auto n = static_cast<double>(m.inner_sites.at(k).size());
+    const ContentMean& c = m.content_mean;
+    return {n * c.volume, n * c.volume_error, n * c.shells_volume, n * c.shells_volume_error, n * c.grains, n * c.grains_error};
+  }
+  if (m.contents.size() != m.sites.size())
+    throw InputError(fmt::format("a medium of nested soft-particles ({} levels): its sites' contents are not made here; allowed: "
+                                 "softpack-coarse run, or a medium of one level",
+                                 m.levels));
+  for (const SiteContent& c : m.contents[k]) {
+    in.volume += c.solid_volume();
+    in.shells_volume += content_shells_mass(c, 1.0, 1.0);  // unit density and fraction: the shells' volume
+    in.grains += static_cast<double>(c.grains());
+  }
+  return in;
 }
 
 SceneDef engine_scene(const CoarseGrainSettings& s) {
@@ -136,19 +168,19 @@ SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel
     p.x = m.grain_x[k], p.r = m.grain_r[k], p.material = kGrain;
     scene.particles.push_back(p);
   }
-  if (m.levels > 1 && m.contents.size() != m.sites.size())
-    throw InputError(fmt::format("a medium of nested soft-particles ({} levels): its sites' contents are not made here; allowed: "
-                                 "softpack-coarse run, or a medium of one level",
-                                 m.levels));
+  if (model == CoarseModel::resolved && m.content_mean.sample > 0)
+    throw InputError(fmt::format("a medium whose sites' contents are sampled (medium.content_sample {}) has no resolved model: "
+                                 "its contents are weighed, not made; allowed: the soft model, or a medium without content_sample",
+                                 m.content_mean.sample));
   for (std::size_t k = 0; k < m.sites.size(); ++k) {
     const Packing& pk = m.packings[k];
     // Every grain inside the site, at every level, and (nested) the free shells of its sites.
     double grains_mass = packing_mass(pk, sim.material.density), inner_shells = 0.0;
-    if (m.levels > 1)
-      for (const SiteContent& c : m.contents[k]) {
-        grains_mass += sim.material.density * c.solid_volume();
-        inner_shells += content_shells_mass(c, sim.material.density, s.shell_mass_fraction);
-      }
+    if (m.levels > 1) {
+      const SiteInside in = site_inside(m, k);
+      grains_mass += sim.material.density * in.volume;
+      inner_shells = s.shell_mass_fraction * sim.material.density * in.shells_volume;
+    }
     if (model == CoarseModel::resolved) {
       for (std::size_t i = 0; i < pk.centres.size(); ++i) {
         ParticleDef p;
@@ -194,9 +226,12 @@ std::vector<int> sphere_bodies(const Medium& m, CoarseModel model) {
     const std::size_t n = model == CoarseModel::resolved ? m.packings[k].centres.size() : 1;
     out.insert(out.end(), n, grains + static_cast<int>(k));
   }
-  if (model == CoarseModel::resolved && m.levels > 1)  // the sites' contents, site by site (medium_scene)
+  if (model == CoarseModel::resolved && m.levels > 1) {  // the sites' contents, site by site (medium_scene)
+    if (m.contents.size() != m.sites.size())
+      throw InputError("sphere_bodies: the medium's sites' contents are not made (medium_contents; a sampled medium has no resolved model)");
     for (std::size_t k = 0; k < m.sites.size(); ++k)
       for (const SiteContent& c : m.contents[k]) out.insert(out.end(), c.grains(), grains + static_cast<int>(k));
+  }
   return out;
 }
 

@@ -48,6 +48,10 @@ struct Medium {
   /// levels > 1: the contents of each site's own sites, down to the last level; made from the
   /// seeds by medium_contents(), not stored in the medium file.
   std::vector<std::vector<SiteContent>> contents;
+  /// levels > 1 with medium.content_sample: a site's site's content expected from a sample
+  /// (packing/nested.hpp sample_contents), kept in the medium file, instead of `contents`, which
+  /// are not made (content_mean.sample 0: they are).
+  ContentMean content_mean;
   double grains_volume = 0.0;         ///< solid volume of the first decade [m^3]
   double packings_volume = 0.0;       ///< solid volume of the packings, every level [m^3]
   double target_volume = 0.0;         ///< V2 the packings stand for [m^3]
@@ -56,19 +60,31 @@ struct Medium {
   std::size_t bodies() const { return grain_x.size() + sites.size(); }
 };
 
-/// The medium of `seed` (the same settings and seed give the same bits); `progress(k, n)` after
-/// each packing generated. InputError naming medium.initial_fraction when a body finds no place.
-Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const std::function<void(std::size_t, std::size_t)>& progress = {});
+/// The medium of `seed` (the same settings and seed give the same bits); `progress(what, k, n)`
+/// after each packing generated: what "sample" (content_sample's, n of them) or "site" (about n).
+/// InputError naming medium.initial_fraction when a body finds no place.
+using MediumProgress = std::function<void(const char* what, std::size_t k, std::size_t n)>;
+Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const MediumProgress& progress = {});
 
-/// Makes `m.contents` from the sites' seeds and `m.inner_sites` (levels > 1; nothing otherwise):
-/// a medium read from its file has the sites' sites, not their contents. InputError when the
-/// settings' packing.levels is not the medium's.
+/// Makes `m.contents` from the sites' seeds and `m.inner_sites` (levels > 1 without
+/// content_sample; nothing otherwise): a medium read from its file has the sites' sites, not
+/// their contents. InputError when the settings' packing.levels or content_sample is not the
+/// medium's.
 void medium_contents(const CoarseGrainSettings& s, Medium& m);
+
+/// What site k's own sites hold at every level below: their contents' when made (errors 0), else
+/// its number of sites times the sampled mean (errors the same times the mean's). Zero at one level.
+struct SiteInside {
+  double volume = 0.0, volume_error = 0.0;                ///< solid volume [m^3]
+  double shells_volume = 0.0, shells_volume_error = 0.0;  ///< ContentMean::shells_volume, summed [m^3]
+  double grains = 0.0, grains_error = 0.0;
+};
+SiteInside site_inside(const Medium& m, std::size_t k);
 
 /// The packing seed of site k of medium `seed`.
 std::uint64_t site_seed(std::uint64_t seed, std::size_t k);
 
-/// The scene of `model`: spheres in the order first-decade grains, then each site's (resolved:
+/// The scene of `model` (resolved: InputError for a medium whose contents are sampled, not made): spheres in the order first-decade grains, then each site's (resolved:
 /// its packing's grains, body k; soft: one soft-particle). Planes bottom, top, x0, x1, y0, y1.
 /// `laws`: the soft model's (formats/law_file.hpp soft_particle_laws()).
 SceneDef medium_scene(const CoarseGrainSettings& s, const Medium& m, CoarseModel model, const SoftParticleLaws& laws);

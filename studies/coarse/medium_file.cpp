@@ -36,6 +36,14 @@ void write_medium_file(const std::string& path, const MediumFile& mf) {
     put(f, "packings/levels", static_cast<std::int64_t>(m.levels)), put(f, "packings/site_radius", m.inner_radius);
     put(f, "packings/site_offsets", inner_offsets), put(f, "packings/site_centres", inner);
   }
+  if (m.content_mean.sample > 0) {  // sampled: what a site's site holds, expected (ContentMean)
+    const ContentMean& c = m.content_mean;
+    put(f, "contents/sample", static_cast<std::int64_t>(c.sample));
+    put(f, "contents/volume", std::vector<double>{c.volume, c.volume_error});
+    put(f, "contents/shells_volume", std::vector<double>{c.shells_volume, c.shells_volume_error});
+    put(f, "contents/grains", std::vector<double>{c.grains, c.grains_error});
+    put(f, "contents/smallest_radius", c.smallest_radius);
+  }
   put(f, "box/L", m.L), put(f, "box/H", m.H), put(f, "box/Rs", m.Rs);
   put(f, "volumes/grains", m.grains_volume), put(f, "volumes/packings", m.packings_volume), put(f, "volumes/target", m.target_volume);
   put(f, "provenance/seed", static_cast<std::int64_t>(mf.seed)), put(f, "provenance/settings", mf.settings);
@@ -82,6 +90,24 @@ MediumFile read_medium_file(const std::string& path) {
       m.inner_sites.emplace_back(inner.begin() + a, inner.begin() + b);
     }
     if (!(m.inner_radius > 0.0)) throw InputError(path + ": packings/site_radius must be > 0");
+    if (f.exists("contents/sample")) {  // sampled contents (absent: made from the seeds)
+      ContentMean& c = m.content_mean;
+      const std::int64_t sample = formats::get_count(f, "contents/sample");
+      if (sample < 2) throw InputError(fmt::format("{}: contents/sample: {} is not allowed; allowed: 2 or more", path, sample));
+      c.sample = static_cast<std::size_t>(sample);
+      const auto pair = [&](const char* name, double& value, double& error) {
+        std::vector<double> v;
+        get(f, name, v);
+        formats::same_length(f, name, v.size(), "a value and its error", 2);
+        if (!(v[0] > 0.0 && v[1] >= 0.0)) throw InputError(fmt::format("{}: {}: {} ± {}; allowed: > 0 ± >= 0", path, name, v[0], v[1]));
+        value = v[0], error = v[1];
+      };
+      pair("contents/volume", c.volume, c.volume_error);
+      pair("contents/shells_volume", c.shells_volume, c.shells_volume_error);
+      pair("contents/grains", c.grains, c.grains_error);
+      get(f, "contents/smallest_radius", c.smallest_radius);
+      if (!(c.smallest_radius > 0.0)) throw InputError(path + ": contents/smallest_radius must be > 0");
+    }
   }
   get(f, "box/L", m.L), get(f, "box/H", m.H), get(f, "box/Rs", m.Rs);
   get(f, "volumes/grains", m.grains_volume), get(f, "volumes/packings", m.packings_volume), get(f, "volumes/target", m.target_volume);

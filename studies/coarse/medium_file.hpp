@@ -10,6 +10,10 @@
 //                                       nested soft-particles only (levels > 1): site k's own
 //                                       sites, rows site_offsets[k] to [k+1], about its centre;
 //                                       their contents are made from the seeds (medium_contents)
+//   /contents/{sample, volume (2), shells_volume (2), grains (2), smallest_radius}
+//                                       nested with medium.content_sample: what a site's site
+//                                       holds, expected from the sample (ContentMean; value and
+//                                       error); its contents are then not made
 //   /box/{L, H, Rs}                     [m]
 //   /volumes/{grains, packings, target} [m^3] (coarse/medium.hpp)
 //   /provenance/{seed, settings, code_version, seconds, cpu_seconds}

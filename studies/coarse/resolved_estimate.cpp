@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
@@ -13,26 +14,33 @@
 namespace softpack {
 namespace {
 
-void count_content(const SiteContent& c, std::size_t& n, double& smallest) {
-  n += c.level.grains.radii.size();
+void count_content(const SiteContent& c, double& smallest) {
   for (double r : c.level.grains.radii) smallest = std::min(smallest, r);
-  for (const SiteContent& sub : c.sites) count_content(sub, n, smallest);
+  for (const SiteContent& sub : c.sites) count_content(sub, smallest);
 }
 
-// Spheres and smallest grain of the medium's resolved model.
-std::pair<std::size_t, double> resolved_size(const Medium& m) {
-  if (m.levels > 1 && m.contents.size() != m.sites.size())
-    throw InputError("resolved_size: the medium's nested contents are not made (coarse/medium.hpp: medium_contents)");
-  std::size_t n = m.grain_r.size();
-  double smallest = std::numeric_limits<double>::infinity();
-  for (double r : m.grain_r) smallest = std::min(smallest, r);
+struct Size {
+  double spheres = 0.0, error = 0.0, smallest = std::numeric_limits<double>::infinity();
+};
+
+// Spheres and smallest grain of the medium's resolved model: its sites' contents counted when
+// made, expected from the sample when sampled (the same mean for every site: their errors add).
+Size resolved_size(const Medium& m) {
+  Size z;
+  z.spheres = static_cast<double>(m.grain_r.size());
+  for (double r : m.grain_r) z.smallest = std::min(z.smallest, r);
   for (const Packing& p : m.packings) {
-    n += p.radii.size();
-    for (double r : p.radii) smallest = std::min(smallest, r);
+    z.spheres += static_cast<double>(p.radii.size());
+    for (double r : p.radii) z.smallest = std::min(z.smallest, r);
   }
+  for (std::size_t k = 0; k < m.sites.size(); ++k) {
+    const SiteInside in = site_inside(m, k);  // InputError when nested and neither made nor sampled
+    z.spheres += in.grains, z.error += in.grains_error;
+  }
+  if (m.content_mean.sample > 0) z.smallest = std::min(z.smallest, m.content_mean.smallest_radius);
   for (const std::vector<SiteContent>& cs : m.contents)
-    for (const SiteContent& c : cs) count_content(c, n, smallest);
-  return {n, smallest};
+    for (const SiteContent& c : cs) count_content(c, z.smallest);
+  return z;
 }
 
 }  // namespace
@@ -45,7 +53,9 @@ ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m
                                  soft.sites, m.grain_r.size(), m.sites.size()));
   if (measured.empty()) throw InputError("estimate_resolved: no measured resolved run to take the cost per sphere-step from");
   ResolvedEstimate e;
-  std::tie(e.spheres, e.smallest_radius) = resolved_size(m);
+  e.content_sample = m.content_mean.sample;
+  const Size z = resolved_size(m);
+  e.spheres = z.spheres, e.spheres_error = z.error, e.smallest_radius = z.smallest;
   // The engine's step for the resolved scene: its smallest grain's (the shells and walls set none).
   SceneDef one = engine_scene(s);
   ParticleDef p;
@@ -66,7 +76,8 @@ ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m
   e.measured_runs = c.size();
   e.cpu_per_sphere_step = mean;
   e.cpu_per_sphere_step_error = c.size() > 1 ? std::sqrt(var / static_cast<double>(c.size() - 1) / static_cast<double>(c.size())) : 0.0;
-  e.cpu = static_cast<double>(e.spheres) * e.steps * mean;
+  e.cpu = e.spheres * e.steps * mean;
+  e.cpu_error = e.cpu * std::hypot(e.spheres_error / e.spheres, mean > 0.0 ? e.cpu_per_sphere_step_error / mean : 0.0);
   e.soft_cpu = soft.cpu_seconds;
   return e;
 }
@@ -86,15 +97,17 @@ std::string resolved_estimate_json(const ResolvedEstimate& e, const std::string&
             {"soft_spheres", soft.spheres},
             {"soft_steps", soft.steps},
             {"soft_dt", q(soft.dt, "s")},
-            {"resolved_spheres", e.spheres},
+            {"resolved_spheres", {{"value", e.spheres}, {"error", e.spheres_error}}},
+            {"contents", e.content_sample > 0 ? fmt::format("sampled: {} level packings per level below (medium.content_sample)", e.content_sample)
+                                              : std::string("made")},
             {"smallest_radius", q(e.smallest_radius, "m")},
             {"resolved_dt", q(e.dt, "s")},
             {"simulated_time", q(e.simulated_time, "s")},
             {"resolved_steps", e.steps},
             {"cpu_per_sphere_step", {{"value", e.cpu_per_sphere_step}, {"error", e.cpu_per_sphere_step_error}, {"unit", "s"}}},
             {"measured_runs", runs},
-            {"resolved_cpu_estimate", q(e.cpu, "s")},
-            {"speed_up_estimate", e.speed_up()},
+            {"resolved_cpu_estimate", {{"value", e.cpu}, {"error", e.cpu_error}, {"unit", "s"}}},
+            {"speed_up_estimate", {{"value", e.speed_up()}, {"error", e.cpu_error / e.soft_cpu}}},
             {"rule", "resolved CPU = spheres x (soft run's simulated time / resolved dt) x CPU per sphere-step of the measured "
                      "resolved runs (coarse/resolved_estimate.hpp)"}};
   return j.dump(1) + "\n";

@@ -3,7 +3,8 @@
 // soft-particles over three decades is too large to run resolved here, so its soft run's cost is
 // set against an estimate, stated before the runs it judges (experiments/three-decades.yaml):
 //
-//   spheres   N = the first decade's grains + every grain of every site at every level
+//   spheres   N = the first decade's grains + every grain of every site at every level (its
+//             sites' sites expected from a sample when the medium's are: medium.content_sample)
 //   step      dt = the engine's step for the resolved scene (integrate/time_step.hpp: the smallest
 //             grain's Rayleigh time times the profile's safety)
 //   steps     n = the soft run's simulated time (its steps times its step) / dt: the same
@@ -23,14 +24,15 @@
 namespace softpack {
 
 struct ResolvedEstimate {
-  std::size_t spheres = 0;         ///< N
+  double spheres = 0.0, spheres_error = 0.0;  ///< N (expected from the sample when the medium's contents are sampled)
+  std::size_t content_sample = 0;  ///< the medium's (0: its contents made)
   double smallest_radius = 0.0;    ///< [m]
   double dt = 0.0;                 ///< [s]
   double simulated_time = 0.0;     ///< of the soft run [s]
   double steps = 0.0;              ///< n
   double cpu_per_sphere_step = 0.0, cpu_per_sphere_step_error = 0.0;  ///< c [s], its standard error over the runs
   std::size_t measured_runs = 0;
-  double cpu = 0.0;                ///< N n c [s]
+  double cpu = 0.0, cpu_error = 0.0;  ///< N n c [s], its error from N's and c's
   double soft_cpu = 0.0;           ///< the soft run's, measured [s]
   double speed_up() const { return cpu / soft_cpu; }
 };

@@ -106,7 +106,7 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
   }
 
   const ConfigNode m = c.at("medium");
-  m.allow_only({"grains", "r_min_over_Rs", "decade", "exponent", "initial_fraction", "aspect", "placement_trials"});
+  m.allow_only({"grains", "r_min_over_Rs", "decade", "exponent", "initial_fraction", "aspect", "placement_trials", "content_sample"});
   s.grains = count_in(m.at("grains"), 1, 100000);
   s.r_min_over_Rs = in_range(m.at("r_min_over_Rs"), 0.0, 100.0, true);
   s.decade = in_range(m.at("decade"), 1.0, 1000.0, true);
@@ -114,6 +114,12 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
   s.initial_fraction = in_range(m.at("initial_fraction"), 0.0, 0.5, true);
   s.aspect = in_range(m.at("aspect"), 0.1, 10.0);
   s.placement_trials = count_in(m.at("placement_trials"), 1, 100000000);
+  if (auto cs = m.find("content_sample")) {
+    if (s.levels == 1)
+      cs->fail(fmt::format("the sites hold no soft-particles ({}'s packing.levels is 1): there is no content to sample; remove it",
+                           s.profile));
+    s.content_sample = count_in(*cs, 2, 100000);
+  }
 
   const ConfigNode k = c.at("compression");
   k.allow_only({"speed", "strain", "unload_strain", "record_strain", "relax", "max_overlap_fraction", "shear", "record_shear"});

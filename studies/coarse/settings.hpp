@@ -50,6 +50,10 @@ struct CoarseGrainSettings {
   double initial_fraction = 0.0;  ///< bodies' volume / box volume of the random placement
   double aspect = 0.0;            ///< box height / width
   long placement_trials = 0;
+  /// levels > 1: the sites' contents weighed from this many level packings per level below
+  /// (packing/nested.hpp sample_contents; the soft model and the resolved estimate only); 0:
+  /// every content made (docs/nested.md "What making the contents costs")
+  long content_sample = 0;
 
   // Uniaxial (oedometric) compression by the top wall, then unloading.
   double speed = 0.0;          ///< [m/s]

@@ -27,6 +27,9 @@ sed 's/    grains: 12/    grian: 12/' "$config" > "$tmp/typo.yaml"
 expect_error "coarse_grain.medium.grian: unknown key" "$tmp/m.h5" "$exe" medium --config "$tmp/typo.yaml" --seed 1 --out "$tmp/m.h5"
 sed 's/    shear: 0.02/    shear: 0.0/' "$config" > "$tmp/noshear.yaml"
 expect_error "record_shear is not read; remove it" "$tmp/x.h5" "$exe" run --config "$tmp/noshear.yaml" --model soft --medium "$tmp/medium.h5" --out "$tmp/x.h5"
+sed 's/    placement_trials: 10000/    placement_trials: 10000\n    content_sample: 8/' "$config" > "$tmp/sample.yaml"
+expect_error "coarse_grain.medium.content_sample: the sites hold no soft-particles" "$tmp/m.h5" \
+  "$exe" medium --config "$tmp/sample.yaml" --seed 1 --out "$tmp/m.h5"
 # rotation: locked (the soft-particles' spin held at zero, a bound) runs on the same medium.
 sed 's/    grain_contact: wall/    grain_contact: wall\n    rotation: locked/' "$config" > "$tmp/locked.yaml"
 "$exe" run --config "$tmp/locked.yaml" --model soft --medium "$tmp/medium.h5" --out "$tmp/runs/locked-901.h5" --quiet

@@ -173,7 +173,8 @@ TEST(NestedMedium, TheResolvedEstimateIsSpheresTimesStepsTimesTheMeasuredCost) {
   a.path = "a.h5", b.path = "b.h5", a.model = b.model = "resolved";
   a.spheres = b.spheres = 100, a.steps = b.steps = 1000, a.cpu_seconds = 10.0, b.cpu_seconds = 30.0;  // 1e-4 and 3e-4 s
   const ResolvedEstimate e = estimate_resolved(nested(), m, soft, {a, b});
-  EXPECT_EQ(e.spheres, resolved.particles.size());
+  EXPECT_EQ(e.spheres, static_cast<double>(resolved.particles.size()));
+  EXPECT_EQ(e.spheres_error, 0.0) << "every content made: counted";
   EXPECT_NEAR(e.dt, Simulation(resolved).dt(), 1e-12 * e.dt) << "the engine's step for the whole resolved scene";
   EXPECT_NEAR(e.steps, 1000 * 1e-6 / e.dt, 1e-9 * e.steps);
   EXPECT_NEAR(e.cpu_per_sphere_step, 2e-4, 1e-15);
@@ -185,6 +186,160 @@ TEST(NestedMedium, TheResolvedEstimateIsSpheresTimesStepsTimesTheMeasuredCost) {
   EXPECT_THROW(estimate_resolved(nested(), m, other, {a}), InputError);
   EXPECT_THROW(estimate_resolved(nested(), m, soft, {soft}), InputError);
   EXPECT_THROW(estimate_resolved(nested(), m, soft, {}), InputError);
+}
+
+// sample_contents (packing/nested.hpp) by hand: the first M level-1 packings breadth first from
+// the top packings of seeds nested_site_seed(seed, k), each level-1 content's quantities its
+// grains' (the last level: no sites), their mean and standard error.
+TEST(NestedMedium, TheSampledContentIsTheMeanOfTheFirstPackingsBreadthFirst) {
+  const PackingParameters& p = nested().packing;
+  constexpr std::size_t M = 5;
+  std::vector<double> v, g;
+  double smallest = 1.0;
+  for (std::size_t k = 0; v.size() < M; ++k) {
+    const std::uint64_t top = nested_site_seed(77, k);
+    const LevelPacking up = generate_level(p, 1, top);
+    for (std::size_t i = 0; i < up.sites.size() && v.size() < M; ++i) {
+      const LevelPacking l = generate_level(level_parameters(p, 1), 0, nested_site_seed(top, i));
+      EXPECT_TRUE(l.sites.empty());
+      double vol = 0.0;
+      for (double r : l.grains.radii) vol += ball(r), smallest = std::min(smallest, r);
+      v.push_back(vol), g.push_back(static_cast<double>(l.grains.radii.size()));
+    }
+  }
+  const auto mean_se = [](const std::vector<double>& x) {
+    double m = 0.0, s2 = 0.0;
+    for (double xi : x) m += xi / static_cast<double>(x.size());
+    for (double xi : x) s2 += (xi - m) * (xi - m) / static_cast<double>(x.size() - 1);
+    return std::pair{m, std::sqrt(s2 / static_cast<double>(x.size()))};
+  };
+  const ContentMean c = sample_contents(p, 1, 77, M);
+  EXPECT_EQ(c.sample, M);
+  EXPECT_NEAR(c.volume, mean_se(v).first, 1e-12 * c.volume);
+  EXPECT_NEAR(c.volume_error, mean_se(v).second, 1e-9 * c.volume_error);
+  EXPECT_GT(c.volume_error, 0.0) << "five packings of the same volume: the sample tests nothing";
+  EXPECT_NEAR(c.shells_volume, c.volume, 1e-12 * c.volume) << "a last-level content has one shell, around its own grains";
+  EXPECT_NEAR(c.grains, mean_se(g).first, 1e-12 * c.grains);
+  EXPECT_NEAR(c.grains_error, mean_se(g).second, 1e-9 * c.grains);
+  EXPECT_EQ(c.smallest_radius, smallest);
+  EXPECT_THROW(sample_contents(p, 1, 77, 1), InputError);
+  EXPECT_THROW(sample_contents(p, 0, 77, M), InputError);
+}
+
+// One level deeper the recursion X = x + n X' holds with level 2's mean inside each level-1 packing,
+// and the error carries the level below's: se² = s²/M + mean(n)² se'².
+TEST(NestedMedium, TheSampledContentTwoLevelsDownHoldsTheMeanOfTheLevelBelow) {
+  PackingParameters p = nested().packing;
+  p.Rs *= 3.0, p.r_max *= 3.0;  // three levels of the tiny profile's, the last as the tiny medium's
+  constexpr std::size_t M = 4;
+  const ContentMean c = sample_contents(p, 2, 78, M);
+  // Level 1's sample by hand and level 2's breadth first from it.
+  std::vector<std::uint64_t> l1;
+  std::vector<LevelPacking> level1;
+  for (std::size_t k = 0; level1.size() < M; ++k) {
+    const std::uint64_t top = nested_site_seed(78, k);
+    const LevelPacking up = generate_level(p, 2, top);
+    for (std::size_t i = 0; i < up.sites.size() && level1.size() < M; ++i)
+      l1.push_back(nested_site_seed(top, i)), level1.push_back(generate_level(level_parameters(p, 1), 1, l1.back()));
+  }
+  std::vector<double> v2;
+  for (std::size_t k = 0; k < level1.size() && v2.size() < M; ++k)
+    for (std::size_t i = 0; i < level1[k].sites.size() && v2.size() < M; ++i) {
+      const LevelPacking l = generate_level(level_parameters(p, 2), 0, nested_site_seed(l1[k], i));
+      double vol = 0.0;
+      for (double r : l.grains.radii) vol += ball(r);
+      v2.push_back(vol);
+    }
+  ASSERT_EQ(v2.size(), M);
+  double V2 = 0.0, s2 = 0.0;
+  for (double x : v2) V2 += x / M;
+  for (double x : v2) s2 += (x - V2) * (x - V2) / (M - 1);
+  const double se2_below = s2 / M;
+  std::vector<double> v1;
+  double n_mean = 0.0;
+  for (const LevelPacking& l : level1) {
+    double vol = 0.0;
+    for (double r : l.grains.radii) vol += ball(r);
+    v1.push_back(vol + static_cast<double>(l.sites.size()) * V2);
+    n_mean += static_cast<double>(l.sites.size()) / M;
+  }
+  ASSERT_GT(n_mean, 0.0) << "level 1 holds no site: the test tests nothing";
+  double V1 = 0.0, s1 = 0.0;
+  for (double x : v1) V1 += x / M;
+  for (double x : v1) s1 += (x - V1) * (x - V1) / (M - 1);
+  EXPECT_NEAR(c.volume, V1, 1e-12 * V1);
+  EXPECT_NEAR(c.volume_error, std::sqrt(s1 / M + n_mean * n_mean * se2_below), 1e-9 * c.volume_error);
+  EXPECT_GT(c.shells_volume, c.volume) << "level 1's shell around all of it, and its sites' around theirs";
+}
+
+// A medium of sampled contents (medium.content_sample): no content made, each site's sites
+// weighed by the mean (the soft-particle's mass, the volume counted against the target), kept in
+// its file; the resolved model refused; the estimate counts the mean's grains with its error.
+TEST(NestedMedium, ASampledMediumWeighsItsSitesSitesByTheMean) {
+  CoarseGrainSettings s = nested();
+  s.content_sample = 6;
+  const Medium m = build_medium(s, 901);
+  ASSERT_TRUE(m.contents.empty());
+  ASSERT_EQ(m.content_mean.sample, 6u);
+  const ContentMean& c = m.content_mean;
+  const double rho = s.simulation.material.density, f = s.shell_mass_fraction;
+  double V = 0.0, exact_spheres = static_cast<double>(m.grain_r.size()), n_all = 0.0;
+  const SceneDef soft = medium_scene(s, m, CoarseModel::soft, laws());
+  for (std::size_t k = 0; k < m.sites.size(); ++k) {
+    const auto n = static_cast<double>(m.inner_sites[k].size());
+    n_all += n;
+    double own = 0.0;
+    for (double r : m.packings[k].radii) own += ball(r);
+    V += own + n * c.volume;
+    exact_spheres += static_cast<double>(m.packings[k].radii.size());
+    const double mass = (1.0 + f) * rho * (own + n * c.volume) + f * rho * n * c.shells_volume;
+    EXPECT_NEAR(*soft.particles[m.grain_x.size() + k].mass, mass, 1e-12 * mass) << "site " << k;
+  }
+  ASSERT_GT(n_all, 0.0) << "no site holds a site: the test tests nothing";
+  EXPECT_NEAR(m.packings_volume, V, 1e-12 * V);
+  EXPECT_THROW(medium_scene(s, m, CoarseModel::resolved, laws()), InputError);
+  EXPECT_THROW(sphere_bodies(m, CoarseModel::resolved), InputError);
+
+  // The made medium of the same seed: its sites' sites, site by site over the sites both have,
+  // within three standard deviations of n contents (the sample's spread) and of the mean's error.
+  const Medium& made = medium();
+  double made_v = 0.0, sampled_v = 0.0, n_common = 0.0;
+  for (std::size_t k = 0; k < std::min(m.sites.size(), made.sites.size()); ++k) {
+    ASSERT_EQ(m.inner_sites[k], made.inner_sites[k]) << "the same seeds, the same sites";
+    made_v += site_inside(made, k).volume, sampled_v += site_inside(m, k).volume;
+    n_common += static_cast<double>(m.inner_sites[k].size());
+  }
+  const double sd = c.volume_error * std::sqrt(static_cast<double>(c.sample));
+  EXPECT_NEAR(made_v, sampled_v, 3.0 * std::hypot(std::sqrt(n_common) * sd, n_common * c.volume_error));
+
+  // Its file keeps the mean; the settings must sample as it did.
+  const std::string dir = ::testing::TempDir() + "/nested-medium";
+  std::filesystem::create_directories(dir);
+  write_medium_file(dir + "/sampled.h5", MediumFile{m, 901, s.medium_text, "test", {}});
+  Medium back = read_medium_file(dir + "/sampled.h5").medium;
+  EXPECT_EQ(back.content_mean.sample, 6u);
+  EXPECT_EQ(back.content_mean.volume, c.volume);
+  EXPECT_EQ(back.content_mean.shells_volume_error, c.shells_volume_error);
+  EXPECT_EQ(back.content_mean.grains, c.grains);
+  EXPECT_EQ(back.content_mean.smallest_radius, c.smallest_radius);
+  EXPECT_THROW(medium_contents(nested(), back), InputError) << "made contents asked of a sampled medium";
+  medium_contents(s, back);
+  EXPECT_TRUE(back.contents.empty());
+  Medium made_back = made;
+  made_back.contents.clear();
+  EXPECT_THROW(medium_contents(s, made_back), InputError) << "a sample asked of a made medium";
+
+  CoarseResult run;
+  run.path = "soft.h5", run.model = "soft", run.steps = 1000, run.dt = 1e-6, run.cpu_seconds = 2.0;
+  run.grains = static_cast<std::int64_t>(m.grain_x.size()), run.sites = static_cast<std::int64_t>(m.sites.size());
+  CoarseResult a;
+  a.path = "a.h5", a.model = "resolved", a.spheres = 100, a.steps = 1000, a.cpu_seconds = 10.0;
+  const ResolvedEstimate e = estimate_resolved(s, back, run, {a, a});
+  EXPECT_NEAR(e.spheres, exact_spheres + n_all * c.grains, 1e-9 * e.spheres);
+  EXPECT_NEAR(e.spheres_error, n_all * c.grains_error, 1e-9 * e.spheres_error);
+  EXPECT_LE(e.smallest_radius, c.smallest_radius);
+  EXPECT_NEAR(e.cpu_error, e.cpu * e.spheres_error / e.spheres, 1e-9 * e.cpu) << "c measured twice the same: its error is 0";
+  EXPECT_EQ(e.content_sample, 6u);
 }
 
 }  // namespace nested_medium_test
