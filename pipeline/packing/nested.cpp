@@ -65,9 +65,16 @@ ContentMean sample_contents(const PackingParameters& p, int levels_below, std::u
   out.sample = sample;
   out.smallest_radius = std::numeric_limits<double>::infinity();
   std::size_t drawn = 0;
+  // Each level's parameters one level down from the one above, as generate_contents chains them
+  // (the same bits: the sample is the medium's own contents).
+  std::vector<PackingParameters> params{p};
+  for (int j = 1; j <= levels_below; ++j) params.push_back(level_parameters(params.back(), 1));
   const auto draw = [&](int level, std::uint64_t s) {
-    const LevelPacking l = generate_level(level_parameters(p, level), levels_below - level, s);
-    if (level > 0 && progress) progress(++drawn, sample * static_cast<std::size_t>(levels_below));
+    const LevelPacking l = generate_level(params[static_cast<std::size_t>(level)], levels_below - level, s);
+    if (level > 0 && progress) {
+      ++drawn;  // over-drawn parents count too: the total grows with them
+      progress(drawn, std::max(drawn, sample * static_cast<std::size_t>(levels_below)));
+    }
     Drawn d{s, 0.0, l.grains.radii.size(), l.sites.size()};
     for (double r : l.grains.radii) {
       d.volume += 4.0 / 3.0 * std::numbers::pi * r * r * r;
@@ -81,17 +88,15 @@ ContentMean sample_contents(const PackingParameters& p, int levels_below, std::u
   std::uint64_t next_top = 0;
   const auto more = [&](auto& self, std::size_t j) -> void {
     if (j == 0) {
+      if (next_top >= kMaxSites)
+        throw InputError(fmt::format("sample_contents: the {} top packings of seed {} hold too few sites for a sample of {}", kMaxSites, seed, sample));
       levels[0].push_back(draw(0, nested_site_seed(seed, next_top++)));
       return;
     }
     // The next child of level j - 1's packings, in order; a parent with no site is passed over.
     std::size_t taken = levels[j].size(), parent = 0;
     while (true) {
-      while (parent >= levels[j - 1].size()) {
-        if (levels[j - 1].size() > 100 * sample + 100)
-          throw InputError(fmt::format("sample_contents: level {}'s packings hold no sites (seed {}): no content to sample", j - 1, seed));
-        self(self, j - 1);
-      }
+      while (parent >= levels[j - 1].size()) self(self, j - 1);
       const Drawn& up = levels[j - 1][parent];
       if (taken < up.sites) {
         levels[j].push_back(draw(static_cast<int>(j), nested_site_seed(up.seed, taken)));

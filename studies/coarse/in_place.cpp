@@ -133,15 +133,16 @@ void write_in_place_seed(const ManyBodyProbe& plan, const std::string& config, c
   const CoarseGrainSettings s = read_coarse_grain_settings(config);
   const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
   if (!laws.many_body || !laws.soft_solid || !laws.soft_soft)
-    throw InputError(fmt::format("{}: the law file {} has no many_body or lacks a scene; the law in place needs both scenes and many_body", config, s.laws));
+    throw InputError(fmt::format("{}: the law file {}{} has no many_body or lacks a scene; the law in place needs both scenes and many_body",
+                                 config, s.laws, s.many_body.empty() ? "" : fmt::format(" (many-body law: {})", s.many_body)));
   const std::string path = fmt::format("{}/seed-{}.h5", media_dir, seed);
   const MediumFile mf = read_medium_file(path);
   if (mf.settings != s.medium_text) throw InputError(fmt::format("{}: made with other settings than {}", path, config));
   const Medium& m = mf.medium;
   std::string dat = fmt::format(
-      "# the law in place (softpack-coarse in-place, {}): resolved medium {} with the settings {}, laws {}\n"
+      "# the law in place (softpack-coarse in-place, {}): resolved medium {} with the settings {}{}, laws {}\n"
       "# strain site kind(0 wall, 1 grain, 2 site) dn r_over_Rs count F_measured[N] F_law[N] F_pairwise[N]\n",
-      code_version(), path, config, s.laws);
+      code_version(), path, config, s.many_body.empty() ? "" : fmt::format(" (many-body law of {})", s.many_body), s.laws);
   const Stopwatch clock;
   run_compression(medium_scene(s, m, CoarseModel::resolved, laws), m, CoarseModel::resolved, s, progress, [&](const Simulation& sim, const CurveRow& row) {
     if (row.phase != 1 || row.strain < plan.strain_lo - 1e-9 || row.strain > plan.strain_hi + 1e-9) return;

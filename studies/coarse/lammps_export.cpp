@@ -271,7 +271,9 @@ void write_lammps_export(const CoarseGrainSettings& s, const std::string& config
   if (!s.many_body.empty())  // the pair style reads one law file, copied below
     throw InputError("coarse_grain.soft_particle.many_body is not exported (softpack/soft reads the one law file `laws`); allowed: no many_body");
   const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
-  const SceneDef scene = medium_scene(s, mf.medium, CoarseModel::soft, laws);
+  Medium medium = mf.medium;
+  medium_contents(s, medium);  // nested: the sites' contents weigh the soft-particles, as in softpack-coarse run
+  const SceneDef scene = medium_scene(s, medium, CoarseModel::soft, laws);
   const Simulation sim(scene);  // the engine's time step for this medium
   double r_min = scene.particles.front().r;
   for (const ParticleDef& p : scene.particles) r_min = std::min(r_min, p.r);
@@ -345,7 +347,9 @@ LammpsRun read_lammps_run(const std::string& dir, const CoarseGrainSettings& s, 
   if (out.ranks == 0) throw InputError(fmt::format("{}: no 'Loop time' line: not the log of a LAMMPS run", log));
   if (steps != run.steps) throw InputError(fmt::format("{}: {} steps, but {} ends at step {}: not the log of this run", log, steps, curve, run.steps));
   const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
-  const SceneDef scene = medium_scene(s, mf.medium, CoarseModel::soft, laws);
+  Medium medium = mf.medium;
+  medium_contents(s, medium);  // nested: the sites' contents weigh the soft-particles, as in softpack-coarse run
+  const SceneDef scene = medium_scene(s, medium, CoarseModel::soft, laws);
   run.dt = Simulation(scene).dt();
   run.spheres = scene.particles.size(), run.bodies = mf.medium.bodies();
   run.time.wall = seconds, run.time.cpu = seconds * out.ranks;

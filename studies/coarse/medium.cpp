@@ -137,8 +137,8 @@ SiteInside site_inside(const Medium& m, std::size_t k) {
     return {n * c.volume, n * c.volume_error, n * c.shells_volume, n * c.shells_volume_error, n * c.grains, n * c.grains_error};
   }
   if (m.contents.size() != m.sites.size())
-    throw InputError(fmt::format("a medium of nested soft-particles ({} levels): its sites' contents are not made here; allowed: "
-                                 "softpack-coarse run, or a medium of one level",
+    throw InputError(fmt::format("a medium of nested soft-particles ({} levels): its sites' contents are neither made (medium_contents, "
+                                 "as softpack-coarse run and estimate do) nor sampled (medium.content_sample)",
                                  m.levels));
   for (const SiteContent& c : m.contents[k]) {
     in.volume += c.solid_volume();

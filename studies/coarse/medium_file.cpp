@@ -35,14 +35,14 @@ void write_medium_file(const std::string& path, const MediumFile& mf) {
     }
     put(f, "packings/levels", static_cast<std::int64_t>(m.levels)), put(f, "packings/site_radius", m.inner_radius);
     put(f, "packings/site_offsets", inner_offsets), put(f, "packings/site_centres", inner);
-  }
-  if (m.content_mean.sample > 0) {  // sampled: what a site's site holds, expected (ContentMean)
-    const ContentMean& c = m.content_mean;
-    put(f, "contents/sample", static_cast<std::int64_t>(c.sample));
-    put(f, "contents/volume", std::vector<double>{c.volume, c.volume_error});
-    put(f, "contents/shells_volume", std::vector<double>{c.shells_volume, c.shells_volume_error});
-    put(f, "contents/grains", std::vector<double>{c.grains, c.grains_error});
-    put(f, "contents/smallest_radius", c.smallest_radius);
+    if (m.content_mean.sample > 0) {  // sampled: what a site's site holds, expected (ContentMean)
+      const ContentMean& c = m.content_mean;
+      put(f, "contents/sample", static_cast<std::int64_t>(c.sample));
+      put(f, "contents/volume", std::vector<double>{c.volume, c.volume_error});
+      put(f, "contents/shells_volume", std::vector<double>{c.shells_volume, c.shells_volume_error});
+      put(f, "contents/grains", std::vector<double>{c.grains, c.grains_error});
+      put(f, "contents/smallest_radius", c.smallest_radius);
+    }
   }
   put(f, "box/L", m.L), put(f, "box/H", m.H), put(f, "box/Rs", m.Rs);
   put(f, "volumes/grains", m.grains_volume), put(f, "volumes/packings", m.packings_volume), put(f, "volumes/target", m.target_volume);
@@ -98,7 +98,7 @@ MediumFile read_medium_file(const std::string& path) {
       const auto pair = [&](const char* name, double& value, double& error) {
         std::vector<double> v;
         get(f, name, v);
-        formats::same_length(f, name, v.size(), "a value and its error", 2);
+        if (v.size() != 2) throw InputError(fmt::format("{}: {}: {} numbers; allowed: 2, a value and its error", path, name, v.size()));
         if (!(v[0] > 0.0 && v[1] >= 0.0)) throw InputError(fmt::format("{}: {}: {} ± {}; allowed: > 0 ± >= 0", path, name, v[0], v[1]));
         value = v[0], error = v[1];
       };

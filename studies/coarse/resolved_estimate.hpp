@@ -6,14 +6,16 @@
 //   spheres   N = the first decade's grains + every grain of every site at every level (its
 //             sites' sites expected from a sample when the medium's are: medium.content_sample)
 //   step      dt = the engine's step for the resolved scene (integrate/time_step.hpp: the smallest
-//             grain's Rayleigh time times the profile's safety)
+//             grain's Rayleigh time times the profile's safety; of a sampled medium, the smallest
+//             grain the sample drew: the medium's own, among some 10^6, may be a little smaller)
 //   steps     n = the soft run's simulated time (its steps times its step) / dt: the same
 //             compression of the same medium, each row the same wall travel and rest
 //   cost      N n c, c the CPU seconds per sphere-step of resolved runs that did run (their CPU
 //             time / (spheres steps)), the mean over them
 //
 // c is measured on media of one level, whose grains and contacts per grain are like the nested
-// medium's; an estimate, not a run.
+// medium's; an estimate, not a run. Its error is that of N's expected value (the sample's) and of
+// c over the runs, not the scatter of one resolved medium about it.
 #pragma once
 #include <string>
 #include <vector>

@@ -30,6 +30,30 @@ expect_error "record_shear is not read; remove it" "$tmp/x.h5" "$exe" run --conf
 sed 's/    placement_trials: 10000/    placement_trials: 10000\n    content_sample: 8/' "$config" > "$tmp/sample.yaml"
 expect_error "coarse_grain.medium.content_sample: the sites hold no soft-particles" "$tmp/m.h5" \
   "$exe" medium --config "$tmp/sample.yaml" --seed 1 --out "$tmp/m.h5"
+# Nested sites whose own sites' contents are sampled (medium.content_sample): the medium keeps the
+# mean, the soft model runs on it, the resolved model is refused, the estimate counts the spheres
+# with an error (the measured cost: the one-level resolved run above).
+sed 's/^  polydispersity: 3$/  polydispersity: 3\n  levels: 2/' experiments/quick.yaml > "$tmp/quick-nested.yaml"
+grep -q '^  levels: 2$' "$tmp/quick-nested.yaml" || fail "the nested profile was not written"
+echo "content: {form: soft, laws: data/radius/report/laws.json, grain_contact: wall, shell_mass_fraction: 0.05}" >> "$tmp/quick-nested.yaml"
+sed -e "s|    profile: experiments/quick.yaml|    profile: $tmp/quick-nested.yaml|" "$tmp/sample.yaml" > "$tmp/nested.yaml"
+"$exe" medium --config "$tmp/nested.yaml" --seed 901 --out "$tmp/nested-medium.h5" 2> "$tmp/nested-medium.log"
+grep -q "their contents sampled (8 per level)" "$tmp/nested-medium.log" || fail "medium: $(tr '\r' '\n' < "$tmp/nested-medium.log" | tail -1)"
+h5dump -d /contents/sample "$tmp/nested-medium.h5" | grep -q "(0): 8" || fail "the medium file does not keep its sample"
+"$exe" run --config "$tmp/nested.yaml" --model soft --medium "$tmp/nested-medium.h5" --out "$tmp/runs/nested-soft-901.h5" --quiet
+expect_error "has no resolved model: its contents are weighed, not made" "$tmp/x.h5" \
+  "$exe" run --config "$tmp/nested.yaml" --model resolved --medium "$tmp/nested-medium.h5" --out "$tmp/x.h5"
+"$exe" estimate --config "$tmp/nested.yaml" --medium "$tmp/nested-medium.h5" --soft "$tmp/runs/nested-soft-901.h5" \
+  --measured "$tmp/runs/resolved-901.h5" --out "$tmp/estimate.json" --quiet
+python3 -c "
+import json, sys
+e = json.load(open(sys.argv[1]))
+assert e['contents'].startswith('sampled: 8'), e['contents']
+assert e['resolved_spheres']['error'] > 0 and e['resolved_cpu_estimate']['error'] > 0, e
+" "$tmp/estimate.json" || fail "the estimate of a sampled medium: $(cat "$tmp/estimate.json")"
+sed 's/    content_sample: 8/    content_sample: 9/' "$tmp/nested.yaml" > "$tmp/nested-9.yaml"
+expect_error "made with other settings than" "$tmp/x.h5" \
+  "$exe" run --config "$tmp/nested-9.yaml" --model soft --medium "$tmp/nested-medium.h5" --out "$tmp/x.h5"
 # rotation: locked (the soft-particles' spin held at zero, a bound) runs on the same medium.
 sed 's/    grain_contact: wall/    grain_contact: wall\n    rotation: locked/' "$config" > "$tmp/locked.yaml"
 "$exe" run --config "$tmp/locked.yaml" --model soft --medium "$tmp/medium.h5" --out "$tmp/runs/locked-901.h5" --quiet

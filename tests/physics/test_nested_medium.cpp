@@ -13,6 +13,7 @@
 #include "coarse/resolved_estimate.hpp"
 #include "core/error.hpp"
 #include "formats/law_file.hpp"
+#include "measure/content_scene.hpp"
 #include "sim/simulation.hpp"
 #include "support/coarse_tiny.hpp"
 
@@ -242,34 +243,51 @@ TEST(NestedMedium, TheSampledContentTwoLevelsDownHoldsTheMeanOfTheLevelBelow) {
     for (std::size_t i = 0; i < up.sites.size() && level1.size() < M; ++i)
       l1.push_back(nested_site_seed(top, i)), level1.push_back(generate_level(level_parameters(p, 1), 1, l1.back()));
   }
-  std::vector<double> v2;
+  std::vector<double> v2, g2;  // level 2: the last, grains only
+  const PackingParameters p2 = level_parameters(level_parameters(p, 1), 1);  // chained, as generate_contents
   for (std::size_t k = 0; k < level1.size() && v2.size() < M; ++k)
     for (std::size_t i = 0; i < level1[k].sites.size() && v2.size() < M; ++i) {
-      const LevelPacking l = generate_level(level_parameters(p, 2), 0, nested_site_seed(l1[k], i));
+      const LevelPacking l = generate_level(p2, 0, nested_site_seed(l1[k], i));
       double vol = 0.0;
       for (double r : l.grains.radii) vol += ball(r);
-      v2.push_back(vol);
+      v2.push_back(vol), g2.push_back(static_cast<double>(l.grains.radii.size()));
     }
   ASSERT_EQ(v2.size(), M);
-  double V2 = 0.0, s2 = 0.0;
-  for (double x : v2) V2 += x / M;
-  for (double x : v2) s2 += (x - V2) * (x - V2) / (M - 1);
-  const double se2_below = s2 / M;
-  std::vector<double> v1;
+  const auto mean_s2 = [](const std::vector<double>& x) {
+    double m = 0.0, s2 = 0.0;
+    for (double xi : x) m += xi / M;
+    for (double xi : x) s2 += (xi - m) * (xi - m) / (M - 1);
+    return std::pair{m, s2};
+  };
+  const auto [V2, s2] = mean_s2(v2);
+  const double G2 = mean_s2(g2).first, W2 = V2;  // a last-level content's shells: its own
+  // Level 1: x + n X' for the volume, the shells (x + n (V' + W')) and the grains.
+  std::vector<double> v1, w1, g1;
   double n_mean = 0.0;
   for (const LevelPacking& l : level1) {
     double vol = 0.0;
     for (double r : l.grains.radii) vol += ball(r);
-    v1.push_back(vol + static_cast<double>(l.sites.size()) * V2);
-    n_mean += static_cast<double>(l.sites.size()) / M;
+    const auto n = static_cast<double>(l.sites.size());
+    v1.push_back(vol + n * V2), w1.push_back(vol + n * (V2 + W2)), g1.push_back(static_cast<double>(l.grains.radii.size()) + n * G2);
+    n_mean += n / M;
   }
   ASSERT_GT(n_mean, 0.0) << "level 1 holds no site: the test tests nothing";
-  double V1 = 0.0, s1 = 0.0;
-  for (double x : v1) V1 += x / M;
-  for (double x : v1) s1 += (x - V1) * (x - V1) / (M - 1);
+  const auto [V1, s1] = mean_s2(v1);
   EXPECT_NEAR(c.volume, V1, 1e-12 * V1);
-  EXPECT_NEAR(c.volume_error, std::sqrt(s1 / M + n_mean * n_mean * se2_below), 1e-9 * c.volume_error);
-  EXPECT_GT(c.shells_volume, c.volume) << "level 1's shell around all of it, and its sites' around theirs";
+  EXPECT_NEAR(c.volume_error, std::sqrt(s1 / M + n_mean * n_mean * s2 / M), 1e-9 * c.volume_error);
+  EXPECT_NEAR(c.shells_volume, mean_s2(w1).first, 1e-12 * c.shells_volume);
+  EXPECT_NEAR(c.grains, mean_s2(g1).first, 1e-12 * c.grains);
+  // The shells' volume of made contents is content_shells_mass at unit density and fraction: the
+  // same recursion on the level-1 sample's own contents, one by one.
+  for (std::size_t k = 0; k < M; ++k) {
+    SiteContent made;
+    made.level = level1[k];
+    made.sites = generate_contents(level_parameters(p, 1), 1, l1[k], level1[k].sites.size());
+    double w = 0.0;
+    for (double r : made.level.grains.radii) w += ball(r);
+    for (const SiteContent& sub : made.sites) w += 2.0 * sub.solid_volume();  // each inner site: its volume, in two shells
+    EXPECT_NEAR(content_shells_mass(made, 1.0, 1.0), w, 1e-12 * w) << "level-1 packing " << k;
+  }
 }
 
 // A medium of sampled contents (medium.content_sample): no content made, each site's sites
