@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "analysis/seed_statistics.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
 
@@ -107,31 +108,28 @@ ContentMean sample_contents(const PackingParameters& p, int levels_below, std::u
   };
   for (std::size_t j = 1; j <= static_cast<std::size_t>(levels_below); ++j)
     while (levels[j].size() < sample) more(more, j);
-  // Bottom up: E[X_j] over the sample's x_i + n_i E[X_(j+1)], with its error.
+  // Bottom up: E[X_j] over the sample's x_i + n_i E[X_(j+1)] (mean_error: the mean and its standard
+  // error, as every mean in the project), its error squared plus mean(n)² times the level below's.
   double V = 0.0, V2 = 0.0, W = 0.0, W2 = 0.0, G = 0.0, G2 = 0.0;  // E and se² one level down
   for (std::size_t j = static_cast<std::size_t>(levels_below); j >= 1; --j) {
-    const auto M = static_cast<double>(sample);
-    std::vector<double> v, w, g;
-    double n_mean = 0.0;
+    std::vector<double> v, w, g, n;
     for (std::size_t i = 0; i < sample; ++i) {
       const Drawn& d = levels[j][i];
-      const auto n = static_cast<double>(d.sites);
-      v.push_back(d.volume + n * V);
-      w.push_back(v.back() + n * W);
-      g.push_back(static_cast<double>(d.grains) + n * G);
-      n_mean += n / M;
+      n.push_back(static_cast<double>(d.sites));
+      v.push_back(d.volume + n.back() * V);
+      w.push_back(v.back() + n.back() * W);
+      g.push_back(static_cast<double>(d.grains) + n.back() * G);
     }
-    const auto mean_se2 = [&](const std::vector<double>& x, double below_se2) {
-      double m = 0.0, s2 = 0.0;
-      for (double xi : x) m += xi / M;
-      for (double xi : x) s2 += (xi - m) * (xi - m) / (M - 1.0);
-      return std::pair{m, s2 / M + n_mean * n_mean * below_se2};
+    const double n_mean = mean_error(n).mean;
+    const auto with_below = [&](const std::vector<double>& x, double below_se2) {
+      const MeanError e = mean_error(x);
+      return std::pair{e.mean, e.error * e.error + n_mean * n_mean * below_se2};
     };
     // w_i = x_i + n_i (E[V'] + E[W']): its error from below bounded by se(V') + se(W').
     const double W2_below = std::pow(std::sqrt(V2) + std::sqrt(W2), 2);
-    std::tie(V, V2) = mean_se2(v, V2);
-    std::tie(W, W2) = mean_se2(w, W2_below);
-    std::tie(G, G2) = mean_se2(g, G2);
+    std::tie(V, V2) = with_below(v, V2);
+    std::tie(W, W2) = with_below(w, W2_below);
+    std::tie(G, G2) = with_below(g, G2);
   }
   out.volume = V, out.volume_error = std::sqrt(V2);
   out.shells_volume = W, out.shells_volume_error = std::sqrt(W2);

@@ -134,13 +134,19 @@ SiteInside site_inside(const Medium& m, std::size_t k) {
   if (m.content_mean.sample > 0) {
     const auto n = static_cast<double>(m.inner_sites.at(k).size());
     const ContentMean& c = m.content_mean;
-    return {n * c.volume, n * c.volume_error, n * c.shells_volume, n * c.shells_volume_error, n * c.grains, n * c.grains_error};
+    return {n * c.volume, n * c.volume_error, n * c.shells_volume, n * c.shells_volume_error, n * c.grains, n * c.grains_error,
+            n > 0.0 ? c.smallest_radius : in.smallest_radius};
   }
   if (m.contents.size() != m.sites.size())
     throw InputError(fmt::format("a medium of nested soft-particles ({} levels): its sites' contents are neither made (medium_contents, "
                                  "as softpack-coarse run and estimate do) nor sampled (medium.content_sample)",
                                  m.levels));
+  const auto smallest = [&](auto& self, const SiteContent& c) -> void {
+    for (double r : c.level.grains.radii) in.smallest_radius = std::min(in.smallest_radius, r);
+    for (const SiteContent& sub : c.sites) self(self, sub);
+  };
   for (const SiteContent& c : m.contents[k]) {
+    smallest(smallest, c);
     in.volume += c.solid_volume();
     in.shells_volume += content_shells_mass(c, 1.0, 1.0);  // unit density and fraction: the shells' volume
     in.grains += static_cast<double>(c.grains());

@@ -25,6 +25,7 @@
 // everything inside it resolved.
 #pragma once
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "coarse/settings.hpp"
@@ -78,6 +79,7 @@ struct SiteInside {
   double volume = 0.0, volume_error = 0.0;                ///< solid volume [m^3]
   double shells_volume = 0.0, shells_volume_error = 0.0;  ///< ContentMean::shells_volume, summed [m^3]
   double grains = 0.0, grains_error = 0.0;
+  double smallest_radius = std::numeric_limits<double>::infinity();  ///< of those grains (sampled: the sample's) [m]
 };
 SiteInside site_inside(const Medium& m, std::size_t k);
 

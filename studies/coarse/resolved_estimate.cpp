@@ -14,11 +14,6 @@
 namespace softpack {
 namespace {
 
-void count_content(const SiteContent& c, double& smallest) {
-  for (double r : c.level.grains.radii) smallest = std::min(smallest, r);
-  for (const SiteContent& sub : c.sites) count_content(sub, smallest);
-}
-
 struct Size {
   double spheres = 0.0, error = 0.0, smallest = std::numeric_limits<double>::infinity();
 };
@@ -35,11 +30,8 @@ Size resolved_size(const Medium& m) {
   }
   for (std::size_t k = 0; k < m.sites.size(); ++k) {
     const SiteInside in = site_inside(m, k);  // InputError when nested and neither made nor sampled
-    z.spheres += in.grains, z.error += in.grains_error;
+    z.spheres += in.grains, z.error += in.grains_error, z.smallest = std::min(z.smallest, in.smallest_radius);
   }
-  if (m.content_mean.sample > 0) z.smallest = std::min(z.smallest, m.content_mean.smallest_radius);
-  for (const std::vector<SiteContent>& cs : m.contents)
-    for (const SiteContent& c : cs) count_content(c, z.smallest);
   return z;
 }
 
