@@ -124,8 +124,12 @@ template <class T>
 [[gnu::always_inline]] inline T cap_volume(const T& d) {
   return d * d * (T(3.0) - d) / T(4.0);
 }
-/// a(δ) = 2δ − δ²: the cap's base area over π R².
-inline double cap_area(double d) { return 2.0 * d - d * d; }
+/// a(δ) = 2δ − δ² up to the hemisphere, 1 past it (δ > 1): the cap's base area over π R², the
+/// area a contact's pressure acts on. Past the centre a plane's section shrinks again, to 0 at
+/// δ = 2, and the pressure X(δ*)/a(δ*) of the many-body law would have a pole there (a soft-
+/// particle whose caps fill it; docs/nested.md, "the chain's level 1 blow-up"): a squeezed
+/// soft-particle keeps at least its equator's area.
+inline double cap_area(double d) { return d < 1.0 ? 2.0 * d - d * d : 1.0; }
 /// The meridians of the union of caps, the engine's and the probe analysis's (tests/physics
 /// ManyBodySoftParticles.TheCapsUnionIsExactWhereItIsKnown measures what they miss).
 inline constexpr int kCapUnionMeridians = 256;
@@ -146,13 +150,15 @@ double cap_union_volume(const std::vector<Vec3>& n, const std::vector<double>& d
 double cap_depth(double eps);
 /// The many-body law's force (ManyBodyLaw) of a contact at Δn = dn whose soft-particle's other
 /// contacts hold the cap volume `others`, from the single-contact law X (a callable of Δn), times
-/// `scale`: scale X(δ*) a(dn) / a(δ*); with no other contact scale X(dn), as it is. The engine's
+/// `scale`: scale X(δ*) a(dn) / a(δ*); with no other contact scale X(dn), as it is. Where the caps
+/// reach the ball's volume (v(dn) + β others >= 1) δ* is 2: the force is scale X(2) a(dn), the limit
+/// of the formula (continuous, with a(δ) bounded past the hemisphere: cap_area). The engine's
 /// model and the many-body probe's analysis (studies/coarse/probe_fit.hpp) both call it.
 template <class Law>
 double many_body_force(const Law& X, double scale, double dn, double others, double beta) {
   if (!(others > 0.0) || !(dn > 0.0)) return scale * X(dn);
   const double star = cap_depth(cap_volume(dn) + beta * others);
-  return star > 0.0 && star < 2.0 ? scale * X(star) * cap_area(dn) / cap_area(star) : scale * X(dn);
+  return star > 0.0 ? scale * X(star) * cap_area(dn) / cap_area(star) : scale * X(dn);
 }
 
 /// What the soft-particle contacts run on: the law file's content (and where it came from).
@@ -276,9 +282,9 @@ struct SoftManyBodyNormal : SoftNormal {
   /// ∫ Fn_base dh from 0 to h with the other contacts' caps as they are (the stress term, not the
   /// derivative of a potential, is left out): Eq. 7's integral for a contact
   /// alone (the pairwise model's), else Simpson's rule on kEnergyIntervals from where the force
-  /// starts (tests/physics ManyBodySoftParticles.TheEnergyIsTheForcesIntegral). Where v(Δn) +
-  /// β E_others reaches the ball's volume the force falls back to Eq. 7 (many_body_force) and the
-  /// rule is not made for it.
+  /// starts (tests/physics ManyBodySoftParticles.TheEnergyIsTheForcesIntegral); past the
+  /// hemisphere (δ* > 1) and where the caps fill the ball (δ* = 2) the force has kinks the rule
+  /// does not place a node on.
   static constexpr int kEnergyIntervals = 16;
   static double energy(const Params& p, const Constants<double>& k, double h, double s1, double s2);
 

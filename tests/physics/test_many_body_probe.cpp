@@ -32,6 +32,38 @@ TEST(ManyBodyProbeLaws, CapDepthInvertsCapVolume) {
   EXPECT_EQ(cap_depth(1.5), 2.0);
 }
 
+// The pressure acts on the cap's base up to the hemisphere and on the equator's area past it
+// (cap_area): the many-body force X(δ*) a(Δn) / a(δ*) stays finite as the caps fill the
+// soft-particle (δ* → 2), where 2δ* − δ*² would vanish, and meets X(2) a(Δn) where they fill it.
+TEST(ManyBodyProbeLaws, TheManyBodyForceHasNoPoleAsTheCapsFillTheSoftParticle) {
+  EXPECT_EQ(cap_area(0.5), 0.75);
+  EXPECT_EQ(cap_area(1.5), 1.0);
+  EXPECT_EQ(cap_area(2.0), 1.0);
+  const auto X = [](double d) { return 40.0 * std::pow(d, 2.5); };
+  const double dn = 0.3, v = cap_volume(dn), beta = 1.4;
+  // below the hemisphere: the formula as written, 2δ − δ²
+  const double low = 0.2;  // others' volume: v(δ*) = v + β 0.2 < 1/2
+  const double star_low = cap_depth(v + beta * low);
+  ASSERT_LT(star_low, 1.0);
+  EXPECT_NEAR(many_body_force(X, 1.0, dn, low, beta), X(star_low) * (2 * dn - dn * dn) / (2 * star_low - star_low * star_low), 1e-12 * X(star_low));
+  // past it: X(δ*) a(Δn), the equator's area under the pressure
+  const double high = 0.5, star_high = cap_depth(v + beta * high);
+  ASSERT_GT(star_high, 1.0);
+  EXPECT_NEAR(many_body_force(X, 1.0, dn, high, beta), X(star_high) * (2 * dn - dn * dn), 1e-12 * X(star_high));
+  // up to and past the caps filling it: bounded by X(2) a(Δn), and continuous there
+  const double full = X(2.0) * (2 * dn - dn * dn);
+  double before = 0.0;  // rising with the others' caps, never past the filled ball's force
+  for (double eps = 1.0 - 1e-2; eps < 1.0; eps = 1.0 - (1.0 - eps) / 10.0) {
+    const double F = many_body_force(X, 1.0, dn, (eps - v) / beta, beta);
+    EXPECT_LE(F, full * (1.0 + 1e-12)) << eps;
+    EXPECT_GE(F, before) << eps;
+    before = F;
+  }
+  EXPECT_NEAR(many_body_force(X, 1.0, dn, (1.0 - 1e-12 - v) / beta, beta), full, 1e-5 * full);
+  EXPECT_DOUBLE_EQ(many_body_force(X, 1.0, dn, (1.0 - v) / beta, beta), full);
+  EXPECT_DOUBLE_EQ(many_body_force(X, 1.0, dn, 2.0, beta), full);
+}
+
 TEST(ManyBodyProbeLaws, EveryCandidateIsThePairwiseLawForOneContactAndForNoParameter) {
   ProbeLaw law{"pairwise", 0.0, {{"r", testing::eq7_fit(40.0, 2.5, -0.05)}}};
   const ProbeWallForce one{"r", "one", 1, {0.3}, 0, 0.0};
