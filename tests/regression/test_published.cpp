@@ -73,7 +73,7 @@ const Archive& archive() {
       out.averages.emplace(s, read_average_file((dir / "averages" / (s + ".h5")).string()));
     }
     std::ifstream in(dir / "tables" / "verdict.json");
-    if (!in) throw std::runtime_error((dir / "tables" / "verdict.json").string() + ": missing (make archive from a 0.6.1 tree)");
+    if (!in) throw std::runtime_error((dir / "tables" / "verdict.json").string() + ": missing (make archive from a 0.7.0 tree)");
     out.verdict = nlohmann::json::parse(in);
     return out;
   }();
