@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/stopwatch.hpp"
+#include "core/version.hpp"
 
 namespace softpack {
 namespace {
@@ -30,14 +31,20 @@ PointResult record_point(const Simulation& sim, const ContactSetup& setup, const
 }
 
 // A point file is reused only when it holds the same configuration (the stage's sections, the
-// scene, the packings by content, so the seed), the point it is filed under, and reads whole,
-// its state included (every dataset is checksummed: a flipped bit is an InputError here, not a
-// wrong restart later). Returns what it read, so that nothing is read twice.
-std::optional<PointFile> reusable(const std::string& path, const std::string& config, const PointKey& key) {
+// scene, the packings by content, so the seed), was computed by this release (a change of result
+// bits bumps the release: a point of another one may hold other bits), holds the point it is filed
+// under, and reads whole, its state included (every dataset is checksummed: a flipped bit is an
+// InputError here, not a wrong restart later). Returns what it read, so that nothing is read twice.
+std::optional<PointFile> reusable(const std::string& path, const std::string& config, const std::string& release, const PointKey& key) {
   if (!std::filesystem::exists(path)) return std::nullopt;
   try {
     PointFile f = read_point_file(path, true);
     if (f.provenance.config != config) return std::nullopt;
+    if (const std::string other = release_of(f.provenance.code_version); other != release) {
+      fmt::print(stderr, "note: {}: a checkpoint of release {} (this build is {}), the point is computed again\n", path,
+                 other.empty() ? "unknown" : other, release);
+      return std::nullopt;
+    }
     if (const std::string other = point_mismatch(f, key); !other.empty())
       throw InputError(fmt::format("{}: holds {} (a checkpoint filed under another point)", path, other));
     return f;
@@ -92,7 +99,7 @@ std::vector<PointResult> run_sweep(const SweepContext& c, const SweepStage& stag
       const SweepPoint& p = ch.plan[k];
       // 1. Reuse, unless the point it starts from was computed again.
       if (!(p.from && ch.computed[*p.from])) {
-        if (std::optional<PointFile> f = reusable(p.path, c.config, p.key)) {
+        if (std::optional<PointFile> f = reusable(p.path, c.config, release_of(c.code_version), p.key)) {
           points.push_back(std::move(f->result));
           points.back().reused = true;
           if (c.progress) c.progress(stage.name(), points.size() - 1, total, points.back(), true);

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/version.hpp"
 #include "profile/profile.hpp"
 
 namespace softpack {
@@ -61,6 +62,10 @@ SimulationState normal_state(const SweepContext& c, const std::string& normal_di
     throw InputError(fmt::format("{}: this normal state was computed with another configuration than this sweep's ({}); "
                                  "run the normal stage of this profile, scene and seed again",
                                  path, first_difference(f.provenance.config, c.normal_config, "the state", "this sweep")));
+  if (const std::string release = release_of(f.provenance.code_version); release != release_of(c.code_version))
+    throw InputError(fmt::format("{}: this normal state was computed by release {}, this build is {} (a release changes result "
+                                 "bits); run the normal stage of this profile, scene and seed again",
+                                 path, release.empty() ? "unknown" : release, release_of(c.code_version)));
   if (const std::string other = point_mismatch(f, PointKey{"normal", delta_n, 0.0, 0.0}); !other.empty())
     throw InputError(fmt::format("{}: filed as the normal state of delta_n = {}, it holds {}; run the normal stage again", path,
                                  delta_n, other));

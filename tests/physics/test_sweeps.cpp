@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.hpp"
+#include "core/version.hpp"
 #include "support/sweep_fixture.hpp"
 
 namespace softpack {
@@ -146,6 +148,48 @@ TEST(Sweeps, ResumeAfterAnInterruptionGivesIdenticalResults) {
   EXPECT_TRUE(run_tangential_sweep(t, tmp / "straight").empty());
   t.stop_after = 0;
   EXPECT_TRUE(same_results(run_tangential_sweep(t, tmp / "straight"), straight_t));
+}
+
+// A change of result bits bumps the release, so a checkpoint of another release is computed
+// again (its configuration alone does not say the bits are this build's), and a tangential
+// sweep refuses a normal state of another release rather than start from it.
+TEST(Sweeps, ACheckpointOfAnotherReleaseIsComputedAgain) {
+  TempDir tmp("release");
+  const PackingFile a = packing(1);
+  const auto settings = parse_measurement(testing::sweep_profile());
+  const ContactSetup setup = soft_solid_setup(a, settings.simulation);
+  SweepContext c = testing::sweep_context(setup, tmp / "normal");
+  const auto straight = run_normal_sweep(c);
+  const std::size_t old = 1;  // point 1 as if an earlier release had computed it
+  const std::string path = normal_point_path(tmp / "normal", old);
+  PointFile f = read_point_file(path, true);
+  const std::string release = release_of(c.code_version);  // the fixture's "test"
+  EXPECT_EQ(release_of(f.provenance.code_version), release);
+  f.provenance.code_version = "0.0.1 (0000000)";
+  write_point_file(path, f.result, f.state, f.provenance);
+  std::vector<bool> reused;
+  c.progress = [&](const std::string&, std::size_t, std::size_t, const PointResult&, bool r) { reused.push_back(r); };
+  const auto again = run_normal_sweep(c);
+  EXPECT_TRUE(same_results(again, straight));
+  ASSERT_EQ(reused.size(), straight.size());
+  for (std::size_t k = 0; k < reused.size(); ++k) EXPECT_EQ(reused[k], k < old) << k;  // from it on: computed again
+  EXPECT_EQ(release_of(read_point_file(path, false).provenance.code_version), release);
+  // the tangential sweep's normal state of another release
+  for (std::size_t k = 0; k < straight.size(); ++k) {
+    PointFile g = read_point_file(normal_point_path(tmp / "normal", k), true);
+    g.provenance.code_version = "0.0.1 (0000000)";
+    write_point_file(normal_point_path(tmp / "normal", k), g.result, g.state, g.provenance);
+  }
+  SweepContext t = testing::sweep_context(setup, tmp / "t");
+  try {
+    run_tangential_sweep(t, tmp / "normal");
+    ADD_FAILURE() << "a normal state of another release was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("release 0.0.1, this build is " + release), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(release_of("0.7.0 (7a9968e-dirty)"), "0.7.0");
+  EXPECT_EQ(release_of(code_version()), release_version());
+  EXPECT_EQ(release_of(""), "");
 }
 
 }  // namespace
