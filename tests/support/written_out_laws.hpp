@@ -2,7 +2,7 @@
 // (tests/physics/test_soft_particles.cpp, test_many_body_law.cpp, test_many_body_stress.cpp), not
 // through the engine's own code: the committed pairwise law file they start from (the radius
 // study's, data/radius/report/laws.json), Eq. 7 of one of its scenes, a cap's volume v(δ) = δ²(3 − δ)/4 (over the sphere's)
-// and base a(δ) = 2δ − δ² (over πR²) as in contact/soft_particle_law.hpp, the depth whose cap has a
+// and base a(δ) = 2δ − δ² (over πR²; 1 past the hemisphere) as in contact/soft_particle_law.hpp, the depth whose cap has a
 // given volume, and a soft-particle with its grains' mass.
 #pragma once
 #include <cmath>
@@ -30,7 +30,7 @@ inline double eq7(const std::string& scene, double dn) {
 }
 
 inline double cap_volume(double d) { return d * d * (3.0 - d) / 4.0; }
-inline double cap_base(double d) { return 2.0 * d - d * d; }
+inline double cap_base(double d) { return d < 1.0 ? 2.0 * d - d * d : 1.0; }
 // The depth δ* whose cap volume is eps, by bisection.
 inline double cap_depth(double eps) {
   double lo = 0.0, hi = 2.0;
