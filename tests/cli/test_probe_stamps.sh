@@ -21,7 +21,10 @@ files=$(find "$tmp/probe" -name '*.dat' | sort)
 # TOOLS= : the tools are built (ctest runs after the build); nothing recompiles under the test.
 planned_in() { make --no-print-directory -n BUILD="$build" TOOLS= VERSION="$1" PROBE_DIR="$tmp/probe" many-body-probe 2>&1 | grep -o "[^ ]*\.dat" | sort -u || true; }
 if [ "$releases" != "$current" ]; then
+  # The gap, asserted and said: until make many-body-probe remakes them, a fresh clone's
+  # make many-body-report runs every probe again.
   [ "$(planned_in "$current")" = "$files" ] || fail "under release $current the runs of release $releases are not all made again"
+  echo "note: the committed probe runs are of release $releases: under $current make many-body-probe makes all $(echo "$files" | wc -l) again" >&2
 fi
 planned() { planned_in "$releases"; }
 [ -z "$(planned)" ] || fail "the committed runs are made again: $(planned | head -3)"
