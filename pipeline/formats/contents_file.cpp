@@ -1,5 +1,9 @@
 #include "formats/contents_file.hpp"
 
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <system_error>
@@ -125,7 +129,16 @@ std::vector<SiteContent> packing_contents(const PackingFile& p) {
   if (p.path.empty()) return generate_contents(p.parameters, below, p.provenance.seed, sites);
   const std::string cache = p.path + ".contents.h5", key = sha256_of_file(p.path);
   if (auto kept = read_contents_file(cache, key, below, sites)) return std::move(*kept);
-  std::vector<SiteContent> made = generate_contents(p.parameters, below, p.provenance.seed, sites);
+  // Making them takes minutes at the chain's level 0 (docs/nested.md): a line per site, with the
+  // time left, on the standard error (a stage's log), as the sweep's notes.
+  fmt::print(stderr, "contents: making those of {} ({} sites, {} levels below; kept in {})\n", p.path, sites, below, cache);
+  const auto start = std::chrono::steady_clock::now();
+  const PackingProgress progress = [&](const std::string&, std::size_t done, std::size_t total) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    fmt::print(stderr, "contents: site {}/{} made, {:.0f} s, ETA {:.0f} s\n", done, total, s,
+               s / static_cast<double>(done) * static_cast<double>(total - done));
+  };
+  std::vector<SiteContent> made = generate_contents(p.parameters, below, p.provenance.seed, sites, progress);
   try {
     write_contents_file(cache, key, below, made);
   } catch (const InputError&) {

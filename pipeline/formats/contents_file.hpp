@@ -31,7 +31,8 @@ namespace softpack {
 
 /// The contents of the sites of `p`, bit for bit generate_contents(p.parameters, levels - 1,
 /// seed, sites): read from p.path + ".contents.h5" when it holds this packing's, else made and
-/// written there (made only, when `p` was not read from a file). A packing without levels has none.
+/// written there (made only, when `p` was not read from a file), with a line per site made and
+/// the time left on the standard error. A packing without levels has none.
 std::vector<SiteContent> packing_contents(const PackingFile& p);
 
 /// The file's contents when its key is `packing_sha256`, `levels_below` and `sites`; empty

@@ -214,7 +214,8 @@ std::size_t SiteContent::shells() const {
   return n;
 }
 
-std::vector<SiteContent> generate_contents(const PackingParameters& p, int levels_below, std::uint64_t seed, std::size_t sites) {
+std::vector<SiteContent> generate_contents(const PackingParameters& p, int levels_below, std::uint64_t seed, std::size_t sites,
+                                           const PackingProgress& progress) {
   std::vector<SiteContent> out;
   if (levels_below < 1) return out;
   const PackingParameters below = level_parameters(p, 1);
@@ -224,6 +225,7 @@ std::vector<SiteContent> generate_contents(const PackingParameters& p, int level
     c.level = generate_level(below, levels_below - 1, s);
     c.sites = generate_contents(below, levels_below - 1, s, c.level.sites.size());
     out.push_back(std::move(c));
+    if (progress) progress("contents", k + 1, sites);
   }
   return out;
 }

@@ -75,9 +75,10 @@ struct SiteContent {
 
 /// The contents of the sites of a level packing made with `p` (its level's parameters) and
 /// `seed`, with `levels_below` levels under it (>= 1): site k's is generate_level one level down
-/// with nested_site_seed(seed, k), and so on to the last level.
+/// with nested_site_seed(seed, k), and so on to the last level. `progress` ("contents", k, sites)
+/// after each of the `sites` is made (down to its last level); it changes no bit.
 std::vector<SiteContent> generate_contents(const PackingParameters& p, int levels_below, std::uint64_t seed,
-                                           std::size_t sites);
+                                           std::size_t sites, const PackingProgress& progress = {});
 
 /// What one site of a level packing holds, expected from a sample instead of made (docs/nested.md
 /// "What making the contents costs"): a content four levels deep is about 700 level packings, a

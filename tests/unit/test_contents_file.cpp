@@ -1,6 +1,7 @@
 // The contents of a level packing's sites, made once and kept (formats/contents_file.hpp): what
 // is read back is, bit for bit, what the seeds give; a file of another packing, or one that
 // cannot be read, is made again; a packing made in memory has its contents made, none kept.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,6 +76,32 @@ TEST(ContentsFile, TheKeptContentsAreWhatTheSeedsGive) {
   expect_same(packing_contents(p), made);  // read
   EXPECT_FALSE(read_contents_file(kept, "another packing", 2, p.sites.centres.size()));
   EXPECT_FALSE(read_contents_file(kept, sha256_of_file(p.path), 1, p.sites.centres.size()));
+}
+
+TEST(ContentsFile, MakingThemSaysEachSiteDoneWithTheSameBits) {
+  // The line per site packing_contents prints while it makes them (minutes at the chain's level 0)
+  // comes from this callback: once per site of the packing, in order, and the contents unchanged.
+  const testing::TempDir dir("contents-file-progress");
+  const PackingFile p = read_packing_file(write_level(dir, "seed-75.h5", 75));
+  const std::size_t sites = p.sites.centres.size();
+  ASSERT_GT(sites, 1u);
+  std::vector<std::size_t> done;
+  const auto made = generate_contents(p.parameters, 2, 75, sites, [&](const std::string& phase, std::size_t k, std::size_t n) {
+    EXPECT_EQ(phase, "contents");
+    EXPECT_EQ(n, sites);
+    done.push_back(k);
+  });
+  std::vector<std::size_t> expected(sites);
+  for (std::size_t k = 0; k < sites; ++k) expected[k] = k + 1;
+  EXPECT_EQ(done, expected);
+  expect_same(made, generate_contents(p.parameters, 2, 75, sites));
+  ::testing::internal::CaptureStderr();
+  expect_same(packing_contents(p), made);  // made: a line per site
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(said.find(fmt::format("contents: site {}/{} made", sites, sites)), std::string::npos) << said;
+  ::testing::internal::CaptureStderr();
+  expect_same(packing_contents(p), made);  // read: nothing to say
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
 }
 
 TEST(ContentsFile, AnotherPackingsOrAnUnreadableFileIsMadeAgain) {
