@@ -2,7 +2,8 @@
 //
 //   softpack-coarse estimate --config C --medium M --soft S.h5 --measured R.h5 ... --out F.json
 //       the resolved model's cost of medium M from its spheres and step, the soft run S's simulated
-//       time and the CPU time per sphere-step of the resolved runs R (coarse/resolved_estimate.hpp).
+//       time and the CPU time per sphere-step of the resolved runs R (coarse/resolved_estimate.hpp),
+//       and, with the settings' plan.levels_added, the same medium that many levels deeper.
 #pragma once
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -54,6 +55,9 @@ struct EstimateCommand {
                  "softpack-coarse estimate seed {}: resolved {:.4g} spheres, {:.3g} steps of {:.3g} s, {:.3g} CPU s at {:.3g} s per "
                  "sphere-step; soft {:.3g} CPU s: {:.3g} times -> {}\n",
                  mf.seed, e.spheres, e.steps, e.dt, e.cpu, e.cpu_per_sphere_step, e.soft_cpu, e.speed_up(), out);
+    if (!quiet && e.deeper.levels_added > 0)
+      fmt::print(stderr, "softpack-coarse estimate seed {}: planned {} levels deeper: {:.4g} spheres, {:.3g} steps, {:.3g} CPU s: {:.3g} times\n",
+                 mf.seed, e.deeper.levels_added, e.deeper.spheres, e.deeper.steps, e.deeper.cpu, e.deeper.cpu / e.soft_cpu);
     return true;
   }
 };

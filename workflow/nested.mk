@@ -35,8 +35,10 @@ three-decades-medium: | $(TOOLS)  ## the three-decade medium's soft runs and res
 	@$(MAKE) --no-print-directory $(foreach s,$(THREE_DECADES_SEEDS),$(THREE_DECADES_DIR)/estimate/seed-$(s).json)
 # (Asked of the tool only when the recipe above runs: other goals never read the settings.)
 THREE_DECADES_SEEDS = $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --config $(THREE_DECADES_CONFIG))
-# An estimate is redone when its medium, its soft run or a measured run changes.
-$(THREE_DECADES_DIR)/estimate/seed-%.json: $(THREE_DECADES_DIR)/media/seed-%.h5 $(THREE_DECADES_DIR)/soft/seed-%.h5 $(THREE_DECADES_MEASURED) | $(TOOLS)
+# An estimate is redone when its medium, its soft run or a measured run changes, or the settings
+# (their `plan` is read by the estimate only: no stage's stamp holds it).
+$(THREE_DECADES_DIR)/estimate/seed-%.json: $(THREE_DECADES_DIR)/media/seed-%.h5 $(THREE_DECADES_DIR)/soft/seed-%.h5 $(THREE_DECADES_MEASURED) \
+    $(THREE_DECADES_CONFIG) | $(TOOLS)
 	@mkdir -p $(@D)
 	@$(RUN) $(COARSE_TOOL) estimate --config $(THREE_DECADES_CONFIG) --medium $< --soft $(word 2,$^) \
 	  $(foreach f,$(THREE_DECADES_MEASURED),--measured $(f)) --out $@

@@ -16,6 +16,7 @@ namespace {
 
 struct Size {
   double spheres = 0.0, error = 0.0, smallest = std::numeric_limits<double>::infinity();
+  double inside = 0.0, inside_error = 0.0;  ///< of those, the sites' sites' contents'
 };
 
 // Spheres and smallest grain of the medium's resolved model: its sites' contents counted when
@@ -31,8 +32,39 @@ Size resolved_size(const Medium& m) {
   for (std::size_t k = 0; k < m.sites.size(); ++k) {
     const SiteInside in = site_inside(m, k);  // InputError when nested and neither made nor sampled
     z.spheres += in.grains, z.error += in.grains_error, z.smallest = std::min(z.smallest, in.smallest_radius);
+    z.inside += in.grains, z.inside_error += in.grains_error;
   }
   return z;
+}
+
+// The engine's step for a resolved scene whose smallest grain has radius r.
+double resolved_step(const CoarseGrainSettings& s, double r) {
+  SceneDef one = engine_scene(s);
+  ParticleDef p;
+  p.r = r, p.material = 0;
+  one.particles.push_back(p);
+  return choose_time_step(one);
+}
+
+// The header's plan: the sites' sites' contents a levels deeper.
+DeeperPlan plan_deeper(const CoarseGrainSettings& s, const Medium& m, const Size& z, double simulated_time, double c, double c_error) {
+  DeeperPlan d;
+  d.levels_added = s.plan_levels_added;
+  if (d.levels_added == 0 || m.levels == 1 || m.sites.empty()) return d;
+  double sites = 0.0;
+  for (const auto& inner : m.inner_sites) sites += static_cast<double>(inner.size());
+  const double n = sites / static_cast<double>(m.sites.size());
+  const int D = m.levels - 1, a = d.levels_added;
+  d.sites_per_packing = n;
+  d.depth_ratio = std::abs(n - 1.0) < 1e-12 ? static_cast<double>(D + a) / D : (std::pow(n, D + a) - 1.0) / (std::pow(n, D) - 1.0);
+  d.spheres = z.spheres + (d.depth_ratio - 1.0) * z.inside;
+  d.spheres_error = z.error - z.inside_error + d.depth_ratio * z.inside_error;
+  d.smallest_radius = z.smallest / std::pow(s.packing.polydispersity, a);
+  d.dt = resolved_step(s, d.smallest_radius);
+  d.steps = simulated_time / d.dt;
+  d.cpu = d.spheres * d.steps * c;
+  d.cpu_error = d.cpu * std::hypot(d.spheres_error / d.spheres, c > 0.0 ? c_error / c : 0.0);
+  return d;
 }
 
 }  // namespace
@@ -49,11 +81,7 @@ ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m
   const Size z = resolved_size(m);
   e.spheres = z.spheres, e.spheres_error = z.error, e.smallest_radius = z.smallest;
   // The engine's step for the resolved scene: its smallest grain's (the shells and walls set none).
-  SceneDef one = engine_scene(s);
-  ParticleDef p;
-  p.r = e.smallest_radius, p.material = 0;
-  one.particles.push_back(p);
-  e.dt = choose_time_step(one);
+  e.dt = resolved_step(s, e.smallest_radius);
   e.simulated_time = static_cast<double>(soft.steps) * soft.dt;
   e.steps = e.simulated_time / e.dt;
   std::vector<double> c;
@@ -71,6 +99,7 @@ ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m
   e.cpu = e.spheres * e.steps * mean;
   e.cpu_error = e.cpu * std::hypot(e.spheres_error / e.spheres, mean > 0.0 ? e.cpu_per_sphere_step_error / mean : 0.0);
   e.soft_cpu = soft.cpu_seconds;
+  e.deeper = plan_deeper(s, m, z, e.simulated_time, mean, e.cpu_per_sphere_step_error);
   return e;
 }
 
@@ -102,6 +131,20 @@ std::string resolved_estimate_json(const ResolvedEstimate& e, const std::string&
             {"speed_up_estimate", {{"value", e.speed_up()}, {"error", e.cpu_error / e.soft_cpu}}},
             {"rule", "resolved CPU = spheres x (soft run's simulated time / resolved dt) x CPU per sphere-step of the measured "
                      "resolved runs (coarse/resolved_estimate.hpp)"}};
+  if (const DeeperPlan& d = e.deeper; d.levels_added > 0)
+    j["plan"] = {{"levels_added", d.levels_added},
+                 {"sites_per_packing", d.sites_per_packing},
+                 {"depth_ratio", d.depth_ratio},
+                 {"resolved_spheres", {{"value", d.spheres}, {"error", d.spheres_error}}},
+                 {"smallest_radius", q(d.smallest_radius, "m")},
+                 {"resolved_dt", q(d.dt, "s")},
+                 {"resolved_steps", d.steps},
+                 {"resolved_cpu_estimate", {{"value", d.cpu}, {"error", d.cpu_error}, {"unit", "s"}}},
+                 {"soft_cpu", q(e.soft_cpu, "s")},
+                 {"speed_up_estimate", {{"value", d.cpu / e.soft_cpu}, {"error", d.cpu_error / e.soft_cpu}}},
+                 {"rule", "the same medium with each site's soft-particle levels_added levels deeper at the same Pi: the sites' sites' "
+                          "grains times depth_ratio = (n^(D+a) - 1) / (n^D - 1), the step of the smallest grain / Pi^a, the same "
+                          "soft run (coarse/resolved_estimate.hpp)"}};
   return j.dump(1) + "\n";
 }
 

@@ -13,6 +13,13 @@
 //   cost      N n c, c the CPU seconds per sphere-step of resolved runs that did run (their CPU
 //             time / (spheres steps)), the mean over them
 //
+// The plan (settings `plan.levels_added` a, experiments/three-decades.yaml states the rule): the
+// same medium with each site's soft-particle a levels deeper at the same Π. Its soft run costs
+// this one's (the same explicit bodies, whose step it is); resolved, its sites' sites' contents
+// of D levels each (D = levels - 1) hold (n^(D+a) - 1) / (n^D - 1) times the grains, every level
+// holding as many grains and n sites as the one above (self-similar levels), n the mean sites of
+// the medium's own site packings; its step is the engine's for the smallest grain / Π^a.
+//
 // c is measured on media of one level, whose grains and contacts per grain are like the nested
 // medium's; an estimate, not a run. Its error is that of N's expected value (the sample's) and of
 // c over the runs, not the scatter of one resolved medium about it.
@@ -25,6 +32,18 @@
 
 namespace softpack {
 
+/// The resolved cost of the medium a levels deeper (the header's plan).
+struct DeeperPlan {
+  int levels_added = 0;            ///< a (0: no plan)
+  double sites_per_packing = 0.0;  ///< n
+  double depth_ratio = 0.0;        ///< (n^(D+a) - 1) / (n^D - 1)
+  double spheres = 0.0, spheres_error = 0.0;
+  double smallest_radius = 0.0;    ///< [m]
+  double dt = 0.0;                 ///< [s]
+  double steps = 0.0;
+  double cpu = 0.0, cpu_error = 0.0;  ///< [s]
+};
+
 struct ResolvedEstimate {
   double spheres = 0.0, spheres_error = 0.0;  ///< N (expected from the sample when the medium's contents are sampled)
   std::size_t content_sample = 0;  ///< the medium's (0: its contents made)
@@ -36,6 +55,7 @@ struct ResolvedEstimate {
   std::size_t measured_runs = 0;
   double cpu = 0.0, cpu_error = 0.0;  ///< N n c [s], its error from N's and c's
   double soft_cpu = 0.0;           ///< the soft run's, measured [s]
+  DeeperPlan deeper;               ///< the settings' plan (levels_added 0: none)
   double speed_up() const { return cpu / soft_cpu; }
 };
 

@@ -49,7 +49,7 @@ CoarseGrainSettings read_coarse_grain_settings(const std::string& path, const st
 CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std::string& root_dir) {
   root.allow_only({"coarse_grain"});
   const ConfigNode c = root.at("coarse_grain");
-  c.allow_only({"soft_particle", "medium", "compression", "seeds"});
+  c.allow_only({"soft_particle", "medium", "compression", "plan", "seeds"});
   CoarseGrainSettings s;
   {
     std::ostringstream text;
@@ -132,6 +132,14 @@ CoarseGrainSettings read_coarse_grain_settings(const ConfigNode& root, const std
   s.unload_strain = in_range(k.at("unload_strain"), 0.0, s.strain);
   s.record_strain = in_range(k.at("record_strain"), 0.0, s.strain, true);
   if (auto w = k.find("max_overlap_fraction")) s.max_overlap_fraction = in_range(*w, 0.0, 100.0, true);
+
+  if (auto plan = c.find("plan")) {
+    plan->allow_only({"levels_added"});
+    const ConfigNode a = plan->at("levels_added");
+    if (s.levels == 1)
+      a.fail(fmt::format("the sites hold no soft-particles ({}'s packing.levels is 1): there are no levels to add; remove `plan`", s.profile));
+    s.plan_levels_added = static_cast<int>(count_in(a, 1, 4));
+  }
 
   s.seeds = parse_seeds(c);
   return s;

@@ -54,6 +54,10 @@ struct CoarseGrainSettings {
   /// (packing/nested.hpp sample_contents; the soft model and the resolved estimate only); 0:
   /// every content made (docs/nested.md "What making the contents costs")
   long content_sample = 0;
+  /// `plan.levels_added` (levels > 1): the resolved estimate also plans this medium with each
+  /// site's soft-particle this many levels deeper at the same Π (coarse/resolved_estimate.hpp;
+  /// experiments/three-decades.yaml states the rule); 0: no plan
+  int plan_levels_added = 0;
 
   // Uniaxial (oedometric) compression by the top wall, then unloading.
   double speed = 0.0;          ///< [m/s]

@@ -51,6 +51,23 @@ e = json.load(open(sys.argv[1]))
 assert e['contents'].startswith('sampled: 8'), e['contents']
 assert e['resolved_spheres']['error'] > 0 and e['resolved_cpu_estimate']['error'] > 0, e
 " "$tmp/estimate.json" || fail "the estimate of a sampled medium: $(cat "$tmp/estimate.json")"
+# The four-decade plan (plan.levels_added): the same medium a level deeper, in the estimate only.
+printf '  plan:\n    levels_added: 1\n' > "$tmp/plan.txt"
+sed "/^  seeds:/e cat $tmp/plan.txt" "$tmp/nested.yaml" > "$tmp/nested-plan.yaml"
+grep -q '^    levels_added: 1$' "$tmp/nested-plan.yaml" || fail "the plan was not written"
+"$exe" estimate --config "$tmp/nested-plan.yaml" --medium "$tmp/nested-medium.h5" --soft "$tmp/runs/nested-soft-901.h5" \
+  --measured "$tmp/runs/resolved-901.h5" --out "$tmp/estimate-plan.json" --quiet
+python3 -c "
+import json, sys
+e, p = json.load(open(sys.argv[1])), json.load(open(sys.argv[1]))['plan']
+assert p['levels_added'] == 1 and p['depth_ratio'] > 1, p
+assert p['resolved_spheres']['value'] > e['resolved_spheres']['value'], p
+assert p['resolved_dt']['value'] < e['resolved_dt']['value'] and p['speed_up_estimate']['value'] > e['speed_up_estimate']['value'], p
+assert 'plan' not in json.load(open(sys.argv[2])), 'a plan without plan.levels_added'
+" "$tmp/estimate-plan.json" "$tmp/estimate.json" || fail "the plan: $(cat "$tmp/estimate-plan.json")"
+sed "/^  seeds:/e cat $tmp/plan.txt" "$config" > "$tmp/plan-one-level.yaml"
+expect_error "coarse_grain.plan.levels_added: the sites hold no soft-particles" "$tmp/x.h5" \
+  "$exe" medium --config "$tmp/plan-one-level.yaml" --seed 1 --out "$tmp/x.h5"
 sed 's/    content_sample: 8/    content_sample: 9/' "$tmp/nested.yaml" > "$tmp/nested-9.yaml"
 expect_error "made with other settings than" "$tmp/x.h5" \
   "$exe" run --config "$tmp/nested-9.yaml" --model soft --medium "$tmp/nested-medium.h5" --out "$tmp/x.h5"
@@ -81,6 +98,7 @@ same_but "$tmp/contact.yaml" "grain_contact" "soft"
 same_but "$tmp/locked.yaml" "rotation: locked" "soft"
 sed 's/    grain_contact: wall/    grain_contact: wall\n    rotation: free/' "$config" > "$tmp/free.yaml"
 same_but "$tmp/free.yaml" "rotation: free (the default, written out)" ""
+[[ $(stamps "$tmp/nested-plan.yaml") == $(stamps "$tmp/nested.yaml") ]] || fail "plan changed a stage's stamp (it is the estimate's)"
 sed 's/    speed: 0.05/    speed: 0.04/' "$config" > "$tmp/speed.yaml"
 same_but "$tmp/speed.yaml" "compression.speed" "resolved soft"
 sed 's/    grains: 12/    grains: 13/' "$config" > "$tmp/grains.yaml"

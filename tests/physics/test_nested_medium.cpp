@@ -20,15 +20,7 @@
 namespace softpack {
 namespace nested_medium_test {
 
-// The tiny medium's settings (quick profile, Π = 3) with its sites at two levels.
-const CoarseGrainSettings& nested() {
-  static const CoarseGrainSettings s = [] {
-    CoarseGrainSettings n = testing::coarse_grain_tiny();
-    n.levels = 2;
-    return n;
-  }();
-  return s;
-}
+const CoarseGrainSettings& nested() { return testing::coarse_grain_nested_tiny(); }
 
 const Medium& medium() {
   static const Medium m = build_medium(nested(), 901);
@@ -159,34 +151,6 @@ TEST(NestedMedium, BothModelsCompress) {
     EXPECT_GT(run.rows[6].sigma_top, 0.0) << name(model);
     EXPECT_NEAR(run.rows[6].strain, 0.06, 1e-3) << name(model);
   }
-}
-
-// The resolved model's cost estimate (coarse/resolved_estimate.hpp): N spheres, the engine's own
-// step for the resolved scene, the soft run's simulated time over it, the measured runs' mean CPU
-// time per sphere-step; a run of another medium or of the wrong model refused.
-TEST(NestedMedium, TheResolvedEstimateIsSpheresTimesStepsTimesTheMeasuredCost) {
-  const Medium& m = medium();
-  const SceneDef resolved = medium_scene(nested(), m, CoarseModel::resolved, laws());
-  CoarseResult soft;
-  soft.path = "soft.h5", soft.model = "soft", soft.steps = 1000, soft.dt = 1e-6, soft.cpu_seconds = 2.0;
-  soft.grains = static_cast<std::int64_t>(m.grain_x.size()), soft.sites = static_cast<std::int64_t>(m.sites.size());
-  CoarseResult a, b;
-  a.path = "a.h5", b.path = "b.h5", a.model = b.model = "resolved";
-  a.spheres = b.spheres = 100, a.steps = b.steps = 1000, a.cpu_seconds = 10.0, b.cpu_seconds = 30.0;  // 1e-4 and 3e-4 s
-  const ResolvedEstimate e = estimate_resolved(nested(), m, soft, {a, b});
-  EXPECT_EQ(e.spheres, static_cast<double>(resolved.particles.size()));
-  EXPECT_EQ(e.spheres_error, 0.0) << "every content made: counted";
-  EXPECT_NEAR(e.dt, Simulation(resolved).dt(), 1e-12 * e.dt) << "the engine's step for the whole resolved scene";
-  EXPECT_NEAR(e.steps, 1000 * 1e-6 / e.dt, 1e-9 * e.steps);
-  EXPECT_NEAR(e.cpu_per_sphere_step, 2e-4, 1e-15);
-  EXPECT_NEAR(e.cpu_per_sphere_step_error, 1e-4, 1e-15);
-  EXPECT_NEAR(e.cpu, static_cast<double>(e.spheres) * e.steps * 2e-4, 1e-9 * e.cpu);
-  EXPECT_NEAR(e.speed_up(), e.cpu / 2.0, 1e-9 * e.speed_up());
-  CoarseResult other = soft;
-  other.sites += 1;
-  EXPECT_THROW(estimate_resolved(nested(), m, other, {a}), InputError);
-  EXPECT_THROW(estimate_resolved(nested(), m, soft, {soft}), InputError);
-  EXPECT_THROW(estimate_resolved(nested(), m, soft, {}), InputError);
 }
 
 // sample_contents (packing/nested.hpp) by hand: the first M level-1 packings breadth first from
@@ -358,6 +322,12 @@ TEST(NestedMedium, ASampledMediumWeighsItsSitesSitesByTheMean) {
   EXPECT_LE(e.smallest_radius, c.smallest_radius);
   EXPECT_NEAR(e.cpu_error, e.cpu * e.spheres_error / e.spheres, 1e-9 * e.cpu) << "c measured twice the same: its error is 0";
   EXPECT_EQ(e.content_sample, 6u);
+  // Planned deeper, the sampled part and its error grow by the same ratio.
+  CoarseGrainSettings deeper = s;
+  deeper.plan_levels_added = 1;
+  const DeeperPlan d = estimate_resolved(deeper, back, run, {a, a}).deeper;
+  EXPECT_NEAR(d.spheres, exact_spheres + d.depth_ratio * n_all * c.grains, 1e-9 * d.spheres);
+  EXPECT_NEAR(d.spheres_error, d.depth_ratio * n_all * c.grains_error, 1e-9 * d.spheres_error);
 }
 
 }  // namespace nested_medium_test
