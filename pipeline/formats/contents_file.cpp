@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "formats/h5_fields.hpp"
+#include "io/file_lock.hpp"
 #include "io/sha256.hpp"
 
 namespace softpack {
@@ -128,6 +129,12 @@ std::vector<SiteContent> packing_contents(const PackingFile& p) {
   const std::size_t sites = p.sites.centres.size();
   if (p.path.empty()) return generate_contents(p.parameters, below, p.provenance.seed, sites);
   const std::string cache = p.path + ".contents.h5", key = sha256_of_file(p.path);
+  if (auto kept = read_contents_file(cache, key, below, sites)) return std::move(*kept);
+  // One maker per packing: the scenes of a packing run side by side (make -j) and each needs them;
+  // the others wait for the first and read what it kept.
+  const FileLock lock(cache + ".lock", [&] {
+    fmt::print(stderr, "contents: another process is making those of {}; waiting for it\n", p.path);
+  });
   if (auto kept = read_contents_file(cache, key, below, sites)) return std::move(*kept);
   // Making them takes minutes at the chain's level 0 (docs/nested.md): a line per site, with the
   // time left, on the standard error (a stage's log), as the sweep's notes.

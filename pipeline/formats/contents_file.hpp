@@ -6,7 +6,7 @@
 // made by the first scene that needs them and kept beside the packing file, and every later
 // scene reads them.
 //
-//   <packing>.contents.h5   (written atomically; HDF5)
+//   <packing>.contents.h5   (written atomically; HDF5; <packing>.contents.h5.lock: its maker's lock)
 //     key/packing_sha256    SHA-256 of the packing file's bytes: the contents are those of
 //                           exactly this packing (its parameters, seed, sites and generator)
 //     key/levels_below      the packing's levels - 1
@@ -32,7 +32,9 @@ namespace softpack {
 /// The contents of the sites of `p`, bit for bit generate_contents(p.parameters, levels - 1,
 /// seed, sites): read from p.path + ".contents.h5" when it holds this packing's, else made and
 /// written there (made only, when `p` was not read from a file), with a line per site made and
-/// the time left on the standard error. A packing without levels has none.
+/// the time left on the standard error. Processes that need them at once make them once: the
+/// first holds `<cache>.lock` (io/file_lock.hpp) while it makes them, the others wait and read
+/// them. A packing without levels has none.
 std::vector<SiteContent> packing_contents(const PackingFile& p);
 
 /// The file's contents when its key is `packing_sha256`, `levels_below` and `sites`; empty

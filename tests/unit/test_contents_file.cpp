@@ -7,12 +7,19 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <atomic>
 #include <fstream>
+#include <future>
+#include <optional>
+#include <thread>
+
+#include <unistd.h>
 
 #include "formats/contents_file.hpp"
 #include "formats/packing_file.hpp"
 #include "packing/nested.hpp"
 #include "packing/statistics.hpp"
+#include "io/file_lock.hpp"
 #include "io/sha256.hpp"
 #include "support/level_packing.hpp"
 #include "support/temp_dir.hpp"
@@ -102,6 +109,73 @@ TEST(ContentsFile, MakingThemSaysEachSiteDoneWithTheSameBits) {
   ::testing::internal::CaptureStderr();
   expect_same(packing_contents(p), made);  // read: nothing to say
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+}
+
+// The lock (io/file_lock.hpp) is the file's, not the thread's: a second holder waits, says so once
+// before it waits, and has it when the first lets go. (flock locks belong to an open file, so two
+// in one process exclude each other as two processes do.)
+TEST(FileLock, ASecondHolderWaitsForTheFirstAndSaysSo) {
+  const testing::TempDir dir("file-lock");
+  const std::string path = (dir.path / "x.lock").string();
+  std::optional<FileLock> first(std::in_place, path);
+  ASSERT_TRUE(first->held());
+  std::promise<void> waiting;
+  std::atomic<int> said{0};
+  std::atomic<bool> had{false};
+  std::thread second([&] {
+    const FileLock lock(path, [&] {
+      ++said;
+      waiting.set_value();
+    });
+    had = lock.held();
+  });
+  waiting.get_future().wait();  // the second is about to wait: the first still holds it
+  EXPECT_FALSE(had);
+  first.reset();
+  second.join();
+  EXPECT_TRUE(had);
+  EXPECT_EQ(said, 1);
+  const FileLock third(path, [] { ADD_FAILURE() << "nobody holds it: no wait"; });
+  EXPECT_TRUE(third.held());
+  EXPECT_FALSE(FileLock((dir.path / "no such folder" / "x.lock").string()).held()) << "a lock that cannot be had is not taken";
+}
+
+// A scene that finds another making its packing's contents waits, then reads what that one kept:
+// here the holder keeps the contents of another seed under this packing's key, which only a read
+// returns.
+TEST(ContentsFile, AProcessThatFindsThemBeingMadeWaitsAndReadsThem) {
+  const testing::TempDir dir("contents-file-lock");
+  const PackingFile p = read_packing_file(write_level(dir, "seed-76.h5", 76));
+  const std::size_t sites = p.sites.centres.size();
+  const std::string kept = p.path + ".contents.h5";
+  std::optional<FileLock> maker(std::in_place, kept + ".lock");
+  std::vector<SiteContent> other = generate_contents(p.parameters, 2, 77, sites);
+  ASSERT_NE(other.at(0).solid_volume(), generate_contents(p.parameters, 2, 76, sites).at(0).solid_volume())
+      << "the two seeds' contents must differ";
+  std::vector<SiteContent> got;
+  // Its standard error into a pipe, read until the line that says it waits: past its first look,
+  // it is at the lock (no timing).
+  int pipe_fds[2];
+  ASSERT_EQ(::pipe(pipe_fds), 0);
+  const int saved = ::dup(2);
+  ::dup2(pipe_fds[1], 2);
+  std::thread scene([&] {
+    got = packing_contents(p);
+    [[maybe_unused]] const auto n = ::write(pipe_fds[1], "\ndone\n", 6);  // (a maker that never waited ends the read)
+  });
+  std::string said;
+  char c;
+  while (said.find("waiting for it\n") == std::string::npos && said.find("\ndone\n") == std::string::npos &&
+         ::read(pipe_fds[0], &c, 1) == 1)
+    said += c;
+  ::dup2(saved, 2);
+  ::close(saved);
+  EXPECT_NE(said.find("contents: another process is making those of " + p.path), std::string::npos) << said;
+  write_contents_file(kept, sha256_of_file(p.path), 2, other);
+  maker.reset();
+  scene.join();
+  ::close(pipe_fds[1]), ::close(pipe_fds[0]);
+  expect_same(got, other);
 }
 
 TEST(ContentsFile, AnotherPackingsOrAnUnreadableFileIsMadeAgain) {
