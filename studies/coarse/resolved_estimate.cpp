@@ -118,6 +118,9 @@ std::string resolved_estimate_json(const ResolvedEstimate& e, const std::string&
             {"soft_spheres", soft.spheres},
             {"soft_steps", soft.steps},
             {"soft_dt", q(soft.dt, "s")},
+            // the soft run's contacts beyond the laws' measured range (forces/contact_models.hpp RangeStats)
+            {"soft_beyond_range", soft.beyond_range},
+            {"soft_max_dn", soft.max_dn},
             {"resolved_spheres", {{"value", e.spheres}, {"error", e.spheres_error}}},
             {"contents", e.content_sample > 0 ? fmt::format("sampled: {} level packings per level below (medium.content_sample)", e.content_sample)
                                               : std::string("made")},

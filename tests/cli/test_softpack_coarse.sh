@@ -50,6 +50,7 @@ import json, sys
 e = json.load(open(sys.argv[1]))
 assert e['contents'].startswith('sampled: 8'), e['contents']
 assert e['resolved_spheres']['error'] > 0 and e['resolved_cpu_estimate']['error'] > 0, e
+assert e['soft_beyond_range'] >= 0 and e['soft_max_dn'] >= 0, e  # (the tiny run's soft-particles meet nothing)
 " "$tmp/estimate.json" || fail "the estimate of a sampled medium: $(cat "$tmp/estimate.json")"
 # The four-decade plan (plan.levels_added): the same medium a level deeper, in the estimate only.
 printf '  plan:\n    levels_added: 1\n' > "$tmp/plan.txt"
