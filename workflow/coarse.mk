@@ -27,8 +27,13 @@ endif
 endif
 endif
 coarse_stamp = $(COARSE_DIR)/stamps/$(1).hash
+# A make that did not ask for the stamps (another goal whose prerequisites are runs, as the
+# three-decade medium's estimates, whose measured runs the line before made) has no rule for the
+# stamp files: an empty stamp would differ from every file's and remake every run.
+ifneq ($(COARSE_STAMPS),)
 $(foreach stage,medium resolved soft,$(eval $(call stamp_rule,$(call coarse_stamp,$(stage)),$(patsubst \
   $(stage)=%,%,$(filter $(stage)=%,$(COARSE_STAMPS))))))
+endif
 
 # The seeds (asked of the tool: make reads no YAML), once the tools are built.
 COARSE_SEEDS ?= $(shell test -x $(COARSE_TOOL) && $(COARSE_TOOL) seeds --config $(COARSE_CONFIG))
