@@ -13,12 +13,14 @@ in paper.tex outside a macro.
   --radius JSON   the radius study's report (make radius)
   --coarse JSON   the coarse-grain study's summary (make coarse-grain)
   --nested DIR    data/nested: the self-consistency test's level reports (make nested), levels 1 and 0
-  --chain DIR     data/three-decades: the three-decade chain's level reports that are committed
+  --chain DIR     data/three-decades: the three-decade chain's level reports that are committed, and
+                  the medium's estimates (medium/estimate/seed-S.json) when they are
 
 Macros are \\newcommand{\\vName}{text}; a file that is not given leaves its macros out, and
 LaTeX then stops at the first one the text uses (a missing result is an error, never a stale one).
 """
 import argparse
+import glob
 import json
 import math
 import os
@@ -199,6 +201,7 @@ def coarse_macros(m, path):
     m.math("vCoarseSpeedup", pm(j["speedup"]["mean"], j["speedup"]["error"]), path)
     m.math("vCoarseResolvedSpheres", thin(j["spheres"]["resolved"]), path)
     m.math("vCoarseBodies", str(j["bodies"]), path)
+    m.math("vCoarseMaxDn", sig(j["max_dn"], 2), path)  # the largest Δn its soft runs met
     m.add("vCoarseSeeds", ", ".join(str(s) for s in j["seeds"]), path)
 
 
@@ -247,6 +250,66 @@ def nested_macros(m, nested_dir, macro="vNested", levels=("1", "0"), committed_o
             if ratios:
                 m.math(name + "RatioMin", sig(min(ratios), 2), path)
                 m.math(name + "RatioMax", sig(max(ratios), 2), path)
+
+
+# The settings the three-decade medium runs on, level by level (docs/nested.md: the chain in the
+# many-body form): level 3 grains only, level 2's many-body setting, levels 1 and 0 nested on it.
+CHAIN_SETTINGS = {"3": "reference", "2": "many-body", "1": "reference", "0": "reference"}
+
+
+def medium_macros(m, chain_dir):
+    """The three-decade medium (make three-decades-medium, DATA/three-decades/medium/estimate/
+    seed-S.json, committed): its soft runs' CPU time, the resolved model's estimated spheres and
+    CPU time, the speed-up over the seeds (least and most), the four-decade plan's (the estimate's
+    `plan`), and what measuring the laws it runs on cost (the chain's levels' reports: packings and
+    stages of the settings it uses). Nothing before the estimates are committed."""
+    paths = sorted(glob.glob(os.path.join(chain_dir, "medium", "estimate", "seed-*.json")))
+    if not paths:
+        return
+    es = [load(p) for p in paths]
+    src = os.path.join(chain_dir, "medium", "estimate", "seed-*.json")
+    m.add("vMediumSeeds", ", ".join(str(e["seed"]) for e in es), src)
+    soft = [e["soft_cpu"]["value"] for e in es]
+    m.math("vMediumSoftCpuMin", sig(min(soft), 2), src)
+    m.math("vMediumSoftCpuMax", sig(max(soft), 2), src)
+    spheres = [e["resolved_spheres"]["value"] for e in es]
+    m.math("vMediumResolvedSpheresMin", sig(min(spheres), 2), src)
+    m.math("vMediumResolvedSpheresMax", sig(max(spheres), 2), src)
+    days = [e["resolved_cpu_estimate"]["value"] / 86400 for e in es]
+    m.math("vMediumResolvedCpuDaysMin", sig(min(days), 2), src)
+    m.math("vMediumResolvedCpuDaysMax", sig(max(days), 2), src)
+    # how far its soft-particles are pressed: the largest Δn its soft runs met, against the top of
+    # the range level 0's laws were measured over (both scenes' normal law)
+    m.math("vMediumMaxDnMin", sig(min(e["soft_max_dn"] for e in es), 2), src)
+    m.math("vMediumMaxDnMax", sig(max(e["soft_max_dn"] for e in es), 2), src)
+    laws0 = os.path.join(chain_dir, "level-0", "report", "reference", "laws.json")
+    top = min(sc["normal"]["delta_n_range"][1] for sc in load(laws0)["scenes"].values())
+    m.math("vMediumLawsDnTop", f"{top:g}", laws0)
+    up = [e["speed_up_estimate"]["value"] for e in es]
+    m.math("vMediumSpeedUpMin", sig(float(f"{min(up):.2g}"), 2), src)  # (sig keeps every digit below 10^5)
+    m.math("vMediumSpeedUpMax", sig(float(f"{max(up):.2g}"), 2), src)
+    plans = [e["plan"] for e in es if "plan" in e]
+    if len(plans) == len(es):
+        m.add("vMediumPlanLevels", str(plans[0]["levels_added"]), src)
+        ps = [p["resolved_spheres"]["value"] for p in plans]
+        m.math("vMediumPlanSpheresMin", sig(min(ps), 2), src)
+        m.math("vMediumPlanSpheresMax", sig(max(ps), 2), src)
+        pd = [p["resolved_cpu_estimate"]["value"] / 86400 / 365.25 for p in plans]
+        m.math("vMediumPlanCpuYearsMin", sig(min(pd), 2), src)
+        m.math("vMediumPlanCpuYearsMax", sig(max(pd), 2), src)
+        pu = [p["speed_up_estimate"]["value"] for p in plans]
+        m.math("vMediumPlanSpeedUpMin", sig(min(pu), 2), src)
+        m.math("vMediumPlanSpeedUpMax", sig(max(pu), 2), src)
+    laws, per_level = 0.0, []
+    for level, setting in CHAIN_SETTINGS.items():
+        path = os.path.join(chain_dir, f"level-{level}", "report", "nested.json")
+        st = load(path)["settings"].get(setting)
+        if st is None:
+            fail(f"{path}: no setting {setting!r}, which the medium's laws come from")
+        laws += st["cpu_packings"] + st["cpu_stages"]
+        per_level.append(st["cpu_packings"] + st["cpu_stages"])
+    m.math("vMediumLawsCpuHours", sig(laws / 3600, 2), os.path.join(chain_dir, "level-*", "report", "nested.json"))
+    m.math("vMediumLevelCpuHoursMax", sig(max(per_level) / 3600, 2), os.path.join(chain_dir, "level-*", "report", "nested.json"))
 
 
 def radius_macros(m, path):
@@ -299,6 +362,7 @@ def main():
         nested_macros(m, a.nested)
     if a.chain:
         nested_macros(m, a.chain, "vChain", ("3", "2", "1", "0"), committed_only=True)
+        medium_macros(m, a.chain)
     text = "% Generated by paper/variables.py from the result files named on each line; do not edit.\n" + "\n".join(m.lines) + "\n"
     # Written only when it changes: make runs this on every report build (the studies' committed
     # reports are read, not made, workflow/paper.mk), and the PDF is rebuilt only for new numbers.

@@ -16,7 +16,8 @@ STUDY_REPORTS := data/studies/density-rule/report/density-rule.json data/radius/
   data/coarse-grain/report/reference/summary.json data/coarse-grain/report/reference/curves.dat \
   data/studies/packing-density/report/packing-density.png data/nested/level-1/report/nested.json \
   data/nested/level-0/report/nested.json data/three-decades/level-3/report/nested.json \
-  data/three-decades/level-2/report/nested.json data/three-decades/level-1/report/nested.json
+  data/three-decades/level-2/report/nested.json data/three-decades/level-1/report/nested.json \
+  data/three-decades/level-0/report/nested.json
 
 # (In the select profile itself the file is its own table's, made by the tables rule.)
 ifneq ($(PROFILE),select)
