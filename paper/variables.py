@@ -52,7 +52,7 @@ def sig(x, digits=3):
     e = math.floor(math.log10(abs(x)))
     if -3 <= e < 5:
         d = max(0, digits - 1 - e)
-        return f"{x:.{d}f}"
+        return f"{round(x, digits - 1 - e):.{d}f}"  # (round: an integer part longer than `digits` too)
     m = x / 10**e
     return rf"{m:.{digits - 1}f}\times10^{{{e}}}"
 
@@ -286,8 +286,8 @@ def medium_macros(m, chain_dir):
     top = min(sc["normal"]["delta_n_range"][1] for sc in load(laws0)["scenes"].values())
     m.math("vMediumLawsDnTop", f"{top:g}", laws0)
     up = [e["speed_up_estimate"]["value"] for e in es]
-    m.math("vMediumSpeedUpMin", sig(float(f"{min(up):.2g}"), 2), src)  # (sig keeps every digit below 10^5)
-    m.math("vMediumSpeedUpMax", sig(float(f"{max(up):.2g}"), 2), src)
+    m.math("vMediumSpeedUpMin", sig(min(up), 2), src)
+    m.math("vMediumSpeedUpMax", sig(max(up), 2), src)
     plans = [e["plan"] for e in es if "plan" in e]
     if len(plans) == len(es):
         m.add("vMediumPlanLevels", str(plans[0]["levels_added"]), src)
@@ -300,16 +300,16 @@ def medium_macros(m, chain_dir):
         pu = [p["speed_up_estimate"]["value"] for p in plans]
         m.math("vMediumPlanSpeedUpMin", sig(min(pu), 2), src)
         m.math("vMediumPlanSpeedUpMax", sig(max(pu), 2), src)
-    laws, per_level = 0.0, []
+    per_level = []
     for level, setting in CHAIN_SETTINGS.items():
         path = os.path.join(chain_dir, f"level-{level}", "report", "nested.json")
         st = load(path)["settings"].get(setting)
         if st is None:
             fail(f"{path}: no setting {setting!r}, which the medium's laws come from")
-        laws += st["cpu_packings"] + st["cpu_stages"]
         per_level.append(st["cpu_packings"] + st["cpu_stages"])
-    m.math("vMediumLawsCpuHours", sig(laws / 3600, 2), os.path.join(chain_dir, "level-*", "report", "nested.json"))
-    m.math("vMediumLevelCpuHoursMax", sig(max(per_level) / 3600, 2), os.path.join(chain_dir, "level-*", "report", "nested.json"))
+    reports = os.path.join(chain_dir, "level-*", "report", "nested.json")
+    m.math("vMediumLawsCpuHours", sig(sum(per_level) / 3600, 2), reports)
+    m.math("vMediumLevelCpuHoursMax", sig(max(per_level) / 3600, 2), reports)
 
 
 def radius_macros(m, path):

@@ -16,7 +16,7 @@ namespace {
 
 struct Size {
   double spheres = 0.0, error = 0.0, smallest = std::numeric_limits<double>::infinity();
-  double inside = 0.0, inside_error = 0.0;  ///< of those, the sites' sites' contents'
+  double inside = 0.0;  ///< of those, the sites' sites' contents' (all of `error` is theirs)
 };
 
 // Spheres and smallest grain of the medium's resolved model: its sites' contents counted when
@@ -32,7 +32,7 @@ Size resolved_size(const Medium& m) {
   for (std::size_t k = 0; k < m.sites.size(); ++k) {
     const SiteInside in = site_inside(m, k);  // InputError when nested and neither made nor sampled
     z.spheres += in.grains, z.error += in.grains_error, z.smallest = std::min(z.smallest, in.smallest_radius);
-    z.inside += in.grains, z.inside_error += in.grains_error;
+    z.inside += in.grains;
   }
   return z;
 }
@@ -54,11 +54,14 @@ DeeperPlan plan_deeper(const CoarseGrainSettings& s, const Medium& m, const Size
   double sites = 0.0;
   for (const auto& inner : m.inner_sites) sites += static_cast<double>(inner.size());
   const double n = sites / static_cast<double>(m.sites.size());
+  // A content of L levels holds x (1 + n + ... + n^(L-1)) grains: the ratio of L = D + a to L = D.
   const int D = m.levels - 1, a = d.levels_added;
+  double deeper = 0.0, now = 0.0, level = 1.0;
+  for (int k = 0; k < D + a; ++k, level *= n) (k < D ? now : deeper) += level;
   d.sites_per_packing = n;
-  d.depth_ratio = std::abs(n - 1.0) < 1e-12 ? static_cast<double>(D + a) / D : (std::pow(n, D + a) - 1.0) / (std::pow(n, D) - 1.0);
+  d.depth_ratio = (now + deeper) / now;
   d.spheres = z.spheres + (d.depth_ratio - 1.0) * z.inside;
-  d.spheres_error = z.error - z.inside_error + d.depth_ratio * z.inside_error;
+  d.spheres_error = d.depth_ratio * z.error;
   d.smallest_radius = z.smallest / std::pow(s.packing.polydispersity, a);
   d.dt = resolved_step(s, d.smallest_radius);
   d.steps = simulated_time / d.dt;
@@ -143,11 +146,10 @@ std::string resolved_estimate_json(const ResolvedEstimate& e, const std::string&
                  {"resolved_dt", q(d.dt, "s")},
                  {"resolved_steps", d.steps},
                  {"resolved_cpu_estimate", {{"value", d.cpu}, {"error", d.cpu_error}, {"unit", "s"}}},
-                 {"soft_cpu", q(e.soft_cpu, "s")},
                  {"speed_up_estimate", {{"value", d.cpu / e.soft_cpu}, {"error", d.cpu_error / e.soft_cpu}}},
                  {"rule", "the same medium with each site's soft-particle levels_added levels deeper at the same Pi: the sites' sites' "
-                          "grains times depth_ratio = (n^(D+a) - 1) / (n^D - 1), the step of the smallest grain / Pi^a, the same "
-                          "soft run (coarse/resolved_estimate.hpp)"}};
+                          "grains times depth_ratio = (n^(D+a) - 1) / (n^D - 1), the step of the smallest grain / Pi^a, over the same "
+                          "soft run's soft_cpu (coarse/resolved_estimate.hpp)"}};
   return j.dump(1) + "\n";
 }
 

@@ -50,8 +50,11 @@ import json, sys
 e = json.load(open(sys.argv[1]))
 assert e['contents'].startswith('sampled: 8'), e['contents']
 assert e['resolved_spheres']['error'] > 0 and e['resolved_cpu_estimate']['error'] > 0, e
-assert e['soft_beyond_range'] >= 0 and e['soft_max_dn'] >= 0, e  # (the tiny run's soft-particles meet nothing)
-" "$tmp/estimate.json" || fail "the estimate of a sampled medium: $(cat "$tmp/estimate.json")"
+assert (e['soft_beyond_range'], e['soft_max_dn']) == (int(sys.argv[2]), float(sys.argv[3])), e  # the soft run's own
+" "$tmp/estimate.json" \
+  "$(h5dump -d /soft/beyond_range "$tmp/runs/nested-soft-901.h5" | sed -n 's/^ *(0): //p')" \
+  "$(h5dump -m %.17g -d /soft/max_dn "$tmp/runs/nested-soft-901.h5" | sed -n 's/^ *(0): //p')" \
+  || fail "the estimate of a sampled medium: $(cat "$tmp/estimate.json")"
 # The four-decade plan (plan.levels_added): the same medium a level deeper, in the estimate only.
 printf '  plan:\n    levels_added: 1\n' > "$tmp/plan.txt"
 sed "/^  seeds:/e cat $tmp/plan.txt" "$tmp/nested.yaml" > "$tmp/nested-plan.yaml"
@@ -60,7 +63,8 @@ grep -q '^    levels_added: 1$' "$tmp/nested-plan.yaml" || fail "the plan was no
   --measured "$tmp/runs/resolved-901.h5" --out "$tmp/estimate-plan.json" --quiet
 python3 -c "
 import json, sys
-e, p = json.load(open(sys.argv[1])), json.load(open(sys.argv[1]))['plan']
+e = json.load(open(sys.argv[1]))
+p = e['plan']
 assert p['levels_added'] == 1 and p['depth_ratio'] > 1, p
 assert p['resolved_spheres']['value'] > e['resolved_spheres']['value'], p
 assert p['resolved_dt']['value'] < e['resolved_dt']['value'] and p['speed_up_estimate']['value'] > e['speed_up_estimate']['value'], p

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "coarse/medium.hpp"
 #include "coarse/resolved_estimate.hpp"
@@ -46,6 +47,13 @@ TEST(NestedMedium, TheResolvedEstimateIsSpheresTimesStepsTimesTheMeasuredCost) {
   EXPECT_NEAR(e.cpu_per_sphere_step_error, 1e-4, 1e-15);
   EXPECT_NEAR(e.cpu, static_cast<double>(e.spheres) * e.steps * 2e-4, 1e-9 * e.cpu);
   EXPECT_NEAR(e.speed_up(), e.cpu / 2.0, 1e-9 * e.speed_up());
+  // The file names the soft run's contacts beyond the laws' range, as the run counted them.
+  CoarseResult pressed = soft;
+  pressed.beyond_range = 7, pressed.max_dn = 1.25;
+  const auto j = nlohmann::json::parse(resolved_estimate_json(e, "c.yaml", "m.h5", pressed, {a, b}));
+  EXPECT_EQ(j.at("soft_beyond_range").get<long>(), 7);
+  EXPECT_EQ(j.at("soft_max_dn").get<double>(), 1.25);
+  EXPECT_FALSE(j.contains("plan")) << "no plan without plan.levels_added";
   CoarseResult other = soft;
   other.sites += 1;
   EXPECT_THROW(estimate_resolved(nested(), m, other, {a}), InputError);
