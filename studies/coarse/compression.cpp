@@ -44,6 +44,17 @@ CurveRow curve_row(const Simulation& sim, const Medium& m, const std::vector<int
   return row;
 }
 
+double strain_within_laws(const std::vector<CurveRow>& rows) {
+  double within = std::numeric_limits<double>::quiet_NaN();
+  for (const CurveRow& row : rows) {
+    if (row.phase != 1) continue;
+    if (row.beyond_range < 0) return std::numeric_limits<double>::quiet_NaN();
+    if (row.beyond_range > 0) return std::isnan(within) ? -1.0 : within;
+    within = row.strain;
+  }
+  return within;
+}
+
 CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseModel model, const CoarseGrainSettings& s,
                                const std::function<void(double, double, const CurveRow&)>& progress,
                                const std::function<void(const Simulation&, const CurveRow&)>& observe) {
@@ -56,8 +67,16 @@ CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseMod
   const std::vector<int> body_of = sphere_bodies(m, model);
   const double H0 = m.H;
   const double total = s.strain + s.unload_strain + s.shear;
-  run.rows.push_back(curve_row(sim, m, body_of, H0, 1));
-  if (observe) observe(sim, run.rows.back());
+  // A row, with the soft contacts beyond the laws' range so far (soft model).
+  const auto record = [&](int sign) {
+    run.rows.push_back(curve_row(sim, m, body_of, H0, sign));
+    if (model == CoarseModel::soft) {
+      const RangeStats range = sim.force_field().range();
+      run.rows.back().beyond_range = range.beyond_range, run.rows.back().max_dn = range.max_dn;
+    }
+    if (observe) observe(sim, run.rows.back());
+  };
+  record(1);
   // Each row: the wall moves by record_strain (the last one by what is left), then, with
   // `relax`, stands while the medium comes to rest under the quench; then the row is recorded.
   const auto phase = [&](double strain, int sign) {
@@ -76,8 +95,7 @@ CompressionRun run_compression(const SceneDef& scene, const Medium& m, CoarseMod
         sim.run_for(s.relax);
         sim.set_quench(false);
       }
-      run.rows.push_back(curve_row(sim, m, body_of, H0, sign));
-      if (observe) observe(sim, run.rows.back());
+      record(sign);
       const double done = sign == 2 ? s.strain + s.unload_strain + run.rows.back().shear
                           : sign > 0 ? run.rows.back().strain
                                      : s.strain + (s.strain - run.rows.back().strain);

@@ -10,12 +10,16 @@
 //   bodies in contact: pairs of bodies (a first-decade grain, a soft-particle or a site's
 //                    packing) touching with a normal force > 0, by kind, and Z = 2 pairs / bodies
 //   kinetic, elastic energy [J]
+//   beyond_range     soft model: the soft contacts' evaluations beyond the laws' measured range up
+//                    to this row (-1: not counted: the resolved model); max_dn the largest Δn met
+//                    so far (NaN: not counted). The stress is Eq. 7's within its grid while 0.
 //
 // Then, with `shear`, the platen shear (phase 2): the top wall moves along +x, the rows add
 //   shear            the top wall's displacement along x / H0
 //   tau              the force the grains put on it along -x / L^2 [Pa] (the shear stress)
 #pragma once
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "coarse/medium.hpp"
@@ -34,7 +38,14 @@ struct CurveRow {
   long grain_grain = 0, grain_soft = 0, soft_soft = 0;  ///< bodies in contact, by kind
   double Z = 0.0;
   double kinetic = 0.0, elastic = 0.0;
+  long beyond_range = -1;  ///< soft model: evaluations beyond the laws' range so far (-1: not counted)
+  double max_dn = std::numeric_limits<double>::quiet_NaN();  ///< soft model: the largest Δn met so far
 };
+
+/// The last loading strain (phase 1) whose row counts no soft contact beyond the laws' range: where
+/// the soft model's stress is still within the measured laws. NaN when the rows do not count them
+/// (the resolved model, LAMMPS, a run from before the count); -1 when the first row already does.
+double strain_within_laws(const std::vector<CurveRow>& rows);
 
 struct CompressionRun {
   std::vector<CurveRow> rows;

@@ -9,12 +9,15 @@
 //               2 standard errors of the resolved model's seed-to-seed spread of the mean plus
 //               that of the soft model's (2 sqrt(se_a^2 + se_b^2)); the report states the largest
 //               loading strain up to which every point agrees;
+//   within the laws  the last loading strain before any seed's soft run evaluates a contact beyond
+//               the laws' measured range (its stress past it rests on Eq. 7 outside its grid);
 //   speed-up    CPU time of the resolved run / that of the soft run, per seed, and its mean;
 //   shear       (phase 2) the same on the grid of the top wall's displacement, with tau.
 //
 // Written to `out`: coarse-grain.md (the table, with what was compared), curves.dat (the columns
 // the figure draws, a block per phase) and summary.json.
 #pragma once
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +47,9 @@ struct CoarseComparison {
   MeanError mean_speedup;
   std::int64_t spheres[2] = {0, 0}, bodies = 0, beyond_range = 0;
   double max_dn = 0.0;
+  /// The last loading strain up to which no seed's soft run met a contact beyond the laws' range
+  /// (strain_within_laws, the smallest over the seeds): NaN when a run does not count them row by row.
+  double within_laws_strain = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The comparison of paired runs (resolved[k] and soft[k] of the same seed).

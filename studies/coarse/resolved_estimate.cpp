@@ -106,6 +106,21 @@ ResolvedEstimate estimate_resolved(const CoarseGrainSettings& s, const Medium& m
   return e;
 }
 
+namespace {
+
+// The last loading row with no soft contact yet beyond the laws' range: its strain and σzz (null
+// where the rows do not count them; strain -1 when the first row already does).
+nlohmann::json within_laws_json(const CoarseResult& soft) {
+  const double strain = strain_within_laws(soft.rows);
+  nlohmann::json j = {{"strain", std::isnan(strain) ? nlohmann::json(nullptr) : nlohmann::json(strain)}, {"sigma_zz", nullptr}};
+  for (const CurveRow& row : soft.rows)
+    if (row.phase == 1 && row.strain == strain) j["sigma_zz"] = {{"value", row.sigma_top}, {"unit", "Pa"}};
+  j["rule"] = "the last loading row whose /curve/beyond_range is 0 (coarse/compression.hpp strain_within_laws)";
+  return j;
+}
+
+}  // namespace
+
 std::string resolved_estimate_json(const ResolvedEstimate& e, const std::string& config, const std::string& medium, const CoarseResult& soft,
                                    const std::vector<CoarseResult>& measured) {
   using nlohmann::json;
@@ -124,6 +139,8 @@ std::string resolved_estimate_json(const ResolvedEstimate& e, const std::string&
             // the soft run's contacts beyond the laws' measured range (forces/contact_models.hpp RangeStats)
             {"soft_beyond_range", soft.beyond_range},
             {"soft_max_dn", soft.max_dn},
+            // where its stress is still within the measured laws (experiments/three-decades.yaml)
+            {"soft_within_laws", within_laws_json(soft)},
             {"resolved_spheres", {{"value", e.spheres}, {"error", e.spheres_error}}},
             {"contents", e.content_sample > 0 ? fmt::format("sampled: {} level packings per level below (medium.content_sample)", e.content_sample)
                                               : std::string("made")},

@@ -80,6 +80,13 @@ void write_coarse_result(const std::string& path, const CoarseResult& r) {
     for (const CurveRow& row : r.rows) v.push_back(static_cast<std::int64_t>(row.*member));
     put(f, std::string("curve/") + name, v);
   });
+  // The soft contacts beyond the laws' range row by row: only where the rows count them (soft model).
+  if (!r.rows.empty() && r.rows.front().beyond_range >= 0) {
+    std::vector<std::int64_t> beyond;
+    std::vector<double> max_dn;
+    for (const CurveRow& row : r.rows) beyond.push_back(row.beyond_range), max_dn.push_back(row.max_dn);
+    put(f, "curve/beyond_range", beyond), put(f, "curve/max_dn", max_dn);
+  }
   put(f, "medium/L", r.L), put(f, "medium/H", r.H), put(f, "medium/Rs", r.Rs);
   put(f, "medium/grains", r.grains), put(f, "medium/sites", r.sites), put(f, "medium/spheres", r.spheres), put(f, "medium/bodies", r.bodies);
   put(f, "medium/grains_volume", r.grains_volume), put(f, "medium/packings_volume", r.packings_volume);
@@ -127,6 +134,15 @@ CoarseResult read_coarse_result(const std::string& path) {
     formats::same_length(f, std::string("curve/") + name, v.size(), "curve/strain", strain.size());
     for (std::size_t k = 0; k < v.size(); ++k) r.rows[k].*member = static_cast<std::remove_reference_t<decltype(r.rows[k].*member)>>(v[k]);
   });
+  // Counted row by row by the soft model's runs since the count was added; otherwise -1 and NaN.
+  if (f.exists("curve/beyond_range")) {
+    std::vector<std::int64_t> beyond;
+    std::vector<double> max_dn;
+    get(f, "curve/beyond_range", beyond), get(f, "curve/max_dn", max_dn);
+    formats::same_length(f, "curve/beyond_range", beyond.size(), "curve/strain", strain.size());
+    formats::same_length(f, "curve/max_dn", max_dn.size(), "curve/strain", strain.size());
+    for (std::size_t k = 0; k < beyond.size(); ++k) r.rows[k].beyond_range = static_cast<long>(beyond[k]), r.rows[k].max_dn = max_dn[k];
+  }
   get(f, "medium/L", r.L), get(f, "medium/H", r.H), get(f, "medium/Rs", r.Rs);
   get(f, "medium/grains", r.grains), get(f, "medium/sites", r.sites), get(f, "medium/spheres", r.spheres), get(f, "medium/bodies", r.bodies);
   get(f, "medium/grains_volume", r.grains_volume), get(f, "medium/packings_volume", r.packings_volume);

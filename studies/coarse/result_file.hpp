@@ -3,6 +3,8 @@
 //
 //   /curve/{strain, phase, sigma_top, sigma_bottom, sigma_lateral, fraction, grain_grain,
 //           grain_soft, soft_soft, Z, kinetic, elastic, shear, tau} one row per increment
+//   /curve/{beyond_range, max_dn}  soft model: the contacts beyond the laws' range so far, each row
+//                                  (absent in a run from before the count, and in resolved runs)
 //   /medium/{L, H, Rs, grains, sites, spheres, bodies, grains_volume, packings_volume,
 //            target_volume, packing_seeds}
 //   /soft/{beyond_range, max_dn}                                  (soft model)

@@ -144,9 +144,25 @@ TEST(CoarseGrain, ACompressionOfEitherModelWritesAFileThatReadsBack) {
     EXPECT_EQ(run.rows.back().phase, 2);
     EXPECT_NEAR(run.rows.back().shear, 0.02, 1e-3);
     EXPECT_NEAR(run.rows.back().strain, 0.05, 1e-3) << "the shear keeps the axial strain";
+    // The soft model counts its contacts beyond the laws' range row by row, as the run's total at its end.
+    for (std::size_t k = 0; k < run.rows.size(); ++k) {
+      if (model == CoarseModel::resolved) {
+        EXPECT_EQ(run.rows[k].beyond_range, -1);
+        EXPECT_TRUE(std::isnan(run.rows[k].max_dn));
+        continue;
+      }
+      EXPECT_GE(run.rows[k].beyond_range, k ? run.rows[k - 1].beyond_range : 0L);
+      EXPECT_GE(run.rows[k].max_dn, k ? run.rows[k - 1].max_dn : 0.0);
+    }
+    if (model == CoarseModel::soft) {
+      EXPECT_EQ(run.rows.back().beyond_range, run.soft.beyond_range);
+      EXPECT_EQ(run.rows.back().max_dn, run.soft.max_dn);
+    }
     const std::string path = dir + "/" + name(model) + ".h5";
     write_coarse_result(path, coarse_result(run, back.medium, model, 901, tiny()));
     const CoarseResult r = read_coarse_result(path);
+    EXPECT_EQ(r.rows[5].beyond_range, run.rows[5].beyond_range) << "read back; -1 where not counted";
+    EXPECT_EQ(std::isnan(r.rows[5].max_dn), model == CoarseModel::resolved);
     EXPECT_EQ(r.model, name(model));
     EXPECT_EQ(r.rows.size(), run.rows.size());
     EXPECT_EQ(r.rows.back().sigma_top, run.rows.back().sigma_top);
@@ -208,6 +224,16 @@ TEST(CoarseGrain, TheComparisonFindsWhereTheCurvesPart) {
   EXPECT_NEAR(c.points[3].sigma[0].error, 10.0, 1e-9);  // two seeds at +-10: standard error 10
   EXPECT_NEAR(c.points[3].K0[1].mean, 0.3, 1e-12);
   EXPECT_NEAR(c.mean_speedup.mean, 75.0, 1e-9);
+  EXPECT_TRUE(std::isnan(c.within_laws_strain)) << "the rows do not count the contacts beyond the laws";
+  // Seed 900's soft run meets a contact beyond the laws' range from strain 0.07, seed 901's from 0.09:
+  // within the laws up to 0.06 (the last row before the first).
+  for (int s = 0; s < 2; ++s)
+    for (CurveRow& row : soft[s].rows) row.beyond_range = row.strain > (s ? 0.085 : 0.065) ? 3 : 0, row.max_dn = 0.5;
+  EXPECT_NEAR(strain_within_laws(soft[1].rows), 0.08, 1e-12);
+  EXPECT_NEAR(compare_coarse(resolved, soft, 0.1, 0.0, 0.01).within_laws_strain, 0.06, 1e-12);
+  soft[1].rows.front().beyond_range = 1;
+  EXPECT_EQ(strain_within_laws(soft[1].rows), -1.0) << "beyond from the first row";
+  EXPECT_EQ(compare_coarse(resolved, soft, 0.1, 0.0, 0.01).within_laws_strain, -1.0);
 }
 
 }  // namespace

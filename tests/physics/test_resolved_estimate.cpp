@@ -53,6 +53,16 @@ TEST(NestedMedium, TheResolvedEstimateIsSpheresTimesStepsTimesTheMeasuredCost) {
   const auto j = nlohmann::json::parse(resolved_estimate_json(e, "c.yaml", "m.h5", pressed, {a, b}));
   EXPECT_EQ(j.at("soft_beyond_range").get<long>(), 7);
   EXPECT_EQ(j.at("soft_max_dn").get<double>(), 1.25);
+  EXPECT_TRUE(j.at("soft_within_laws").at("strain").is_null()) << "rows that do not count them";
+  // Rows that count them: beyond from the third loading row on, so within the laws up to the second.
+  for (int k = 0; k < 4; ++k) {
+    CurveRow row;
+    row.strain = 0.01 * k, row.sigma_top = 100.0 * k, row.beyond_range = k >= 2 ? 7 : 0, row.max_dn = 0.3 * k;
+    pressed.rows.push_back(row);
+  }
+  const auto w = nlohmann::json::parse(resolved_estimate_json(e, "c.yaml", "m.h5", pressed, {a, b})).at("soft_within_laws");
+  EXPECT_EQ(w.at("strain").get<double>(), 0.01);
+  EXPECT_EQ(w.at("sigma_zz").at("value").get<double>(), 100.0);
   EXPECT_FALSE(j.contains("plan")) << "no plan without plan.levels_added";
   CoarseResult other = soft;
   other.sites += 1;
