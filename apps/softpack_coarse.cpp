@@ -86,7 +86,14 @@ int run(const RunOptions& o, const std::string& program) {
   if (mf.settings != s.medium_text)
     throw InputError(fmt::format("{}: made with other settings than {} (rerun softpack-coarse medium)", o.medium, o.config));
   Medium m = mf.medium;
-  medium_contents(s, m);  // nested soft-particles: the sites' contents, from their seeds
+  const Stopwatch contents_clock;  // nested soft-particles: the sites' contents, from their seeds (minutes)
+  medium_contents(s, m, [&](std::size_t done, std::size_t sites) {
+    if (o.quiet) return;
+    const double t = contents_clock.elapsed().wall;
+    fmt::print(stderr, "{}{} seed {} {}: contents of site {} of {} made ({:.0f} s, ETA {:.0f} s){}", l.cr(), program, mf.seed, o.model, done, sites, t,
+               t / static_cast<double>(done) * static_cast<double>(sites - done), l.nl());
+  });
+  if (!o.quiet && !m.contents.empty() && l.tty) fmt::print(stderr, "\n");  // ends the line the progress rewrote
   const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
   const SceneDef scene = medium_scene(s, m, model, laws);
   if (!o.quiet)

@@ -113,7 +113,7 @@ Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const Medi
   return m;
 }
 
-void medium_contents(const CoarseGrainSettings& s, Medium& m) {
+void medium_contents(const CoarseGrainSettings& s, Medium& m, const std::function<void(std::size_t, std::size_t)>& progress) {
   if (m.levels != s.levels)
     throw InputError(fmt::format("the medium's sites have {} levels and the settings' packing {} (soft_particle.profile's "
                                  "packing.levels): make the medium again",
@@ -124,8 +124,10 @@ void medium_contents(const CoarseGrainSettings& s, Medium& m) {
                                  s.content_sample));
   m.contents.clear();
   if (m.levels == 1 || m.content_mean.sample > 0) return;
-  for (std::size_t k = 0; k < m.sites.size(); ++k)
+  for (std::size_t k = 0; k < m.sites.size(); ++k) {
     m.contents.push_back(generate_contents(s.packing, s.levels - 1, m.packing_seeds[k], m.inner_sites[k].size()));
+    if (progress) progress(k + 1, m.sites.size());
+  }
 }
 
 SiteInside site_inside(const Medium& m, std::size_t k) {

@@ -24,6 +24,7 @@
 // site's shell (measure/content_scene.hpp), the soft one gives the soft-particle the mass of
 // everything inside it resolved.
 #pragma once
+#include <functional>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -70,8 +71,9 @@ Medium build_medium(const CoarseGrainSettings& s, std::uint64_t seed, const Medi
 /// Makes `m.contents` from the sites' seeds and `m.inner_sites` (levels > 1 without
 /// content_sample; nothing otherwise): a medium read from its file has the sites' sites, not
 /// their contents. InputError when the settings' packing.levels or content_sample is not the
-/// medium's.
-void medium_contents(const CoarseGrainSettings& s, Medium& m);
+/// medium's. `progress(sites made, sites)` after each site's content (making them all takes minutes
+/// at two levels: a level packing a second or so).
+void medium_contents(const CoarseGrainSettings& s, Medium& m, const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 /// What site k's own sites hold at every level below: their contents' when made (errors 0), else
 /// its number of sites times the sampled mean (errors the same times the mean's). Zero at one level.
