@@ -9,7 +9,8 @@ PAPER_PDF := $(PAPER_BUILD)/paper.pdf
 # what the preregistered rules chose on the held-out seeds: the select profile's verdict (its
 # tables, reused from its archive when the stamps match, as the profile's own). The studies'
 # reports are the committed ones (data/studies/*/report, data/radius/report, data/coarse-grain/report/reference,
-# data/nested/level-*/report, data/three-decades/level-*/report)
+# data/nested/level-*/report, data/three-decades/level-*/report, data/nested-medium/report,
+# data/many-body-v6/report)
 PAPER_VARIABLES := $(PAPER_BUILD)/generated/variables.tex
 SELECT_VERDICT := $(DATA)/select/tables/verdict.json
 STUDY_REPORTS := data/studies/density-rule/report/density-rule.json data/radius/report/radius.json \
@@ -17,7 +18,8 @@ STUDY_REPORTS := data/studies/density-rule/report/density-rule.json data/radius/
   data/studies/packing-density/report/packing-density.png data/nested/level-1/report/nested.json \
   data/nested/level-0/report/nested.json data/three-decades/level-3/report/nested.json \
   data/three-decades/level-2/report/nested.json data/three-decades/level-1/report/nested.json \
-  data/three-decades/level-0/report/nested.json
+  data/three-decades/level-0/report/nested.json data/nested-medium/report/coarse.json \
+  data/nested-medium/report/reference/summary.json data/many-body-v6/report/coarse.json
 
 # (In the select profile itself the file is its own table's, made by the tables rule.)
 ifneq ($(PROFILE),select)
@@ -37,7 +39,8 @@ paper-variables: $(TABLES) $(SELECT_VERDICT)
 	@for r in $(STUDY_REPORTS); do [ -f $$r ] || { echo "paper: $$r is missing (a committed study report; git checkout it, or rerun its study)" >&2; exit 2; }; done
 	@mkdir -p $(dir $(PAPER_VARIABLES)) && python3 paper/variables.py --out $(PAPER_VARIABLES) --profile $(DATA)/$(PROFILE) --select $(DATA)/select \
 	  --density data/studies/density-rule/report/density-rule.json --radius data/radius/report/radius.json \
-	  --coarse data/coarse-grain/report/reference/summary.json --nested data/nested --chain data/three-decades
+	  --coarse data/coarse-grain/report/reference/summary.json --nested data/nested --chain data/three-decades \
+	  --nested-medium data/nested-medium/report --one-level data/many-body-v6/report/coarse.json
 $(PAPER_VARIABLES): paper-variables ;
 
 .PHONY: paper
