@@ -347,6 +347,8 @@ def nested_medium_macros(m, report, one_level):
     m.math("vNestedMediumCpuResolved", sig(sum(j["cpu_seconds"]["resolved"]) / len(j["cpu_seconds"]["resolved"]), 2), summary)
     m.math("vNestedMediumMaxDn", sig(j["max_dn"], 2), summary)
     m.add("vNestedMediumBeyond", str(j["beyond_range"]), summary)
+    if j.get("within_laws_strain") is not None:
+        m.math("vNestedMediumWithinStrain", f"{j['within_laws_strain']:.3f}", summary)
     one = {r["setting"]: r for r in load(one_level)["rows"]}.get("many-body")
     if one is None:
         fail(f"{one_level}: no setting 'many-body'")
