@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/coarse_medium_cli.hpp"
 #include "coarse/medium_file.hpp"
 #include "coarse/resolved_estimate.hpp"
 #include "coarse/result_file.hpp"
@@ -41,10 +42,7 @@ struct EstimateCommand {
     if (!*cmd) return false;
     const CoarseGrainSettings s = read_coarse_grain_settings(config);
     const MediumFile mf = read_medium_file(medium);
-    if (mf.settings != s.medium_text)
-      throw InputError(fmt::format("{}: made with other settings than {} (rerun softpack-coarse medium)", medium, config));
-    Medium m = mf.medium;
-    medium_contents(s, m);
+    const Medium m = medium_with_contents(s, config, mf, medium, fmt::format("softpack-coarse estimate seed {}", mf.seed), quiet);
     const CoarseResult soft_run = read_coarse_result(soft);
     std::vector<CoarseResult> runs;
     for (const std::string& p : measured) runs.push_back(read_coarse_result(p));

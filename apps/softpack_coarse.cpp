@@ -10,10 +10,10 @@
 // report: report kind `coarse`).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include "apps/coarse_estimate_cli.hpp"
 #include "apps/coarse_lammps_cli.hpp"
+#include "apps/coarse_medium_cli.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "coarse/compression.hpp"
@@ -38,12 +38,6 @@ struct RunOptions {
   std::string config, model, medium, out;
   std::uint64_t seed = 0;
   bool quiet = false;
-};
-
-struct Lines {
-  bool tty = ::isatty(STDERR_FILENO) != 0;
-  const char* cr() const { return tty ? "\r\033[K" : ""; }
-  const char* nl() const { return tty ? "" : "\n"; }
 };
 
 int medium(const RunOptions& o, const std::string& program) {
@@ -83,17 +77,7 @@ int run(const RunOptions& o, const std::string& program) {
   const CoarseModel model = parse_coarse_model(o.model);
   const Lines l;
   const MediumFile mf = read_medium_file(o.medium);
-  if (mf.settings != s.medium_text)
-    throw InputError(fmt::format("{}: made with other settings than {} (rerun softpack-coarse medium)", o.medium, o.config));
-  Medium m = mf.medium;
-  const Stopwatch contents_clock;  // nested soft-particles: the sites' contents, from their seeds (minutes)
-  medium_contents(s, m, [&](std::size_t done, std::size_t sites) {
-    if (o.quiet) return;
-    const double t = contents_clock.elapsed().wall;
-    fmt::print(stderr, "{}{} seed {} {}: contents of site {} of {} made ({:.0f} s, ETA {:.0f} s){}", l.cr(), program, mf.seed, o.model, done, sites, t,
-               t / static_cast<double>(done) * static_cast<double>(sites - done), l.nl());
-  });
-  if (!o.quiet && !m.contents.empty() && l.tty) fmt::print(stderr, "\n");  // ends the line the progress rewrote
+  Medium m = medium_with_contents(s, o.config, mf, o.medium, fmt::format("{} seed {} {}", program, mf.seed, o.model), o.quiet);
   const SoftParticleLaws laws = read_soft_particle_laws("coarse_grain.soft_particle", s.laws, s.many_body);
   const SceneDef scene = medium_scene(s, m, model, laws);
   if (!o.quiet)
