@@ -321,6 +321,23 @@ def medium_macros(m, chain_dir):
     m.math("vMediumLevelCpuHoursMax", sig(max(per_level) / 3600, 2), reports)
 
 
+def loading_ratio(curves, strain):
+    """σzz soft / resolved of a coarse report's curves.dat at the last loading row at or below
+    `strain`, with its error from the two means' standard errors (not paired), and that row's strain."""
+    best = None
+    for line in open(curves):
+        f = line.split()
+        if line.startswith("#") or len(f) < 6 or f[1] != "1":
+            continue
+        e, res, res_se, soft, soft_se = (float(x) for x in (f[0], f[2], f[3], f[4], f[5]))
+        if e <= strain + 1e-9 and res > 0:
+            r = soft / res
+            best = (r, r * math.hypot(soft_se / soft if soft > 0 else 0.0, res_se / res), e)
+    if best is None:
+        fail(f"{curves}: no loading row with a resolved stress at or below strain {strain}")
+    return best
+
+
 def nested_medium_macros(m, report, one_level):
     """Soft against resolved at Π = √10 (make nested-medium, experiments/nested-medium.yaml): the
     coarse report's reference setting (the chain's level-2 soft-particles in the many-body form) and
@@ -347,8 +364,26 @@ def nested_medium_macros(m, report, one_level):
     m.math("vNestedMediumCpuResolved", sig(sum(j["cpu_seconds"]["resolved"]) / len(j["cpu_seconds"]["resolved"]), 2), summary)
     m.math("vNestedMediumMaxDn", sig(j["max_dn"], 2), summary)
     m.add("vNestedMediumBeyond", str(j["beyond_range"]), summary)
-    if j.get("within_laws_strain") is not None:
-        m.math("vNestedMediumWithinStrain", f"{j['within_laws_strain']:.3f}", summary)
+    within = j.get("within_laws_strain")
+    if within is not None:
+        m.math("vNestedMediumWithinStrain", f"{within:.3f}", summary)
+        # the stress is a result up to there (experiments/nested-medium.yaml): the ratio at that strain,
+        # the pairwise setting's at its own, and the one-level medium's (within its laws throughout:
+        # its soft runs met no contact beyond them) at the same strain
+        curves = os.path.join(report, "reference", "curves.dat")
+        r, err, _ = loading_ratio(curves, within)
+        m.math("vNestedMediumWithinRatio", pm(r, err), curves)
+        pair = os.path.join(report, "pairwise", "summary.json")
+        if os.path.exists(pair) and load(pair).get("within_laws_strain") is not None:
+            pw = load(pair)["within_laws_strain"]
+            r, err, _ = loading_ratio(os.path.join(report, "pairwise", "curves.dat"), pw)
+            m.math("vNestedMediumPairwiseWithinRatio", pm(r, err), pair)
+            m.math("vNestedMediumPairwiseWithinStrain", f"{pw:.3f}", pair)
+        one_dir = os.path.join(os.path.dirname(one_level), "many-body")
+        if load(os.path.join(one_dir, "summary.json"))["beyond_range"] != 0:
+            fail(f"{one_dir}/summary.json: the one-level medium's soft runs met contacts beyond their laws")
+        r, err, _ = loading_ratio(os.path.join(one_dir, "curves.dat"), within)
+        m.math("vOneLevelManyBodyWithinRatio", pm(r, err), os.path.join(one_dir, "curves.dat"))
     one = {r["setting"]: r for r in load(one_level)["rows"]}.get("many-body")
     if one is None:
         fail(f"{one_level}: no setting 'many-body'")

@@ -19,7 +19,10 @@ STUDY_REPORTS := data/studies/density-rule/report/density-rule.json data/radius/
   data/nested/level-0/report/nested.json data/three-decades/level-3/report/nested.json \
   data/three-decades/level-2/report/nested.json data/three-decades/level-1/report/nested.json \
   data/three-decades/level-0/report/nested.json data/nested-medium/report/coarse.json \
-  data/nested-medium/report/reference/summary.json data/many-body-v6/report/coarse.json
+  data/nested-medium/report/reference/summary.json data/nested-medium/report/reference/curves.dat \
+  data/nested-medium/report/pairwise/summary.json data/nested-medium/report/pairwise/curves.dat \
+  data/many-body-v6/report/coarse.json data/many-body-v6/report/many-body/summary.json \
+  data/many-body-v6/report/many-body/curves.dat
 
 # (In the select profile itself the file is its own table's, made by the tables rule.)
 ifneq ($(PROFILE),select)
