@@ -181,19 +181,22 @@ def thin(x):
     return f"{x:,.0f}".replace(",", r"\,")
 
 
+def curve_rows(curves):
+    """A coarse report's curves.dat (coarse/report.cpp): each row's strain, phase, σzz resolved and
+    its standard error, σzz soft and its standard error."""
+    for line in open(curves):
+        f = line.split()
+        if line.startswith("#") or len(f) < 6:
+            continue
+        yield float(f[0]), int(f[1]), float(f[2]), float(f[3]), float(f[4]), float(f[5])
+
+
 def coarse_macros(m, path):
     j = load(path)
     # The axial stress the soft-particle medium carries, as a fraction of the resolved one, over the
     # compression (phase 1) and unloading (phase -1) from a strain of 0.02 on (curves.dat beside).
     curves = os.path.join(os.path.dirname(path), "curves.dat")
-    ratios = []
-    for line in open(curves):
-        f = line.split()
-        if line.startswith("#") or len(f) < 6 or f[1] == "2":
-            continue
-        strain, res, soft = float(f[0]), float(f[2]), float(f[4])
-        if strain >= 0.02 and res > 0:
-            ratios.append(soft / res)
+    ratios = [soft / res for strain, phase, res, _, soft, _ in curve_rows(curves) if phase != 2 and strain >= 0.02 and res > 0]
     if ratios:
         m.math("vCoarseStressMin", sig(min(ratios), 2), curves)
         m.math("vCoarseStressMax", sig(max(ratios), 2), curves)
@@ -325,12 +328,8 @@ def loading_ratio(curves, strain):
     """σzz soft / resolved of a coarse report's curves.dat at the last loading row at or below
     `strain`, with its error from the two means' standard errors (not paired), and that row's strain."""
     best = None
-    for line in open(curves):
-        f = line.split()
-        if line.startswith("#") or len(f) < 6 or f[1] != "1":
-            continue
-        e, res, res_se, soft, soft_se = (float(x) for x in (f[0], f[2], f[3], f[4], f[5]))
-        if e <= strain + 1e-9 and res > 0:
+    for e, phase, res, res_se, soft, soft_se in curve_rows(curves):
+        if phase == 1 and e <= strain + 1e-9 and res > 0:
             r = soft / res
             best = (r, r * math.hypot(soft_se / soft if soft > 0 else 0.0, res_se / res), e)
     if best is None:
@@ -363,7 +362,6 @@ def nested_medium_macros(m, report, one_level):
     m.math("vNestedMediumResolvedSpheres", thin(j["spheres"]["resolved"]), summary)
     m.math("vNestedMediumCpuResolved", sig(sum(j["cpu_seconds"]["resolved"]) / len(j["cpu_seconds"]["resolved"]), 2), summary)
     m.math("vNestedMediumMaxDn", sig(j["max_dn"], 2), summary)
-    m.add("vNestedMediumBeyond", str(j["beyond_range"]), summary)
     within = j.get("within_laws_strain")
     if within is not None:
         m.math("vNestedMediumWithinStrain", f"{within:.3f}", summary)
