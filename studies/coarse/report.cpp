@@ -60,6 +60,14 @@ double at_strain(const CoarseResult& r, int phase, double strain, Get get, doubl
   return kNaN;
 }
 
+// The same values, NaN for NaN.
+bool same_values(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    if (!(a[k] == b[k] || (std::isnan(a[k]) && std::isnan(b[k])))) return false;
+  return true;
+}
+
 }  // namespace
 
 CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const std::vector<CoarseResult>& soft, double strain,
@@ -84,6 +92,7 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
       for (const CoarseResult& r : *runs[m]) {
         const double s = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol);
         const double lat = at_strain(r, phase, e, [](const CurveRow& w) { return w.sigma_lateral; }, tol);
+        p.sigma_seed[m].push_back(s);
         if (!std::isfinite(s)) continue;
         sigma.push_back(s);
         if (s > 0.0) K0.push_back(lat / s);
@@ -121,6 +130,38 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
   c.mean_speedup = seeds_mean_error(c.speedup);
   if (!resolved.empty()) c.spheres[0] = resolved[0].spheres, c.spheres[1] = soft[0].spheres, c.bodies = resolved[0].bodies;
   return c;
+}
+
+std::optional<PairedShift> paired_shift(const CoarseComparison& base, const CoarseComparison& c, std::string* why) {
+  const auto none = [&](const std::string& reason) -> std::optional<PairedShift> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
+  if (c.seeds != base.seeds) return none("not the same media seeds");
+  if (c.points.size() != base.points.size()) return none("not the same recorded strains");
+  if (std::isnan(c.within_laws_strain) || std::isnan(base.within_laws_strain)) return none("a soft run does not count its contacts beyond the laws");
+  PairedShift out;
+  out.strain = std::min(c.within_laws_strain, base.within_laws_strain);
+  if (out.strain < 0.0) return none("a soft run meets a contact beyond its laws from its first row");
+  const CoarsePoint* at = nullptr;
+  for (std::size_t k = 0; k < c.points.size(); ++k) {
+    const CoarsePoint &p = c.points[k], &b = base.points[k];
+    if (p.phase != 1) continue;
+    if (!same_values(p.sigma_seed[0], b.sigma_seed[0])) return none(fmt::format("not the same resolved runs (σzz at strain {:.3f})", p.strain));
+    if (std::abs(p.strain - out.strain) <= 1e-9) at = &p;
+  }
+  if (!at) return none(fmt::format("no loading point at strain {}", out.strain));
+  const CoarsePoint& b = base.points[static_cast<std::size_t>(at - c.points.data())];
+  std::vector<double> q;
+  for (std::size_t s = 0; s < c.seeds.size(); ++s) q.push_back((at->sigma_seed[1][s] - b.sigma_seed[1][s]) / at->sigma_seed[0][s]);
+  out.q = seeds_mean_error(q);
+  const auto ratio = [](const CoarsePoint& p) {
+    const double r = p.sigma[1].mean / p.sigma[0].mean;
+    return MeanError{r, std::abs(r) * std::hypot(p.sigma[1].error / p.sigma[1].mean, p.sigma[0].error / p.sigma[0].mean)};
+  };
+  out.ratio[0] = ratio(b), out.ratio[1] = ratio(*at);
+  out.sign = out.q.mean > 2.0 * out.q.error ? 1 : out.q.mean < -2.0 * out.q.error ? -1 : 0;
+  return out;
 }
 
 std::string coarse_pm(const MeanError& m, const char* fmt_value) {

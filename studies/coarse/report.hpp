@@ -12,7 +12,11 @@
 //   within the laws  the last loading strain before any seed's soft run evaluates a contact beyond
 //               the laws' measured range (its stress past it rests on Eq. 7 outside its grid);
 //   speed-up    CPU time of the resolved run / that of the soft run, per seed, and its mean;
-//   shear       (phase 2) the same on the grid of the top wall's displacement, with tau.
+//   shear       (phase 2) the same on the grid of the top wall's displacement, with tau;
+//   paired shift  a setting's soft runs against another's on the same media and the same resolved
+//               runs (paired_shift): per medium the difference of the two soft σzz over the resolved
+//               σzz at the last loading strain both are within their laws, its mean and standard
+//               error (the media's own spread cancels in it).
 //
 // Written to `out`: coarse-grain.md (the table, with what was compared), curves.dat (the columns
 // the figure draws, a block per phase) and summary.json.
@@ -35,6 +39,7 @@ struct CoarsePoint {
   MeanError sigma[2], K0[2], fraction[2], Z[2];  ///< [0] resolved, [1] soft
   MeanError tau[2];                              ///< the shear stress on the top wall [Pa]
   MeanError sigma_difference;                    ///< soft - resolved, paired by seed
+  std::vector<double> sigma_seed[2];             ///< σzz of each seed (CoarseComparison::seeds' order; NaN: no value)
   bool agrees = false;
 };
 
@@ -51,6 +56,19 @@ struct CoarseComparison {
   /// (strain_within_laws, the smallest over the seeds): NaN when a run does not count them row by row.
   double within_laws_strain = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// A setting's soft runs against a base setting's on the same media and resolved runs.
+struct PairedShift {
+  double strain = 0.0;  ///< e*: the last loading strain both settings' soft runs are within their laws
+  MeanError q;          ///< per medium (σzz soft − σzz soft of the base) / σzz resolved at e*: mean, standard error
+  MeanError ratio[2];   ///< σzz soft / σzz resolved at e* (means over seeds): [0] the base's, [1] the setting's
+  int sign = 0;         ///< +1: mean q > 2 se (the setting carries more), −1: mean q < −2 se, 0: within
+};
+
+/// The paired shift of `c` against `base`; none (with the reason in `why`) when they are not runs of
+/// the same seeds and resolved runs, or either's soft runs do not count the contacts beyond their
+/// laws or meet one from their first row.
+std::optional<PairedShift> paired_shift(const CoarseComparison& base, const CoarseComparison& c, std::string* why = nullptr);
 
 /// The comparison of paired runs (resolved[k] and soft[k] of the same seed).
 CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const std::vector<CoarseResult>& soft, double strain,

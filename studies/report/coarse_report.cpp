@@ -4,7 +4,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
-
+#include <optional>
 
 #include "coarse/report.hpp"
 #include "coarse/settings.hpp"
@@ -46,6 +46,8 @@ std::string write_coarse_study_report(const Study& study, const std::string& dat
       "τ/σzz soft | speed-up | CPU resolved [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
       title);
   nlohmann::json rows = nlohmann::json::array();
+  std::optional<CoarseComparison> reference;
+  std::string paired;
   for (const StudySetting* s : settings) {
     const StudySetting& source = s->runs() ? *s : study.setting(s->of);
     const std::string folder = fmt::format("{}/{}", data_dir, source.name), changes = setting_changes(study, *s);
@@ -72,7 +74,24 @@ std::string write_coarse_study_report(const Study& study, const std::string& dat
                       within_cell, ratio_cell(load ? &load->sigma[1] : nullptr, load ? &load->sigma[0] : nullptr),
                       load ? value_cell(load->K0[0].mean, load->K0[0].error) : "–", load ? value_cell(load->K0[1].mean, load->K0[1].error) : "–",
                       tau_ratio(0), tau_ratio(1), value_cell(c->mean_speedup.mean, c->mean_speedup.error), cpu);
+    nlohmann::json shift;  // against the reference, on the same media and resolved runs
+    if (s == &study.reference) {
+      reference = c;
+    } else if (reference) {
+      std::string why;
+      if (const std::optional<PairedShift> p = paired_shift(*reference, *c, &why)) {
+        paired += fmt::format("| {} | {:.3f} | {} | {} | {} | {} |\n", s->name, p->strain, value_cell(p->q.mean, p->q.error),
+                              p->sign > 0 ? "more than the reference" : p->sign < 0 ? "less than the reference" : "within 2 se",
+                              value_cell(p->ratio[1].mean, p->ratio[1].error), value_cell(p->ratio[0].mean, p->ratio[0].error));
+        shift = {{"strain", p->strain}, {"q", json_number(p->q.mean)}, {"q_se", json_number(p->q.error)}, {"sign", p->sign},
+                 {"ratio", json_number(p->ratio[1].mean)}, {"ratio_se", json_number(p->ratio[1].error)},
+                 {"reference_ratio", json_number(p->ratio[0].mean)}, {"reference_ratio_se", json_number(p->ratio[0].error)}};
+      } else {
+        paired += fmt::format("| {} | – | – | {} | – | – |\n", s->name, why);
+      }
+    }
     rows.push_back({{"setting", s->name},
+                    {"paired_against_reference", shift},
                     {"changes", changes},
                     {"seeds", c->seeds},
                     {"report", s->name + "/summary.json"},
@@ -82,6 +101,13 @@ std::string write_coarse_study_report(const Study& study, const std::string& dat
                     {"speedup", json_number(c->mean_speedup.mean)},
                     {"cpu_seconds_resolved", cpu}});
   }
+  if (!paired.empty())
+    md += "\n## Against the reference, medium by medium\n\nA setting on the same media and resolved runs as the reference: at "
+          "e*, the last loading strain at which both settings' soft runs are within their laws' measured range, q = (σzz soft − σzz soft "
+          "of the reference) / σzz resolved on each medium, its mean ± standard error over the media (their own spread cancels in it); "
+          "*more* or *less* than the reference when |mean q| > 2 se. Beside it, σzz soft / resolved at e* (means over the seeds, "
+          "errors of the two means).\n\n| setting | e* | q | by 2 se | σzz soft / resolved | the reference's |\n|---|---|---|---|---|---|\n" +
+          paired;
   write_files_atomically({{out_dir + "/table.md", md}, {out_dir + "/coarse.json", nlohmann::json{{"title", title}, {"rows", rows}}.dump(2) + "\n"}});
   return md;
 }

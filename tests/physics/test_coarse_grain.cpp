@@ -201,41 +201,6 @@ TEST(CoarseGrain, TheSoftContactCensusCountsWhatTheSceneHolds) {
   EXPECT_GT(c.force_grain, 0.0);
 }
 
-// Two seeds, the resolved curve sigma = 1000 strain (+-10 Pa between seeds), the soft one the
-// same up to strain 0.05 and 50 % higher beyond: agreement up to 0.05, the stated speed-up.
-TEST(CoarseGrain, TheComparisonFindsWhereTheCurvesPart) {
-  std::vector<CoarseResult> resolved(2), soft(2);
-  for (int s = 0; s < 2; ++s) {
-    for (int k = 0; k <= 10; ++k) {
-      const double e = 0.01 * k, noise = s ? 10.0 : -10.0;
-      CurveRow row;
-      row.strain = e, row.sigma_top = 1000.0 * e + noise, row.sigma_lateral = 0.3 * row.sigma_top;
-      resolved[s].rows.push_back(row);
-      row.sigma_top = (e > 0.055 ? 1500.0 : 1000.0) * e + noise;
-      soft[s].rows.push_back(row);
-    }
-    resolved[s].seed = soft[s].seed = 900 + s;
-    resolved[s].cpu_seconds = 100.0 * (s + 1), soft[s].cpu_seconds = 2.0;
-  }
-  const CoarseComparison c = compare_coarse(resolved, soft, 0.1, 0.0, 0.01);
-  ASSERT_EQ(c.points.size(), 11u);
-  EXPECT_NEAR(c.agreement_strain, 0.05, 1e-12);
-  EXPECT_NEAR(c.points[3].sigma[0].mean, 30.0, 1e-9);
-  EXPECT_NEAR(c.points[3].sigma[0].error, 10.0, 1e-9);  // two seeds at +-10: standard error 10
-  EXPECT_NEAR(c.points[3].K0[1].mean, 0.3, 1e-12);
-  EXPECT_NEAR(c.mean_speedup.mean, 75.0, 1e-9);
-  EXPECT_TRUE(std::isnan(c.within_laws_strain)) << "the rows do not count the contacts beyond the laws";
-  // Seed 900's soft run meets a contact beyond the laws' range from strain 0.07, seed 901's from 0.09:
-  // within the laws up to 0.06 (the last row before the first).
-  for (int s = 0; s < 2; ++s)
-    for (CurveRow& row : soft[s].rows) row.beyond_range = row.strain > (s ? 0.085 : 0.065) ? 3 : 0, row.max_dn = 0.5;
-  EXPECT_NEAR(strain_within_laws(soft[1].rows), 0.08, 1e-12);
-  EXPECT_NEAR(compare_coarse(resolved, soft, 0.1, 0.0, 0.01).within_laws_strain, 0.06, 1e-12);
-  soft[1].rows.front().beyond_range = 1;
-  EXPECT_EQ(strain_within_laws(soft[1].rows), -1.0) << "beyond from the first row";
-  EXPECT_EQ(compare_coarse(resolved, soft, 0.1, 0.0, 0.01).within_laws_strain, -1.0);
-}
-
 }  // namespace
 }  // namespace softpack
 
