@@ -386,6 +386,20 @@ def nested_medium_macros(m, report, one_level):
     if one is None:
         fail(f"{one_level}: no setting 'many-body'")
     m.math("vOneLevelManyBodyRatio", sig(one["sigma_soft_over_resolved"], 2), one_level)
+    # Against the reference medium by medium (the coarse report's paired shift, q at e*): the
+    # many-body law's effect (pairwise) and the nesting's share (resolved-content, criterion in
+    # experiments/nested-medium.yaml: more, less or within 2 se).
+    verdict = {1: "more than", -1: "less than", 0: "as much as"}
+    for setting, name in (("pairwise", "Pairwise"), ("resolved-content", "ResolvedContent")):
+        shift = rows.get(setting, {}).get("paired_against_reference")
+        if not shift:
+            continue
+        m.math(f"vNestedMedium{name}Shift", pm(shift["q"], shift["q_se"]), table)
+        m.math(f"vNestedMedium{name}ShiftStrain", f"{shift['strain']:.3f}", table)
+        if setting == "resolved-content":  # the ratios beside it (pairwise's are the text's within-laws ratios)
+            m.math(f"vNestedMedium{name}ShiftRatio", pm(shift["ratio"], shift["ratio_se"]), table)
+            m.math(f"vNestedMedium{name}ShiftReferenceRatio", pm(shift["reference_ratio"], shift["reference_ratio_se"]), table)
+        m.add(f"vNestedMedium{name}ShiftVerdict", verdict[shift["sign"]], table)
 
 
 def radius_macros(m, path):
