@@ -103,9 +103,7 @@ CoarseComparison compare_coarse(const std::vector<CoarseResult>& resolved, const
       p.sigma[m] = seeds_mean_error(sigma), p.K0[m] = seeds_mean_error(K0), p.fraction[m] = seeds_mean_error(fraction), p.Z[m] = seeds_mean_error(Z);
       p.tau[m] = seeds_mean_error(tau);
     }
-    for (std::size_t k = 0; k < resolved.size(); ++k)
-      diff.push_back(at_strain(soft[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol) -
-                     at_strain(resolved[k], phase, e, [](const CurveRow& w) { return w.sigma_top; }, tol));
+    for (std::size_t k = 0; k < resolved.size(); ++k) diff.push_back(p.sigma_seed[1][k] - p.sigma_seed[0][k]);
     p.sigma_difference = seeds_mean_error(diff);
     const double tolerance = 2.0 * std::hypot(p.sigma[0].error, p.sigma[1].error);
     p.agrees = std::abs(p.sigma[1].mean - p.sigma[0].mean) <= tolerance;
@@ -146,6 +144,7 @@ std::optional<PairedShift> paired_shift(const CoarseComparison& base, const Coar
   const CoarsePoint* at = nullptr;
   for (std::size_t k = 0; k < c.points.size(); ++k) {
     const CoarsePoint &p = c.points[k], &b = base.points[k];
+    if (p.phase != b.phase || std::abs(p.strain - b.strain) > 1e-9) return none("not the same recorded strains");
     if (p.phase != 1) continue;
     if (!same_values(p.sigma_seed[0], b.sigma_seed[0])) return none(fmt::format("not the same resolved runs (σzz at strain {:.3f})", p.strain));
     if (std::abs(p.strain - out.strain) <= 1e-9) at = &p;
@@ -160,7 +159,6 @@ std::optional<PairedShift> paired_shift(const CoarseComparison& base, const Coar
     return MeanError{r, std::abs(r) * std::hypot(p.sigma[1].error / p.sigma[1].mean, p.sigma[0].error / p.sigma[0].mean)};
   };
   out.ratio[0] = ratio(b), out.ratio[1] = ratio(*at);
-  out.sign = out.q.mean > 2.0 * out.q.error ? 1 : out.q.mean < -2.0 * out.q.error ? -1 : 0;
   return out;
 }
 

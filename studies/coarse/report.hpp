@@ -62,7 +62,8 @@ struct PairedShift {
   double strain = 0.0;  ///< e*: the last loading strain both settings' soft runs are within their laws
   MeanError q;          ///< per medium (σzz soft − σzz soft of the base) / σzz resolved at e*: mean, standard error
   MeanError ratio[2];   ///< σzz soft / σzz resolved at e* (means over seeds): [0] the base's, [1] the setting's
-  int sign = 0;         ///< +1: mean q > 2 se (the setting carries more), −1: mean q < −2 se, 0: within
+  /// +1: mean q > 2 se (the setting carries more), −1: mean q < −2 se, 0: within.
+  int sign() const { return q.mean > 2.0 * q.error ? 1 : q.mean < -2.0 * q.error ? -1 : 0; }
 };
 
 /// The paired shift of `c` against `base`; none (with the reason in `why`) when they are not runs of

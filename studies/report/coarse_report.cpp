@@ -81,9 +81,9 @@ std::string write_coarse_study_report(const Study& study, const std::string& dat
       std::string why;
       if (const std::optional<PairedShift> p = paired_shift(*reference, *c, &why)) {
         paired += fmt::format("| {} | {:.3f} | {} | {} | {} | {} |\n", s->name, p->strain, value_cell(p->q.mean, p->q.error),
-                              p->sign > 0 ? "more than the reference" : p->sign < 0 ? "less than the reference" : "within 2 se",
+                              p->sign() > 0 ? "more than the reference" : p->sign() < 0 ? "less than the reference" : "within 2 se",
                               value_cell(p->ratio[1].mean, p->ratio[1].error), value_cell(p->ratio[0].mean, p->ratio[0].error));
-        shift = {{"strain", p->strain}, {"q", json_number(p->q.mean)}, {"q_se", json_number(p->q.error)}, {"sign", p->sign},
+        shift = {{"strain", p->strain}, {"q", json_number(p->q.mean)}, {"q_se", json_number(p->q.error)}, {"sign", p->sign()},
                  {"ratio", json_number(p->ratio[1].mean)}, {"ratio_se", json_number(p->ratio[1].error)},
                  {"reference_ratio", json_number(p->ratio[0].mean)}, {"reference_ratio_se", json_number(p->ratio[0].error)}};
       } else {

@@ -82,18 +82,20 @@ TEST(CoarseGrain, APairedShiftComparesTwoSoftSettingsMediumByMedium) {
   EXPECT_NEAR(p->strain, 0.06, 1e-12) << "the smaller of 0.08 and 0.06";
   EXPECT_NEAR(p->q.mean, 0.1 + 0.001 / 3.0, 1e-12);
   EXPECT_NEAR(p->q.error, 0.001 / 3.0, 1e-12);  // values 0.1, 0.101, 0.1: s = 0.001/sqrt(3), se = s/sqrt(3)
-  EXPECT_EQ(p->sign, 1);
+  EXPECT_EQ(p->sign(), 1);
   EXPECT_NEAR(p->ratio[0].mean, 0.5, 1e-12);
   EXPECT_NEAR(p->ratio[1].mean, 0.6 + 0.001 * 1.6 / 4.8, 1e-12);
   EXPECT_GT(p->ratio[0].mean + 2.0 * p->ratio[0].error, p->ratio[1].mean - 2.0 * p->ratio[1].error)
       << "unpaired, the two ratios cannot tell the shift";
-  EXPECT_EQ(paired_shift(b, a)->sign, -1);
-  EXPECT_EQ(paired_shift(a, a)->sign, 0);
+  EXPECT_EQ(paired_shift(b, a)->sign(), -1);
+  EXPECT_EQ(paired_shift(a, a)->sign(), 0);
   std::string why;
   auto other = res_b;
   other[2].rows[4].sigma_top += 1.0;
   EXPECT_FALSE(paired_shift(a, compare_coarse(other, soft_b, 0.1, 0.0, 0.01), &why));
   EXPECT_NE(why.find("not the same resolved runs"), std::string::npos) << why;
+  EXPECT_FALSE(paired_shift(a, compare_coarse(res_b, soft_b, 0.2, 0.0, 0.02), &why)) << "as many points, at other strains";
+  EXPECT_NE(why.find("not the same recorded strains"), std::string::npos) << why;
   auto uncounted = soft_b;
   for (CurveRow& row : uncounted[0].rows) row.beyond_range = -1;
   EXPECT_FALSE(paired_shift(a, compare_coarse(res_b, uncounted, 0.1, 0.0, 0.01), &why));
